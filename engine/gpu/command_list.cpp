@@ -1,0 +1,83 @@
+#include "gpu/command_list.h"
+
+#include "core/check.h"
+#include "gpu/buffer.h"
+#include "gpu/context.h"
+#include "gpu/timestamp_timer.h"
+#include "gpu/vk_check.h"
+
+namespace engine::gpu {
+
+namespace {
+PFN_vkCmdBeginDebugUtilsLabelEXT gBeginLabel = nullptr;
+PFN_vkCmdEndDebugUtilsLabelEXT gEndLabel = nullptr;
+}  // namespace
+
+CommandList::CommandList(Context& ctx, TimestampTimer* timer) : mCtx(ctx), mTimer(timer) {
+    VkCommandBufferAllocateInfo info{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    info.commandPool = ctx.commandPool();
+    info.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    info.commandBufferCount = 1;
+    VK_CHECK(vkAllocateCommandBuffers(ctx.device(), &info, &mCmd));
+    if (ctx.debugUtils() && !gBeginLabel) {
+        gBeginLabel = reinterpret_cast<PFN_vkCmdBeginDebugUtilsLabelEXT>(
+            vkGetDeviceProcAddr(ctx.device(), "vkCmdBeginDebugUtilsLabelEXT"));
+        gEndLabel = reinterpret_cast<PFN_vkCmdEndDebugUtilsLabelEXT>(
+            vkGetDeviceProcAddr(ctx.device(), "vkCmdEndDebugUtilsLabelEXT"));
+    }
+}
+
+CommandList::~CommandList() { vkFreeCommandBuffers(mCtx.device(), mCtx.commandPool(), 1, &mCmd); }
+
+void CommandList::begin() {
+    CHECK(!mRecording);
+    VK_CHECK(vkResetCommandBuffer(mCmd, 0));
+    VkCommandBufferBeginInfo info{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    info.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    VK_CHECK(vkBeginCommandBuffer(mCmd, &info));
+    if (mTimer) mTimer->reset(mCmd);
+    mRecording = true;
+}
+
+void CommandList::submitAndWait() {
+    CHECK(mRecording);
+    VK_CHECK(vkEndCommandBuffer(mCmd));
+    mRecording = false;
+    mCtx.submitAndWait(mCmd);
+    for (auto [pool, set] : mDescriptorSets) VK_CHECK(vkFreeDescriptorSets(mCtx.device(), pool, 1, &set));
+    mDescriptorSets.clear();
+}
+
+void CommandList::beginPass(const std::string& name) {
+    if (gBeginLabel) {
+        VkDebugUtilsLabelEXT label{VK_STRUCTURE_TYPE_DEBUG_UTILS_LABEL_EXT};
+        label.pLabelName = name.c_str();
+        gBeginLabel(mCmd, &label);
+    }
+    if (mTimer) mTimer->begin(mCmd, name);
+}
+
+void CommandList::endPass() {
+    if (mTimer) mTimer->end(mCmd);
+    if (gEndLabel) gEndLabel(mCmd);
+}
+
+void CommandList::barrier() {
+    VkMemoryBarrier b{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    b.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
+    b.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_READ_BIT |
+                      VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_HOST_READ_BIT;
+    VkPipelineStageFlags stages = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT;
+    vkCmdPipelineBarrier(mCmd, stages, stages | VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &b, 0, nullptr, 0, nullptr);
+}
+
+void CommandList::copyBuffer(const Buffer& src, const Buffer& dst, const std::vector<VkBufferCopy>& regions) {
+    if (regions.empty()) return;
+    vkCmdCopyBuffer(mCmd, src.handle(), dst.handle(), static_cast<std::uint32_t>(regions.size()), regions.data());
+}
+
+void CommandList::fillBuffer(const Buffer& dst, std::uint32_t value) {
+    vkCmdFillBuffer(mCmd, dst.handle(), 0, VK_WHOLE_SIZE, value);
+}
+
+}  // namespace engine::gpu

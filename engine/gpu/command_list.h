@@ -1,0 +1,52 @@
+// gpu::CommandList: one primary command buffer plus what must live until it completes
+// (descriptor sets). Passes record into it between beginPass/endPass, which add a debug label
+// and a GPU timestamp with the pass's name.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace engine::gpu {
+
+class Buffer;
+class Context;
+class TimestampTimer;
+
+class CommandList {
+public:
+    explicit CommandList(Context& ctx, TimestampTimer* timer = nullptr);
+    ~CommandList();
+    CommandList(const CommandList&) = delete;
+    CommandList& operator=(const CommandList&) = delete;
+
+    VkCommandBuffer handle() const { return mCmd; }
+    Context& context() const { return mCtx; }
+
+    void begin();
+    // Ends recording, submits, waits, and releases per-submission resources.
+    void submitAndWait();
+
+    void beginPass(const std::string& name);
+    void endPass();
+
+    // Make writes of the previous commands (compute or transfer) visible to the next ones.
+    void barrier();
+    void copyBuffer(const Buffer& src, const Buffer& dst, const std::vector<VkBufferCopy>& regions);
+    void fillBuffer(const Buffer& dst, std::uint32_t value);
+
+    // Descriptor sets allocated for this recording; freed after completion.
+    void retainDescriptorSet(VkDescriptorPool pool, VkDescriptorSet set) { mDescriptorSets.emplace_back(pool, set); }
+
+private:
+    Context& mCtx;
+    TimestampTimer* mTimer;
+    VkCommandBuffer mCmd = VK_NULL_HANDLE;
+    bool mRecording = false;
+    std::vector<std::pair<VkDescriptorPool, VkDescriptorSet>> mDescriptorSets;
+};
+
+}  // namespace engine::gpu

@@ -1,0 +1,87 @@
+// gpu::Context: the Vulkan instance, the chosen physical device (a real GPU if there is one,
+// else lavapipe), the logical device with one compute queue, and the validation-message
+// counters tests assert on. Only engine/gpu/ includes vulkan.h; the rest of the engine holds
+// gpu:: objects.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "core/error.h"
+
+namespace engine::gpu {
+
+struct ContextOptions {
+    // Validation layers: on in debug builds and tests; VOX_VALIDATION=0/1 overrides.
+    bool validation = false;
+    // Fail if validation was asked for but the layer is missing (tests must not pass vacuously).
+    bool requireValidation = false;
+    std::string applicationName = "vox";
+};
+
+struct DeviceInfo {
+    std::string name;
+    std::string driver;
+    std::string type;  // "discrete GPU", "integrated GPU", "CPU", ...
+    double timestampPeriodNs = 1.0;
+    std::uint64_t maxStorageBufferRange = 0;
+};
+
+class Context {
+public:
+    static Result<std::unique_ptr<Context>> create(const ContextOptions& options = {});
+    ~Context();
+    Context(const Context&) = delete;
+    Context& operator=(const Context&) = delete;
+
+    VkDevice device() const { return mDevice; }
+    VkPhysicalDevice physicalDevice() const { return mPhysicalDevice; }
+    VkQueue queue() const { return mQueue; }
+    std::uint32_t queueFamily() const { return mQueueFamily; }
+    VkCommandPool commandPool() const { return mCommandPool; }
+    const DeviceInfo& info() const { return mInfo; }
+    bool validationEnabled() const { return mValidation; }
+    bool debugUtils() const { return mDebugUtils; }
+
+    // Validation messages seen so far (errors are also printed to stderr).
+    std::uint32_t validationErrors() const { return mValidationErrors.load(); }
+    std::uint32_t validationWarnings() const { return mValidationWarnings.load(); }
+
+    std::uint32_t findMemoryType(std::uint32_t typeBits, VkMemoryPropertyFlags required,
+                                 VkMemoryPropertyFlags preferred) const;
+    void setObjectName(VkObjectType type, std::uint64_t handle, const char* name) const;
+
+    // Incremented after every completed submission; pipelines recycle descriptor sets with it.
+    std::uint64_t completedSubmissions() const { return mCompletedSubmissions; }
+    void submitAndWait(VkCommandBuffer commandBuffer);
+
+private:
+    Context() = default;
+    Status init(const ContextOptions& options);
+    static VKAPI_ATTR VkBool32 VKAPI_CALL onValidationMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                                              VkDebugUtilsMessageTypeFlagsEXT types,
+                                                              const VkDebugUtilsMessengerCallbackDataEXT* data,
+                                                              void* user);
+
+    VkInstance mInstance = VK_NULL_HANDLE;
+    VkDebugUtilsMessengerEXT mMessenger = VK_NULL_HANDLE;
+    VkPhysicalDevice mPhysicalDevice = VK_NULL_HANDLE;
+    VkDevice mDevice = VK_NULL_HANDLE;
+    VkQueue mQueue = VK_NULL_HANDLE;
+    std::uint32_t mQueueFamily = 0;
+    VkCommandPool mCommandPool = VK_NULL_HANDLE;
+    VkFence mFence = VK_NULL_HANDLE;
+    VkPhysicalDeviceMemoryProperties mMemoryProperties{};
+    DeviceInfo mInfo;
+    bool mValidation = false;
+    bool mDebugUtils = false;
+    std::uint64_t mCompletedSubmissions = 0;
+    std::atomic<std::uint32_t> mValidationErrors{0};
+    std::atomic<std::uint32_t> mValidationWarnings{0};
+};
+
+}  // namespace engine::gpu

@@ -1,0 +1,101 @@
+#include "io/image_io.h"
+
+#include <functional>
+#include <system_error>
+#include <unistd.h>
+#include <fcntl.h>
+
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <ImfOutputFile.h>
+
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#define STBIW_WINDOWS_UTF8
+#include <stb_image_write.h>
+
+namespace engine::io {
+
+namespace fs = std::filesystem;
+
+Status writeAtomically(const fs::path& path, const std::function<Status(const fs::path&)>& write) {
+    fs::path temp = path;
+    temp += ".tmp-" + std::to_string(::getpid());
+    Status s = write(temp);
+    std::error_code ec;
+    if (!s) {
+        fs::remove(temp, ec);
+        return s;
+    }
+    // Flush to disk before the rename so a crash cannot leave a renamed but empty file.
+    int fd = ::open(temp.c_str(), O_RDONLY);
+    if (fd >= 0) {
+        ::fsync(fd);
+        ::close(fd);
+    }
+    fs::rename(temp, path, ec);
+    if (ec) {
+        fs::remove(temp, ec);
+        return makeError("{}: cannot replace file: {}", path.string(), ec.message());
+    }
+    return {};
+}
+
+Status writePng(const fs::path& path, std::uint32_t width, std::uint32_t height, std::span<const std::uint32_t> rgba8) {
+    if (rgba8.size() != std::size_t(width) * height) return makeError("{}: image size mismatch", path.string());
+    return writeAtomically(path, [&](const fs::path& temp) -> Status {
+        if (!stbi_write_png(temp.c_str(), int(width), int(height), 4, rgba8.data(), int(width * 4)))
+            return makeError("{}: cannot write PNG", path.string());
+        return {};
+    });
+}
+
+Status writeExr(const fs::path& path, std::uint32_t width, std::uint32_t height, std::span<const glm::vec4> linear) {
+    if (linear.size() != std::size_t(width) * height) return makeError("{}: image size mismatch", path.string());
+    return writeAtomically(path, [&](const fs::path& temp) -> Status {
+        try {
+            Imf::Header header{int(width), int(height)};
+            const char* names[] = {"R", "G", "B", "A"};
+            for (const char* n : names) header.channels().insert(n, Imf::Channel(Imf::FLOAT));
+            Imf::OutputFile file(temp.c_str(), header);
+            Imf::FrameBuffer fb;
+            char* base = const_cast<char*>(reinterpret_cast<const char*>(linear.data()));
+            for (int c = 0; c < 4; ++c) {
+                fb.insert(names[c], Imf::Slice(Imf::FLOAT, base + c * sizeof(float), sizeof(glm::vec4),
+                                               sizeof(glm::vec4) * width));
+            }
+            file.setFrameBuffer(fb);
+            file.writePixels(int(height));
+        } catch (const std::exception& e) {
+            return makeError("{}: cannot write EXR: {}", path.string(), e.what());
+        }
+        return {};
+    });
+}
+
+Result<ExrImage> readExr(const fs::path& path) {
+    try {
+        Imf::InputFile file(path.c_str());
+        Imath::Box2i dw = file.header().dataWindow();
+        ExrImage img;
+        img.width = std::uint32_t(dw.max.x - dw.min.x + 1);
+        img.height = std::uint32_t(dw.max.y - dw.min.y + 1);
+        img.pixels.assign(std::size_t(img.width) * img.height, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+        Imf::FrameBuffer fb;
+        char* base = reinterpret_cast<char*>(img.pixels.data()) -
+                     (std::ptrdiff_t(dw.min.x) + std::ptrdiff_t(dw.min.y) * img.width) * sizeof(glm::vec4);
+        const char* names[] = {"R", "G", "B", "A"};
+        for (int c = 0; c < 4; ++c) {
+            fb.insert(names[c], Imf::Slice(Imf::FLOAT, base + c * sizeof(float), sizeof(glm::vec4),
+                                           sizeof(glm::vec4) * img.width, 1, 1, c == 3 ? 1.0 : 0.0));
+        }
+        file.setFrameBuffer(fb);
+        file.readPixels(dw.min.y, dw.max.y);
+        return img;
+    } catch (const std::exception& e) {
+        return makeError("{}: cannot read EXR: {}", path.string(), e.what());
+    }
+}
+
+}  // namespace engine::io

@@ -1,0 +1,32 @@
+// Image files: PNG (stb_image_write) for tonemapped frames, EXR (OpenEXR, 32-bit float RGBA) for
+// linear radiance. Both write atomically: a temporary file next to the target, then rename.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <span>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/error.h"
+
+namespace engine::io {
+
+Status writePng(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height,
+                std::span<const std::uint32_t> rgba8);
+Status writeExr(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height,
+                std::span<const glm::vec4> linear);
+
+struct ExrImage {
+    std::uint32_t width = 0, height = 0;
+    std::vector<glm::vec4> pixels;
+};
+Result<ExrImage> readExr(const std::filesystem::path& path);
+
+// Runs `write(tempPath)` and renames the temporary over `path` only if it succeeded; the previous
+// file at `path` survives any failure.
+Status writeAtomically(const std::filesystem::path& path, const std::function<Status(const std::filesystem::path&)>& write);
+
+}  // namespace engine::io

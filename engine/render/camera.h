@@ -1,0 +1,25 @@
+// Camera maths shared by the renderer and CPU-side code: FrameParams from a camera preset, and
+// the per-pixel ray direction (mirrors shaders/common/camera.glsl).
+#pragma once
+
+#include <cstdint>
+
+#include "shared/frame_params.h"
+#include "world/scene.h"
+
+namespace engine::render {
+
+struct FrameSettings {
+    std::uint32_t width = 320;
+    std::uint32_t height = 180;
+    std::uint32_t frameIndex = 0;
+    std::uint32_t seed = 1;
+    float exposure = 1.0f;
+};
+
+shared::FrameParams makeFrameParams(const world::CameraPreset& camera, const world::SkyLight& sky,
+                                    const FrameSettings& settings);
+
+glm::vec3 cameraRayDirection(const shared::FrameParams& f, glm::uvec2 pixel);
+
+}  // namespace engine::render

@@ -1,0 +1,124 @@
+#include "render/gpu_world.h"
+
+#include <algorithm>
+#include <bit>
+#include <string>
+#include <cstring>
+
+#include "gpu/context.h"
+#include "gpu/uploader.h"
+#include "shared/brick_grid.h"
+
+namespace engine::render {
+
+namespace {
+constexpr std::uint64_t kPageBytes = std::uint64_t(shared::BRICK_PAGE_WORDS) * 4u;
+constexpr std::uint64_t kMaskBytes = shared::BRICK_MASK_WORDS * 4u;
+constexpr std::uint64_t kMaterialBytes = shared::BRICK_MATERIAL_WORDS * 4u;
+static_assert(sizeof(world::BrickVoxels) == kMaterialBytes);
+static_assert(sizeof(world::BrickMask) == kMaskBytes);
+
+bool samePalette(const std::vector<shared::GpuMaterial>& a, const std::vector<shared::GpuMaterial>& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(shared::GpuMaterial)) == 0;
+}
+}  // namespace
+
+GpuWorld::GpuWorld(gpu::Context& ctx) : mCtx(ctx) {
+    mInfo = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::BrickGridInfo), "world.info");
+}
+
+WorldUploadStats GpuWorld::sync(world::Scene& scene, gpu::Uploader& uploader) {
+    world::BrickGrid& grid = scene.grid;
+    WorldUploadStats stats;
+
+    std::vector<shared::GpuMaterial> palette = scene.palette.toGpu();
+    if (!samePalette(palette, mUploadedPalette)) {
+        std::uint64_t bytes = palette.size() * sizeof(shared::GpuMaterial);
+        if (!mPalette.valid() || mPalette.size() < bytes)
+            mPalette = gpu::Buffer(mCtx, gpu::BufferKind::Storage, std::max<std::uint64_t>(bytes, 64 * 48), "world.palette");
+        uploader.write(mPalette, 0, palette.data(), bytes);
+        stats.bytes += bytes;
+        mUploadedPalette = std::move(palette);
+    }
+
+    ensurePages(grid.brickCapacity(), uploader);
+    if (grid.sizeInCells() != mSizeInCells) {
+        // A new or resized world: upload the top grid and every live brick.
+        stats.full = true;
+        mSizeInCells = grid.sizeInCells();
+        std::span<const std::uint32_t> cells = grid.cells();
+        mCells = gpu::Buffer(mCtx, gpu::BufferKind::Storage, cells.size_bytes(), "world.cells");
+        uploader.write(mCells, 0, cells.data(), cells.size_bytes());
+        stats.cells = static_cast<std::uint32_t>(cells.size());
+        stats.bytes += cells.size_bytes();
+        for (std::uint32_t c : cells) {
+            if (world::BrickGrid::cellIsBrick(c)) {
+                uploadBrick(grid, world::BrickGrid::cellBrick(c), uploader);
+                ++stats.bricks;
+            }
+        }
+    } else {
+        std::vector<std::uint32_t> dirty(grid.dirtyCells().begin(), grid.dirtyCells().end());
+        std::sort(dirty.begin(), dirty.end());
+        std::span<const std::uint32_t> cells = grid.cells();
+        // Runs of consecutive cells become one region each.
+        for (std::size_t i = 0; i < dirty.size();) {
+            std::size_t j = i + 1;
+            while (j < dirty.size() && dirty[j] == dirty[j - 1] + 1) ++j;
+            uploader.write(mCells, std::uint64_t(dirty[i]) * 4u, &cells[dirty[i]], (j - i) * 4u);
+            stats.bytes += (j - i) * 4u;
+            i = j;
+        }
+        stats.cells = static_cast<std::uint32_t>(dirty.size());
+        for (std::uint32_t brick : grid.dirtyBricks()) {
+            uploadBrick(grid, brick, uploader);
+            ++stats.bricks;
+        }
+    }
+    stats.bytes += std::uint64_t(stats.bricks) * (kMaskBytes + kMaterialBytes);
+
+    shared::BrickGridInfo info{};
+    info.sizeInCells = glm::ivec4(grid.sizeInCells(), 0);
+    info.sizeInVoxels = glm::ivec4(grid.sizeInVoxels(), 0);
+    info.counts = glm::uvec4(grid.liveBricks(), static_cast<std::uint32_t>(mPages.size()),
+                             static_cast<std::uint32_t>(scene.palette.size()), 0u);
+    uploader.write(mInfo, 0, &info, sizeof(info));
+    grid.clearDirty();
+    return stats;
+}
+
+void GpuWorld::ensurePages(std::uint32_t brickCapacity, gpu::Uploader& uploader) {
+    std::uint32_t needed = std::max<std::uint32_t>(1, (brickCapacity + shared::BRICK_PAGE_BRICKS - 1) >> shared::BRICK_PAGE_SHIFT);
+    if (needed <= mPages.size() && mPageTable.valid()) return;
+    std::uint64_t tableBytes = std::uint64_t(needed) * sizeof(std::uint64_t);
+    if (!mPageTable.valid() || mPageTable.size() < tableBytes) {
+        std::uint64_t capacity = std::max<std::uint64_t>(64, std::bit_ceil(std::uint64_t(needed)));
+        mPageTable = gpu::Buffer(mCtx, gpu::BufferKind::Storage, capacity * sizeof(std::uint64_t), "world.pageTable");
+    }
+    while (mPages.size() < needed) {
+        mPages.emplace_back(mCtx, gpu::BufferKind::Storage, kPageBytes, "world.brickPage" + std::to_string(mPages.size()));
+    }
+    std::vector<std::uint64_t> addresses;
+    for (const gpu::Buffer& page : mPages) addresses.push_back(page.deviceAddress());
+    uploader.write(mPageTable, 0, addresses.data(), addresses.size() * sizeof(std::uint64_t));
+}
+
+void GpuWorld::uploadBrick(const world::BrickGrid& grid, std::uint32_t brick, gpu::Uploader& uploader) {
+    const gpu::Buffer& page = mPages[brick >> shared::BRICK_PAGE_SHIFT];
+    std::uint64_t local = brick & (shared::BRICK_PAGE_BRICKS - 1u);
+    uploader.write(page, local * kMaskBytes, grid.brickMask(brick).words.data(), kMaskBytes);
+    uploader.write(page, std::uint64_t(shared::BRICK_PAGE_MATERIAL_OFFSET) * 4u + local * kMaterialBytes,
+                   grid.brickVoxels(brick).data(), kMaterialBytes);
+}
+
+GpuWorldMemory GpuWorld::memory() const {
+    GpuWorldMemory m;
+    m.topGridBytes = mCells.valid() ? mCells.size() : 0;
+    m.brickPages = static_cast<std::uint32_t>(mPages.size());
+    m.brickPageBytes = mPages.size() * kPageBytes;
+    m.pageTableBytes = mPageTable.valid() ? mPageTable.size() : 0;
+    m.paletteBytes = mPalette.valid() ? mPalette.size() : 0;
+    return m;
+}
+
+}  // namespace engine::render

@@ -1,0 +1,65 @@
+// GpuWorld: the GPU mirror of a Scene's BrickGrid and palette (world bindings 0-3 of every
+// ray-tracing shader, see shaders/shared/bindings.h).
+//
+// The first sync uploads everything; later syncs upload only the bricks and top-grid cells the
+// grid marked dirty, then clear the marks. The brick pool lives in pages of
+// BRICK_PAGE_BRICKS bricks, each its own buffer reached by device address, so no binding
+// exceeds lavapipe's 128 MiB limit however large the world grows.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "gpu/buffer.h"
+#include "world/scene.h"
+
+namespace engine::gpu {
+class Context;
+class Uploader;
+}  // namespace engine::gpu
+
+namespace engine::render {
+
+struct WorldUploadStats {
+    bool full = false;             // everything was (re)uploaded
+    std::uint32_t bricks = 0;      // bricks uploaded
+    std::uint32_t cells = 0;       // top-grid cells uploaded
+    std::uint64_t bytes = 0;
+};
+
+struct GpuWorldMemory {
+    std::uint64_t topGridBytes = 0;
+    std::uint64_t brickPageBytes = 0;
+    std::uint32_t brickPages = 0;
+    std::uint64_t pageTableBytes = 0;
+    std::uint64_t paletteBytes = 0;
+};
+
+class GpuWorld {
+public:
+    explicit GpuWorld(gpu::Context& ctx);
+
+    // Queues the uploads that bring the GPU copy up to date with `scene` and clears the grid's
+    // dirty marks. Record the uploader afterwards.
+    WorldUploadStats sync(world::Scene& scene, gpu::Uploader& uploader);
+    // Forget the GPU state: the next sync uploads everything.
+    void invalidate() { mSizeInCells = glm::ivec3(0); }
+
+    const gpu::Buffer& info() const { return mInfo; }
+    const gpu::Buffer& cells() const { return mCells; }
+    const gpu::Buffer& pageTable() const { return mPageTable; }
+    const gpu::Buffer& palette() const { return mPalette; }
+    GpuWorldMemory memory() const;
+
+private:
+    void ensurePages(std::uint32_t brickCapacity, gpu::Uploader& uploader);
+    void uploadBrick(const world::BrickGrid& grid, std::uint32_t brick, gpu::Uploader& uploader);
+
+    gpu::Context& mCtx;
+    glm::ivec3 mSizeInCells{0};
+    gpu::Buffer mInfo, mCells, mPageTable, mPalette;
+    std::vector<gpu::Buffer> mPages;
+    std::vector<shared::GpuMaterial> mUploadedPalette;
+};
+
+}  // namespace engine::render

@@ -1,0 +1,173 @@
+#include "world/brick_grid.h"
+
+#include <algorithm>
+
+#include "core/check.h"
+
+namespace engine::world {
+
+namespace {
+glm::ivec3 cellOf(glm::ivec3 p) { return p >> int(shared::BRICK_SHIFT); }
+int localIndex(glm::ivec3 p) { return brickVoxelIndex(p & (kBrickDim - 1)); }
+std::uint32_t uniformCellValue(MaterialId m) {
+    return m == kEmpty ? shared::CELL_EMPTY : (shared::CELL_HOMOGENEOUS | m);
+}
+}  // namespace
+
+BrickGrid::BrickGrid(glm::ivec3 sizeInVoxels) {
+    CHECK(glm::all(glm::greaterThan(sizeInVoxels, glm::ivec3(0))));
+    mSizeInCells = (sizeInVoxels + (kBrickDim - 1)) / kBrickDim;
+    std::size_t count = static_cast<std::size_t>(mSizeInCells.x) * mSizeInCells.y * mSizeInCells.z;
+    mCells.assign(count, shared::CELL_EMPTY);
+    mCellDirty.assign(count, 0);
+}
+
+MaterialId BrickGrid::get(glm::ivec3 p) const {
+    if (!contains(p)) return kEmpty;
+    std::uint32_t c = cell(cellOf(p));
+    if (!cellIsBrick(c)) return cellMaterial(c);
+    return mBrickVoxels[cellBrick(c)][localIndex(p)];
+}
+
+void BrickGrid::set(glm::ivec3 p, MaterialId material) {
+    if (!contains(p)) return;
+    glm::ivec3 c = cellOf(p);
+    std::uint32_t value = cell(c);
+    if (!cellIsBrick(value)) {
+        if (cellMaterial(value) == material) return;
+        BrickVoxels voxels;
+        voxels.fill(cellMaterial(value));
+        voxels[localIndex(p)] = material;
+        writeCell(c, voxels);
+        return;
+    }
+    std::uint32_t brick = cellBrick(value);
+    BrickVoxels& voxels = mBrickVoxels[brick];
+    if (voxels[localIndex(p)] == material) return;
+    voxels[localIndex(p)] = material;
+    if (isUniform(voxels)) {
+        freeBrick(brick);
+        setCell(cellIndex(c), uniformCellValue(material));
+        return;
+    }
+    mBrickMasks[brick] = BrickMask::build(voxels);
+    markBrickDirty(brick);
+}
+
+BrickVoxels BrickGrid::readCell(glm::ivec3 c) const {
+    std::uint32_t value = cell(c);
+    if (cellIsBrick(value)) return mBrickVoxels[cellBrick(value)];
+    BrickVoxels voxels;
+    voxels.fill(cellMaterial(value));
+    return voxels;
+}
+
+void BrickGrid::writeCell(glm::ivec3 c, const BrickVoxels& voxels) {
+    if (isUniform(voxels)) {
+        writeCellUniform(c, voxels[0]);
+        return;
+    }
+    std::size_t index = cellIndex(c);
+    std::uint32_t value = mCells[index];
+    std::uint32_t brick;
+    if (cellIsBrick(value)) {
+        brick = cellBrick(value);
+        if (mBrickVoxels[brick] == voxels) return;
+    } else {
+        brick = allocateBrick();
+        setCell(index, brick + 1u);
+    }
+    mBrickVoxels[brick] = voxels;
+    mBrickMasks[brick] = BrickMask::build(voxels);
+    markBrickDirty(brick);
+}
+
+void BrickGrid::writeCellUniform(glm::ivec3 c, MaterialId material) {
+    std::size_t index = cellIndex(c);
+    std::uint32_t value = mCells[index];
+    if (cellIsBrick(value)) freeBrick(cellBrick(value));
+    setCell(index, uniformCellValue(material));
+}
+
+std::uint32_t BrickGrid::homogeneousCells() const {
+    return static_cast<std::uint32_t>(std::count_if(mCells.begin(), mCells.end(), [](std::uint32_t v) {
+        return (v & shared::CELL_HOMOGENEOUS) != 0;
+    }));
+}
+
+std::uint64_t BrickGrid::solidVoxels() const {
+    std::uint64_t total = 0;
+    for (std::uint32_t v : mCells) {
+        if (v == shared::CELL_EMPTY) continue;
+        if (v & shared::CELL_HOMOGENEOUS) {
+            total += kBrickVoxels;
+            continue;
+        }
+        for (MaterialId m : mBrickVoxels[cellBrick(v)]) total += (m != kEmpty);
+    }
+    return total;
+}
+
+void BrickGrid::clearDirty() {
+    for (std::uint32_t b : mDirtyBricks) mBrickDirty[b] = 0;
+    for (std::uint32_t c : mDirtyCells) mCellDirty[c] = 0;
+    mDirtyBricks.clear();
+    mDirtyCells.clear();
+}
+
+GridMemory BrickGrid::memory() const {
+    constexpr std::size_t kBrickBytes = sizeof(BrickVoxels) + sizeof(BrickMask);
+    GridMemory m;
+    m.topGridBytes = mCells.size() * sizeof(std::uint32_t);
+    m.brickPoolBytes = mBrickVoxels.size() * kBrickBytes;
+    m.liveBrickBytes = liveBricks() * kBrickBytes;
+    m.bookkeepingBytes = mFreeBricks.size() * sizeof(std::uint32_t) + mBrickDirty.size() + mCellDirty.size() +
+                         (mDirtyBricks.size() + mDirtyCells.size()) * sizeof(std::uint32_t);
+    return m;
+}
+
+bool BrickGrid::operator==(const BrickGrid& other) const {
+    if (mSizeInCells != other.mSizeInCells) return false;
+    for (std::size_t i = 0; i < mCells.size(); ++i) {
+        std::uint32_t a = mCells[i], b = other.mCells[i];
+        if (cellIsBrick(a) != cellIsBrick(b)) return false;
+        if (!cellIsBrick(a)) {
+            if (a != b) return false;
+        } else if (mBrickVoxels[cellBrick(a)] != other.mBrickVoxels[cellBrick(b)]) {
+            return false;
+        }
+    }
+    return true;
+}
+
+std::uint32_t BrickGrid::allocateBrick() {
+    if (!mFreeBricks.empty()) {
+        std::uint32_t brick = mFreeBricks.back();
+        mFreeBricks.pop_back();
+        return brick;
+    }
+    CHECK_MSG(mBrickVoxels.size() < 0x7FFFFFF0u, "brick pool exhausted");
+    mBrickVoxels.emplace_back();
+    mBrickMasks.emplace_back();
+    mBrickDirty.push_back(0);
+    return static_cast<std::uint32_t>(mBrickVoxels.size() - 1);
+}
+
+void BrickGrid::freeBrick(std::uint32_t brick) { mFreeBricks.push_back(brick); }
+
+void BrickGrid::setCell(std::size_t index, std::uint32_t value) {
+    if (mCells[index] == value) return;
+    mCells[index] = value;
+    if (!mCellDirty[index]) {
+        mCellDirty[index] = 1;
+        mDirtyCells.push_back(static_cast<std::uint32_t>(index));
+    }
+}
+
+void BrickGrid::markBrickDirty(std::uint32_t brick) {
+    if (mBrickDirty[brick]) return;
+    mBrickDirty[brick] = 1;
+    mDirtyBricks.push_back(brick);
+}
+
+}  // namespace engine::world

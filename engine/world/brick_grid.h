@@ -1,0 +1,107 @@
+// BrickGrid: the two-level voxel world.
+//
+// A dense top grid, sized to the world's bounds in 8^3 cells, holds one uint per cell (encoding
+// in shaders/shared/brick_grid.h): empty, homogeneous (one material, no storage) or an index
+// into a brick pool with a free list. Random access is O(1). Every write that changes a brick
+// or a cell marks it dirty; the GPU mirror (render/gpu_world.h) uploads only dirty entries and
+// then calls clearDirty(). Uniform bricks collapse back into homogeneous cells on write.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "world/brick.h"
+
+namespace engine::world {
+
+// Integer box of voxels, min inclusive, max exclusive.
+struct Box {
+    glm::ivec3 min{0};
+    glm::ivec3 max{0};
+    bool empty() const { return glm::any(glm::lessThanEqual(max, min)); }
+    glm::ivec3 size() const { return max - min; }
+    bool contains(glm::ivec3 p) const {
+        return glm::all(glm::greaterThanEqual(p, min)) && glm::all(glm::lessThan(p, max));
+    }
+    Box intersect(const Box& o) const { return {glm::max(min, o.min), glm::min(max, o.max)}; }
+};
+
+struct GridMemory {
+    std::size_t topGridBytes = 0;
+    std::size_t brickPoolBytes = 0;  // capacity of the pool (live + free bricks), voxels + masks
+    std::size_t liveBrickBytes = 0;  // live bricks only
+    std::size_t bookkeepingBytes = 0;  // free list and dirty flags
+};
+
+class BrickGrid {
+public:
+    // The world spans [0, sizeInVoxels) rounded up to whole cells.
+    explicit BrickGrid(glm::ivec3 sizeInVoxels);
+
+    glm::ivec3 sizeInCells() const { return mSizeInCells; }
+    glm::ivec3 sizeInVoxels() const { return mSizeInCells * kBrickDim; }
+    Box bounds() const { return {glm::ivec3(0), sizeInVoxels()}; }
+    bool contains(glm::ivec3 p) const { return bounds().contains(p); }
+    bool containsCell(glm::ivec3 c) const {
+        return glm::all(glm::greaterThanEqual(c, glm::ivec3(0))) && glm::all(glm::lessThan(c, mSizeInCells));
+    }
+
+    // Voxel access. Reads outside the world return kEmpty; writes outside are ignored.
+    MaterialId get(glm::ivec3 p) const;
+    void set(glm::ivec3 p, MaterialId material);
+
+    // Cell access, for edits and traversal.
+    std::size_t cellIndex(glm::ivec3 c) const {
+        return static_cast<std::size_t>(c.x) +
+               static_cast<std::size_t>(mSizeInCells.x) *
+                   (static_cast<std::size_t>(c.y) + static_cast<std::size_t>(mSizeInCells.y) * c.z);
+    }
+    std::uint32_t cell(glm::ivec3 c) const { return mCells[cellIndex(c)]; }
+    std::span<const std::uint32_t> cells() const { return mCells; }
+    BrickVoxels readCell(glm::ivec3 c) const;           // expands homogeneous cells
+    void writeCell(glm::ivec3 c, const BrickVoxels& v);  // collapses uniform bricks
+    void writeCellUniform(glm::ivec3 c, MaterialId material);
+
+    static bool cellIsBrick(std::uint32_t cell) { return cell != shared::CELL_EMPTY && !(cell & shared::CELL_HOMOGENEOUS); }
+    static std::uint32_t cellBrick(std::uint32_t cell) { return cell - 1u; }
+    static MaterialId cellMaterial(std::uint32_t cell) {
+        return cell == shared::CELL_EMPTY ? kEmpty : static_cast<MaterialId>(cell & shared::CELL_MATERIAL_MASK);
+    }
+
+    // Brick pool.
+    const BrickVoxels& brickVoxels(std::uint32_t brick) const { return mBrickVoxels[brick]; }
+    const BrickMask& brickMask(std::uint32_t brick) const { return mBrickMasks[brick]; }
+    std::uint32_t brickCapacity() const { return static_cast<std::uint32_t>(mBrickVoxels.size()); }
+    std::uint32_t liveBricks() const { return brickCapacity() - static_cast<std::uint32_t>(mFreeBricks.size()); }
+    std::uint32_t homogeneousCells() const;  // solid homogeneous cells (no storage)
+    std::uint64_t solidVoxels() const;
+
+    // Dirty tracking for the GPU mirror.
+    std::span<const std::uint32_t> dirtyBricks() const { return mDirtyBricks; }
+    std::span<const std::uint32_t> dirtyCells() const { return mDirtyCells; }
+    void clearDirty();
+
+    GridMemory memory() const;
+    bool operator==(const BrickGrid& other) const;  // same voxels, regardless of pool layout
+
+private:
+    std::uint32_t allocateBrick();
+    void freeBrick(std::uint32_t brick);
+    void setCell(std::size_t index, std::uint32_t value);
+    void markBrickDirty(std::uint32_t brick);
+
+    glm::ivec3 mSizeInCells;
+    std::vector<std::uint32_t> mCells;
+    std::vector<BrickVoxels> mBrickVoxels;
+    std::vector<BrickMask> mBrickMasks;
+    std::vector<std::uint32_t> mFreeBricks;
+    std::vector<std::uint8_t> mBrickDirty;
+    std::vector<std::uint32_t> mDirtyBricks;
+    std::vector<std::uint8_t> mCellDirty;
+    std::vector<std::uint32_t> mDirtyCells;
+};
+
+}  // namespace engine::world

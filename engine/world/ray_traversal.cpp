@@ -1,0 +1,115 @@
+#include "world/ray_traversal.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace engine::world {
+
+namespace {
+
+RayHit miss(std::uint32_t steps) {
+    RayHit h;
+    h.steps = steps;
+    return h;
+}
+
+}  // namespace
+
+glm::ivec3 faceNormal(std::uint32_t face) {
+    glm::ivec3 n(0);
+    if (face < 6) n[face >> 1] = (face & 1) ? 1 : -1;
+    return n;
+}
+
+RayHit traceRay(const BrickGrid& grid, const Ray& ray, TraversalMode mode) {
+    const glm::vec3 o = ray.origin;
+    const glm::vec3 d = ray.direction;
+    const glm::ivec3 size = grid.sizeInVoxels();
+    const bool hierarchical = mode == TraversalMode::Hierarchical;
+
+    // Clip the ray to the world box (slab test); an axis with d == 0 never bounds t.
+    glm::vec3 inv(0.0f);
+    float tEnter = 0.0f;
+    float tExit = ray.tMax;
+    int enterAxis = -1;
+    for (int a = 0; a < 3; ++a) {
+        if (d[a] == 0.0f) {
+            if (o[a] < 0.0f || o[a] >= float(size[a])) return miss(0);
+            continue;
+        }
+        inv[a] = 1.0f / d[a];
+        float t0 = (0.0f - o[a]) * inv[a];
+        float t1 = (float(size[a]) - o[a]) * inv[a];
+        float tNear = std::min(t0, t1);
+        float tFar = std::max(t0, t1);
+        if (tNear > tEnter) {
+            tEnter = tNear;
+            enterAxis = a;
+        }
+        tExit = std::min(tExit, tFar);
+    }
+    if (tEnter > tExit) return miss(0);
+
+    glm::ivec3 v;
+    for (int a = 0; a < 3; ++a) {
+        float p = o[a] + tEnter * d[a];
+        v[a] = std::clamp(int(std::floor(p)), 0, size[a] - 1);
+    }
+    std::uint32_t face = shared::FACE_INSIDE;
+    if (enterAxis >= 0) {
+        bool positive = d[enterAxis] > 0.0f;
+        v[enterAxis] = positive ? 0 : size[enterAxis] - 1;
+        face = std::uint32_t(enterAxis * 2 + (positive ? 0 : 1));
+    }
+    float t = tEnter;
+
+    const std::span<const std::uint32_t> cells = grid.cells();
+    for (std::uint32_t steps = 1; steps <= shared::TRAVERSAL_MAX_STEPS; ++steps) {
+        std::uint32_t cell = cells[grid.cellIndex(v >> 3)];
+        int s = 1;
+        if (cell == shared::CELL_EMPTY) {
+            s = 8;
+        } else if (cell & shared::CELL_HOMOGENEOUS) {
+            return RayHit{true, v, face, t, static_cast<MaterialId>(cell & shared::CELL_MATERIAL_MASK), steps};
+        } else {
+            const std::uint32_t brick = BrickGrid::cellBrick(cell);
+            const BrickMask& mask = grid.brickMask(brick);
+            const glm::ivec3 local = v & 7;
+            if (hierarchical && !mask.block4(local)) {
+                s = 4;
+            } else if (hierarchical && !mask.block2(local)) {
+                s = 2;
+            } else if (mask.voxel(local)) {
+                return RayHit{true, v, face, t, grid.brickVoxels(brick)[brickVoxelIndex(local)], steps};
+            }
+        }
+
+        // Leave the empty block of size s that contains v.
+        const glm::ivec3 lo = v & ~(s - 1);
+        float best = std::numeric_limits<float>::infinity();
+        int axis = 0;
+        for (int a = 0; a < 3; ++a) {
+            if (d[a] == 0.0f) continue;
+            int boundary = d[a] > 0.0f ? lo[a] + s : lo[a];
+            float ta = (float(boundary) - o[a]) * inv[a];
+            if (ta < best) {
+                best = ta;
+                axis = a;
+            }
+        }
+        if (best > ray.tMax) return miss(steps);
+        for (int b = 0; b < 3; ++b) {
+            if (b == axis) continue;
+            float p = o[b] + best * d[b];
+            v[b] = std::clamp(int(std::floor(p)), lo[b], lo[b] + s - 1);
+        }
+        bool positive = d[axis] > 0.0f;
+        v[axis] = positive ? lo[axis] + s : lo[axis] - 1;
+        if (v[axis] < 0 || v[axis] >= size[axis]) return miss(steps);
+        face = std::uint32_t(axis * 2 + (positive ? 0 : 1));
+        t = best;
+    }
+    return miss(shared::TRAVERSAL_MAX_STEPS);
+}
+
+}  // namespace engine::world

@@ -1,0 +1,30 @@
+#include "world/scene.h"
+
+namespace engine::world {
+
+CameraPreset Scene::camera(std::string_view wanted) const {
+    for (const CameraPreset& c : cameras) {
+        if (wanted.empty() || c.name == wanted) return c;
+    }
+    glm::vec3 size(grid.sizeInVoxels());
+    CameraPreset overview;
+    overview.name = "overview";
+    overview.target = size * 0.5f;
+    overview.position = glm::vec3(size.x * 1.1f, size.y * 1.2f, size.z * 1.3f);
+    return overview;
+}
+
+std::uint64_t Scene::emissiveVoxels() const {
+    std::uint64_t count = 0;
+    for (std::uint32_t c : grid.cells()) {
+        if (c == shared::CELL_EMPTY) continue;
+        if (!BrickGrid::cellIsBrick(c)) {
+            count += palette[BrickGrid::cellMaterial(c)].emissive() ? kBrickVoxels : 0;
+            continue;
+        }
+        for (MaterialId m : grid.brickVoxels(BrickGrid::cellBrick(c))) count += palette[m].emissive();
+    }
+    return count;
+}
+
+}  // namespace engine::world

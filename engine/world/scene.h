@@ -1,0 +1,42 @@
+// A scene: the world grid with its palette, plus what a scene file says about viewing and
+// lighting it (camera presets, sun and sky).
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "world/brick_grid.h"
+#include "world/material.h"
+
+namespace engine::world {
+
+struct CameraPreset {
+    std::string name;
+    glm::vec3 position{0.0f};
+    glm::vec3 target{0.0f, 0.0f, 1.0f};
+    float fovYDegrees = 60.0f;
+};
+
+struct SkyLight {
+    glm::vec3 sunDirection = glm::normalize(glm::vec3(0.4f, 1.0f, 0.3f));  // towards the sun
+    glm::vec3 sunRadiance{3.0f, 2.85f, 2.6f};
+    glm::vec3 skyRadiance{0.35f, 0.45f, 0.6f};
+};
+
+struct Scene {
+    std::string name = "untitled";
+    std::string sourcePath;  // the file it came from, for messages
+    Palette palette;
+    BrickGrid grid{glm::ivec3(8)};
+    std::vector<CameraPreset> cameras;
+    SkyLight sky;
+
+    // The named preset, the first one for an empty name, or a view of the whole world.
+    CameraPreset camera(std::string_view name = {}) const;
+    std::uint64_t emissiveVoxels() const;
+};
+
+}  // namespace engine::world

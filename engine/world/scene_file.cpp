@@ -1,0 +1,322 @@
+#include "world/scene_file.h"
+
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+#include "world/generators.h"
+#include "world/world_edits.h"
+
+namespace engine::world {
+
+namespace {
+
+struct ParseError {
+    std::string message;
+};
+
+class SceneParser {
+public:
+    explicit SceneParser(std::string source) : mSource(std::move(source)) {}
+
+    template <typename... Args>
+    [[noreturn]] void fail(const toml::node* at, fmt::format_string<Args...> f, Args&&... args) const {
+        std::string where = mSource;
+        if (at && at->source().begin.line) where += fmt::format(":{}", at->source().begin.line);
+        throw ParseError{where + ": " + fmt::format(f, std::forward<Args>(args)...)};
+    }
+
+    // Reads one table and insists every key in it was understood (catches typos).
+    class Table {
+    public:
+        Table(const SceneParser& p, const toml::table& t) : mParser(p), mTable(t) {}
+        ~Table() noexcept(false) {
+            if (std::uncaught_exceptions()) return;
+            for (auto&& [key, node] : mTable) {
+                if (!mUsed.count(std::string(key.str())))
+                    mParser.fail(&node, "unknown key '{}'", key.str());
+            }
+        }
+        const toml::node* node(std::string_view key) {
+            mUsed.insert(std::string(key));
+            return mTable.get(key);
+        }
+        const toml::table& raw() const { return mTable; }
+        bool has(std::string_view key) const { return mTable.contains(key); }
+
+        double number(std::string_view key, double fallback) {
+            const toml::node* n = node(key);
+            if (!n) return fallback;
+            if (auto v = n->value<double>()) return *v;
+            mParser.fail(n, "'{}' must be a number", key);
+        }
+        int integer(std::string_view key, int fallback) {
+            const toml::node* n = node(key);
+            if (!n) return fallback;
+            if (auto v = n->value<std::int64_t>()) {
+                if (*v < -(1ll << 30) || *v > (1ll << 30)) mParser.fail(n, "'{}' is out of range", key);
+                return static_cast<int>(*v);
+            }
+            mParser.fail(n, "'{}' must be an integer", key);
+        }
+        bool boolean(std::string_view key, bool fallback) {
+            const toml::node* n = node(key);
+            if (!n) return fallback;
+            if (auto v = n->value<bool>()) return *v;
+            mParser.fail(n, "'{}' must be true or false", key);
+        }
+        std::string string(std::string_view key, const char* fallback = nullptr) {
+            const toml::node* n = node(key);
+            if (!n) {
+                if (!fallback) mParser.fail(&mTable, "missing '{}'", key);
+                return fallback;
+            }
+            if (auto v = n->value<std::string>()) return *v;
+            mParser.fail(n, "'{}' must be a string", key);
+        }
+        template <int N>
+        glm::vec<N, double> vector(std::string_view key, glm::vec<N, double> fallback, bool required = false) {
+            const toml::node* n = node(key);
+            if (!n) {
+                if (required) mParser.fail(&mTable, "missing '{}'", key);
+                return fallback;
+            }
+            const toml::array* a = n->as_array();
+            if (!a || a->size() != N) mParser.fail(n, "'{}' must be an array of {} numbers", key, N);
+            glm::vec<N, double> out;
+            for (int i = 0; i < N; ++i) {
+                auto v = (*a)[i].value<double>();
+                if (!v) mParser.fail(n, "'{}' must be an array of {} numbers", key, N);
+                out[i] = *v;
+            }
+            return out;
+        }
+        glm::vec3 vec3(std::string_view key, glm::vec3 fallback, bool required = false) {
+            return glm::vec3(vector<3>(key, glm::dvec3(fallback), required));
+        }
+        glm::ivec3 ivec3(std::string_view key, glm::ivec3 fallback, bool required = false) {
+            glm::dvec3 v = vector<3>(key, glm::dvec3(fallback), required);
+            if (glm::any(glm::notEqual(glm::floor(v), v)) || glm::any(glm::greaterThan(glm::abs(v), glm::dvec3(1 << 20))))
+                mParser.fail(node(key), "'{}' must hold whole numbers of voxels", key);
+            return glm::ivec3(v);
+        }
+
+    private:
+        const SceneParser& mParser;
+        const toml::table& mTable;
+        std::set<std::string> mUsed;
+    };
+
+    Scene parse(const toml::table& root) {
+        Scene scene;
+        scene.sourcePath = mSource;
+        Table top(*this, root);
+        parseWorld(top, scene);
+        if (const toml::node* n = top.node("material")) {
+            const toml::array* a = n->as_array();
+            if (!a) fail(n, "'material' must be an array of tables ([[material]])");
+            for (const toml::node& m : *a) parseMaterial(m, scene);
+        }
+        if (const toml::node* n = top.node("generator")) {
+            const toml::array* a = n->as_array();
+            if (!a) fail(n, "'generator' must be an array of tables ([[generator]])");
+            for (const toml::node& g : *a) parseGenerator(g, scene);
+        }
+        if (const toml::node* n = top.node("camera")) {
+            const toml::array* a = n->as_array();
+            if (!a) fail(n, "'camera' must be an array of tables ([[camera]])");
+            for (const toml::node& c : *a) parseCamera(c, scene);
+        }
+        if (const toml::node* n = top.node("sky")) {
+            const toml::table* t = n->as_table();
+            if (!t) fail(n, "'sky' must be a table");
+            Table sky(*this, *t);
+            glm::vec3 dir = sky.vec3("sun_direction", scene.sky.sunDirection);
+            if (glm::length(dir) < 1e-6f) fail(n, "'sun_direction' must not be zero");
+            scene.sky.sunDirection = glm::normalize(dir);
+            scene.sky.sunRadiance = sky.vec3("sun_radiance", scene.sky.sunRadiance);
+            scene.sky.skyRadiance = sky.vec3("sky_radiance", scene.sky.skyRadiance);
+        }
+        scene.grid.clearDirty();
+        return scene;
+    }
+
+private:
+    void parseWorld(Table& top, Scene& scene) {
+        const toml::node* n = top.node("world");
+        if (!n || !n->as_table()) fail(&top.raw(), "missing [world] table");
+        Table world(*this, *n->as_table());
+        scene.name = world.string("name", "untitled");
+        glm::ivec3 size = world.ivec3("size", {}, true);
+        if (glm::any(glm::lessThan(size, glm::ivec3(1))) || glm::any(glm::greaterThan(size, glm::ivec3(kMaxWorldExtent))))
+            fail(world.node("size"), "world size {}x{}x{} is outside 1..{} voxels per axis", size.x, size.y, size.z,
+                 kMaxWorldExtent);
+        glm::u64vec3 cells = glm::u64vec3((size + 7) / 8);
+        if (cells.x * cells.y * cells.z > kMaxTopGridCells)
+            fail(world.node("size"), "world size {}x{}x{} needs {} top-grid cells, more than the limit of {}", size.x,
+                 size.y, size.z, cells.x * cells.y * cells.z, kMaxTopGridCells);
+        scene.grid = BrickGrid(size);
+    }
+
+    void parseMaterial(const toml::node& node, Scene& scene) {
+        const toml::table* t = node.as_table();
+        if (!t) fail(&node, "each [[material]] must be a table");
+        Table m(*this, *t);
+        Material mat;
+        mat.name = m.string("name");
+        if (scene.palette.find(mat.name)) fail(&node, "material '{}' is defined twice", mat.name);
+        mat.albedo = m.vec3("albedo", mat.albedo);
+        mat.emissionColor = m.vec3("emission", glm::vec3(1.0f));
+        mat.emissionStrength = static_cast<float>(m.number("strength", 0.0));
+        if (glm::any(glm::lessThan(mat.albedo, glm::vec3(0.0f))) || glm::any(glm::greaterThan(mat.albedo, glm::vec3(1.0f))))
+            fail(&node, "material '{}': albedo must lie in [0, 1]", mat.name);
+        if (mat.emissionStrength < 0.0f || glm::any(glm::lessThan(mat.emissionColor, glm::vec3(0.0f))))
+            fail(&node, "material '{}': emission must not be negative", mat.name);
+        if (!mat.emissive()) {
+            mat.emissionColor = glm::vec3(0.0f);
+            mat.emissionStrength = 0.0f;
+        }
+        if (!scene.palette.add(mat)) fail(&node, "too many materials (at most {})", kMaxMaterials - 1);
+    }
+
+    MaterialId material(Table& t, const Scene& scene, std::string_view key, const char* fallback = nullptr) {
+        std::string name = t.string(key, fallback);
+        if (name == "empty" || name == "air") return kEmpty;
+        auto id = scene.palette.find(name);
+        if (!id) fail(t.node(key), "unknown material '{}'", name);
+        return *id;
+    }
+
+    void parseGenerator(const toml::node& node, Scene& scene) {
+        const toml::table* t = node.as_table();
+        if (!t) fail(&node, "each [[generator]] must be a table");
+        Table g(*this, *t);
+        std::string type = g.string("type");
+        BrickGrid& grid = scene.grid;
+        if (type == "terrain") {
+            TerrainParams p;
+            p.top = material(g, scene, "top");
+            p.soil = material(g, scene, "soil");
+            p.rock = material(g, scene, "rock");
+            p.soilDepth = g.integer("soil_depth", p.soilDepth);
+            p.baseHeight = static_cast<float>(g.number("base_height", p.baseHeight));
+            p.amplitude = static_cast<float>(g.number("amplitude", p.amplitude));
+            p.wavelength = static_cast<float>(g.number("wavelength", p.wavelength));
+            p.octaves = g.integer("octaves", p.octaves);
+            p.seed = static_cast<std::uint32_t>(g.integer("seed", static_cast<int>(p.seed)));
+            if (p.octaves < 1 || p.octaves > 12) fail(g.node("octaves"), "'octaves' must be in 1..12");
+            generateTerrain(grid, p);
+        } else if (type == "box") {
+            Box box{g.ivec3("min", {}, true), g.ivec3("max", {}, true)};
+            MaterialId m = material(g, scene, "material");
+            int wall = g.integer("hollow_wall", 0);
+            fillBox(grid, box, m);
+            if (wall > 0) fillBox(grid, Box{box.min + wall, box.max - wall}, kEmpty);
+        } else if (type == "sphere") {
+            glm::vec3 c = g.vec3("center", {}, true);
+            float r = static_cast<float>(g.number("radius", 8.0));
+            if (r <= 0.0f || r > kMaxWorldExtent) fail(g.node("radius"), "'radius' must be in (0, {}]", kMaxWorldExtent);
+            fillSphere(grid, c, r, material(g, scene, "material"));
+        } else if (type == "cornell") {
+            CornellParams p;
+            p.origin = g.ivec3("origin", p.origin);
+            p.interior = g.integer("interior", p.interior);
+            p.wall = g.integer("wall", p.wall);
+            p.lightBricks = g.integer("light_bricks", p.lightBricks);
+            p.white = material(g, scene, "white");
+            p.red = material(g, scene, "red");
+            p.green = material(g, scene, "green");
+            p.light = material(g, scene, "light");
+            if (p.interior < 16 || p.interior % 8) fail(g.node("interior"), "'interior' must be a multiple of 8, >= 16");
+            if (p.lightBricks * 8 > p.interior) fail(g.node("light_bricks"), "the light is wider than the box");
+            generateCornellBox(grid, p);
+        } else if (type == "buildings") {
+            BuildingsParams p;
+            p.count = g.integer("count", p.count);
+            p.seed = static_cast<std::uint32_t>(g.integer("seed", static_cast<int>(p.seed)));
+            p.minHeight = g.integer("min_height", p.minHeight);
+            p.maxHeight = g.integer("max_height", p.maxHeight);
+            glm::ivec3 minSize = g.ivec3("min_size", {p.minSize.x, 0, p.minSize.y});
+            glm::ivec3 maxSize = g.ivec3("max_size", {p.maxSize.x, 0, p.maxSize.y});
+            p.minSize = {minSize.x, minSize.z};
+            p.maxSize = {maxSize.x, maxSize.z};
+            p.wall = material(g, scene, "wall");
+            p.roof = material(g, scene, "roof");
+            p.window = material(g, scene, "window");
+            if (p.count < 0 || p.count > 10000) fail(g.node("count"), "'count' must be in 0..10000");
+            if (glm::any(glm::lessThan(p.minSize, glm::ivec2(4))) || glm::any(glm::lessThan(p.maxSize, p.minSize)) ||
+                p.minHeight < 6 || p.maxHeight < p.minHeight)
+                fail(&node, "buildings: sizes must satisfy 4 <= min_size <= max_size and 6 <= min_height <= max_height");
+            generateBuildings(grid, p);
+        } else if (type == "lamps") {
+            LampsParams p;
+            p.count = g.integer("count", p.count);
+            p.seed = static_cast<std::uint32_t>(g.integer("seed", static_cast<int>(p.seed)));
+            p.postHeight = g.integer("post_height", p.postHeight);
+            p.lampSize = g.integer("lamp_size", p.lampSize);
+            p.post = material(g, scene, "post");
+            p.light = material(g, scene, "light");
+            if (p.count < 0 || p.count > 1000000) fail(g.node("count"), "'count' must be in 0..1000000");
+            if (p.lampSize < 1 || p.lampSize > 64) fail(g.node("lamp_size"), "'lamp_size' must be in 1..64");
+            generateLamps(grid, p);
+        } else {
+            fail(g.node("type"), "unknown generator '{}' (known: terrain, box, sphere, cornell, buildings, lamps)", type);
+        }
+    }
+
+    void parseCamera(const toml::node& node, Scene& scene) {
+        const toml::table* t = node.as_table();
+        if (!t) fail(&node, "each [[camera]] must be a table");
+        Table c(*this, *t);
+        CameraPreset cam;
+        cam.name = c.string("name");
+        cam.position = c.vec3("position", {}, true);
+        cam.target = c.vec3("target", {}, true);
+        cam.fovYDegrees = static_cast<float>(c.number("fov", 60.0));
+        if (cam.fovYDegrees <= 1.0f || cam.fovYDegrees >= 179.0f) fail(c.node("fov"), "'fov' must be in (1, 179) degrees");
+        if (glm::length(cam.target - cam.position) < 1e-4f) fail(&node, "camera '{}': target equals position", cam.name);
+        scene.cameras.push_back(cam);
+    }
+
+    std::string mSource;
+};
+
+}  // namespace
+
+Result<Scene> loadSceneText(std::string_view text, std::string_view sourceName) {
+    try {
+        toml::table root = toml::parse(text, sourceName);
+        return SceneParser(std::string(sourceName)).parse(root);
+    } catch (const toml::parse_error& e) {
+        return makeError("{}:{}: {}", sourceName, e.source().begin.line, e.description());
+    } catch (const ParseError& e) {
+        return Error{e.message};
+    }
+}
+
+Result<Scene> loadSceneFile(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return makeError("{}: cannot open scene file", path.string());
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad()) return makeError("{}: read error", path.string());
+    return loadSceneText(text.str(), path.string());
+}
+
+Result<std::filesystem::path> resolveWorldPath(std::string_view nameOrPath) {
+    namespace fs = std::filesystem;
+    fs::path direct(nameOrPath);
+    std::error_code ec;
+    if (fs::is_regular_file(direct, ec)) return direct;
+    std::string file = std::string(nameOrPath) + (direct.extension() == ".toml" ? "" : ".toml");
+    for (fs::path dir : {fs::path("worlds"), fs::path(VOX_SOURCE_DIR) / "worlds"}) {
+        if (fs::is_regular_file(dir / file, ec)) return dir / file;
+    }
+    return makeError("{}: no such world (not a file, and not found in worlds/)", nameOrPath);
+}
+
+}  // namespace engine::world

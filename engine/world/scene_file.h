@@ -1,0 +1,26 @@
+// Scene files (worlds/*.toml): palette, world size, generators, camera presets, sky.
+// Errors name the file and line: "worlds/city.toml:12: unknown generator 'terain'".
+// The format is documented in worlds/README.md.
+#pragma once
+
+#include <filesystem>
+#include <string_view>
+
+#include "core/error.h"
+#include "world/scene.h"
+
+namespace engine::world {
+
+// Largest world a scene file may ask for: 2^25 top-grid cells (a 128 MiB top grid, the largest storage buffer lavapipe binds).
+inline constexpr std::uint64_t kMaxTopGridCells = 1ull << 25;
+inline constexpr int kMaxWorldExtent = 1 << 15;
+
+Result<Scene> loadSceneFile(const std::filesystem::path& path);
+Result<Scene> loadSceneText(std::string_view text, std::string_view sourceName);
+
+// Resolves a world argument: an existing path, or a name in the worlds/ folder
+// ("sandbox" -> worlds/sandbox.toml), looked up next to the working directory and the source
+// tree the binary was built from.
+Result<std::filesystem::path> resolveWorldPath(std::string_view nameOrPath);
+
+}  // namespace engine::world

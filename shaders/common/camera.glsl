@@ -1,0 +1,16 @@
+// Pinhole camera rays from FrameParams; mirrors engine/render/camera.h.
+#ifndef COMMON_CAMERA_GLSL
+#define COMMON_CAMERA_GLSL
+
+#include "shared/frame_params.h"
+
+// Unit direction through the centre of `pixel` (y grows downwards in the image).
+vec3 cameraRayDirection(FrameParams f, uvec2 pixel) {
+    vec2 ndc = (vec2(pixel) + 0.5) / vec2(f.imageSize.xy) * 2.0 - 1.0;
+    float tanHalf = f.cameraPosition.w;
+    vec3 d = f.cameraForward.xyz + f.cameraRight.xyz * (ndc.x * tanHalf * f.cameraForward.w) -
+             f.cameraUp.xyz * (ndc.y * tanHalf);
+    return normalize(d);
+}
+
+#endif

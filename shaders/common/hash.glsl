@@ -1,0 +1,11 @@
+// PCG hash, identical to engine/core/hash.h.
+#ifndef COMMON_HASH_GLSL
+#define COMMON_HASH_GLSL
+
+uint pcgHash(uint v) {
+    uint state = v * 747796405u + 2891336453u;
+    uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+    return (word >> 22u) ^ word;
+}
+
+#endif

@@ -1,0 +1,18 @@
+// Descriptor bindings every ray-tracing pass shares: the world (set 0, bindings 0-3).
+// A pass's own buffers start at PASS_BINDING_FIRST. All bindings are storage buffers.
+#ifndef SHARED_BINDINGS_H
+#define SHARED_BINDINGS_H
+#include "interop.h"
+
+SHARED_BEGIN
+
+SHARED_CONST uint WORLD_BINDING_INFO = 0u;     // BrickGridInfo
+SHARED_CONST uint WORLD_BINDING_CELLS = 1u;    // uint per top-grid cell
+SHARED_CONST uint WORLD_BINDING_PAGES = 2u;    // uint64 device address per brick page
+SHARED_CONST uint WORLD_BINDING_PALETTE = 3u;  // GpuMaterial per material id
+SHARED_CONST uint WORLD_BINDING_COUNT = 4u;
+SHARED_CONST uint PASS_BINDING_FIRST = 4u;
+
+SHARED_END
+
+#endif

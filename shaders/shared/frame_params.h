@@ -1,0 +1,23 @@
+// Per-frame constants for the render passes: camera, sky, image size, frame index and seed.
+#ifndef SHARED_FRAME_PARAMS_H
+#define SHARED_FRAME_PARAMS_H
+#include "interop.h"
+
+SHARED_BEGIN
+
+struct FrameParams {
+    vec4 cameraPosition;  // xyz world position (voxel units), w = tan(fovY / 2)
+    vec4 cameraForward;   // xyz unit, w = aspect (width / height)
+    vec4 cameraRight;     // xyz unit
+    vec4 cameraUp;        // xyz unit
+    vec4 sunDirection;    // xyz unit vector towards the sun
+    vec4 sunRadiance;     // rgb
+    vec4 skyRadiance;     // rgb, ambient and background
+    uvec4 imageSize;      // x width, y height, z frame index, w seed
+    vec4 exposure;        // x exposure multiplier
+};
+SHARED_ASSERT_SIZE(FrameParams, 144);
+
+SHARED_END
+
+#endif

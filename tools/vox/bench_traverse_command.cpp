@@ -1,0 +1,231 @@
+// vox bench traverse: rays per second and DDA steps per ray, in one run on one world and view,
+// for the GPU traversal (lavapipe here) and the CPU reference on all cores, each in the
+// hierarchical mode (empty-space skipping inside bricks) and the plain two-level mode.
+// Same rays for every method: camera rays, then one shadow ray towards the sun per hit.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include "commands.h"
+#include "gpu/command_list.h"
+#include "gpu/context.h"
+#include "gpu/timestamp_timer.h"
+#include "gpu/uploader.h"
+#include "render/camera.h"
+#include "render/passes/trace_rays_pass.h"
+#include "shared/trace_rays.h"
+#include "world/ray_traversal.h"
+
+namespace vox {
+
+namespace {
+
+using engine::world::Ray;
+using engine::world::RayHit;
+using engine::world::TraversalMode;
+
+struct BenchOptions {
+    std::string world = "terrain_1024";
+    std::string camera;
+    std::string size = "640x360";
+    int repeats = 5;
+    std::string output = "out/bench_traverse.json";
+};
+
+struct MethodResult {
+    std::string name;
+    double ms = 0.0;  // median wall (CPU) or GPU timestamp time for all rays
+    std::uint64_t rays = 0;
+    std::uint64_t steps = 0;
+    double raysPerSecond() const { return double(rays) / (ms * 1e-3); }
+    double stepsPerRay() const { return double(steps) / double(std::max<std::uint64_t>(rays, 1)); }
+};
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
+std::vector<Ray> shadowRays(const std::vector<Ray>& primary, const std::vector<RayHit>& hits, glm::vec3 toSun) {
+    std::vector<Ray> out;
+    for (std::size_t i = 0; i < primary.size(); ++i) {
+        if (!hits[i].hit || hits[i].face >= 6) continue;
+        glm::vec3 n(engine::world::faceNormal(hits[i].face));
+        if (glm::dot(n, toSun) <= 0.0f) continue;
+        Ray r;
+        r.origin = primary[i].origin + primary[i].direction * hits[i].t + n * 1e-3f;
+        r.direction = toSun;
+        out.push_back(r);
+    }
+    return out;
+}
+
+MethodResult benchCpu(const engine::world::BrickGrid& grid, const std::vector<Ray>& rays, TraversalMode mode,
+                      int repeats, const char* name) {
+    unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+    MethodResult r;
+    r.name = name;
+    std::vector<double> times;
+    std::vector<std::uint64_t> steps(threads);
+    for (int rep = 0; rep < repeats + 1; ++rep) {  // first run warms caches, not counted
+        auto start = std::chrono::steady_clock::now();
+        std::vector<std::thread> pool;
+        for (unsigned t = 0; t < threads; ++t) {
+            pool.emplace_back([&, t] {
+                std::uint64_t s = 0;
+                // Interleaved rows of 64 rays keep both threads' work even.
+                for (std::size_t base = t * 64; base < rays.size(); base += threads * 64) {
+                    std::size_t end = std::min(rays.size(), base + 64);
+                    for (std::size_t i = base; i < end; ++i) s += engine::world::traceRay(grid, rays[i], mode).steps;
+                }
+                steps[t] = s;
+            });
+        }
+        for (auto& th : pool) th.join();
+        double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        if (rep > 0) times.push_back(ms);
+    }
+    r.ms = median(times);
+    r.rays = rays.size();
+    for (auto s : steps) r.steps += s;
+    return r;
+}
+
+int runBench(const BenchOptions& o) {
+    auto size = parseSize(o.size, "--size");
+    if (!size) return fail(size.error());
+    if (o.repeats < 1 || o.repeats > 1000) return fail(engine::makeError("--repeats must be in 1..1000"));
+    std::printf("loading world %s ...\n", o.world.c_str());
+    auto scene = loadWorld(o.world);
+    if (!scene) return fail(scene.error());
+    auto ctx = engine::gpu::Context::create({});
+    if (!ctx) return fail(ctx.error());
+    engine::gpu::Context& gpu = **ctx;
+    const auto& dev = gpu.info();
+    std::printf("device   %s (%s, %s)\n", dev.name.c_str(), dev.type.c_str(), dev.driver.c_str());
+
+    // The same rays for every method.
+    engine::world::CameraPreset camera = scene->camera(o.camera);
+    engine::render::FrameSettings fs;
+    fs.width = (*size).x;
+    fs.height = (*size).y;
+    shared::FrameParams params = engine::render::makeFrameParams(camera, scene->sky, fs);
+    std::vector<Ray> primary;
+    for (std::uint32_t y = 0; y < fs.height; ++y)
+        for (std::uint32_t x = 0; x < fs.width; ++x)
+            primary.push_back(Ray{camera.position, engine::render::cameraRayDirection(params, {x, y})});
+    std::vector<RayHit> hits(primary.size());
+    for (std::size_t i = 0; i < primary.size(); ++i) hits[i] = engine::world::traceRay(scene->grid, primary[i]);
+    std::vector<Ray> rays = primary;
+    std::vector<Ray> shadows = shadowRays(primary, hits, glm::normalize(scene->sky.sunDirection));
+    rays.insert(rays.end(), shadows.begin(), shadows.end());
+    std::printf("rays     %zu primary + %zu shadow at %ux%u, camera '%s'\n", primary.size(), shadows.size(), fs.width,
+                fs.height, camera.name.c_str());
+
+    // GPU: upload the world and the rays once, then time the trace dispatch only.
+    engine::render::GpuWorld world(gpu);
+    engine::gpu::Uploader uploader(gpu);
+    engine::gpu::TimestampTimer timer(gpu, 4);
+    engine::render::TraceRaysPass pass(gpu);
+    std::vector<shared::TraceRayInput> inputs;
+    for (const Ray& r : rays) inputs.push_back({glm::vec4(r.origin, 1e30f), glm::vec4(r.direction, 0.0f)});
+    using engine::gpu::Buffer;
+    using engine::gpu::BufferKind;
+    Buffer paramsBuf(gpu, BufferKind::Storage, sizeof(shared::TraceRaysParams), "bench.params");
+    Buffer raysBuf(gpu, BufferKind::Storage, inputs.size() * sizeof(shared::TraceRayInput), "bench.rays");
+    Buffer hitsBuf(gpu, BufferKind::Storage, inputs.size() * sizeof(shared::TraceRayOutput), "bench.hits");
+    Buffer readback(gpu, BufferKind::Readback, hitsBuf.size(), "bench.readback");
+    {
+        engine::gpu::CommandList cmd(gpu);
+        cmd.begin();
+        world.sync(*scene, uploader);
+        uploader.write(raysBuf, 0, inputs.data(), raysBuf.size());
+        uploader.record(cmd);
+        cmd.submitAndWait();
+    }
+    std::vector<MethodResult> results;
+    std::uint64_t gpuCpuMismatches = 0;
+    for (std::uint32_t mode : {shared::TRACE_MODE_HIERARCHICAL, shared::TRACE_MODE_PLAIN}) {
+        MethodResult r;
+        r.name = mode == shared::TRACE_MODE_HIERARCHICAL ? "gpu hierarchical" : "gpu plain two-level";
+        std::vector<double> times;
+        for (int rep = 0; rep < o.repeats + 2; ++rep) {  // two warm-up runs: the first compiles the shader
+            engine::gpu::CommandList cmd(gpu, &timer);
+            cmd.begin();
+            shared::TraceRaysParams p{glm::uvec4(std::uint32_t(inputs.size()), mode, 0u, 0u)};
+            uploader.write(paramsBuf, 0, &p, sizeof(p));
+            uploader.record(cmd);
+            pass.record(cmd, {world, paramsBuf, raysBuf, hitsBuf}, std::uint32_t(inputs.size()));
+            cmd.copyBuffer(hitsBuf, readback, {{0, 0, hitsBuf.size()}});
+            cmd.barrier();
+            cmd.submitAndWait();
+            if (rep >= 2) times.push_back(timer.results().at(0).second);
+        }
+        r.ms = median(times);
+        r.rays = inputs.size();
+        auto out = readback.view<shared::TraceRayOutput>();
+        for (std::size_t i = 0; i < inputs.size(); ++i) {
+            r.steps += out[i].data.w;
+            if (mode == shared::TRACE_MODE_HIERARCHICAL && i < primary.size()) {
+                gpuCpuMismatches += (out[i].data.x != 0) != hits[i].hit ||
+                                    (hits[i].hit && glm::ivec3(out[i].voxel) != hits[i].voxel);
+            }
+        }
+        results.push_back(r);
+        std::printf("  %-28s done\n", r.name.c_str());
+    }
+    results.push_back(benchCpu(scene->grid, rays, TraversalMode::Hierarchical, o.repeats, "cpu native hierarchical"));
+    std::printf("  %-28s done\n", results.back().name.c_str());
+    results.push_back(benchCpu(scene->grid, rays, TraversalMode::PlainTwoLevel, o.repeats, "cpu native plain two-level"));
+    std::printf("  %-28s done\n", results.back().name.c_str());
+
+    unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+    std::printf("\n%-28s %10s %12s %12s %12s\n", "method", "ms", "Mrays/s", "steps/ray", "ns/step");
+    for (const MethodResult& r : results) {
+        std::printf("%-28s %10.2f %12.3f %12.2f %12.3f\n", r.name.c_str(), r.ms, r.raysPerSecond() * 1e-6,
+                    r.stepsPerRay(), r.ms * 1e6 / double(std::max<std::uint64_t>(r.steps, 1)));
+    }
+    const MethodResult& gpuH = results[0];
+    const MethodResult& cpuPlain = results[3];
+    std::printf("\ngpu hierarchical vs cpu native plain two-level: %.2fx rays/s, %.2fx fewer steps per ray\n",
+                gpuH.raysPerSecond() / cpuPlain.raysPerSecond(), cpuPlain.stepsPerRay() / gpuH.stepsPerRay());
+    std::printf("gpu/cpu primary-hit mismatches: %llu of %zu (CPU threads: %u)\n",
+                static_cast<unsigned long long>(gpuCpuMismatches), primary.size(), threads);
+
+    std::filesystem::path out(o.output);
+    std::error_code ec;
+    if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path(), ec);
+    std::ofstream json(out);
+    json << "{\n  \"world\": \"" << scene->name << "\", \"size\": [" << fs.width << ", " << fs.height
+         << "], \"device\": \"" << dev.name << "\", \"driver\": \"" << dev.driver << "\", \"cpu_threads\": " << threads
+         << ",\n  \"primary_rays\": " << primary.size() << ", \"shadow_rays\": " << shadows.size()
+         << ", \"gpu_cpu_mismatches\": " << gpuCpuMismatches << ",\n  \"methods\": [\n";
+    for (std::size_t i = 0; i < results.size(); ++i) {
+        const MethodResult& r = results[i];
+        json << "    {\"name\": \"" << r.name << "\", \"ms\": " << r.ms << ", \"rays\": " << r.rays
+             << ", \"steps\": " << r.steps << ", \"rays_per_second\": " << r.raysPerSecond()
+             << ", \"steps_per_ray\": " << r.stepsPerRay() << "}" << (i + 1 < results.size() ? "," : "") << "\n";
+    }
+    json << "  ]\n}\n";
+    if (!json) return fail(engine::makeError("{}: cannot write results", out.string()));
+    std::printf("wrote    %s\n", out.string().c_str());
+    return 0;
+}
+
+}  // namespace
+
+void addBenchTraverseCommand(CLI::App& bench, int& exitCode) {
+    auto* cmd = bench.add_subcommand("traverse", "Ray traversal speed: GPU vs CPU reference, hierarchical vs plain DDA");
+    auto o = std::make_shared<BenchOptions>();
+    cmd->add_option("world", o->world, "World name or scene file")->capture_default_str();
+    cmd->add_option("--camera", o->camera, "Camera preset");
+    cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
+    cmd->add_option("--repeats", o->repeats, "Timed repetitions per method (median reported)")->capture_default_str();
+    cmd->add_option("-o,--output", o->output, "JSON results file")->capture_default_str();
+    cmd->callback([o, &exitCode] { exitCode = runBench(*o); });
+}
+
+}  // namespace vox

@@ -1,0 +1,27 @@
+// Subcommands of `vox`. Each add*Command registers its options on the app and sets `exitCode`
+// when it runs.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <optional>
+#include <string>
+
+#include "core/error.h"
+#include "world/scene.h"
+
+namespace vox {
+
+void addRenderCommand(CLI::App& app, int& exitCode);
+void addInfoCommand(CLI::App& app, int& exitCode);
+void addBenchTraverseCommand(CLI::App& bench, int& exitCode);
+
+// Loads a world by name or path; an empty argument means the built-in default world.
+engine::Result<engine::world::Scene> loadWorld(const std::string& nameOrPath);
+// "640x360" -> {640, 360}; an error names the option.
+engine::Result<glm::uvec2> parseSize(const std::string& text, const char* option);
+engine::Result<glm::vec3> parseVec3(const std::string& text, const char* option);
+// One line on stderr, exit code 1.
+int fail(const engine::Error& error);
+
+}  // namespace vox

@@ -1,0 +1,34 @@
+#include <cstdio>
+
+#include "commands.h"
+#include "shared/brick_grid.h"
+#include "world/world_info.h"
+
+namespace vox {
+
+void addInfoCommand(CLI::App& app, int& exitCode) {
+    auto* cmd = app.add_subcommand("info", "Describe a world: size, bricks, voxels, emitters, memory");
+    auto world = std::make_shared<std::string>();
+    auto json = std::make_shared<bool>(false);
+    cmd->add_option("world", *world, "World name (worlds/NAME.toml) or scene file; default: sandbox");
+    cmd->add_flag("--json", *json, "Print JSON instead of text");
+    cmd->callback([=, &exitCode] {
+        auto scene = loadWorld(*world);
+        if (!scene) {
+            exitCode = fail(scene.error());
+            return;
+        }
+        engine::world::WorldInfo info = engine::world::describeWorld(*scene);
+        if (*json) {
+            std::printf("%s\n", engine::world::worldInfoJson(info).c_str());
+            return;
+        }
+        std::printf("%s", engine::world::formatWorldInfo(info, scene->name + " (" + scene->sourcePath + ")").c_str());
+        std::uint64_t pages = (info.bricks + info.freeBricks + shared::BRICK_PAGE_BRICKS - 1) / shared::BRICK_PAGE_BRICKS;
+        std::printf("gpu          %llu brick page(s) of %u bricks (%.2f MiB each), top grid and palette as above\n",
+                    static_cast<unsigned long long>(std::max<std::uint64_t>(pages, 1)), shared::BRICK_PAGE_BRICKS,
+                    double(shared::BRICK_PAGE_WORDS) * 4.0 / (1 << 20));
+    });
+}
+
+}  // namespace vox

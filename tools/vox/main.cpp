@@ -1,0 +1,62 @@
+// vox: the engine's command-line tool. `vox --help` lists the subcommands.
+#include <cstdio>
+
+#include "commands.h"
+#include "core/log.h"
+#include "world/scene_file.h"
+
+namespace vox {
+
+engine::Result<engine::world::Scene> loadWorld(const std::string& nameOrPath) {
+    auto path = engine::world::resolveWorldPath(nameOrPath.empty() ? "sandbox" : nameOrPath);
+    if (!path) return path.error();
+    return engine::world::loadSceneFile(*path);
+}
+
+engine::Result<glm::uvec2> parseSize(const std::string& text, const char* option) {
+    unsigned w = 0, h = 0;
+    char x = 0, extra = 0;
+    if (std::sscanf(text.c_str(), "%u%c%u%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X'))
+        return engine::makeError("{}: expected WIDTHxHEIGHT, got '{}'", option, text);
+    if (w < 1 || h < 1 || w > 8192 || h > 8192)
+        return engine::makeError("{}: {}x{} is outside 1..8192 per side", option, w, h);
+    return glm::uvec2(w, h);
+}
+
+engine::Result<glm::vec3> parseVec3(const std::string& text, const char* option) {
+    float a, b, c;
+    char extra = 0;
+    if (std::sscanf(text.c_str(), "%f,%f,%f%c", &a, &b, &c, &extra) != 3)
+        return engine::makeError("{}: expected x,y,z, got '{}'", option, text);
+    return glm::vec3(a, b, c);
+}
+
+int fail(const engine::Error& error) {
+    std::fprintf(stderr, "vox: %s\n", error.message.c_str());
+    return 1;
+}
+
+}  // namespace vox
+
+int main(int argc, char** argv) {
+    engine::log::init();
+    CLI::App app{"vox: voxel engine tool (render, inspect and benchmark brick-grid worlds)", "vox"};
+    app.require_subcommand(1);
+    int exitCode = 0;
+    vox::addRenderCommand(app, exitCode);
+    vox::addInfoCommand(app, exitCode);
+    CLI::App* bench = app.add_subcommand("bench", "Benchmarks (results as CSV/JSON under out/)");
+    bench->require_subcommand(1);
+    vox::addBenchTraverseCommand(*bench, exitCode);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::fprintf(stderr, "vox: %s (see vox --help)\n", e.what());
+        return 2;
+    }
+    return exitCode;
+}
