@@ -51,12 +51,12 @@ WorldUploadStats GpuWorld::sync(world::Scene& scene, gpu::Uploader& uploader) {
         uploader.write(mCells, 0, cells.data(), cells.size_bytes());
         stats.cells = static_cast<std::uint32_t>(cells.size());
         stats.bytes += cells.size_bytes();
+        std::vector<std::uint32_t> live;
         for (std::uint32_t c : cells) {
-            if (world::BrickGrid::cellIsBrick(c)) {
-                uploadBrick(grid, world::BrickGrid::cellBrick(c), uploader);
-                ++stats.bricks;
-            }
+            if (world::BrickGrid::cellIsBrick(c)) live.push_back(world::BrickGrid::cellBrick(c));
         }
+        uploadBricks(grid, live, uploader);
+        stats.bricks = static_cast<std::uint32_t>(live.size());
     } else {
         std::vector<std::uint32_t> dirty(grid.dirtyCells().begin(), grid.dirtyCells().end());
         std::sort(dirty.begin(), dirty.end());
@@ -70,10 +70,9 @@ WorldUploadStats GpuWorld::sync(world::Scene& scene, gpu::Uploader& uploader) {
             i = j;
         }
         stats.cells = static_cast<std::uint32_t>(dirty.size());
-        for (std::uint32_t brick : grid.dirtyBricks()) {
-            uploadBrick(grid, brick, uploader);
-            ++stats.bricks;
-        }
+        std::vector<std::uint32_t> bricks(grid.dirtyBricks().begin(), grid.dirtyBricks().end());
+        uploadBricks(grid, bricks, uploader);
+        stats.bricks = static_cast<std::uint32_t>(bricks.size());
     }
     stats.bytes += std::uint64_t(stats.bricks) * (kMaskBytes + kMaterialBytes);
 
@@ -103,12 +102,21 @@ void GpuWorld::ensurePages(std::uint32_t brickCapacity, gpu::Uploader& uploader)
     uploader.write(mPageTable, 0, addresses.data(), addresses.size() * sizeof(std::uint64_t));
 }
 
-void GpuWorld::uploadBrick(const world::BrickGrid& grid, std::uint32_t brick, gpu::Uploader& uploader) {
-    const gpu::Buffer& page = mPages[brick >> shared::BRICK_PAGE_SHIFT];
-    std::uint64_t local = brick & (shared::BRICK_PAGE_BRICKS - 1u);
-    uploader.write(page, local * kMaskBytes, grid.brickMask(brick).words.data(), kMaskBytes);
-    uploader.write(page, std::uint64_t(shared::BRICK_PAGE_MATERIAL_OFFSET) * 4u + local * kMaterialBytes,
-                   grid.brickVoxels(brick).data(), kMaterialBytes);
+void GpuWorld::uploadBricks(const world::BrickGrid& grid, std::vector<std::uint32_t>& bricks, gpu::Uploader& uploader) {
+    // Sorted, masks first and materials second: runs of neighbouring bricks then merge into one
+    // copy region each (the uploader joins adjacent regions).
+    std::sort(bricks.begin(), bricks.end());
+    for (std::uint32_t brick : bricks) {
+        std::uint64_t local = brick & (shared::BRICK_PAGE_BRICKS - 1u);
+        uploader.write(mPages[brick >> shared::BRICK_PAGE_SHIFT], local * kMaskBytes, grid.brickMask(brick).words.data(),
+                       kMaskBytes);
+    }
+    for (std::uint32_t brick : bricks) {
+        std::uint64_t local = brick & (shared::BRICK_PAGE_BRICKS - 1u);
+        uploader.write(mPages[brick >> shared::BRICK_PAGE_SHIFT],
+                       std::uint64_t(shared::BRICK_PAGE_MATERIAL_OFFSET) * 4u + local * kMaterialBytes,
+                       grid.brickVoxels(brick).data(), kMaterialBytes);
+    }
 }
 
 GpuWorldMemory GpuWorld::memory() const {

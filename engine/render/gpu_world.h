@@ -53,7 +53,7 @@ public:
 
 private:
     void ensurePages(std::uint32_t brickCapacity, gpu::Uploader& uploader);
-    void uploadBrick(const world::BrickGrid& grid, std::uint32_t brick, gpu::Uploader& uploader);
+    void uploadBricks(const world::BrickGrid& grid, std::vector<std::uint32_t>& bricks, gpu::Uploader& uploader);
 
     gpu::Context& mCtx;
     glm::ivec3 mSizeInCells{0};

@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# Bad input to `vox` gives one line on stderr that names the file (and line), a non-zero exit,
+# and no crash; a good render writes a PNG.
+set -u
+vox="$1"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+failures=0
+
+expect_error() {  # expect_error PATTERN -- command...
+    local pattern="$1"; shift 2
+    local err rc
+    err=$("$@" 2>&1 >/dev/null); rc=$?
+    local lines
+    lines=$(printf '%s\n' "$err" | grep -c .)
+    if [ "$rc" -eq 0 ] || [ "$rc" -ge 128 ]; then
+        echo "FAIL: '$*' exited $rc (want 1..127)"; failures=$((failures + 1)); return
+    fi
+    if [ "$lines" -ne 1 ] || ! printf "%s" "$err" | grep -qE -- "$pattern"; then
+        echo "FAIL: '$*' printed:"; printf '%s\n' "$err"; echo "  (want one line matching: $pattern)"
+        failures=$((failures + 1)); return
+    fi
+    echo "ok: $err"
+}
+
+printf '[world]\nsize = [16, 16, 16]\n[[material]]\nname = "a"\n[[generator]]\ntype = "terain"\n' > "$tmp/typo.toml"
+printf '[world]\nsize = [16, 16\n' > "$tmp/syntax.toml"
+printf '[world]\nsize = [100000, 100000, 100000]\n' > "$tmp/huge.toml"
+head -c 3000 /dev/urandom > "$tmp/random.toml"
+
+expect_error "typo.toml:6: unknown generator 'terain'" -- "$vox" render "$tmp/typo.toml" -o "$tmp/a.png"
+expect_error "syntax.toml:2:" -- "$vox" info "$tmp/syntax.toml"
+expect_error "huge.toml:2: world size 100000x100000x100000 is outside" -- "$vox" info "$tmp/huge.toml"
+expect_error "random.toml" -- "$vox" info "$tmp/random.toml"
+expect_error "nosuchworld: no such world" -- "$vox" render nosuchworld
+expect_error "--size: expected WIDTHxHEIGHT" -- "$vox" render --size 12by4
+expect_error "--size: 0x10 is outside" -- "$vox" render --size 0x10
+expect_error "must end in .png or .exr" -- "$vox" render -o "$tmp/out.jpg"
+expect_error "no camera named 'nope'" -- "$vox" render --camera nope -o "$tmp/a.png"
+expect_error "--pos: expected x,y,z" -- "$vox" render --pos 1,2 --target 3,4,5 -o "$tmp/a.png"
+expect_error "unknown|not expected|Extraction" -- "$vox" render --bogus
+
+out=$("$vox" render --size 64x40 -o "$tmp/ok.png" 2>&1); rc=$?
+if [ $rc -ne 0 ] || ! grep -q "wrote    $tmp/ok.png" <<<"$out" || [ "$(head -c 4 "$tmp/ok.png" | tail -c 3)" != "PNG" ]; then
+    echo "FAIL: a good render did not write a PNG:"; echo "$out"; failures=$((failures + 1))
+else
+    echo "ok: good render wrote a PNG"
+fi
+
+[ $failures -eq 0 ] || { echo "$failures failure(s)"; exit 1; }

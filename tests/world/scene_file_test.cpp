@@ -1,0 +1,105 @@
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "world/generators.h"
+#include "world/scene_file.h"
+#include "world/world_info.h"
+
+using namespace engine::world;
+
+namespace {
+
+std::string errorOf(const std::string& text) {
+    auto scene = loadSceneText(text, "test.toml");
+    EXPECT_FALSE(scene.ok()) << "expected an error for:\n" << text;
+    return scene.ok() ? std::string() : scene.error().message;
+}
+
+const char* kMinimal = R"([world]
+size = [16, 16, 16]
+[[material]]
+name = "stone"
+)";
+
+}  // namespace
+
+TEST(SceneFile, EveryShippedWorldLoads) {
+    int count = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(VOX_SOURCE_DIR) / "worlds")) {
+        if (entry.path().extension() != ".toml") continue;
+        auto scene = loadSceneFile(entry.path());
+        ASSERT_TRUE(scene.ok()) << scene.error().message;
+        EXPECT_GT(scene->grid.solidVoxels(), 0u) << entry.path();
+        EXPECT_FALSE(scene->cameras.empty()) << entry.path();
+        EXPECT_TRUE(scene->grid.dirtyBricks().empty()) << "a freshly loaded world has nothing pending";
+        ++count;
+    }
+    EXPECT_GE(count, 3);
+}
+
+TEST(SceneFile, ErrorsNameTheFileAndLine) {
+    std::string e = errorOf(std::string(kMinimal) + "\n[[generator]]\ntype = \"terain\"\n");
+    EXPECT_EQ(e, "test.toml:7: unknown generator 'terain' (known: terrain, box, sphere, cornell, buildings, lamps)");
+    e = errorOf(std::string(kMinimal) + "albdo = [1, 1, 1]\n");
+    EXPECT_EQ(e, "test.toml:5: unknown key 'albdo'");
+    e = errorOf(std::string(kMinimal) + "[[generator]]\ntype = \"box\"\nmin = [0,0,0]\nmax = [4,4,4]\nmaterial = \"gold\"\n");
+    EXPECT_EQ(e, "test.toml:9: unknown material 'gold'");
+    e = errorOf("[world]\nsize = [16, 16\n");
+    EXPECT_NE(e.find("test.toml:2:"), std::string::npos) << e;
+    e = errorOf("[[material]]\nname = \"x\"\n");
+    EXPECT_NE(e.find("missing [world]"), std::string::npos) << e;
+}
+
+TEST(SceneFile, AbsurdSizesAreRefused) {
+    std::string e = errorOf("[world]\nsize = [32768, 32768, 32768]\n");
+    EXPECT_NE(e.find("test.toml:2: world size 32768x32768x32768 needs"), std::string::npos) << e;
+    e = errorOf("[world]\nsize = [0, 16, 16]\n");
+    EXPECT_NE(e.find("outside 1..32768"), std::string::npos) << e;
+    e = errorOf("[world]\nsize = [1.5, 16, 16]\n");
+    EXPECT_NE(e.find("whole numbers"), std::string::npos) << e;
+}
+
+TEST(SceneFile, CornellBoxHasTheThesisLight) {
+    auto scene = loadSceneFile(std::filesystem::path(VOX_SOURCE_DIR) / "worlds/cornell.toml");
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    EXPECT_EQ(scene->emissiveVoxels(), 131072u);  // 256 bricks of 8^3
+    MaterialId light = *scene->palette.find("light");
+    int lightCells = 0;
+    for (std::uint32_t c : scene->grid.cells()) lightCells += c == (shared::CELL_HOMOGENEOUS | light);
+    EXPECT_EQ(lightCells, 256) << "each emissive brick is a homogeneous cell (a brick light)";
+}
+
+// Memory follows content: doubling the air above a terrain adds only top-grid cells.
+TEST(SceneFile, EmptyAirCostsOnlyTopGridCells) {
+    TerrainParams p;
+    p.top = 1;
+    p.soil = 2;
+    p.rock = 3;
+    p.baseHeight = 96;
+    p.amplitude = 64;
+    p.wavelength = 300;
+    p.octaves = 5;
+    BrickGrid low({1024, 256, 1024}), high({1024, 512, 1024});
+    generateTerrain(low, p);
+    generateTerrain(high, p);
+    EXPECT_EQ(low.liveBricks(), high.liveBricks());
+    EXPECT_EQ(low.memory().brickPoolBytes, high.memory().brickPoolBytes);
+    std::size_t extraCells = high.cells().size() - low.cells().size();
+    EXPECT_EQ(extraCells, 128u * 32u * 128u);
+    EXPECT_EQ(high.memory().topGridBytes - low.memory().topGridBytes, extraCells * sizeof(std::uint32_t));
+    // The pool holds only non-uniform bricks: far fewer than the cells the terrain touches.
+    EXPECT_LT(low.liveBricks(), low.cells().size() / 10);
+    for (std::uint32_t c : low.cells()) {
+        if (BrickGrid::cellIsBrick(c)) {
+            ASSERT_FALSE(isUniform(low.brickVoxels(BrickGrid::cellBrick(c))));
+        }
+    }
+    Scene scene;
+    for (const char* name : {"grass", "dirt", "stone"}) (void)scene.palette.add(Material{name});
+    scene.grid = std::move(low);
+    WorldInfo info = describeWorld(scene);
+    EXPECT_EQ(info.topGridBytes, 128u * 32u * 128u * 4u);
+    EXPECT_EQ(info.brickPoolBytes, info.bricks * (1024u + 80u));
+}

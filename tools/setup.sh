@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Installs what is missing (Debian 12 packages), then configures and builds the release preset.
+# Idempotent: a second run only rebuilds what changed. Usage: bash tools/setup.sh [preset]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+preset="${1:-release}"
+
+packages=(
+  build-essential cmake ninja-build pkg-config git
+  libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
+  glslang-tools glslang-dev spirv-tools
+  libglfw3-dev libglm-dev libopenvdb-dev libopenvdb-tools
+  libgtest-dev libgmock-dev libbenchmark-dev
+  libstb-dev libopenexr-dev libtomlplusplus-dev libcli11-dev libfmt-dev libspdlog-dev libimgui-dev
+  python3 python3-matplotlib xvfb clang
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${#missing[@]} missing package(s): ${missing[*]}"
+  sudo=""
+  if [ "$(id -u)" -ne 0 ]; then
+    command -v sudo >/dev/null || { echo "setup: run as root or install sudo" >&2; exit 1; }
+    sudo="sudo"
+  fi
+  export DEBIAN_FRONTEND=noninteractive
+  $sudo apt-get update -qq
+  $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+echo "setup: building preset '$preset'"
+cmake --preset "$preset" >/dev/null
+cmake --build --preset "$preset"
