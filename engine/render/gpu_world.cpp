@@ -23,9 +23,7 @@ bool samePalette(const std::vector<shared::GpuMaterial>& a, const std::vector<sh
 }
 }  // namespace
 
-GpuWorld::GpuWorld(gpu::Context& ctx) : mCtx(ctx) {
-    mInfo = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::BrickGridInfo), "world.info");
-}
+GpuWorld::GpuWorld(gpu::Context& ctx) : mCtx(ctx) {}
 
 WorldUploadStats GpuWorld::sync(world::Scene& scene, gpu::Uploader& uploader) {
     world::BrickGrid& grid = scene.grid;
@@ -48,6 +46,11 @@ WorldUploadStats GpuWorld::sync(world::Scene& scene, gpu::Uploader& uploader) {
         mSizeInCells = grid.sizeInCells();
         std::span<const std::uint32_t> cells = grid.cells();
         mCells = gpu::Buffer(mCtx, gpu::BufferKind::Storage, cells.size_bytes(), "world.cells");
+        std::span<const std::uint32_t> supers = grid.superCells();
+        mInfo = gpu::Buffer(mCtx, gpu::BufferKind::Storage, sizeof(shared::BrickGridInfo) + supers.size_bytes(),
+                            "world.info");
+        uploader.write(mInfo, sizeof(shared::BrickGridInfo), supers.data(), supers.size_bytes());
+        stats.bytes += supers.size_bytes();
         uploader.write(mCells, 0, cells.data(), cells.size_bytes());
         stats.cells = static_cast<std::uint32_t>(cells.size());
         stats.bytes += cells.size_bytes();
@@ -70,6 +73,11 @@ WorldUploadStats GpuWorld::sync(world::Scene& scene, gpu::Uploader& uploader) {
             i = j;
         }
         stats.cells = static_cast<std::uint32_t>(dirty.size());
+        std::span<const std::uint32_t> supers = grid.superCells();
+        for (std::uint32_t s : grid.dirtySuperCells()) {
+            uploader.write(mInfo, sizeof(shared::BrickGridInfo) + std::uint64_t(s) * 4u, &supers[s], 4u);
+            stats.bytes += 4u;
+        }
         std::vector<std::uint32_t> bricks(grid.dirtyBricks().begin(), grid.dirtyBricks().end());
         uploadBricks(grid, bricks, uploader);
         stats.bricks = static_cast<std::uint32_t>(bricks.size());
@@ -79,6 +87,7 @@ WorldUploadStats GpuWorld::sync(world::Scene& scene, gpu::Uploader& uploader) {
     shared::BrickGridInfo info{};
     info.sizeInCells = glm::ivec4(grid.sizeInCells(), 0);
     info.sizeInVoxels = glm::ivec4(grid.sizeInVoxels(), 0);
+    info.sizeInSuperCells = glm::ivec4(grid.sizeInSuperCells(), 0);
     info.counts = glm::uvec4(grid.liveBricks(), static_cast<std::uint32_t>(mPages.size()),
                              static_cast<std::uint32_t>(scene.palette.size()), 0u);
     uploader.write(mInfo, 0, &info, sizeof(info));

@@ -20,6 +20,10 @@ BrickGrid::BrickGrid(glm::ivec3 sizeInVoxels) {
     std::size_t count = static_cast<std::size_t>(mSizeInCells.x) * mSizeInCells.y * mSizeInCells.z;
     mCells.assign(count, shared::CELL_EMPTY);
     mCellDirty.assign(count, 0);
+    mSizeInSuperCells = (mSizeInCells + 3) / 4;
+    std::size_t supers = static_cast<std::size_t>(mSizeInSuperCells.x) * mSizeInSuperCells.y * mSizeInSuperCells.z;
+    mSuperCells.assign(supers, 0);
+    mSuperDirty.assign(supers, 0);
 }
 
 MaterialId BrickGrid::get(glm::ivec3 p) const {
@@ -111,6 +115,8 @@ std::uint64_t BrickGrid::solidVoxels() const {
 void BrickGrid::clearDirty() {
     for (std::uint32_t b : mDirtyBricks) mBrickDirty[b] = 0;
     for (std::uint32_t c : mDirtyCells) mCellDirty[c] = 0;
+    for (std::uint32_t s : mDirtySuperCells) mSuperDirty[s] = 0;
+    mDirtySuperCells.clear();
     mDirtyBricks.clear();
     mDirtyCells.clear();
 }
@@ -119,10 +125,12 @@ GridMemory BrickGrid::memory() const {
     constexpr std::size_t kBrickBytes = sizeof(BrickVoxels) + sizeof(BrickMask);
     GridMemory m;
     m.topGridBytes = mCells.size() * sizeof(std::uint32_t);
+    m.superGridBytes = mSuperCells.size() * sizeof(std::uint32_t);
     m.brickPoolBytes = mBrickVoxels.size() * kBrickBytes;
     m.liveBrickBytes = liveBricks() * kBrickBytes;
     m.bookkeepingBytes = mFreeBricks.size() * sizeof(std::uint32_t) + mBrickDirty.size() + mCellDirty.size() +
-                         (mDirtyBricks.size() + mDirtyCells.size()) * sizeof(std::uint32_t);
+                         mSuperDirty.size() +
+                         (mDirtyBricks.size() + mDirtyCells.size() + mDirtySuperCells.size()) * sizeof(std::uint32_t);
     return m;
 }
 
@@ -156,8 +164,21 @@ std::uint32_t BrickGrid::allocateBrick() {
 void BrickGrid::freeBrick(std::uint32_t brick) { mFreeBricks.push_back(brick); }
 
 void BrickGrid::setCell(std::size_t index, std::uint32_t value) {
-    if (mCells[index] == value) return;
+    std::uint32_t old = mCells[index];
+    if (old == value) return;
     mCells[index] = value;
+    if ((old == shared::CELL_EMPTY) != (value == shared::CELL_EMPTY)) {
+        std::size_t x = index % mSizeInCells.x, yz = index / mSizeInCells.x;
+        std::size_t y = yz % mSizeInCells.y, z = yz / mSizeInCells.y;
+        std::size_t s = superCellIndex(glm::ivec3(int(x >> 2), int(y >> 2), int(z >> 2)));
+        std::uint32_t& count = mSuperCells[s];
+        bool wasEmpty = count == 0;
+        count = value == shared::CELL_EMPTY ? count - 1 : count + 1;
+        if (wasEmpty != (count == 0) && !mSuperDirty[s]) {
+            mSuperDirty[s] = 1;
+            mDirtySuperCells.push_back(static_cast<std::uint32_t>(s));
+        }
+    }
     if (!mCellDirty[index]) {
         mCellDirty[index] = 1;
         mDirtyCells.push_back(static_cast<std::uint32_t>(index));

@@ -31,6 +31,7 @@ struct Box {
 
 struct GridMemory {
     std::size_t topGridBytes = 0;
+    std::size_t superGridBytes = 0;  // the occupancy summary over 4^3 cells (1/64 of the top grid)
     std::size_t brickPoolBytes = 0;  // capacity of the pool (live + free bricks), voxels + masks
     std::size_t liveBrickBytes = 0;  // live bricks only
     std::size_t bookkeepingBytes = 0;  // free list and dirty flags
@@ -42,6 +43,7 @@ public:
     explicit BrickGrid(glm::ivec3 sizeInVoxels);
 
     glm::ivec3 sizeInCells() const { return mSizeInCells; }
+    glm::ivec3 sizeInSuperCells() const { return mSizeInSuperCells; }
     glm::ivec3 sizeInVoxels() const { return mSizeInCells * kBrickDim; }
     Box bounds() const { return {glm::ivec3(0), sizeInVoxels()}; }
     bool contains(glm::ivec3 p) const { return bounds().contains(p); }
@@ -61,6 +63,13 @@ public:
     }
     std::uint32_t cell(glm::ivec3 c) const { return mCells[cellIndex(c)]; }
     std::span<const std::uint32_t> cells() const { return mCells; }
+    // Super cells (4^3 cells): the number of non-empty cells in each, for skipping open air.
+    std::size_t superCellIndex(glm::ivec3 s) const {
+        return static_cast<std::size_t>(s.x) +
+               static_cast<std::size_t>(mSizeInSuperCells.x) *
+                   (static_cast<std::size_t>(s.y) + static_cast<std::size_t>(mSizeInSuperCells.y) * s.z);
+    }
+    std::span<const std::uint32_t> superCells() const { return mSuperCells; }
     BrickVoxels readCell(glm::ivec3 c) const;           // expands homogeneous cells
     void writeCell(glm::ivec3 c, const BrickVoxels& v);  // collapses uniform bricks
     void writeCellUniform(glm::ivec3 c, MaterialId material);
@@ -82,6 +91,7 @@ public:
     // Dirty tracking for the GPU mirror.
     std::span<const std::uint32_t> dirtyBricks() const { return mDirtyBricks; }
     std::span<const std::uint32_t> dirtyCells() const { return mDirtyCells; }
+    std::span<const std::uint32_t> dirtySuperCells() const { return mDirtySuperCells; }
     void clearDirty();
 
     GridMemory memory() const;
@@ -94,7 +104,11 @@ private:
     void markBrickDirty(std::uint32_t brick);
 
     glm::ivec3 mSizeInCells;
+    glm::ivec3 mSizeInSuperCells;
     std::vector<std::uint32_t> mCells;
+    std::vector<std::uint32_t> mSuperCells;
+    std::vector<std::uint8_t> mSuperDirty;
+    std::vector<std::uint32_t> mDirtySuperCells;
     std::vector<BrickVoxels> mBrickVoxels;
     std::vector<BrickMask> mBrickMasks;
     std::vector<std::uint32_t> mFreeBricks;

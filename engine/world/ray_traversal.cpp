@@ -64,10 +64,13 @@ RayHit traceRay(const BrickGrid& grid, const Ray& ray, TraversalMode mode) {
     float t = tEnter;
 
     const std::span<const std::uint32_t> cells = grid.cells();
+    const std::span<const std::uint32_t> supers = grid.superCells();
     for (std::uint32_t steps = 1; steps <= shared::TRAVERSAL_MAX_STEPS; ++steps) {
-        std::uint32_t cell = cells[grid.cellIndex(v >> 3)];
         int s = 1;
-        if (cell == shared::CELL_EMPTY) {
+        std::uint32_t cell = 0;
+        if (hierarchical && supers[grid.superCellIndex(v >> int(shared::SUPER_SHIFT))] == 0) {
+            s = 32;
+        } else if ((cell = cells[grid.cellIndex(v >> 3)]) == shared::CELL_EMPTY) {
             s = 8;
         } else if (cell & shared::CELL_HOMOGENEOUS) {
             return RayHit{true, v, face, t, static_cast<MaterialId>(cell & shared::CELL_MATERIAL_MASK), steps};

@@ -3,9 +3,9 @@
 // and CPU agree hit for hit except in grazing cases at cell boundaries.
 //
 // The walk restarts a DDA step from the ray origin at every cell: it looks up the coarsest
-// level that is empty around the current voxel (8^3 cell, 4^3 or 2^3 block, voxel) and jumps
-// to where the ray leaves that block. Empty cells, and empty space inside bricks, cost one
-// step per block instead of one per voxel.
+// level that is empty around the current voxel (32^3 super cell, 8^3 cell, 4^3 or 2^3 block,
+// voxel) and jumps to where the ray leaves that block. Open air, empty cells and empty space
+// inside bricks cost one step per block instead of one per voxel.
 #pragma once
 
 #include <cstdint>
@@ -33,7 +33,7 @@ struct RayHit {
 };
 
 enum class TraversalMode {
-    Hierarchical,   // skips empty 4^3 and 2^3 blocks inside bricks (the engine's default)
+    Hierarchical,   // skips empty super cells, and empty 4^3 and 2^3 blocks inside bricks (default)
     PlainTwoLevel,  // cells, then every voxel of a non-empty brick: the classic baseline
 };
 

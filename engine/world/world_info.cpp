@@ -27,6 +27,7 @@ WorldInfo describeWorld(const Scene& scene) {
     info.materials = scene.palette.size() - 1;
     GridMemory m = g.memory();
     info.topGridBytes = m.topGridBytes;
+    info.superGridBytes = m.superGridBytes;
     info.brickPoolBytes = m.brickPoolBytes;
     info.bookkeepingBytes = m.bookkeepingBytes;
     info.paletteBytes = scene.palette.gpuBytes();
@@ -45,6 +46,8 @@ std::string formatWorldInfo(const WorldInfo& i, const std::string& title) {
     s += fmt::format("materials    {}\n", i.materials);
     s += "memory\n";
     s += fmt::format("  top grid     {:>12}  ({} bytes)\n", bytes(i.topGridBytes), i.topGridBytes);
+    s += fmt::format("  super grid   {:>12}  ({} bytes: non-empty cells per 4^3 cells)\n", bytes(i.superGridBytes),
+                     i.superGridBytes);
     s += fmt::format("  brick pool   {:>12}  ({} bytes: 1024 voxel + 80 mask bytes per brick)\n",
                      bytes(i.brickPoolBytes), i.brickPoolBytes);
     s += fmt::format("  palette      {:>12}  ({} bytes)\n", bytes(i.paletteBytes), i.paletteBytes);
@@ -59,9 +62,9 @@ std::string worldInfoJson(const WorldInfo& i) {
     return fmt::format(
         "{{\"size\": [{}, {}, {}], \"cells\": {}, \"empty_cells\": {}, \"homogeneous_cells\": {}, \"bricks\": {}, "
         "\"free_bricks\": {}, \"solid_voxels\": {}, \"emissive_voxels\": {}, \"materials\": {}, "
-        "\"bytes\": {{\"top_grid\": {}, \"brick_pool\": {}, \"palette\": {}, \"bookkeeping\": {}, \"total\": {}}}}}",
+        "\"bytes\": {{\"top_grid\": {}, \"super_grid\": {}, \"brick_pool\": {}, \"palette\": {}, \"bookkeeping\": {}, \"total\": {}}}}}",
         i.sizeInVoxels.x, i.sizeInVoxels.y, i.sizeInVoxels.z, i.cells, i.emptyCells, i.homogeneousCells, i.bricks,
-        i.freeBricks, i.solidVoxels, i.emissiveVoxels, i.materials, i.topGridBytes, i.brickPoolBytes, i.paletteBytes,
+        i.freeBricks, i.solidVoxels, i.emissiveVoxels, i.materials, i.topGridBytes, i.superGridBytes, i.brickPoolBytes, i.paletteBytes,
         i.bookkeepingBytes, i.totalBytes());
 }
 

@@ -21,10 +21,11 @@ struct WorldInfo {
     std::uint64_t emissiveVoxels = 0;
     std::size_t materials = 0;
     std::size_t topGridBytes = 0;
+    std::size_t superGridBytes = 0;
     std::size_t brickPoolBytes = 0;
     std::size_t paletteBytes = 0;
     std::size_t bookkeepingBytes = 0;
-    std::size_t totalBytes() const { return topGridBytes + brickPoolBytes + paletteBytes + bookkeepingBytes; }
+    std::size_t totalBytes() const { return topGridBytes + superGridBytes + brickPoolBytes + paletteBytes + bookkeepingBytes; }
 };
 
 WorldInfo describeWorld(const Scene& scene);

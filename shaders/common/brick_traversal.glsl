@@ -1,7 +1,7 @@
 // Ray traversal of the two-level brick grid. Mirrors engine/world/ray_traversal.cpp operation for
 // operation (`precise` here, -ffp-contract=off there) so both agree hit for hit; read that file
-// for the method. Each step finds the coarsest empty block around the current voxel (8^3 cell,
-// 4^3, 2^3, voxel) and jumps to where the ray leaves it.
+// for the method. Each step finds the coarsest empty block around the current voxel (32^3 super
+// cell, 8^3 cell, 4^3, 2^3, voxel) and jumps to where the ray leaves it.
 #ifndef COMMON_BRICK_TRAVERSAL_GLSL
 #define COMMON_BRICK_TRAVERSAL_GLSL
 
@@ -59,9 +59,11 @@ TraceResult traceRay(vec3 o, vec3 d, float tMax, bool hierarchical) {
     precise float t = tEnter;
 
     for (uint steps = 1u; steps <= TRAVERSAL_MAX_STEPS; ++steps) {
-        uint cell = worldCell(v >> 3);
         int s = 1;
-        if (cell == CELL_EMPTY) {
+        uint cell = 0u;
+        if (hierarchical && worldSuperCell(v >> SUPER_SHIFT) == 0u) {
+            s = 32;
+        } else if ((cell = worldCell(v >> 3)) == CELL_EMPTY) {
             s = 8;
         } else if ((cell & CELL_HOMOGENEOUS) != 0u) {
             return TraceResult(true, v, face, t, cell & CELL_MATERIAL_MASK, steps);

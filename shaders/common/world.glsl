@@ -11,7 +11,10 @@
 
 layout(buffer_reference, std430, buffer_reference_align = 4) readonly buffer BrickPage { uint words[]; };
 
-layout(set = 0, binding = WORLD_BINDING_INFO, std430) readonly buffer WorldInfoBuffer { BrickGridInfo gWorld; };
+layout(set = 0, binding = WORLD_BINDING_INFO, std430) readonly buffer WorldInfoBuffer {
+    BrickGridInfo gWorld;
+    uint gSuperCells[];  // non-empty cells per 4^3 cells
+};
 layout(set = 0, binding = WORLD_BINDING_CELLS, std430) readonly buffer CellBuffer { uint gCells[]; };
 layout(set = 0, binding = WORLD_BINDING_PAGES, std430) readonly buffer PageTable { uint64_t gPages[]; };
 layout(set = 0, binding = WORLD_BINDING_PALETTE, std430) readonly buffer PaletteBuffer { GpuMaterial gMaterials[]; };
@@ -19,6 +22,11 @@ layout(set = 0, binding = WORLD_BINDING_PALETTE, std430) readonly buffer Palette
 uint worldCell(ivec3 cell) {
     ivec3 s = gWorld.sizeInCells.xyz;
     return gCells[uint(cell.x) + uint(s.x) * (uint(cell.y) + uint(s.y) * uint(cell.z))];
+}
+
+uint worldSuperCell(ivec3 s) {
+    ivec3 n = gWorld.sizeInSuperCells.xyz;
+    return gSuperCells[uint(s.x) + uint(n.x) * (uint(s.y) + uint(n.y) * uint(s.z))];
 }
 
 uint brickMaskWord(uint brick, uint word) {

@@ -1,5 +1,7 @@
 // Two-level brick grid as the GPU sees it (and the CPU stores it — same layout).
 //
+// Super grid: one uint per 4^3 cells (32^3 voxels) counting its non-empty cells, so rays cross
+// open air 32 voxels at a step. It follows BrickGridInfo in the same buffer.
 // Top grid: one uint per 8^3 cell, x fastest:
 //   0                         empty cell
 //   CELL_HOMOGENEOUS | mat    every voxel of the cell is material `mat` (no brick storage)
@@ -16,6 +18,7 @@ SHARED_BEGIN
 SHARED_CONST uint BRICK_DIM = 8u;
 SHARED_CONST uint BRICK_SHIFT = 3u;
 SHARED_CONST uint BRICK_VOXELS = 512u;
+SHARED_CONST uint SUPER_SHIFT = 5u;  // a super cell spans 32 voxels = 4 cells per axis
 SHARED_CONST uint CELL_EMPTY = 0u;
 SHARED_CONST uint CELL_HOMOGENEOUS = 0x80000000u;
 SHARED_CONST uint CELL_MATERIAL_MASK = 0xFFFFu;
@@ -45,9 +48,10 @@ SHARED_CONST uint TRAVERSAL_MAX_STEPS = 16384u;
 struct BrickGridInfo {
     ivec4 sizeInCells;   // xyz: top-grid size in cells, w unused
     ivec4 sizeInVoxels;  // xyz: sizeInCells * 8
+    ivec4 sizeInSuperCells;  // xyz: ceil(sizeInCells / 4)
     uvec4 counts;        // x: allocated bricks, y: pages, z: materials, w: unused
 };
-SHARED_ASSERT_SIZE(BrickGridInfo, 48);
+SHARED_ASSERT_SIZE(BrickGridInfo, 64);
 
 SHARED_END
 

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <vector>
 
 #include "core/hash.h"
@@ -41,6 +42,13 @@ TEST(BrickGrid, RandomSetGetMatchesDenseModel) {
     for (int z = 0; z < size.z; ++z)
         for (int y = 0; y < size.y; ++y)
             for (int x = 0; x < size.x; ++x) ASSERT_EQ(grid.get({x, y, z}), dense.at({x, y, z})) << x << "," << y << "," << z;
+    // Each super cell counts exactly the non-empty cells under it.
+    std::vector<std::uint32_t> counts(grid.superCells().size(), 0);
+    for (int z = 0; z < grid.sizeInCells().z; ++z)
+        for (int y = 0; y < grid.sizeInCells().y; ++y)
+            for (int x = 0; x < grid.sizeInCells().x; ++x)
+                counts[grid.superCellIndex(glm::ivec3(x, y, z) >> 2)] += grid.cell({x, y, z}) != shared::CELL_EMPTY;
+    EXPECT_TRUE(std::equal(counts.begin(), counts.end(), grid.superCells().begin()));
     // Every live brick's masks agree with its voxels.
     for (std::uint32_t c : grid.cells()) {
         if (!BrickGrid::cellIsBrick(c)) continue;
