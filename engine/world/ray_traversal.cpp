@@ -27,8 +27,13 @@ RayHit traceRay(const BrickGrid& grid, const Ray& ray, TraversalMode mode) {
     const glm::ivec3 size = grid.sizeInVoxels();
     const bool hierarchical = mode == TraversalMode::Hierarchical;
 
-    // Clip the ray to the world box (slab test); an axis with d == 0 never bounds t.
-    glm::vec3 inv(0.0f);
+    if (d == glm::vec3(0.0f)) return miss(0);
+
+    // Clip the ray to the world box (slab test); an axis with d == 0 never bounds t. Such an
+    // axis gets inv = +inf and counts as positive, so its exit distance below is always +inf.
+    constexpr float kInf = std::numeric_limits<float>::infinity();
+    const glm::bvec3 positive = glm::greaterThanEqual(d, glm::vec3(0.0f));
+    glm::vec3 inv(kInf);
     float tEnter = 0.0f;
     float tExit = ray.tMax;
     int enterAxis = -1;
@@ -50,16 +55,12 @@ RayHit traceRay(const BrickGrid& grid, const Ray& ray, TraversalMode mode) {
     }
     if (tEnter > tExit) return miss(0);
 
-    glm::ivec3 v;
-    for (int a = 0; a < 3; ++a) {
-        float p = o[a] + tEnter * d[a];
-        v[a] = std::clamp(int(std::floor(p)), 0, size[a] - 1);
-    }
+    // p >= -epsilon here, so truncation equals floor after the clamp (and is cheaper).
+    glm::ivec3 v = glm::clamp(glm::ivec3(o + tEnter * d), glm::ivec3(0), size - 1);
     std::uint32_t face = shared::FACE_INSIDE;
     if (enterAxis >= 0) {
-        bool positive = d[enterAxis] > 0.0f;
-        v[enterAxis] = positive ? 0 : size[enterAxis] - 1;
-        face = std::uint32_t(enterAxis * 2 + (positive ? 0 : 1));
+        v[enterAxis] = positive[enterAxis] ? 0 : size[enterAxis] - 1;
+        face = std::uint32_t(enterAxis * 2 + (positive[enterAxis] ? 0 : 1));
     }
     float t = tEnter;
 
@@ -87,29 +88,18 @@ RayHit traceRay(const BrickGrid& grid, const Ray& ray, TraversalMode mode) {
             }
         }
 
-        // Leave the empty block of size s that contains v.
+        // Leave the empty block of size s that contains v: the nearest exit plane (ties go to
+        // the lowest axis), the exit axis stepped exactly, the others clamped into the block.
         const glm::ivec3 lo = v & ~(s - 1);
-        float best = std::numeric_limits<float>::infinity();
-        int axis = 0;
-        for (int a = 0; a < 3; ++a) {
-            if (d[a] == 0.0f) continue;
-            int boundary = d[a] > 0.0f ? lo[a] + s : lo[a];
-            float ta = (float(boundary) - o[a]) * inv[a];
-            if (ta < best) {
-                best = ta;
-                axis = a;
-            }
-        }
+        const glm::vec3 boundary = glm::vec3(lo + glm::ivec3(positive) * s);
+        const glm::vec3 ta = (boundary - o) * inv;
+        const int axis = ta.x <= ta.y ? (ta.x <= ta.z ? 0 : 2) : (ta.y <= ta.z ? 1 : 2);
+        const float best = ta[axis];
         if (best > ray.tMax) return miss(steps);
-        for (int b = 0; b < 3; ++b) {
-            if (b == axis) continue;
-            float p = o[b] + best * d[b];
-            v[b] = std::clamp(int(std::floor(p)), lo[b], lo[b] + s - 1);
-        }
-        bool positive = d[axis] > 0.0f;
-        v[axis] = positive ? lo[axis] + s : lo[axis] - 1;
+        v = glm::clamp(glm::ivec3(o + best * d), lo, lo + (s - 1));  // lo >= 0: truncation = floor
+        v[axis] = positive[axis] ? lo[axis] + s : lo[axis] - 1;
         if (v[axis] < 0 || v[axis] >= size[axis]) return miss(steps);
-        face = std::uint32_t(axis * 2 + (positive ? 0 : 1));
+        face = std::uint32_t(axis * 2 + (positive[axis] ? 0 : 1));
         t = best;
     }
     return miss(shared::TRAVERSAL_MAX_STEPS);

@@ -23,7 +23,11 @@ TraceResult traceMiss(uint steps) {
 TraceResult traceRay(vec3 o, vec3 d, float tMax, bool hierarchical) {
     const ivec3 size = gWorld.sizeInVoxels.xyz;
 
-    precise vec3 inv = vec3(0.0);
+    if (d == vec3(0.0)) return traceMiss(0u);
+
+    const float kInf = uintBitsToFloat(0x7f800000u);
+    const bvec3 positive = greaterThanEqual(d, vec3(0.0));
+    precise vec3 inv = vec3(kInf);
     precise float tEnter = 0.0;
     precise float tExit = tMax;
     int enterAxis = -1;
@@ -45,16 +49,12 @@ TraceResult traceRay(vec3 o, vec3 d, float tMax, bool hierarchical) {
     }
     if (tEnter > tExit) return traceMiss(0u);
 
-    ivec3 v;
-    for (int a = 0; a < 3; ++a) {
-        precise float p = o[a] + tEnter * d[a];
-        v[a] = clamp(int(floor(p)), 0, size[a] - 1);
-    }
+    precise vec3 p0 = o + tEnter * d;
+    ivec3 v = clamp(ivec3(p0), ivec3(0), size - 1);  // p0 >= -epsilon: truncation = floor after the clamp
     uint face = FACE_INSIDE;
     if (enterAxis >= 0) {
-        bool positive = d[enterAxis] > 0.0;
-        v[enterAxis] = positive ? 0 : size[enterAxis] - 1;
-        face = uint(enterAxis * 2 + (positive ? 0 : 1));
+        v[enterAxis] = positive[enterAxis] ? 0 : size[enterAxis] - 1;
+        face = uint(enterAxis * 2 + (positive[enterAxis] ? 0 : 1));
     }
     precise float t = tEnter;
 
@@ -69,46 +69,37 @@ TraceResult traceRay(vec3 o, vec3 d, float tMax, bool hierarchical) {
             return TraceResult(true, v, face, t, cell & CELL_MATERIAL_MASK, steps);
         } else {
             uint brick = cell - 1u;
+            BrickPage page = BrickPage(gPages[brick >> BRICK_PAGE_SHIFT]);
+            uint maskBase = (brick & (BRICK_PAGE_BRICKS - 1u)) * BRICK_MASK_WORDS;
             ivec3 local = v & 7;
             ivec3 b4 = local >> 2;
             ivec3 b2 = local >> 1;
-            uint quarter = brickMaskWord(brick, MASK_QUARTER_WORD) >> uint(b4.x + 2 * b4.y + 4 * b4.z);
             int bit2 = b2.x + 4 * b2.y + 16 * b2.z;
-            if (hierarchical && (quarter & 1u) == 0u) {
+            if (hierarchical && ((page.words[maskBase + MASK_QUARTER_WORD] >> uint(b4.x + 2 * b4.y + 4 * b4.z)) & 1u) == 0u) {
                 s = 4;
             } else if (hierarchical &&
-                       ((brickMaskWord(brick, MASK_COARSE_WORD + uint(bit2 >> 5)) >> uint(bit2 & 31)) & 1u) == 0u) {
+                       ((page.words[maskBase + MASK_COARSE_WORD + uint(bit2 >> 5)] >> uint(bit2 & 31)) & 1u) == 0u) {
                 s = 2;
             } else {
                 int bit = local.x + 8 * local.y + 64 * local.z;
-                if (((brickMaskWord(brick, uint(bit >> 5)) >> uint(bit & 31)) & 1u) != 0u) {
+                if (((page.words[maskBase + uint(bit >> 5)] >> uint(bit & 31)) & 1u) != 0u) {
                     return TraceResult(true, v, face, t, brickMaterial(brick, uint(bit)), steps);
                 }
             }
         }
 
+        // Leave the empty block of size s around v (see ray_traversal.cpp).
         ivec3 lo = v & ~(s - 1);
-        precise float best = 1.0 / 0.0;
-        int axis = 0;
-        for (int a = 0; a < 3; ++a) {
-            if (d[a] == 0.0) continue;
-            int boundary = d[a] > 0.0 ? lo[a] + s : lo[a];
-            precise float ta = (float(boundary) - o[a]) * inv[a];
-            if (ta < best) {
-                best = ta;
-                axis = a;
-            }
-        }
+        precise vec3 boundary = vec3(lo + ivec3(positive) * s);
+        precise vec3 ta = (boundary - o) * inv;
+        int axis = ta.x <= ta.y ? (ta.x <= ta.z ? 0 : 2) : (ta.y <= ta.z ? 1 : 2);
+        precise float best = ta[axis];
         if (best > tMax) return traceMiss(steps);
-        for (int b = 0; b < 3; ++b) {
-            if (b == axis) continue;
-            precise float p = o[b] + best * d[b];
-            v[b] = clamp(int(floor(p)), lo[b], lo[b] + s - 1);
-        }
-        bool positive = d[axis] > 0.0;
-        v[axis] = positive ? lo[axis] + s : lo[axis] - 1;
+        precise vec3 p = o + best * d;
+        v = clamp(ivec3(p), lo, lo + (s - 1));  // lo >= 0: truncation = floor
+        v[axis] = positive[axis] ? lo[axis] + s : lo[axis] - 1;
         if (v[axis] < 0 || v[axis] >= size[axis]) return traceMiss(steps);
-        face = uint(axis * 2 + (positive ? 0 : 1));
+        face = uint(axis * 2 + (positive[axis] ? 0 : 1));
         t = best;
     }
     return traceMiss(TRAVERSAL_MAX_STEPS);

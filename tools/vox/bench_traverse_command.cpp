@@ -9,6 +9,7 @@
 #include <fstream>
 #include <thread>
 
+#include "classic_dda.h"
 #include "commands.h"
 #include "gpu/command_list.h"
 #include "gpu/context.h"
@@ -63,8 +64,8 @@ std::vector<Ray> shadowRays(const std::vector<Ray>& primary, const std::vector<R
     return out;
 }
 
-MethodResult benchCpu(const engine::world::BrickGrid& grid, const std::vector<Ray>& rays, TraversalMode mode,
-                      int repeats, const char* name) {
+template <typename Trace>
+MethodResult benchCpu(const std::vector<Ray>& rays, Trace&& trace, int repeats, const char* name) {
     unsigned threads = std::max(1u, std::thread::hardware_concurrency());
     MethodResult r;
     r.name = name;
@@ -79,7 +80,7 @@ MethodResult benchCpu(const engine::world::BrickGrid& grid, const std::vector<Ra
                 // Interleaved rows of 64 rays keep both threads' work even.
                 for (std::size_t base = t * 64; base < rays.size(); base += threads * 64) {
                     std::size_t end = std::min(rays.size(), base + 64);
-                    for (std::size_t i = base; i < end; ++i) s += engine::world::traceRay(grid, rays[i], mode).steps;
+                    for (std::size_t i = base; i < end; ++i) s += trace(rays[i]).steps;
                 }
                 steps[t] = s;
             });
@@ -177,10 +178,24 @@ int runBench(const BenchOptions& o) {
         results.push_back(r);
         std::printf("  %-28s done\n", r.name.c_str());
     }
-    results.push_back(benchCpu(scene->grid, rays, TraversalMode::Hierarchical, o.repeats, "cpu native hierarchical"));
+    const engine::world::BrickGrid& grid = scene->grid;
+    results.push_back(benchCpu(
+        rays, [&](const Ray& r) { return engine::world::traceRay(grid, r, TraversalMode::Hierarchical); }, o.repeats,
+        "cpu reference hierarchical"));
     std::printf("  %-28s done\n", results.back().name.c_str());
-    results.push_back(benchCpu(scene->grid, rays, TraversalMode::PlainTwoLevel, o.repeats, "cpu native plain two-level"));
+    results.push_back(benchCpu(
+        rays, [&](const Ray& r) { return engine::world::traceRay(grid, r, TraversalMode::PlainTwoLevel); }, o.repeats,
+        "cpu reference plain"));
     std::printf("  %-28s done\n", results.back().name.c_str());
+    results.push_back(benchCpu(rays, [&](const Ray& r) { return traceClassicTwoLevel(grid, r); }, o.repeats,
+                               "cpu classic two-level DDA"));
+    std::printf("  %-28s done\n", results.back().name.c_str());
+    // The classic DDA must find the same surfaces, or its speed means nothing.
+    std::uint64_t classicMismatches = 0;
+    for (std::size_t i = 0; i < primary.size(); ++i) {
+        RayHit c = traceClassicTwoLevel(grid, primary[i]);
+        classicMismatches += c.hit != hits[i].hit || (c.hit && c.voxel != hits[i].voxel);
+    }
 
     unsigned threads = std::max(1u, std::thread::hardware_concurrency());
     std::printf("\n%-28s %10s %12s %12s %12s\n", "method", "ms", "Mrays/s", "steps/ray", "ns/step");
@@ -189,11 +204,12 @@ int runBench(const BenchOptions& o) {
                     r.stepsPerRay(), r.ms * 1e6 / double(std::max<std::uint64_t>(r.steps, 1)));
     }
     const MethodResult& gpuH = results[0];
-    const MethodResult& cpuPlain = results[3];
-    std::printf("\ngpu hierarchical vs cpu native plain two-level: %.2fx rays/s, %.2fx fewer steps per ray\n",
-                gpuH.raysPerSecond() / cpuPlain.raysPerSecond(), cpuPlain.stepsPerRay() / gpuH.stepsPerRay());
-    std::printf("gpu/cpu primary-hit mismatches: %llu of %zu (CPU threads: %u)\n",
-                static_cast<unsigned long long>(gpuCpuMismatches), primary.size(), threads);
+    const MethodResult& classic = results[4];
+    std::printf("\ngpu hierarchical vs cpu classic two-level DDA: %.2fx rays/s, %.2fx fewer steps per ray\n",
+                gpuH.raysPerSecond() / classic.raysPerSecond(), classic.stepsPerRay() / gpuH.stepsPerRay());
+    std::printf("primary-hit mismatches against the CPU reference: gpu %llu, classic DDA %llu, of %zu (CPU threads: %u)\n",
+                static_cast<unsigned long long>(gpuCpuMismatches), static_cast<unsigned long long>(classicMismatches),
+                primary.size(), threads);
 
     std::filesystem::path out(o.output);
     std::error_code ec;
@@ -202,7 +218,7 @@ int runBench(const BenchOptions& o) {
     json << "{\n  \"world\": \"" << scene->name << "\", \"size\": [" << fs.width << ", " << fs.height
          << "], \"device\": \"" << dev.name << "\", \"driver\": \"" << dev.driver << "\", \"cpu_threads\": " << threads
          << ",\n  \"primary_rays\": " << primary.size() << ", \"shadow_rays\": " << shadows.size()
-         << ", \"gpu_cpu_mismatches\": " << gpuCpuMismatches << ",\n  \"methods\": [\n";
+         << ", \"gpu_cpu_mismatches\": " << gpuCpuMismatches << ", \"classic_mismatches\": " << classicMismatches << ",\n  \"methods\": [\n";
     for (std::size_t i = 0; i < results.size(); ++i) {
         const MethodResult& r = results[i];
         json << "    {\"name\": \"" << r.name << "\", \"ms\": " << r.ms << ", \"rays\": " << r.rays
