@@ -66,41 +66,66 @@ RayHit traceRay(const BrickGrid& grid, const Ray& ray, TraversalMode mode) {
 
     const std::span<const std::uint32_t> cells = grid.cells();
     const std::span<const std::uint32_t> supers = grid.superCells();
+    const glm::vec3 absInv = glm::abs(inv);
+    glm::vec3 tNext(0.0f);   // where the ray leaves the current block, per axis
+    glm::vec3 tDelta(0.0f);  // block size / |d|, per axis
+    int level = 0;           // size of the block tNext belongs to (0: none yet)
+    int exact = 1;           // v is exact down to blocks of this size; finer bits may lag
+    // Brings v to the exact voxel the ray is in at t, inside the block it is known to be in.
+    auto refine = [&] {
+        const glm::ivec3 lo = v & ~(exact - 1);
+        v = glm::clamp(glm::ivec3(o + t * d), lo, lo + (exact - 1));  // lo >= 0: truncation = floor
+        exact = 1;
+    };
     for (std::uint32_t steps = 1; steps <= shared::TRAVERSAL_MAX_STEPS; ++steps) {
         int s = 1;
-        std::uint32_t cell = 0;
         if (hierarchical && supers[grid.superCellIndex(v >> int(shared::SUPER_SHIFT))] == 0) {
             s = 32;
-        } else if ((cell = cells[grid.cellIndex(v >> 3)]) == shared::CELL_EMPTY) {
-            s = 8;
-        } else if (cell & shared::CELL_HOMOGENEOUS) {
-            return RayHit{true, v, face, t, static_cast<MaterialId>(cell & shared::CELL_MATERIAL_MASK), steps};
         } else {
-            const std::uint32_t brick = BrickGrid::cellBrick(cell);
-            const BrickMask& mask = grid.brickMask(brick);
-            const glm::ivec3 local = v & 7;
-            if (hierarchical && !mask.block4(local)) {
-                s = 4;
-            } else if (hierarchical && !mask.block2(local)) {
-                s = 2;
-            } else if (mask.voxel(local)) {
-                return RayHit{true, v, face, t, grid.brickVoxels(brick)[brickVoxelIndex(local)], steps};
+            if (exact > 8) refine();
+            const std::uint32_t cell = cells[grid.cellIndex(v >> 3)];
+            if (cell == shared::CELL_EMPTY) {
+                s = 8;
+            } else if (cell & shared::CELL_HOMOGENEOUS) {
+                if (exact > 1) refine();
+                return RayHit{true, v, face, t, static_cast<MaterialId>(cell & shared::CELL_MATERIAL_MASK), steps};
+            } else {
+                const std::uint32_t brick = BrickGrid::cellBrick(cell);
+                const BrickMask& mask = grid.brickMask(brick);
+                if (exact > 4) refine();
+                if (hierarchical && !mask.block4(v & 7)) {
+                    s = 4;
+                } else {
+                    if (exact > 2) refine();
+                    if (hierarchical && !mask.block2(v & 7)) {
+                        s = 2;
+                    } else {
+                        if (exact > 1) refine();
+                        if (mask.voxel(v & 7))
+                            return RayHit{true, v, face, t, grid.brickVoxels(brick)[brickVoxelIndex(v & 7)], steps};
+                    }
+                }
             }
         }
 
-        // Leave the empty block of size s that contains v: the nearest exit plane (ties go to
-        // the lowest axis), the exit axis stepped exactly, the others clamped into the block.
+        // Leave the empty block of size s around v: the nearest exit plane (ties go to the lowest
+        // axis). Within one level the exits advance incrementally (Amanatides-Woo); a new level
+        // restarts them from the ray origin, so errors do not accumulate across levels.
         const glm::ivec3 lo = v & ~(s - 1);
-        const glm::vec3 boundary = glm::vec3(lo + glm::ivec3(positive) * s);
-        const glm::vec3 ta = (boundary - o) * inv;
-        const int axis = ta.x <= ta.y ? (ta.x <= ta.z ? 0 : 2) : (ta.y <= ta.z ? 1 : 2);
-        const float best = ta[axis];
+        if (s != level) {
+            tNext = (glm::vec3(lo + glm::ivec3(positive) * s) - o) * inv;
+            tDelta = float(s) * absInv;
+            level = s;
+        }
+        const int axis = tNext.x <= tNext.y ? (tNext.x <= tNext.z ? 0 : 2) : (tNext.y <= tNext.z ? 1 : 2);
+        const float best = tNext[axis];
         if (best > ray.tMax) return miss(steps);
-        v = glm::clamp(glm::ivec3(o + best * d), lo, lo + (s - 1));  // lo >= 0: truncation = floor
         v[axis] = positive[axis] ? lo[axis] + s : lo[axis] - 1;
         if (v[axis] < 0 || v[axis] >= size[axis]) return miss(steps);
+        tNext[axis] += tDelta[axis];
         face = std::uint32_t(axis * 2 + (positive[axis] ? 0 : 1));
         t = best;
+        exact = s;  // the other axes moved within the block: known only to its size
     }
     return miss(shared::TRAVERSAL_MAX_STEPS);
 }

@@ -20,6 +20,13 @@ TraceResult traceMiss(uint steps) {
     return TraceResult(false, ivec3(0), FACE_NONE, 0.0, 0u, steps);
 }
 
+// The exact voxel the ray is in at t, inside the block of size `exact` that holds v.
+ivec3 refineVoxel(ivec3 v, int exact, vec3 o, vec3 d, float t) {
+    ivec3 lo = v & ~(exact - 1);
+    precise vec3 p = o + t * d;
+    return clamp(ivec3(p), lo, lo + (exact - 1));  // lo >= 0: truncation = floor
+}
+
 TraceResult traceRay(vec3 o, vec3 d, float tMax, bool hierarchical) {
     const ivec3 size = gWorld.sizeInVoxels.xyz;
 
@@ -58,31 +65,42 @@ TraceResult traceRay(vec3 o, vec3 d, float tMax, bool hierarchical) {
     }
     precise float t = tEnter;
 
+    const vec3 absInv = abs(inv);
+    precise vec3 tNext = vec3(0.0);
+    precise vec3 tDelta = vec3(0.0);
+    int level = 0;
+    int exact = 1;
     for (uint steps = 1u; steps <= TRAVERSAL_MAX_STEPS; ++steps) {
         int s = 1;
-        uint cell = 0u;
         if (hierarchical && worldSuperCell(v >> SUPER_SHIFT) == 0u) {
             s = 32;
-        } else if ((cell = worldCell(v >> 3)) == CELL_EMPTY) {
-            s = 8;
-        } else if ((cell & CELL_HOMOGENEOUS) != 0u) {
-            return TraceResult(true, v, face, t, cell & CELL_MATERIAL_MASK, steps);
         } else {
-            uint brick = cell - 1u;
-            BrickPage page = BrickPage(gPages[brick >> BRICK_PAGE_SHIFT]);
-            uint maskBase = (brick & (BRICK_PAGE_BRICKS - 1u)) * BRICK_MASK_WORDS;
-            ivec3 local = v & 7;
-            ivec3 b4 = local >> 2;
-            ivec3 b2 = local >> 1;
-            int bit2 = b2.x + 4 * b2.y + 16 * b2.z;
-            if (hierarchical && ((page.words[maskBase + MASK_QUARTER_WORD] >> uint(b4.x + 2 * b4.y + 4 * b4.z)) & 1u) == 0u) {
-                s = 4;
-            } else if (hierarchical &&
-                       ((page.words[maskBase + MASK_COARSE_WORD + uint(bit2 >> 5)] >> uint(bit2 & 31)) & 1u) == 0u) {
-                s = 2;
+            // Below super-cell level every test wants the exact voxel: refine once, here (the
+            // CPU refines lazily per level; both give the same v at every test that reads it).
+            if (exact > 1) {
+                v = refineVoxel(v, exact, o, d, t);
+                exact = 1;
+            }
+            uint cell = worldCell(v >> 3);
+            if (cell == CELL_EMPTY) {
+                s = 8;
+            } else if ((cell & CELL_HOMOGENEOUS) != 0u) {
+                return TraceResult(true, v, face, t, cell & CELL_MATERIAL_MASK, steps);
             } else {
+                uint brick = cell - 1u;
+                BrickPage page = BrickPage(gPages[brick >> BRICK_PAGE_SHIFT]);
+                uint maskBase = (brick & (BRICK_PAGE_BRICKS - 1u)) * BRICK_MASK_WORDS;
+                ivec3 local = v & 7;
+                ivec3 b4 = local >> 2;
+                ivec3 b2 = local >> 1;
+                int bit2 = b2.x + 4 * b2.y + 16 * b2.z;
                 int bit = local.x + 8 * local.y + 64 * local.z;
-                if (((page.words[maskBase + uint(bit >> 5)] >> uint(bit & 31)) & 1u) != 0u) {
+                if (hierarchical && ((page.words[maskBase + MASK_QUARTER_WORD] >> uint(b4.x + 2 * b4.y + 4 * b4.z)) & 1u) == 0u) {
+                    s = 4;
+                } else if (hierarchical &&
+                           ((page.words[maskBase + MASK_COARSE_WORD + uint(bit2 >> 5)] >> uint(bit2 & 31)) & 1u) == 0u) {
+                    s = 2;
+                } else if (((page.words[maskBase + uint(bit >> 5)] >> uint(bit & 31)) & 1u) != 0u) {
                     return TraceResult(true, v, face, t, brickMaterial(brick, uint(bit)), steps);
                 }
             }
@@ -90,17 +108,20 @@ TraceResult traceRay(vec3 o, vec3 d, float tMax, bool hierarchical) {
 
         // Leave the empty block of size s around v (see ray_traversal.cpp).
         ivec3 lo = v & ~(s - 1);
-        precise vec3 boundary = vec3(lo + ivec3(positive) * s);
-        precise vec3 ta = (boundary - o) * inv;
-        int axis = ta.x <= ta.y ? (ta.x <= ta.z ? 0 : 2) : (ta.y <= ta.z ? 1 : 2);
-        precise float best = ta[axis];
+        if (s != level) {
+            tNext = (vec3(lo + ivec3(positive) * s) - o) * inv;
+            tDelta = float(s) * absInv;
+            level = s;
+        }
+        int axis = tNext.x <= tNext.y ? (tNext.x <= tNext.z ? 0 : 2) : (tNext.y <= tNext.z ? 1 : 2);
+        float best = tNext[axis];
         if (best > tMax) return traceMiss(steps);
-        precise vec3 p = o + best * d;
-        v = clamp(ivec3(p), lo, lo + (s - 1));  // lo >= 0: truncation = floor
         v[axis] = positive[axis] ? lo[axis] + s : lo[axis] - 1;
         if (v[axis] < 0 || v[axis] >= size[axis]) return traceMiss(steps);
+        tNext[axis] += tDelta[axis];
         face = uint(axis * 2 + (positive[axis] ? 0 : 1));
         t = best;
+        exact = s;
     }
     return traceMiss(TRAVERSAL_MAX_STEPS);
 }
