@@ -25,8 +25,8 @@ bool samePalette(const std::vector<shared::GpuMaterial>& a, const std::vector<sh
 
 GpuWorld::GpuWorld(gpu::Context& ctx) : mCtx(ctx) {}
 
-WorldUploadStats GpuWorld::sync(world::Scene& scene, gpu::Uploader& uploader) {
-    world::BrickGrid& grid = scene.grid;
+WorldUploadStats GpuWorld::sync(const world::Scene& scene, gpu::Uploader& uploader) {
+    const world::BrickGrid& grid = scene.grid;
     WorldUploadStats stats;
 
     std::vector<shared::GpuMaterial> palette = scene.palette.toGpu();
@@ -91,7 +91,6 @@ WorldUploadStats GpuWorld::sync(world::Scene& scene, gpu::Uploader& uploader) {
     info.counts = glm::uvec4(grid.liveBricks(), static_cast<std::uint32_t>(mPages.size()),
                              static_cast<std::uint32_t>(scene.palette.size()), 0u);
     uploader.write(mInfo, 0, &info, sizeof(info));
-    grid.clearDirty();
     return stats;
 }
 

@@ -39,9 +39,9 @@ class GpuWorld {
 public:
     explicit GpuWorld(gpu::Context& ctx);
 
-    // Queues the uploads that bring the GPU copy up to date with `scene` and clears the grid's
-    // dirty marks. Record the uploader afterwards.
-    WorldUploadStats sync(world::Scene& scene, gpu::Uploader& uploader);
+    // Queues the uploads that bring the GPU copy up to date with `scene`. Record the uploader
+    // afterwards; the caller clears the grid's dirty marks once every consumer has seen them.
+    WorldUploadStats sync(const world::Scene& scene, gpu::Uploader& uploader);
     // Forget the GPU state: the next sync uploads everything.
     void invalidate() { mSizeInCells = glm::ivec3(0); }
 

@@ -34,6 +34,7 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
     cmd.begin();
     cmd.beginPass("upload");
     result.upload = mWorld.sync(scene, mUploader);
+    scene.grid.clearDirty();
     shared::FrameParams params = makeFrameParams(camera, scene.sky, settings);
     mUploader.write(mFrameParams, 0, &params, sizeof(params));
     mUploader.record(cmd);

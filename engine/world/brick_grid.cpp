@@ -20,6 +20,7 @@ BrickGrid::BrickGrid(glm::ivec3 sizeInVoxels) {
     std::size_t count = static_cast<std::size_t>(mSizeInCells.x) * mSizeInCells.y * mSizeInCells.z;
     mCells.assign(count, shared::CELL_EMPTY);
     mCellDirty.assign(count, 0);
+    mCellTouched.assign(count, 0);
     mSizeInSuperCells = (mSizeInCells + 3) / 4;
     std::size_t supers = static_cast<std::size_t>(mSizeInSuperCells.x) * mSizeInSuperCells.y * mSizeInSuperCells.z;
     mSuperCells.assign(supers, 0);
@@ -56,6 +57,7 @@ void BrickGrid::set(glm::ivec3 p, MaterialId material) {
     }
     mBrickMasks[brick] = BrickMask::build(voxels);
     markBrickDirty(brick);
+    touchCell(cellIndex(c));
 }
 
 BrickVoxels BrickGrid::readCell(glm::ivec3 c) const {
@@ -84,6 +86,7 @@ void BrickGrid::writeCell(glm::ivec3 c, const BrickVoxels& voxels) {
     mBrickVoxels[brick] = voxels;
     mBrickMasks[brick] = BrickMask::build(voxels);
     markBrickDirty(brick);
+    touchCell(index);
 }
 
 void BrickGrid::writeCellUniform(glm::ivec3 c, MaterialId material) {
@@ -116,6 +119,8 @@ void BrickGrid::clearDirty() {
     for (std::uint32_t b : mDirtyBricks) mBrickDirty[b] = 0;
     for (std::uint32_t c : mDirtyCells) mCellDirty[c] = 0;
     for (std::uint32_t s : mDirtySuperCells) mSuperDirty[s] = 0;
+    for (std::uint32_t c : mTouchedCells) mCellTouched[c] = 0;
+    mTouchedCells.clear();
     mDirtySuperCells.clear();
     mDirtyBricks.clear();
     mDirtyCells.clear();
@@ -129,7 +134,7 @@ GridMemory BrickGrid::memory() const {
     m.brickPoolBytes = mBrickVoxels.size() * kBrickBytes;
     m.liveBrickBytes = liveBricks() * kBrickBytes;
     m.bookkeepingBytes = mFreeBricks.size() * sizeof(std::uint32_t) + mBrickDirty.size() + mCellDirty.size() +
-                         mSuperDirty.size() +
+                         mSuperDirty.size() + mCellTouched.size() + mTouchedCells.size() * sizeof(std::uint32_t) +
                          (mDirtyBricks.size() + mDirtyCells.size() + mDirtySuperCells.size()) * sizeof(std::uint32_t);
     return m;
 }
@@ -167,6 +172,7 @@ void BrickGrid::setCell(std::size_t index, std::uint32_t value) {
     std::uint32_t old = mCells[index];
     if (old == value) return;
     mCells[index] = value;
+    touchCell(index);
     if ((old == shared::CELL_EMPTY) != (value == shared::CELL_EMPTY)) {
         std::size_t x = index % mSizeInCells.x, yz = index / mSizeInCells.x;
         std::size_t y = yz % mSizeInCells.y, z = yz / mSizeInCells.y;
@@ -183,6 +189,12 @@ void BrickGrid::setCell(std::size_t index, std::uint32_t value) {
         mCellDirty[index] = 1;
         mDirtyCells.push_back(static_cast<std::uint32_t>(index));
     }
+}
+
+void BrickGrid::touchCell(std::size_t index) {
+    if (mCellTouched[index]) return;
+    mCellTouched[index] = 1;
+    mTouchedCells.push_back(static_cast<std::uint32_t>(index));
 }
 
 void BrickGrid::markBrickDirty(std::uint32_t brick) {

@@ -92,6 +92,9 @@ public:
     std::span<const std::uint32_t> dirtyBricks() const { return mDirtyBricks; }
     std::span<const std::uint32_t> dirtyCells() const { return mDirtyCells; }
     std::span<const std::uint32_t> dirtySuperCells() const { return mDirtySuperCells; }
+    // Cells whose voxels changed in any way (value or brick contents), for CPU-side consumers
+    // such as the emitter list. Cleared with the rest by clearDirty().
+    std::span<const std::uint32_t> touchedCells() const { return mTouchedCells; }
     void clearDirty();
 
     GridMemory memory() const;
@@ -102,6 +105,7 @@ private:
     void freeBrick(std::uint32_t brick);
     void setCell(std::size_t index, std::uint32_t value);
     void markBrickDirty(std::uint32_t brick);
+    void touchCell(std::size_t index);
 
     glm::ivec3 mSizeInCells;
     glm::ivec3 mSizeInSuperCells;
@@ -116,6 +120,8 @@ private:
     std::vector<std::uint32_t> mDirtyBricks;
     std::vector<std::uint8_t> mCellDirty;
     std::vector<std::uint32_t> mDirtyCells;
+    std::vector<std::uint8_t> mCellTouched;
+    std::vector<std::uint32_t> mTouchedCells;
 };
 
 }  // namespace engine::world
