@@ -68,7 +68,7 @@ ComputePipeline::~ComputePipeline() {
     vkDestroyDescriptorSetLayout(device, mSetLayout, nullptr);
 }
 
-void ComputePipeline::dispatch(CommandList& cmd, std::initializer_list<const Buffer*> buffers, std::uint32_t groupsX,
+void ComputePipeline::dispatch(CommandList& cmd, std::span<const Buffer* const> buffers, std::uint32_t groupsX,
                                std::uint32_t groupsY, std::uint32_t groupsZ) {
     CHECK_MSG(buffers.size() == mBindingCount, "%s: %zu buffers for %u bindings", mName.c_str(), buffers.size(),
               mBindingCount);

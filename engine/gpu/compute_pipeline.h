@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <initializer_list>
+#include <span>
 #include <string>
 
 namespace engine::gpu {
@@ -24,6 +25,10 @@ public:
 
     // Binds `buffers` to bindings 0..n-1 and dispatches `groups` workgroups.
     void dispatch(CommandList& cmd, std::initializer_list<const Buffer*> buffers, std::uint32_t groupsX,
+                  std::uint32_t groupsY = 1, std::uint32_t groupsZ = 1) {
+        dispatch(cmd, std::span<const Buffer* const>(buffers.begin(), buffers.size()), groupsX, groupsY, groupsZ);
+    }
+    void dispatch(CommandList& cmd, std::span<const Buffer* const> buffers, std::uint32_t groupsX,
                   std::uint32_t groupsY = 1, std::uint32_t groupsZ = 1);
 
 private:

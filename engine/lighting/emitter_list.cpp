@@ -262,6 +262,10 @@ const std::vector<shared::AliasEntry>& EmitterList::aliasTable() {
         weights.reserve(mAlive.size());
         for (std::uint32_t slot : mAlive) weights.push_back(mSlots[slot].radiance.w);
         mAlias = buildAliasTable(mAlive, weights);
+        // Re-add from scratch: the running total drifts with every incremental +/-, and the GPU
+        // divides slot power by it to get the alias table's probabilities.
+        mTotalPower = 0.0;
+        for (double w : weights) mTotalPower += w;
         mAliasStale = false;
     }
     return mAlias;

@@ -1,10 +1,41 @@
 #include "render/renderer.h"
 
+#include <chrono>
 #include <cstring>
 
 #include "gpu/command_list.h"
+#include "shared/restir.h"
 
 namespace engine::render {
+
+namespace {
+
+shared::RestirParams makeRestirParams(const lighting::LightingSettings& l, std::uint32_t frame) {
+    using lighting::Method;
+    std::uint32_t flags = 0;
+    if (l.area) flags |= shared::RESTIR_AREA;
+    if (l.byPower) flags |= shared::RESTIR_ALIAS;
+    if (l.method == Method::Restir) {
+        if (l.unbiased) flags |= shared::RESTIR_UNBIASED;
+        if (l.temporal) flags |= shared::RESTIR_TEMPORAL;
+        if (l.spatial) flags |= shared::RESTIR_SPATIAL;
+        // The unbiased normalisation counts neighbours by visibility, which is only right when
+        // every stored reservoir's weight already accounts for its own sample's visibility.
+        if (l.candidateVisibility || l.unbiased) flags |= shared::RESTIR_CANDIDATE_VISIBILITY;
+    }
+    shared::RestirParams p{};
+    p.config = glm::uvec4(l.candidates, flags, l.spatialTaps, frame);
+    p.reuse = glm::vec4(l.spatialRadius, l.temporalCap, l.depthTolerance, 0.0f);
+    std::uint32_t perPixel = l.method == Method::Reference ? l.samplesPerFrame : l.shadowRays;
+    p.seeds = glm::uvec4(l.seed, perPixel, l.method == Method::Reference ? l.bounces : (l.method == Method::BruteForce ? 1u : 0u), 0u);
+    return p;
+}
+
+bool sameView(const world::CameraPreset& a, const world::CameraPreset& b) {
+    return a.position == b.position && a.target == b.target && a.fovYDegrees == b.fovYDegrees;
+}
+
+}  // namespace
 
 double FrameResult::totalMs() const {
     double total = 0.0;
@@ -12,47 +43,155 @@ double FrameResult::totalMs() const {
     return total;
 }
 
+double FrameResult::passMsOf(const std::string& name) const {
+    for (const auto& [n, ms] : passMs) {
+        if (n == name) return ms;
+    }
+    return 0.0;
+}
+
 Renderer::Renderer(gpu::Context& ctx)
-    : mCtx(ctx), mWorld(ctx), mUploader(ctx), mTimer(ctx, 16), mPrimary(ctx), mShade(ctx), mTonemap(ctx) {
+    : mCtx(ctx),
+      mWorld(ctx),
+      mGpuEmitters(ctx),
+      mUploader(ctx),
+      mTimer(ctx, 16),
+      mPrimary(ctx),
+      mPreview(ctx),
+      mRestirInitial(ctx),
+      mRestirTemporal(ctx),
+      mRestirSpatial(ctx),
+      mRestirShade(ctx),
+      mLightSampling(ctx),
+      mReference(ctx),
+      mTonemap(ctx) {
     mFrameParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::FrameParams), "frame.params");
+    mRestirParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::RestirParams), "restir.params");
 }
 
 void Renderer::resize(std::uint32_t width, std::uint32_t height) {
     if (mSize == glm::uvec2(width, height)) return;
     mSize = {width, height};
     std::uint64_t pixels = std::uint64_t(width) * height;
-    mGBuffer = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(shared::GBufferTexel), "frame.gbuffer");
+    for (int i = 0; i < 2; ++i) {
+        mGBuffers[i] = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(shared::GBufferTexel),
+                                   i ? "frame.gbuffer1" : "frame.gbuffer0");
+        mFinalReservoirs[i] = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(shared::Reservoir),
+                                          i ? "restir.reservoirs1" : "restir.reservoirs0");
+    }
+    mCandidates = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(shared::Reservoir), "restir.candidates");
+    mAccumulation = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(glm::vec4), "reference.accumulation");
     mRadiance = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(glm::vec4), "frame.radiance");
     mLdr = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(std::uint32_t), "frame.ldr");
     mRayStats = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(glm::uvec4), "frame.rayStats");
+    resetHistory();
 }
 
-FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& camera, const FrameSettings& settings) {
+void Renderer::resetHistory() {
+    mHistoryValid = false;
+    mAccumulatedSamples = 0;
+    mPrevCamera.reset();
+}
+
+FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& camera, const FrameSettings& settings,
+                             const lighting::LightingSettings& lighting) {
     resize(settings.width, settings.height);
+    if (mPrevLighting && !(*mPrevLighting == lighting)) {
+        mHistoryValid = false;
+        mAccumulatedSamples = 0;
+    }
     FrameResult result;
+
+    // CPU side first: the emitter list reads the grid's touched cells before they are cleared.
+    auto start = std::chrono::steady_clock::now();
+    mEmitters.setSettings({lighting.brickLights});
+    result.emitterUpdate = mEmitters.update(scene);
+    result.emitterUpdateMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    result.emitters = mEmitters.aliveCount();
+
     gpu::CommandList cmd(mCtx, &mTimer);
     cmd.begin();
     cmd.beginPass("upload");
     result.upload = mWorld.sync(scene, mUploader);
     scene.grid.clearDirty();
-    shared::FrameParams params = makeFrameParams(camera, scene.sky, settings);
+    lighting::EmitterUploadStats lightUpload = mGpuEmitters.sync(mEmitters, mUploader);
+    const bool worldChanged = result.upload.bricks || result.upload.cells || lightUpload.slots || lightUpload.aliveAndAlias;
+
+    FrameSettings frame = settings;
+    frame.frameIndex = mFrameIndex;
+    shared::FrameParams params = makeFrameParams(camera, scene.sky, frame);
+    shared::FrameParams prev = makeFrameParams(mPrevCamera.value_or(camera), scene.sky, frame);
+    params.prevCameraPosition = prev.cameraPosition;
+    params.prevCameraForward = prev.cameraForward;
+    params.prevCameraRight = prev.cameraRight;
+    params.prevCameraUp = prev.cameraUp;
+    shared::RestirParams restir = makeRestirParams(lighting, mFrameIndex);
     mUploader.write(mFrameParams, 0, &params, sizeof(params));
+    mUploader.write(mRestirParams, 0, &restir, sizeof(restir));
     mUploader.record(cmd);
+    if (lighting.method == lighting::Method::Reference &&
+        (mAccumulatedSamples == 0 || worldChanged || !mPrevCamera || !sameView(*mPrevCamera, camera))) {
+        cmd.fillBuffer(mAccumulation, 0);
+        cmd.barrier();
+        mAccumulatedSamples = 0;
+    }
     cmd.endPass();
 
-    mPrimary.record(cmd, {mWorld, mFrameParams, mGBuffer}, mSize);
-    mShade.record(cmd, {mWorld, mFrameParams, mGBuffer, mRadiance, mRayStats}, mSize);
+    mPrimary.record(cmd, {mWorld, mFrameParams, mGBuffers[mCurrent]}, mSize);
+    recordLighting(cmd, lighting, mHistoryValid);
     mTonemap.record(cmd, {mFrameParams, mRadiance, mLdr}, mSize);
     cmd.submitAndWait();
     result.passMs = mTimer.results();
+
+    if (lighting.method == lighting::Method::Reference) mAccumulatedSamples += std::max(lighting.samplesPerFrame, 1u);
+    result.referenceSamples = mAccumulatedSamples;
+    mPrevCamera = camera;
+    mPrevLighting = lighting;
+    mHistoryValid = true;
+    mCurrent ^= 1u;
+    ++mFrameIndex;
     return result;
+}
+
+void Renderer::recordLighting(gpu::CommandList& cmd, const lighting::LightingSettings& lighting, bool historyValid) {
+    using lighting::Method;
+    const SceneBindings scene{mWorld, mGpuEmitters};
+    gpu::Buffer& gbuffer = mGBuffers[mCurrent];
+    switch (lighting.method) {
+        case Method::Preview:
+            mPreview.record(cmd, {mWorld, mFrameParams, gbuffer, mRadiance, mRayStats}, mSize);
+            break;
+        case Method::Restir:
+        case Method::Ris: {
+            gpu::Buffer& final = mFinalReservoirs[mCurrent];
+            mRestirInitial.record(cmd, scene, {mFrameParams, mRestirParams, gbuffer, mCandidates}, mSize);
+            if (lighting.method == Method::Restir && lighting.temporal && historyValid) {
+                mRestirTemporal.record(cmd, scene,
+                                       {mFrameParams, mRestirParams, gbuffer, mGBuffers[mCurrent ^ 1u], mCandidates,
+                                        mFinalReservoirs[mCurrent ^ 1u]},
+                                       mSize);
+            }
+            // The spatial pass also copies candidates to the final reservoirs when it has no taps.
+            mRestirSpatial.record(cmd, scene, {mFrameParams, mRestirParams, gbuffer, mCandidates, final}, mSize);
+            mRestirShade.record(cmd, scene, {mFrameParams, mRestirParams, gbuffer, final, mRadiance}, mSize);
+            break;
+        }
+        case Method::Uniform:
+        case Method::BruteForce:
+            mLightSampling.record(cmd, scene, {mFrameParams, mRestirParams, gbuffer, mRadiance}, mSize);
+            break;
+        case Method::Reference:
+            mReference.record(cmd, scene, {mFrameParams, mRestirParams, gbuffer, mAccumulation, mRadiance}, mSize);
+            break;
+    }
 }
 
 FrameImages Renderer::readback() {
     FrameImages images;
     images.width = mSize.x;
     images.height = mSize.y;
-    const gpu::Buffer* sources[] = {&mRadiance, &mLdr, &mGBuffer, &mRayStats};
+    const gpu::Buffer& gbuffer = mGBuffers[mCurrent ^ 1u];  // the last rendered frame's
+    const gpu::Buffer* sources[] = {&mRadiance, &mLdr, &gbuffer, &mRayStats};
     std::uint64_t total = 0;
     for (const gpu::Buffer* b : sources) total += b->size();
     gpu::Buffer readback(mCtx, gpu::BufferKind::Readback, total, "frame.readback");
@@ -75,7 +214,7 @@ FrameImages Renderer::readback() {
     std::uint64_t at = 0;
     take(images.radiance, mRadiance, at);
     take(images.rgba8, mLdr, at);
-    take(images.gbuffer, mGBuffer, at);
+    take(images.gbuffer, gbuffer, at);
     take(images.rayStats, mRayStats, at);
     return images;
 }

@@ -1,11 +1,15 @@
-// Renderer: owns the frame. Each frame: upload what changed in the world, then
-//   primary_rays -> shade_sun -> tonemap
-// with a GPU timestamp per pass. Frame buffers (G-buffer, radiance, LDR, ray statistics) are
-// sized to the requested image and kept between frames. Later lighting passes slot in between
-// primary rays and tonemapping (docs/ARCHITECTURE.md).
+// Renderer: owns the frame. Each frame:
+//   upload (dirty bricks, changed emitters, frame constants)
+//   -> primary_rays (G-buffer with motion vectors)
+//   -> lighting: preview shading | ReSTIR (initial, temporal, spatial, shade) | RIS | light
+//      sampling | brute force | reference path tracing (accumulates while nothing changes)
+//   -> tonemap
+// with a GPU timestamp per pass. Temporal state (G-buffers and reservoirs of the previous frame)
+// ping-pongs between two buffers; a change of image size or method drops it.
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -13,9 +17,18 @@
 #include "gpu/buffer.h"
 #include "gpu/timestamp_timer.h"
 #include "gpu/uploader.h"
+#include "lighting/emitter_list.h"
+#include "lighting/gpu_emitter_list.h"
+#include "lighting/lighting_settings.h"
 #include "render/camera.h"
 #include "render/gpu_world.h"
+#include "render/passes/light_sampling_pass.h"
 #include "render/passes/primary_ray_pass.h"
+#include "render/passes/reference_pass.h"
+#include "render/passes/restir_initial_pass.h"
+#include "render/passes/restir_shade_pass.h"
+#include "render/passes/restir_spatial_pass.h"
+#include "render/passes/restir_temporal_pass.h"
 #include "render/passes/sun_shade_pass.h"
 #include "render/passes/tonemap_pass.h"
 #include "shared/gbuffer.h"
@@ -25,7 +38,12 @@ namespace engine::render {
 struct FrameResult {
     std::vector<std::pair<std::string, double>> passMs;  // GPU milliseconds per pass, in order
     WorldUploadStats upload;
+    lighting::EmitterUpdateStats emitterUpdate;
+    double emitterUpdateMs = 0.0;  // CPU time of the emitter list update
+    std::uint32_t emitters = 0;
+    std::uint32_t referenceSamples = 0;  // samples per pixel accumulated so far (reference)
     double totalMs() const;
+    double passMsOf(const std::string& name) const;
 };
 
 struct FrameImages {
@@ -33,31 +51,52 @@ struct FrameImages {
     std::vector<glm::vec4> radiance;  // linear
     std::vector<std::uint32_t> rgba8;  // tonemapped sRGB, R in the low byte
     std::vector<shared::GBufferTexel> gbuffer;
-    std::vector<glm::uvec4> rayStats;  // x primary steps, y shadow steps, z rays
+    std::vector<glm::uvec4> rayStats;  // preview only: x primary steps, y shadow steps, z rays
 };
 
 class Renderer {
 public:
     explicit Renderer(gpu::Context& ctx);
 
-    FrameResult render(world::Scene& scene, const world::CameraPreset& camera, const FrameSettings& settings);
+    FrameResult render(world::Scene& scene, const world::CameraPreset& camera, const FrameSettings& settings,
+                       const lighting::LightingSettings& lighting = {});
     // Copies the last frame's buffers back to the host.
     FrameImages readback();
+    // Forget temporal history and accumulated reference samples.
+    void resetHistory();
 
     GpuWorld& gpuWorld() { return mWorld; }
+    const lighting::EmitterList& emitters() const { return mEmitters; }
 
 private:
     void resize(std::uint32_t width, std::uint32_t height);
+    void recordLighting(gpu::CommandList& cmd, const lighting::LightingSettings& lighting, bool historyValid);
 
     gpu::Context& mCtx;
     GpuWorld mWorld;
+    lighting::EmitterList mEmitters;
+    lighting::GpuEmitterList mGpuEmitters;
     gpu::Uploader mUploader;
     gpu::TimestampTimer mTimer;
     PrimaryRayPass mPrimary;
-    SunShadePass mShade;
+    SunShadePass mPreview;
+    RestirInitialPass mRestirInitial;
+    RestirTemporalPass mRestirTemporal;
+    RestirSpatialPass mRestirSpatial;
+    RestirShadePass mRestirShade;
+    LightSamplingPass mLightSampling;
+    ReferencePass mReference;
     TonemapPass mTonemap;
+
     glm::uvec2 mSize{0};
-    gpu::Buffer mFrameParams, mGBuffer, mRadiance, mLdr, mRayStats;
+    gpu::Buffer mFrameParams, mRestirParams, mRadiance, mLdr, mRayStats, mCandidates, mAccumulation;
+    gpu::Buffer mGBuffers[2], mFinalReservoirs[2];
+    std::uint32_t mCurrent = 0;  // which of the ping-pong pair is this frame's
+    std::uint32_t mFrameIndex = 0;
+    bool mHistoryValid = false;
+    std::optional<world::CameraPreset> mPrevCamera;
+    std::optional<lighting::LightingSettings> mPrevLighting;
+    std::uint32_t mAccumulatedSamples = 0;
 };
 
 }  // namespace engine::render

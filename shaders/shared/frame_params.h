@@ -15,8 +15,13 @@ struct FrameParams {
     vec4 skyRadiance;     // rgb, ambient and background
     uvec4 imageSize;      // x width, y height, z frame index, w seed
     vec4 exposure;        // x exposure multiplier
+    // The previous frame's camera, for motion vectors (equal to the current one on frame 0).
+    vec4 prevCameraPosition;
+    vec4 prevCameraForward;
+    vec4 prevCameraRight;
+    vec4 prevCameraUp;
 };
-SHARED_ASSERT_SIZE(FrameParams, 144);
+SHARED_ASSERT_SIZE(FrameParams, 208);
 
 SHARED_END
 

@@ -6,10 +6,13 @@
 SHARED_BEGIN
 
 struct GBufferTexel {
-    ivec4 voxel;  // xyz hit voxel, w face (FACE_NONE where the ray left the world)
-    uvec4 data;   // x material id, y floatBits(distance along the unit view ray), z DDA steps, w reserved
+    ivec4 voxel;     // xyz hit voxel, w face (FACE_NONE where the ray left the world)
+    uvec4 data;      // x material id, y floatBits(distance along the unit view ray), z DDA steps, w flags
+    vec4 position;   // xyz world-space hit point, w unused
+    vec4 motion;     // xy: the same surface point's pixel position in the previous frame (pixel
+                     // units, centre of pixel i at i + 0.5), z: its distance there, w: 1 if valid
 };
-SHARED_ASSERT_SIZE(GBufferTexel, 32);
+SHARED_ASSERT_SIZE(GBufferTexel, 64);
 
 SHARED_END
 

@@ -22,5 +22,20 @@ void main() {
     GBufferTexel texel;
     texel.voxel = ivec4(hit.voxel, int(hit.hit ? hit.face : FACE_NONE));
     texel.data = uvec4(hit.material, floatBitsToUint(hit.t), hit.steps, 0u);
+    vec3 position = gFrame.cameraPosition.xyz + dir * hit.t;
+    texel.position = vec4(position, 0.0);
+    texel.motion = vec4(0.0);
+    if (hit.hit) {
+        // Where the previous frame's camera saw this point (static world: the same point).
+        vec3 rel = position - gFrame.prevCameraPosition.xyz;
+        float z = dot(rel, gFrame.prevCameraForward.xyz);
+        if (z > 1e-4) {
+            float tanHalf = gFrame.cameraPosition.w;
+            vec2 ndc = vec2(dot(rel, gFrame.prevCameraRight.xyz) / (z * tanHalf * gFrame.cameraForward.w),
+                            -dot(rel, gFrame.prevCameraUp.xyz) / (z * tanHalf));
+            vec2 prevPixel = (ndc * 0.5 + 0.5) * vec2(gFrame.imageSize.xy);
+            texel.motion = vec4(prevPixel, length(rel), 1.0);
+        }
+    }
     gGBuffer[index] = texel;
 }

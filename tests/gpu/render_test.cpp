@@ -17,6 +17,10 @@ using engine::render::Renderer;
 using gpu_testing::GpuTest;
 
 namespace {
+const engine::lighting::LightingSettings kPreview{engine::lighting::Method::Preview};
+}  // namespace
+
+namespace {
 
 Scene loadWorld(const char* name) {
     auto scene = loadSceneFile(std::filesystem::path(VOX_SOURCE_DIR) / "worlds" / name);
@@ -35,7 +39,7 @@ TEST_F(Render, GBufferMatchesCpuTraversalPerPixel) {
     settings.height = 72;
     CameraPreset camera = scene.camera();
     Renderer renderer(gpu_testing::context());
-    renderer.render(scene, camera, settings);
+    renderer.render(scene, camera, settings, kPreview);
     FrameImages img = renderer.readback();
     shared::FrameParams params = engine::render::makeFrameParams(camera, scene.sky, settings);
     int hits = 0, mismatches = 0;
@@ -65,8 +69,8 @@ TEST_F(Render, SameInputsGiveTheSameImage) {
     settings.width = 64;
     settings.height = 64;
     Renderer a(gpu_testing::context()), b(gpu_testing::context());
-    a.render(scene, scene.camera(), settings);
-    b.render(scene, scene.camera(), settings);
+    a.render(scene, scene.camera(), settings, kPreview);
+    b.render(scene, scene.camera(), settings, kPreview);
     FrameImages ia = a.readback(), ib = b.readback();
     EXPECT_EQ(ia.rgba8, ib.rgba8);
     EXPECT_EQ(0, std::memcmp(ia.radiance.data(), ib.radiance.data(), ia.radiance.size() * sizeof(glm::vec4)));
@@ -78,7 +82,7 @@ TEST_F(Render, EmissiveLightIsBrighterThanAlbedoAndSkyMatchesItsColour) {
     settings.width = 64;
     settings.height = 64;
     Renderer renderer(gpu_testing::context());
-    renderer.render(scene, scene.camera(), settings);
+    renderer.render(scene, scene.camera(), settings, kPreview);
     FrameImages img = renderer.readback();
     MaterialId light = *scene.palette.find("light");
     int lightPixels = 0;
@@ -100,7 +104,7 @@ TEST_F(Render, PngAndExrFilesRoundTrip) {
     settings.width = 48;
     settings.height = 32;
     Renderer renderer(gpu_testing::context());
-    renderer.render(scene, scene.camera(), settings);
+    renderer.render(scene, scene.camera(), settings, kPreview);
     FrameImages img = renderer.readback();
     auto dir = std::filesystem::temp_directory_path() / "vox_render_test";
     std::filesystem::create_directories(dir);

@@ -13,6 +13,10 @@ using engine::render::Renderer;
 using gpu_testing::GpuTest;
 
 namespace {
+const engine::lighting::LightingSettings kPreview{engine::lighting::Method::Preview};
+}  // namespace
+
+namespace {
 
 FrameSettings smallFrame() {
     FrameSettings s;
@@ -53,7 +57,7 @@ TEST_F(Upload, OnlyDirtyBricksAfterAnEditAndSameImageAsFullUpload) {
     CameraPreset camera = lookingAtWorld(scene.grid);
 
     Renderer renderer(gpu_testing::context());
-    auto first = renderer.render(scene, camera, smallFrame());
+    auto first = renderer.render(scene, camera, smallFrame(), kPreview);
     EXPECT_TRUE(first.upload.full);
     EXPECT_EQ(first.upload.bricks, scene.grid.liveBricks());
     FrameImages before = renderer.readback();
@@ -68,7 +72,7 @@ TEST_F(Upload, OnlyDirtyBricksAfterAnEditAndSameImageAsFullUpload) {
     EXPECT_EQ(dirtyBricks, 3u);
     EXPECT_EQ(dirtyCells, 2u);
 
-    auto second = renderer.render(scene, camera, smallFrame());
+    auto second = renderer.render(scene, camera, smallFrame(), kPreview);
     EXPECT_FALSE(second.upload.full);
     EXPECT_EQ(second.upload.bricks, dirtyBricks);
     EXPECT_EQ(second.upload.cells, dirtyCells);
@@ -77,7 +81,7 @@ TEST_F(Upload, OnlyDirtyBricksAfterAnEditAndSameImageAsFullUpload) {
 
     // A fresh renderer uploads everything; its image must be the same.
     Renderer fresh(gpu_testing::context());
-    auto full = fresh.render(scene, camera, smallFrame());
+    auto full = fresh.render(scene, camera, smallFrame(), kPreview);
     EXPECT_TRUE(full.upload.full);
     expectSameImages(incremental, fresh.readback());
 
@@ -87,7 +91,7 @@ TEST_F(Upload, OnlyDirtyBricksAfterAnEditAndSameImageAsFullUpload) {
     EXPECT_GT(changed, 0);
 
     // With nothing edited, nothing but the frame constants is uploaded.
-    auto idle = renderer.render(scene, camera, smallFrame());
+    auto idle = renderer.render(scene, camera, smallFrame(), kPreview);
     EXPECT_EQ(idle.upload.bricks, 0u);
     EXPECT_EQ(idle.upload.cells, 0u);
 }
@@ -98,7 +102,7 @@ TEST_F(Upload, CollapsingAndReusingBricksStaysConsistent) {
     Scene scene = gpu_testing::sceneWith(std::move(grid));
     CameraPreset camera = lookingAtWorld(scene.grid);
     Renderer renderer(gpu_testing::context());
-    renderer.render(scene, camera, smallFrame());
+    renderer.render(scene, camera, smallFrame(), kPreview);
     engine::Rng rng(3);
     for (int round = 0; round < 4; ++round) {
         // Carve and refill voxels so bricks split, collapse and get reused from the free list.
@@ -107,10 +111,10 @@ TEST_F(Upload, CollapsingAndReusingBricksStaysConsistent) {
             scene.grid.set(p, scene.grid.get(p) == kEmpty ? MaterialId(rng.uniformInt(1, 4)) : kEmpty);
         }
         fillBox(scene.grid, Box{{0, 0, 0}, {16, 8, 16}}, 1);
-        renderer.render(scene, camera, smallFrame());
+        renderer.render(scene, camera, smallFrame(), kPreview);
         FrameImages incremental = renderer.readback();
         Renderer fresh(gpu_testing::context());
-        fresh.render(scene, camera, smallFrame());
+        fresh.render(scene, camera, smallFrame(), kPreview);
         expectSameImages(incremental, fresh.readback());
     }
 }

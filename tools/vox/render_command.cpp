@@ -1,7 +1,10 @@
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <vector>
 
 #include "commands.h"
+#include "lighting_options.h"
 #include "gpu/context.h"
 #include "io/image_io.h"
 #include "render/renderer.h"
@@ -19,6 +22,10 @@ struct RenderOptions {
     std::string output = "out/render.png";
     std::string exr;
     float exposure = 1.0f;
+    std::uint32_t frames = 1;
+    std::uint32_t spp = 64;
+    std::string timings;
+    LightingOptions lighting;
 };
 
 int runRender(const RenderOptions& o) {
@@ -29,6 +36,10 @@ int runRender(const RenderOptions& o) {
     if (ext != ".png" && ext != ".exr") return fail(engine::makeError("-o {}: the file must end in .png or .exr", o.output));
     if (o.pos.empty() != o.target.empty()) return fail(engine::makeError("--pos and --target go together"));
 
+    auto lighting = lightingSettings(o.lighting);
+    if (!lighting) return fail(lighting.error());
+    if (o.frames < 1 || o.frames > 100000) return fail(engine::makeError("--frames must be in 1..100000"));
+    if (o.spp < 1 || o.spp > 1000000) return fail(engine::makeError("--spp must be in 1..1000000"));
     auto scene = loadWorld(o.world);
     if (!scene) return fail(scene.error());
     engine::world::CameraPreset camera;
@@ -73,12 +84,45 @@ int runRender(const RenderOptions& o) {
     settings.width = (*size).x;
     settings.height = (*size).y;
     settings.exposure = o.exposure;
-    engine::render::FrameResult frame = renderer.render(*scene, camera, settings);
+    // The reference adds samples per frame until --spp; the other methods run --frames frames
+    // of a still camera (temporal reuse builds up history over them).
+    engine::lighting::LightingSettings l = *lighting;
+    std::uint32_t frames = o.frames;
+    if (l.method == engine::lighting::Method::Reference) {
+        l.samplesPerFrame = std::min<std::uint32_t>(o.spp, 16);
+        frames = (o.spp + l.samplesPerFrame - 1) / l.samplesPerFrame;
+    }
+    std::printf("lighting %s, %u frame(s)\n", l.describe().c_str(), frames);
+    engine::render::FrameResult frame;
+    std::vector<engine::render::FrameResult> results;
+    for (std::uint32_t i = 0; i < frames; ++i) {
+        settings.frameIndex = i;
+        frame = renderer.render(*scene, camera, settings, l);
+        results.push_back(frame);
+        if (frames > 4 && (i + 1) % std::max<std::uint32_t>(1, frames / 10) == 0)
+            std::fprintf(stderr, "\r  frame %u/%u", i + 1, frames);
+    }
+    if (frames > 4) std::fprintf(stderr, "\n");
     engine::render::FrameImages images = renderer.readback();
 
-    std::printf("frame    %ux%u, %.2f ms GPU:", settings.width, settings.height, frame.totalMs());
+    std::printf("frame    %ux%u, %.2f ms GPU (last frame):", settings.width, settings.height, frame.totalMs());
     for (const auto& [name, ms] : frame.passMs) std::printf(" %s %.2f", name.c_str(), ms);
     std::printf("\n");
+    std::printf("emitters %u (list update %.3f ms CPU)\n", frame.emitters, results.front().emitterUpdateMs);
+    if (!o.timings.empty()) {
+        std::ofstream json(o.timings);
+        json << "{\"world\": \"" << scene->name << "\", \"lighting\": \"" << l.describe() << "\", \"size\": ["
+             << settings.width << ", " << settings.height << "], \"emitters\": " << frame.emitters << ", \"frames\": [\n";
+        for (std::size_t i = 0; i < results.size(); ++i) {
+            json << "  {";
+            for (std::size_t p = 0; p < results[i].passMs.size(); ++p)
+                json << (p ? ", " : "") << "\"" << results[i].passMs[p].first << "\": " << results[i].passMs[p].second;
+            json << "}" << (i + 1 < results.size() ? "," : "") << "\n";
+        }
+        json << "]}\n";
+        if (!json) return fail(engine::makeError("{}: cannot write timings", o.timings));
+        std::printf("wrote    %s\n", o.timings.c_str());
+    }
 
     std::error_code ec;
     if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path(), ec);
@@ -112,6 +156,10 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
     cmd->add_option("-o,--output", o->output, "Output image (.png or .exr)")->capture_default_str();
     cmd->add_option("--exr", o->exr, "Also write the linear radiance to this EXR file");
     cmd->add_option("--exposure", o->exposure, "Exposure multiplier before tonemapping")->capture_default_str();
+    cmd->add_option("--frames", o->frames, "Frames of a still camera (temporal reuse accumulates)")->capture_default_str();
+    cmd->add_option("--spp", o->spp, "reference: samples per pixel")->capture_default_str();
+    cmd->add_option("--timings", o->timings, "Write per-frame, per-pass GPU milliseconds to this JSON file");
+    addLightingOptions(*cmd, o->lighting);
     cmd->callback([o, &exitCode] { exitCode = runRender(*o); });
 }
 

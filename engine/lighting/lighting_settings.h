@@ -1,0 +1,48 @@
+// How a frame is lit: the method and its knobs. One struct for the renderer, the command line
+// and (later) scene files and the HUD.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include "core/error.h"
+
+namespace engine::lighting {
+
+enum class Method {
+    Preview,     // sun + sky ambient + emission, no emitter lighting: for looking at worlds
+    Restir,      // Voxel ReSTIR: candidates, temporal and spatial reuse (biased or unbiased)
+    Ris,         // resampled importance sampling without reuse
+    Uniform,     // N light samples with N shadow rays
+    BruteForce,  // every light once (small scenes)
+    Reference,   // progressive path tracer: the ground truth
+};
+
+struct LightingSettings {
+    Method method = Method::Restir;
+    bool area = true;            // area lights (else point lights at emitter centres)
+    bool byPower = true;         // candidates from the alias table over power (else uniform)
+    std::uint32_t candidates = 32;
+    bool brickLights = true;
+    bool temporal = true;
+    bool spatial = true;
+    std::uint32_t spatialTaps = 5;
+    float spatialRadius = 30.0f;
+    bool unbiased = false;
+    float temporalCap = 20.0f;     // last frame's M is capped at this x M
+    float depthTolerance = 0.1f;   // reuse only between pixels whose depths agree this closely
+    bool candidateVisibility = true;
+    std::uint32_t shadowRays = 1;        // Uniform: samples (and shadow rays) per pixel
+    std::uint32_t samplesPerFrame = 1;   // Reference: samples per pixel added per frame
+    std::uint32_t bounces = 0;           // Reference: 0 = direct light only
+    std::uint32_t seed = 1;
+
+    bool operator==(const LightingSettings&) const = default;
+    std::string describe() const;
+};
+
+const char* methodName(Method m);
+Result<Method> parseMethod(std::string_view name);
+
+}  // namespace engine::lighting

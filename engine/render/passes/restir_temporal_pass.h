@@ -1,0 +1,28 @@
+// ReSTIR temporal reuse (thesis §4.4, §4.9): merges this frame's reservoirs with last frame's
+// final ones at the motion-vector pixel. Shader: shaders/restir/temporal_reuse.comp
+#pragma once
+
+#include "render/passes/lit_pass.h"
+
+namespace engine::render {
+
+class RestirTemporalPass {
+public:
+    explicit RestirTemporalPass(gpu::Context& ctx) : mPass(ctx, "restir_temporal", "restir/temporal_reuse", 6) {}
+    struct Io {
+        const gpu::Buffer& frameParams;     // read
+        const gpu::Buffer& restirParams;    // read
+        const gpu::Buffer& gbuffer;         // read
+        const gpu::Buffer& prevGbuffer;     // read
+        gpu::Buffer& reservoirs;            // read and write
+        const gpu::Buffer& prevReservoirs;  // read
+    };
+    void record(gpu::CommandList& cmd, const SceneBindings& scene, const Io& io, glm::uvec2 size) {
+        mPass.record(cmd, scene, {&io.frameParams, &io.restirParams, &io.gbuffer, &io.prevGbuffer, &io.reservoirs, &io.prevReservoirs}, size);
+    }
+
+private:
+    LitPass mPass;
+};
+
+}  // namespace engine::render

@@ -1,0 +1,160 @@
+// The emitter list (bindings 4-7) and the light-sampling maths shared by ReSTIR, the
+// light-sampling baselines and the reference path tracer. Lights are axis-aligned cubes (a voxel
+// or an 8^3 brick light) whose exposed faces emit radiance Le.
+#ifndef COMMON_EMITTERS_GLSL
+#define COMMON_EMITTERS_GLSL
+
+#include "common/brick_traversal.glsl"
+#include "common/rng.glsl"
+#include "shared/emitters.h"
+#include "shared/restir.h"
+
+layout(set = 0, binding = LIGHTS_BINDING_INFO, std430) readonly buffer LightInfoBuffer { EmitterListInfo gLights; };
+layout(set = 0, binding = LIGHTS_BINDING_EMITTERS, std430) readonly buffer EmitterBuffer { GpuEmitter gEmitters[]; };
+layout(set = 0, binding = LIGHTS_BINDING_ALIVE, std430) readonly buffer AliveBuffer { uint gAlive[]; };
+layout(set = 0, binding = LIGHTS_BINDING_ALIAS, std430) readonly buffer AliasBuffer { AliasEntry gAlias[]; };
+
+const float PI = 3.14159265358979;
+const float kRayOffset = 1.0e-3;  // shadow rays start this far off the surface, along its normal
+
+struct Surface {
+    vec3 position;
+    vec3 normal;
+    vec3 albedo;
+    vec3 emission;
+    uint face;
+    bool valid;  // a lit surface (not sky, not a camera inside solid)
+};
+
+float luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
+
+// Is the emitter in this slot still the one the reservoir saw?
+bool emitterCurrent(uint slot, uint generation) {
+    if (slot == RESERVOIR_EMPTY || slot >= gLights.counts.y) return false;
+    GpuEmitter e = gEmitters[slot];
+    return (e.info.w & EMITTER_FLAG_ALIVE) != 0u && e.info.y == generation;
+}
+
+// Probability of choosing `slot` as a candidate.
+float emitterPdf(uint slot, bool byPower) {
+    if (byPower) return gEmitters[slot].radiance.w / gLights.power.x;
+    return 1.0 / float(gLights.counts.x);
+}
+
+// Draws an emitter slot uniformly or by power (alias table); false when there are no lights.
+bool pickEmitter(inout uint rng, bool byPower, out uint slot) {
+    uint n = gLights.counts.x;
+    slot = RESERVOIR_EMPTY;
+    if (n == 0u || (byPower && !(gLights.power.x > 0.0))) return false;
+    uint i = min(uint(rngNext(rng) * float(n)), n - 1u);
+    if (byPower) {
+        AliasEntry a = gAlias[i];
+        slot = rngNext(rng) < a.probability ? a.slot : a.alias;
+    } else {
+        slot = gAlive[i];
+    }
+    return true;
+}
+
+vec3 faceNormalF(uint face) { return vec3(faceNormal(face)); }
+
+// A point on face `face` of the emitter cube, at (u, v) in [0,1)^2 over the face.
+vec3 emitterFacePoint(GpuEmitter e, uint face, vec2 uv) {
+    float s = float(e.minCorner.w);
+    uint axis = face >> 1u;
+    uint ua = (axis + 1u) % 3u, va = (axis + 2u) % 3u;
+    vec3 p = vec3(e.minCorner.xyz);
+    p[axis] += (face & 1u) != 0u ? s : 0.0;
+    p[ua] += uv.x * s;
+    p[va] += uv.y * s;
+    return p;
+}
+
+vec3 emitterCentre(GpuEmitter e) { return vec3(e.minCorner.xyz) + 0.5 * float(e.minCorner.w); }
+
+// Thesis Alg. 1: the six faces weighted by the solid angle they subtend at x (estimated at the
+// face centre: A cos / d^2); unexposed faces and faces turned away from x get zero.
+float faceSolidAngle(GpuEmitter e, uint face, vec3 x) {
+    if ((e.info.x & (1u << face)) == 0u) return 0.0;
+    vec3 c = emitterFacePoint(e, face, vec2(0.5));
+    vec3 d = c - x;
+    float dist2 = dot(d, d);
+    float cosine = dot(faceNormalF(face), -d) * inversesqrt(max(dist2, 1e-12));
+    if (cosine <= 0.0) return 0.0;
+    float s = float(e.minCorner.w);
+    return s * s * cosine / max(dist2, 1e-12);
+}
+
+// Chooses a face by solid angle; returns its probability (0: no face is visible from x).
+float pickFace(GpuEmitter e, vec3 x, float u, out uint face) {
+    float w[6];
+    float total = 0.0;
+    for (uint f = 0u; f < 6u; ++f) {
+        w[f] = faceSolidAngle(e, f, x);
+        total += w[f];
+    }
+    face = 0u;
+    if (!(total > 0.0)) return 0.0;
+    float target = u * total, running = 0.0;
+    for (uint f = 0u; f < 6u; ++f) {
+        if (w[f] <= 0.0) continue;
+        face = f;
+        running += w[f];
+        if (target < running) break;
+    }
+    return w[face] / total;
+}
+
+float facePdf(GpuEmitter e, vec3 x, uint face) {
+    float total = 0.0;
+    for (uint f = 0u; f < 6u; ++f) total += faceSolidAngle(e, f, x);
+    return total > 0.0 ? faceSolidAngle(e, face, x) / total : 0.0;
+}
+
+// Unshadowed contribution (linear RGB radiance towards the camera) of a light sample at a
+// diffuse surface. Area mode (face < 6): f = albedo/pi * Le * cos_x * cos_y / d^2, per unit
+// light area. Point mode (face == LIGHT_FACE_CENTRE): the cube as a point light at its centre
+// with intensity Le x projected area of its exposed faces towards x.
+vec3 lightContribution(Surface s, GpuEmitter e, uint face, vec2 uv, out vec3 toLight, out float dist) {
+    vec3 y = face == LIGHT_FACE_CENTRE ? emitterCentre(e) : emitterFacePoint(e, face, uv);
+    vec3 d = y - s.position;
+    dist = length(d);
+    toLight = d / max(dist, 1e-12);
+    float cosX = dot(s.normal, toLight);
+    if (!(dist > 1e-6) || cosX <= 0.0) return vec3(0.0);
+    float geometry;
+    if (face == LIGHT_FACE_CENTRE) {
+        float side = float(e.minCorner.w);
+        float projected = 0.0;
+        for (uint f = 0u; f < 6u; ++f) {
+            if ((e.info.x & (1u << f)) != 0u) projected += max(dot(faceNormalF(f), -toLight), 0.0);
+        }
+        geometry = side * side * projected * cosX / (dist * dist);
+    } else {
+        float cosY = dot(faceNormalF(face), -toLight);
+        if (cosY <= 0.0) return vec3(0.0);
+        geometry = cosX * cosY / (dist * dist);
+    }
+    return s.albedo / PI * e.radiance.rgb * geometry;
+}
+
+// Probability (density per unit area in area mode) with which the candidate sampler produces
+// this light sample at x.
+float lightSamplePdf(vec3 x, uint slot, uint face, bool byPower) {
+    float p = emitterPdf(slot, byPower);
+    if (face == LIGHT_FACE_CENTRE) return p;
+    GpuEmitter e = gEmitters[slot];
+    float side = float(e.minCorner.w);
+    return p * facePdf(e, x, face) / (side * side);
+}
+
+// Is the light sample visible from the surface? The first thing the shadow ray hits must be the
+// emitter itself (or nothing before the sample point).
+bool lightVisible(Surface s, GpuEmitter e, vec3 toLight, float dist) {
+    TraceResult hit = traceRay(s.position + s.normal * kRayOffset, toLight, dist + kRayOffset, true);
+    if (!hit.hit) return true;
+    ivec3 lo = e.minCorner.xyz;
+    return all(greaterThanEqual(hit.voxel, lo)) && all(lessThan(hit.voxel, lo + e.minCorner.w));
+}
+
+#endif

@@ -1,0 +1,65 @@
+// Reservoir helpers for temporal and spatial reuse (Bitterli et al. 2020 Alg. 4 and 6).
+#ifndef COMMON_RESERVOIR_GLSL
+#define COMMON_RESERVOIR_GLSL
+
+#include "common/surface.glsl"
+
+Reservoir emptyReservoir() { return Reservoir(uvec4(RESERVOIR_EMPTY, 0u, 0u, 0u), vec4(0.0)); }
+
+bool reservoirHasLight(Reservoir r) { return r.light.x != RESERVOIR_EMPTY; }
+
+// A reservoir whose light was removed or replaced since it was chosen: its weight means nothing
+// any more. (An empty reservoir is not stale: its M still records candidates that found no light,
+// and dropping that would brighten the pixels where light is mostly occluded.)
+bool reservoirStale(Reservoir r) { return reservoirHasLight(r) && !emitterCurrent(r.light.x, r.light.y); }
+
+// Target pdf (luminance of the unshadowed contribution) of r's light sample at surface s; zero
+// for a light that was removed or replaced since r chose it.
+float targetAt(Surface s, Reservoir r) {
+    if (!s.valid || !emitterCurrent(r.light.x, r.light.y)) return 0.0;
+    vec3 toLight;
+    float dist;
+    return luminance(lightContribution(s, gEmitters[r.light.x], r.light.z, unpackUnorm2x16(r.light.w), toLight, dist));
+}
+
+bool visibleAt(Surface s, Reservoir r) {
+    GpuEmitter e = gEmitters[r.light.x];
+    vec3 toLight;
+    float dist;
+    vec3 f = lightContribution(s, e, r.light.z, unpackUnorm2x16(r.light.w), toLight, dist);
+    return any(greaterThan(f, vec3(0.0))) && lightVisible(s, e, toLight, dist);
+}
+
+// Streaming combination of reservoirs at one pixel.
+struct Combiner {
+    Reservoir chosen;
+    float wSum;
+    float M;
+    float chosenTarget;
+};
+
+Combiner combinerStart() { return Combiner(emptyReservoir(), 0.0, 0.0, 0.0); }
+
+// Adds reservoir r whose light has target pdf `target` here; true when it was selected.
+bool combinerAdd(inout Combiner c, Reservoir r, float target, float u) {
+    float w = target * r.weights.x * r.weights.y;
+    c.wSum += w;
+    c.M += r.weights.y;
+    if (w > 0.0 && u * c.wSum < w) {
+        c.chosen = r;
+        c.chosenTarget = target;
+        return true;
+    }
+    return false;
+}
+
+// The combined reservoir: W = wSum / (normaliser x target), where the normaliser is the total M
+// (biased) or the M of the inputs that could have produced the chosen sample (unbiased).
+Reservoir combinerFinish(Combiner c, float normaliser) {
+    Reservoir r = c.chosen;
+    float W = (c.chosenTarget > 0.0 && normaliser > 0.0) ? c.wSum / (normaliser * c.chosenTarget) : 0.0;
+    r.weights = vec4(W, c.M, c.chosenTarget, 0.0);
+    return r;
+}
+
+#endif

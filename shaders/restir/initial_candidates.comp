@@ -1,0 +1,69 @@
+#version 460
+// ReSTIR initial candidates (thesis §4.4-4.5, Bitterli et al. 2020 Alg. 3): M light samples per
+// pixel, drawn uniformly or by power, resampled by weighted reservoir sampling with the
+// unshadowed contribution's luminance as target pdf; optionally the chosen one is shadow-tested.
+#extension GL_GOOGLE_include_directive : require
+
+#include "common/surface.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 0, std430) readonly buffer Params { FrameParams gFrame; };
+layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 1, std430) readonly buffer Restir { RestirParams gRestir; };
+layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 2, std430) readonly buffer GBuffer { GBufferTexel gGBuffer[]; };
+layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 3, std430) writeonly buffer Out { Reservoir gOut[]; };
+
+void main() {
+    uvec2 pixel = gl_GlobalInvocationID.xy;
+    if (any(greaterThanEqual(pixel, gFrame.imageSize.xy))) return;
+    uint index = pixel.x + pixel.y * gFrame.imageSize.x;
+    Surface s = surfaceFrom(gGBuffer[index]);
+    Reservoir r = Reservoir(uvec4(RESERVOIR_EMPTY, 0u, 0u, 0u), vec4(0.0));
+    uint flags = gRestir.config.y;
+    uint candidates = gRestir.config.x;
+    if (!s.valid || gLights.counts.x == 0u || candidates == 0u) {
+        gOut[index] = r;
+        return;
+    }
+    bool area = (flags & RESTIR_AREA) != 0u;
+    bool byPower = (flags & RESTIR_ALIAS) != 0u;
+    uint rng = rngInit(pixel, gRestir.config.w, 1u, gRestir.seeds.x);
+
+    float wSum = 0.0;
+    float chosenTarget = 0.0;
+    for (uint i = 0u; i < candidates; ++i) {
+        uint slot;
+        pickEmitter(rng, byPower, slot);
+        GpuEmitter e = gEmitters[slot];
+        uint face = LIGHT_FACE_CENTRE;
+        vec2 uv = vec2(0.5);
+        float pdf = emitterPdf(slot, byPower);
+        if (area) {
+            float side = float(e.minCorner.w);
+            pdf *= pickFace(e, s.position, rngNext(rng), face) / (side * side);
+            // The reservoir stores uv in 16 bits; evaluate the point it will be able to recall.
+            uv = unpackUnorm2x16(packUnorm2x16(vec2(rngNext(rng), rngNext(rng))));
+        }
+        float chooser = rngNext(rng);
+        if (!(pdf > 0.0)) continue;
+        vec3 toLight;
+        float dist;
+        float target = luminance(lightContribution(s, e, face, uv, toLight, dist));
+        float w = target / pdf;
+        wSum += w;
+        if (w > 0.0 && chooser * wSum < w) {
+            r.light = uvec4(slot, e.info.y, face, packUnorm2x16(uv));
+            chosenTarget = target;
+        }
+    }
+    r.weights = vec4(chosenTarget > 0.0 ? wSum / (float(candidates) * chosenTarget) : 0.0, float(candidates),
+                     chosenTarget, 0.0);
+    if ((flags & RESTIR_CANDIDATE_VISIBILITY) != 0u && r.light.x != RESERVOIR_EMPTY) {
+        GpuEmitter e = gEmitters[r.light.x];
+        vec3 toLight;
+        float dist;
+        lightContribution(s, e, r.light.z, unpackUnorm2x16(r.light.w), toLight, dist);
+        if (!lightVisible(s, e, toLight, dist)) r.weights.x = 0.0;
+    }
+    gOut[index] = r;
+}

@@ -1,0 +1,268 @@
+// Voxel ReSTIR against the reference path tracer and against analytic light, on small scenes.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "gpu/gpu_test_context.h"
+#include "render/renderer.h"
+#include "world/ray_traversal.h"
+#include "world/world_edits.h"
+
+using namespace engine::world;
+using engine::lighting::LightingSettings;
+using engine::lighting::Method;
+using engine::render::FrameImages;
+using engine::render::FrameSettings;
+using engine::render::Renderer;
+using gpu_testing::GpuTest;
+
+namespace {
+
+constexpr MaterialId kWhite = 1, kRed = 2, kLamp = 3, kBlue = 4;
+
+Scene makeScene(glm::ivec3 size) {
+    Scene scene;
+    scene.grid = BrickGrid(size);
+    (void)scene.palette.add(Material{"white", glm::vec3(0.75f)});
+    (void)scene.palette.add(Material{"red", glm::vec3(0.7f, 0.1f, 0.1f)});
+    (void)scene.palette.add(Material{"lamp", glm::vec3(0.8f), glm::vec3(1.0f, 0.85f, 0.6f), 6.0f});
+    (void)scene.palette.add(Material{"blue", glm::vec3(0.8f), glm::vec3(0.3f, 0.5f, 1.0f), 3.0f});
+    scene.sky.sunRadiance = glm::vec3(0.0f);
+    scene.sky.skyRadiance = glm::vec3(0.0f);
+    return scene;
+}
+
+// A floor, a back wall, a pillar casting shadows, one 8^3 brick light and three voxel lights.
+Scene roomScene() {
+    Scene scene = makeScene({64, 40, 64});
+    fillBox(scene.grid, Box{{0, 0, 0}, {64, 4, 64}}, kWhite);
+    fillBox(scene.grid, Box{{0, 4, 56}, {64, 40, 64}}, kRed);
+    fillBox(scene.grid, Box{{20, 4, 24}, {28, 22, 32}}, kWhite);
+    fillBox(scene.grid, Box{{32, 24, 32}, {40, 32, 40}}, kLamp);  // a brick-aligned brick light
+    scene.grid.set({10, 6, 12}, kBlue);
+    scene.grid.set({50, 5, 20}, kLamp);
+    scene.grid.set({45, 12, 50}, kBlue);
+    scene.cameras.push_back(CameraPreset{"front", {32.0f, 36.0f, -22.0f}, {32.0f, 6.0f, 30.0f}, 60.0f});
+    scene.grid.clearDirty();
+    return scene;
+}
+
+FrameSettings frame(std::uint32_t size) {
+    FrameSettings f;
+    f.width = size;
+    f.height = size;
+    return f;
+}
+
+std::vector<glm::vec4> renderFrames(Renderer& r, Scene& scene, const LightingSettings& l, std::uint32_t size, int frames) {
+    for (int i = 0; i < frames; ++i) r.render(scene, scene.camera(), frame(size), l);
+    return r.readback().radiance;
+}
+
+std::vector<glm::vec4> reference(Scene& scene, std::uint32_t size, std::uint32_t spp, bool brickLights = true,
+                                 std::uint32_t seed = 1) {
+    Renderer r(gpu_testing::context());
+    LightingSettings l;
+    l.method = Method::Reference;
+    l.samplesPerFrame = 16;
+    l.brickLights = brickLights;
+    l.seed = seed;
+    return renderFrames(r, scene, l, size, int(spp / 16));
+}
+
+struct MeanAndError {
+    double mean = 0.0, standardError = 0.0;
+};
+
+MeanAndError meanOfMeans(const std::vector<double>& values) {
+    MeanAndError m;
+    for (double v : values) m.mean += v / double(values.size());
+    double var = 0.0;
+    for (double v : values) var += (v - m.mean) * (v - m.mean);
+    m.standardError = std::sqrt(var / double(values.size() - 1) / double(values.size()));
+    return m;
+}
+
+double meanLuminance(const std::vector<glm::vec4>& img) {
+    double sum = 0.0;
+    for (const glm::vec4& p : img) sum += 0.2126 * p.x + 0.7152 * p.y + 0.0722 * p.z;
+    return sum / double(img.size());
+}
+
+double mae(const std::vector<glm::vec4>& a, const std::vector<glm::vec4>& b) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        sum += std::abs(a[i].x - b[i].x) + std::abs(a[i].y - b[i].y) + std::abs(a[i].z - b[i].z);
+    return sum / (3.0 * double(a.size()));  // thesis eq. 3-4
+}
+
+}  // namespace
+
+class Restir : public GpuTest {};
+
+// The unbiased mode's mean over independent seeds converges to the direct-light reference: the
+// per-image mean lies within 3 standard errors, and the error of the mean image falls like 1/sqrt(N).
+TEST_F(Restir, UnbiasedModeConvergesToReference) {
+    Scene scene = roomScene();
+    const std::uint32_t size = 40;
+    // The reference in 8 independent runs of 512 samples: their spread gives its own error.
+    std::vector<glm::vec4> ref(size * size);
+    std::vector<double> refMeans;
+    for (std::uint32_t run = 0; run < 8; ++run) {
+        std::vector<glm::vec4> img = reference(scene, size, 512, true, 500 + run);
+        refMeans.push_back(meanLuminance(img));
+        for (std::size_t i = 0; i < img.size(); ++i) ref[i] += img[i] / 8.0f;
+    }
+    const MeanAndError refStats = meanOfMeans(refMeans);
+    const double refMean = refStats.mean;
+    ASSERT_GT(refMean, 0.01);
+
+    LightingSettings l;
+    l.unbiased = true;
+    const int seeds = 32;
+    std::vector<double> means;
+    std::vector<glm::vec4> sumFew(ref.size()), sumAll(ref.size());
+    Renderer r(gpu_testing::context());
+    for (int s = 0; s < seeds; ++s) {
+        l.seed = 1000 + std::uint32_t(s);
+        r.resetHistory();
+        std::vector<glm::vec4> img = renderFrames(r, scene, l, size, 4);
+        means.push_back(meanLuminance(img));
+        for (std::size_t i = 0; i < img.size(); ++i) {
+            if (s < seeds / 4) sumFew[i] += img[i];
+            sumAll[i] += img[i];
+        }
+    }
+    const MeanAndError restirStats = meanOfMeans(means);
+    const double mean = restirStats.mean;
+    const double sigma = std::sqrt(restirStats.standardError * restirStats.standardError +
+                                   refStats.standardError * refStats.standardError);
+    for (auto& p : sumFew) p /= float(seeds / 4);
+    for (auto& p : sumAll) p /= float(seeds);
+    double maeFew = mae(sumFew, ref), maeAll = mae(sumAll, ref);
+    std::printf("reference mean %.5f +- %.5f, unbiased ReSTIR mean %.5f +- %.5f: difference %.5f = %.2f sigma; MAE of "
+                "the mean of %d seeds %.5f, of %d seeds %.5f (ratio %.2f, 1/sqrt(N) predicts 2.0)\n",
+                refMean, refStats.standardError, mean, restirStats.standardError, mean - refMean,
+                std::abs(mean - refMean) / sigma, seeds / 4, maeFew, seeds, maeAll, maeFew / maeAll);
+    EXPECT_LT(std::abs(mean - refMean), 3.0 * sigma);
+    EXPECT_GT(maeFew / maeAll, 1.5) << "the error of the mean should fall roughly as 1/sqrt(N)";
+}
+
+// Point mode with one voxel light equals an analytic point light, pixel for pixel (one emitter,
+// one candidate: the sample is deterministic and W = 1).
+TEST_F(Restir, PointModeMatchesAnalyticPointLight) {
+    Scene scene = makeScene({48, 32, 48});
+    fillBox(scene.grid, Box{{0, 0, 0}, {48, 2, 48}}, kWhite);
+    fillBox(scene.grid, Box{{14, 2, 20}, {22, 9, 24}}, kRed);  // a blocker casting a hard shadow
+    const glm::ivec3 lamp{20, 12, 28};
+    scene.grid.set(lamp, kLamp);
+    scene.cameras.push_back(CameraPreset{"top", {24.0f, 40.0f, -6.0f}, {24.0f, 2.0f, 26.0f}, 60.0f});
+    scene.grid.clearDirty();
+    LightingSettings l;
+    l.method = Method::Ris;
+    l.area = false;
+    l.candidates = 1;
+    l.temporal = l.spatial = l.candidateVisibility = false;
+    Renderer r(gpu_testing::context());
+    r.render(scene, scene.camera(), frame(64), l);
+    FrameImages img = r.readback();
+
+    const glm::vec3 centre = glm::vec3(lamp) + 0.5f;
+    const glm::vec3 le = scene.palette[kLamp].emittedRadiance();
+    int checked = 0, bad = 0, shadowed = 0;
+    for (std::size_t i = 0; i < img.gbuffer.size(); ++i) {
+        const shared::GBufferTexel& g = img.gbuffer[i];
+        std::uint32_t face = std::uint32_t(g.voxel.w);
+        if (face >= 6) continue;
+        glm::vec3 n(faceNormal(face));
+        glm::vec3 p(g.position);
+        glm::vec3 albedo = scene.palette[MaterialId(g.data.x)].albedo;
+        glm::vec3 d = centre - p;
+        float dist = glm::length(d);
+        glm::vec3 w = d / dist;
+        glm::vec3 expected = scene.palette[MaterialId(g.data.x)].emittedRadiance();
+        float cosX = glm::dot(n, w);
+        if (cosX > 0.0f && glm::ivec3(g.voxel) != lamp) {
+            // Intensity towards p: radiance x projected area of the cube's exposed faces.
+            float projected = std::abs(w.x) + std::abs(w.y) + std::abs(w.z);
+            RayHit h = traceRay(scene.grid, Ray{p + n * 1e-3f, w, dist + 1e-3f});
+            bool visible = !h.hit || h.voxel == lamp;
+            shadowed += !visible;
+            if (visible) expected += albedo / float(M_PI) * le * projected * cosX / (dist * dist);
+        }
+        glm::vec3 got(img.radiance[i]);
+        ++checked;
+        float err = glm::length(got - expected) / std::max(glm::length(expected), 1e-3f);
+        bad += err > 1e-3f;
+    }
+    std::printf("point light: %d lit pixels checked, %d in shadow, %d differ by more than 0.1%%\n", checked, shadowed, bad);
+    EXPECT_GT(checked, 2000);
+    EXPECT_GT(shadowed, 20);
+    EXPECT_LE(bad, checked / 500) << "only grazing shadow-boundary pixels may differ";
+}
+
+// A brick light and its 8^3 voxels as separate emitters light the scene identically.
+TEST_F(Restir, BrickLightsAndVoxelEmittersConvergeToTheSameImage) {
+    Scene scene = roomScene();
+    const std::uint32_t size = 32;
+    std::vector<glm::vec4> bricks = reference(scene, size, 2048, true);
+    std::vector<glm::vec4> voxels = reference(scene, size, 2048, false);
+    double a = meanLuminance(bricks), b = meanLuminance(voxels);
+    double err = mae(bricks, voxels);
+    std::printf("brick lights: mean %.5f, voxel emitters: mean %.5f, MAE between them %.5f\n", a, b, err);
+    EXPECT_NEAR(a, b, 0.01 * a);
+    EXPECT_LT(err, 0.05 * a);
+}
+
+// Removing a light: no pixel is lit by it in the very next frame. Adding one: it shows up within
+// a few frames.
+TEST_F(Restir, EditedEmittersTakeEffectImmediately) {
+    // Two rooms split by a wall up to the top of the world; the camera looks down into both.
+    Scene scene = makeScene({64, 32, 32});
+    fillBox(scene.grid, Box{{0, 0, 0}, {64, 2, 32}}, kWhite);
+    fillBox(scene.grid, Box{{31, 2, 0}, {33, 32, 32}}, kWhite);
+    const glm::ivec3 lampA{12, 4, 16}, lampB{50, 4, 16};
+    scene.grid.set(lampA, kLamp);
+    scene.grid.set(lampB, kBlue);
+    scene.cameras.push_back(CameraPreset{"above", {32.0f, 70.0f, 16.0f}, {32.0f, 0.0f, 16.01f}, 50.0f});
+    scene.grid.clearDirty();
+    Renderer r(gpu_testing::context());
+    LightingSettings l;  // biased ReSTIR with temporal and spatial reuse
+    auto roomA = [&](const FrameImages& img, double& mean, float& maxValue) {
+        double sum = 0.0;
+        int n = 0;
+        maxValue = 0.0f;
+        for (std::size_t i = 0; i < img.gbuffer.size(); ++i) {
+            const auto& g = img.gbuffer[i];
+            if (std::uint32_t(g.voxel.w) != shared::FACE_POS_Y || g.voxel.y != 1 || g.voxel.x >= 31) continue;
+            sum += img.radiance[i].x + img.radiance[i].y + img.radiance[i].z;
+            maxValue = std::max(maxValue, img.radiance[i].x + img.radiance[i].y + img.radiance[i].z);
+            ++n;
+        }
+        mean = sum / std::max(n, 1);
+    };
+    double mean;
+    float maxValue;
+    for (int i = 0; i < 6; ++i) r.render(scene, scene.camera(), frame(48), l);
+    roomA(r.readback(), mean, maxValue);
+    ASSERT_GT(mean, 1e-3) << "room A is lit by its lamp";
+
+    scene.grid.set(lampA, kEmpty);
+    r.render(scene, scene.camera(), frame(48), l);
+    roomA(r.readback(), mean, maxValue);
+    EXPECT_EQ(maxValue, 0.0f) << "a pixel was lit by a removed emitter";
+
+    // Put a lamp back elsewhere in room A and count frames until room A is near steady state.
+    scene.grid.set({20, 6, 10}, kLamp);
+    std::vector<double> means;
+    for (int i = 0; i < 12; ++i) {
+        r.render(scene, scene.camera(), frame(48), l);
+        roomA(r.readback(), mean, maxValue);
+        means.push_back(mean);
+    }
+    double steady = (means[9] + means[10] + means[11]) / 3.0;
+    int frames = 0;
+    while (frames < 12 && means[frames] < 0.8 * steady) ++frames;
+    std::printf("an added lamp reached 80%% of its steady brightness after %d frame(s)\n", frames + 1);
+    EXPECT_LE(frames + 1, 5) << "temporal history (M capped at 20x) may delay a new light by a few frames, no more";
+}
