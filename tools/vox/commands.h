@@ -15,6 +15,7 @@ namespace vox {
 void addRenderCommand(CLI::App& app, int& exitCode);
 void addInfoCommand(CLI::App& app, int& exitCode);
 void addBenchTraverseCommand(CLI::App& bench, int& exitCode);
+void addBenchEmittersCommand(CLI::App& bench, int& exitCode);
 
 // Loads a world by name or path; an empty argument means the built-in default world.
 engine::Result<engine::world::Scene> loadWorld(const std::string& nameOrPath);

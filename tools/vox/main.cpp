@@ -48,6 +48,7 @@ int main(int argc, char** argv) {
     CLI::App* bench = app.add_subcommand("bench", "Benchmarks (results as CSV/JSON under out/)");
     bench->require_subcommand(1);
     vox::addBenchTraverseCommand(*bench, exitCode);
+    vox::addBenchEmittersCommand(*bench, exitCode);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
