@@ -6,6 +6,7 @@
 #include "gpu/gpu_test_context.h"
 #include "render/renderer.h"
 #include "world/ray_traversal.h"
+#include "lighting/emitter_list.h"
 #include "world/world_edits.h"
 
 using namespace engine::world;
@@ -265,4 +266,81 @@ TEST_F(Restir, EditedEmittersTakeEffectImmediately) {
     while (frames < 12 && means[frames] < 0.8 * steady) ++frames;
     std::printf("an added lamp reached 80%% of its steady brightness after %d frame(s)\n", frames + 1);
     EXPECT_LE(frames + 1, 5) << "temporal history (M capped at 20x) may delay a new light by a few frames, no more";
+}
+
+// The reference path tracer's direct light against an independent CPU quadrature of the area
+// light integral (each exposed emitter face cut into 24 x 24 patches, CPU shadow rays), at
+// sampled pixels: agreement within 4 standard errors of the reference's own noise.
+TEST_F(Restir, ReferenceDirectLightMatchesQuadrature) {
+    Scene scene = makeScene({48, 32, 48});
+    fillBox(scene.grid, Box{{0, 0, 0}, {48, 2, 48}}, kWhite);
+    fillBox(scene.grid, Box{{12, 2, 22}, {30, 10, 24}}, kRed);     // a wall casting a soft shadow
+    fillBox(scene.grid, Box{{16, 16, 24}, {24, 24, 32}}, kLamp);  // brick light
+    scene.grid.set({34, 5, 12}, kBlue);                           // voxel light
+    scene.cameras.push_back(CameraPreset{"top", {24.0f, 44.0f, -10.0f}, {24.0f, 2.0f, 24.0f}, 55.0f});
+    scene.grid.clearDirty();
+    const std::uint32_t size = 32;
+    const int runs = 8;
+    std::vector<std::vector<glm::vec4>> images;
+    for (int run = 0; run < runs; ++run) images.push_back(reference(scene, size, 512, true, 900 + std::uint32_t(run)));
+    Renderer gbufferOnly(gpu_testing::context());
+    gbufferOnly.render(scene, scene.camera(), frame(size), LightingSettings{Method::Preview});
+    FrameImages g = gbufferOnly.readback();
+
+    engine::lighting::EmitterList lights;
+    lights.rebuild(scene);
+    int checked = 0, outliers = 0;
+    double worst = 0.0;
+    for (std::uint32_t i = 0; i < size * size; i += 7) {
+        const shared::GBufferTexel& t = g.gbuffer[i];
+        if (std::uint32_t(t.voxel.w) >= 6 || t.data.x == kLamp || t.data.x == kBlue) continue;
+        glm::vec3 n(faceNormal(std::uint32_t(t.voxel.w)));
+        glm::vec3 x(t.position);
+        glm::vec3 albedo = scene.palette[MaterialId(t.data.x)].albedo;
+        glm::vec3 quad(0.0f);
+        for (std::uint32_t slot : lights.aliveSlots()) {
+            const shared::GpuEmitter& e = lights.slots()[slot];
+            float side = float(e.minCorner.w);
+            for (std::uint32_t f = 0; f < 6; ++f) {
+                if (!(e.info.x & (1u << f))) continue;
+                int axis = int(f >> 1), ua = (axis + 1) % 3, va = (axis + 2) % 3;
+                glm::vec3 nf(faceNormal(f));
+                const int k = 24;
+                float dA = (side / k) * (side / k);
+                for (int a = 0; a < k; ++a)
+                    for (int b = 0; b < k; ++b) {
+                        glm::vec3 y = glm::vec3(glm::ivec3(e.minCorner));
+                        y[axis] += (f & 1) ? side : 0.0f;
+                        y[ua] += (a + 0.5f) * side / k;
+                        y[va] += (b + 0.5f) * side / k;
+                        glm::vec3 d = y - x;
+                        float dist = glm::length(d);
+                        glm::vec3 w = d / dist;
+                        float cx = glm::dot(n, w), cy = glm::dot(nf, -w);
+                        if (cx <= 0.0f || cy <= 0.0f) continue;
+                        RayHit h = traceRay(scene.grid, Ray{x + n * 1e-3f, w, dist + 1e-3f});
+                        glm::ivec3 lo(e.minCorner);
+                        bool visible = !h.hit || (glm::all(glm::greaterThanEqual(h.voxel, lo)) &&
+                                                  glm::all(glm::lessThan(h.voxel, lo + e.minCorner.w)));
+                        if (visible) quad += albedo / float(M_PI) * glm::vec3(e.radiance) * cx * cy / (dist * dist) * dA;
+                    }
+            }
+        }
+        // Reference mean and its standard error from the independent runs (luminance).
+        double mean = 0.0, var = 0.0;
+        for (const auto& img : images) mean += (0.2126 * img[i].x + 0.7152 * img[i].y + 0.0722 * img[i].z) / runs;
+        for (const auto& img : images) {
+            double l = 0.2126 * img[i].x + 0.7152 * img[i].y + 0.0722 * img[i].z;
+            var += (l - mean) * (l - mean);
+        }
+        double stderrRef = std::sqrt(var / (runs - 1) / runs);
+        double expected = 0.2126 * quad.x + 0.7152 * quad.y + 0.0722 * quad.z;
+        double deviation = std::abs(mean - expected) / std::max(stderrRef + 0.005 * expected, 1e-6);
+        worst = std::max(worst, deviation);
+        outliers += deviation > 4.0;
+        ++checked;
+    }
+    std::printf("reference vs quadrature: %d pixels, %d beyond 4 sigma, worst %.2f sigma\n", checked, outliers, worst);
+    EXPECT_GT(checked, 60);
+    EXPECT_EQ(outliers, 0);
 }
