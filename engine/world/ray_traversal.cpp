@@ -74,7 +74,8 @@ RayHit traceRay(const BrickGrid& grid, const Ray& ray, TraversalMode mode) {
     // Brings v to the exact voxel the ray is in at t, inside the block it is known to be in.
     auto refine = [&] {
         const glm::ivec3 lo = v & ~(exact - 1);
-        v = glm::clamp(glm::ivec3(o + t * d), lo, lo + (exact - 1));  // lo >= 0: truncation = floor
+        // lo >= 0: truncation = floor. The block may overhang the world; the ray at t does not.
+        v = glm::clamp(glm::ivec3(o + t * d), lo, glm::min(lo + (exact - 1), size - 1));
         exact = 1;
     };
     for (std::uint32_t steps = 1; steps <= shared::TRAVERSAL_MAX_STEPS; ++steps) {
@@ -119,7 +120,9 @@ RayHit traceRay(const BrickGrid& grid, const Ray& ray, TraversalMode mode) {
         }
         const int axis = tNext.x <= tNext.y ? (tNext.x <= tNext.z ? 0 : 2) : (tNext.y <= tNext.z ? 1 : 2);
         const float best = tNext[axis];
-        if (best > ray.tMax) return miss(steps);
+        // tExit, not just tMax: a 32^3 super cell can reach past the world's edge, and the ray
+        // must not walk on outside it (it would read cells of the next row).
+        if (best > tExit) return miss(steps);
         v[axis] = positive[axis] ? lo[axis] + s : lo[axis] - 1;
         if (v[axis] < 0 || v[axis] >= size[axis]) return miss(steps);
         tNext[axis] += tDelta[axis];

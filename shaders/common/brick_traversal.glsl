@@ -24,7 +24,8 @@ TraceResult traceMiss(uint steps) {
 ivec3 refineVoxel(ivec3 v, int exact, vec3 o, vec3 d, float t) {
     ivec3 lo = v & ~(exact - 1);
     precise vec3 p = o + t * d;
-    return clamp(ivec3(p), lo, lo + (exact - 1));  // lo >= 0: truncation = floor
+    // lo >= 0: truncation = floor. The block may overhang the world; the ray at t does not.
+    return clamp(ivec3(p), lo, min(lo + (exact - 1), gWorld.sizeInVoxels.xyz - 1));
 }
 
 TraceResult traceRay(vec3 o, vec3 d, float tMax, bool hierarchical) {
@@ -115,7 +116,7 @@ TraceResult traceRay(vec3 o, vec3 d, float tMax, bool hierarchical) {
         }
         int axis = tNext.x <= tNext.y ? (tNext.x <= tNext.z ? 0 : 2) : (tNext.y <= tNext.z ? 1 : 2);
         float best = tNext[axis];
-        if (best > tMax) return traceMiss(steps);
+        if (best > tExit) return traceMiss(steps);  // see ray_traversal.cpp
         v[axis] = positive[axis] ? lo[axis] + s : lo[axis] - 1;
         if (v[axis] < 0 || v[axis] >= size[axis]) return traceMiss(steps);
         tNext[axis] += tDelta[axis];

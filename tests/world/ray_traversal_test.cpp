@@ -149,3 +149,23 @@ TEST(RayTraversal, FaceAndDistanceOfASimpleHit) {
     // A ray leaving the world misses.
     EXPECT_FALSE(traceRay(grid, Ray{{0.5f, 5.5f, 5.5f}, {-1.0f, 0.0f, 0.0f}}).hit);
 }
+
+// A world whose size is not a multiple of 32 voxels: its last super cells overhang the world's
+// edge, and a ray leaving through the overhang must miss, not wrap into the next row of cells.
+TEST(RayTraversal, RaysLeavingThroughAnOverhangingSuperCellMiss) {
+    BrickGrid grid({40, 80, 40});  // 5 x 10 x 5 cells; super cells reach y = 96
+    fillBox(grid, Box{{0, 0, 0}, {40, 12, 40}}, 1);
+    // One voxel low in the top row of super cells: rays cross empty super cells (32 voxels at a
+    // step), rise out of the world inside them, then enter the one that is not empty.
+    grid.set({36, 65, 10}, 2);
+    engine::Rng rng(17);
+    int misses = 0;
+    for (int i = 0; i < 2000; ++i) {
+        Ray r{{rng.uniform(1, 31), rng.uniform(70, 79.5f), rng.uniform(1, 31)}, {}};
+        r.direction = glm::normalize(glm::vec3(rng.uniform(0.3f, 1), rng.uniform(0.02f, 0.4f), rng.uniform(-0.3f, 0.3f)));
+        RayHit h = traceRay(grid, r);
+        ASSERT_FALSE(h.hit) << "ray " << i << " hit voxel " << h.voxel.x << "," << h.voxel.y << "," << h.voxel.z;
+        misses += !h.hit;
+    }
+    EXPECT_EQ(misses, 2000);
+}
