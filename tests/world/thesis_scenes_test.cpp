@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <string>
 
+#include "lighting/emitter_list.h"
 #include "world/scene_file.h"
 
 using namespace engine::world;
@@ -88,6 +89,10 @@ TEST(ThesisScenes, EveryEmissiveVoxelIsExposed) {
     for (const char* world : {"mountain", "letters", "apartments"}) {
         Scene scene = load(world);
         EXPECT_EQ(exposedEmissiveVoxels(scene), scene.emissiveVoxels()) << world;
+        // The same through the engine's emitter list: one voxel light per emissive voxel.
+        engine::lighting::EmitterList emitters(engine::lighting::EmitterSettings{false});
+        (void)emitters.rebuild(scene);
+        EXPECT_EQ(emitters.aliveCount(), scene.emissiveVoxels()) << world;
     }
 }
 
