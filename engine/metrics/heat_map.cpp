@@ -1,11 +1,11 @@
 #include "metrics/heat_map.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
-
-#include <fmt/format.h>
 
 #include "core/bitmap_font.h"
 #include "io/image_io.h"
@@ -35,15 +35,16 @@ std::uint32_t packRgba8(glm::vec3 srgb) {
 }
 
 // Writes `text` with 1-pixel glyph cells at (x, y) (top-left), clipped to the image.
-void drawText(std::vector<std::uint32_t>& rgba8, std::uint32_t width, std::uint32_t height, int x, int y,
-              const std::string& text, std::uint32_t colour) {
+void drawText(std::vector<std::uint32_t>& rgba8, std::uint32_t width, std::uint32_t height, int x,
+              int y, const std::string& text, std::uint32_t colour) {
     for (std::size_t i = 0; i < text.size(); ++i) {
         int gx0 = x + int(i) * (kGlyphWidth + 1);
         for (int row = 0; row < kGlyphHeight; ++row)
             for (int gx = 0; gx < kGlyphWidth; ++gx) {
                 int px = gx0 + gx, py = y + row;
                 if (px < 0 || py < 0 || px >= int(width) || py >= int(height)) continue;
-                if (glyphPixel(text[i], gx, row)) rgba8[std::size_t(py) * width + std::size_t(px)] = colour;
+                if (glyphPixel(text[i], gx, row))
+                    rgba8[std::size_t(py) * width + std::size_t(px)] = colour;
             }
     }
 }
@@ -72,17 +73,20 @@ float heatMapAutoMax(std::span<const float> values) {
         if (std::isfinite(v)) finite.push_back(v);
     }
     if (finite.empty()) return 1e-30f;
-    auto at = finite.begin() + std::ptrdiff_t(std::min(finite.size() - 1, finite.size() * 99 / 100));
+    auto at =
+        finite.begin() + std::ptrdiff_t(std::min(finite.size() - 1, finite.size() * 99 / 100));
     std::nth_element(finite.begin(), at, finite.end());
     return std::max(*at, 1e-30f);
 }
 
-Result<HeatMap> makeHeatMap(std::span<const float> values, std::uint32_t width, std::uint32_t height,
-                            const HeatMapOptions& options) {
+Result<HeatMap> makeHeatMap(std::span<const float> values, std::uint32_t width,
+                            std::uint32_t height, const HeatMapOptions& options) {
     if (width == 0 || height == 0 || values.size() != std::size_t(width) * height)
-        return makeError("heat map: {} values do not make a {}x{} image", values.size(), width, height);
+        return makeError("heat map: {} values do not make a {}x{} image", values.size(), width,
+                         height);
     if (!(options.maxValue >= 0.0f) || !std::isfinite(options.maxValue))
-        return makeError("heat map: the top of the range must be a finite number >= 0, not {}", options.maxValue);
+        return makeError("heat map: the top of the range must be a finite number >= 0, not {}",
+                         options.maxValue);
     HeatMap map;
     map.width = width;
     map.maxValue = options.maxValue > 0.0f ? options.maxValue : heatMapAutoMax(values);
@@ -90,13 +94,15 @@ Result<HeatMap> makeHeatMap(std::span<const float> values, std::uint32_t width, 
     map.height = height + legend;
     map.rgba8.assign(std::size_t(width) * map.height, 0xFF000000u);
     for (std::size_t i = 0; i < values.size(); ++i) {
-        map.rgba8[i] = std::isfinite(values[i]) ? packRgba8(heatRamp(values[i] / map.maxValue)) : kHeatMapNonFinite;
+        map.rgba8[i] = std::isfinite(values[i]) ? packRgba8(heatRamp(values[i] / map.maxValue))
+                                                : kHeatMapNonFinite;
     }
     if (legend > 0) {
         std::size_t top = std::size_t(height) * width;
         for (std::uint32_t y = 1; y < 7; ++y)
             for (std::uint32_t x = 0; x < width; ++x)
-                map.rgba8[top + std::size_t(y) * width + x] = packRgba8(heatRamp(float(x) / float(width - 1)));
+                map.rgba8[top + std::size_t(y) * width + x] =
+                    packRgba8(heatRamp(float(x) / float(width - 1)));
         const std::uint32_t white = 0xFFFFFFFFu;
         int textY = int(height) + 9;
         drawText(map.rgba8, width, map.height, 1, textY, "0", white);
@@ -106,8 +112,9 @@ Result<HeatMap> makeHeatMap(std::span<const float> values, std::uint32_t width, 
     return map;
 }
 
-Result<HeatMap> writeHeatMap(const std::filesystem::path& path, std::span<const float> values, std::uint32_t width,
-                             std::uint32_t height, const HeatMapOptions& options) {
+Result<HeatMap> writeHeatMap(const std::filesystem::path& path, std::span<const float> values,
+                             std::uint32_t width, std::uint32_t height,
+                             const HeatMapOptions& options) {
     auto map = makeHeatMap(values, width, height, options);
     if (!map) return map.error();
     if (Status s = io::writePng(path, map->width, map->height, map->rgba8); !s) return s.error();

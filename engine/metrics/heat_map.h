@@ -5,10 +5,9 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <glm/glm.hpp>
 #include <span>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "core/error.h"
 
@@ -32,8 +31,8 @@ struct HeatMapOptions {
 
 struct HeatMap {
     std::uint32_t width = 0;
-    std::uint32_t height = 0;  // image height plus the legend strip
-    float maxValue = 0.0f;     // the range actually used: 0 .. maxValue
+    std::uint32_t height = 0;          // image height plus the legend strip
+    float maxValue = 0.0f;             // the range actually used: 0 .. maxValue
     std::vector<std::uint32_t> rgba8;  // R in the low byte, as io::writePng takes it
 };
 
@@ -43,9 +42,10 @@ std::uint32_t heatMapLegendHeight(std::uint32_t width);
 // they are all zero, so the map stays black instead of dividing by zero).
 float heatMapAutoMax(std::span<const float> values);
 
-Result<HeatMap> makeHeatMap(std::span<const float> values, std::uint32_t width, std::uint32_t height,
-                            const HeatMapOptions& options = {});
-Result<HeatMap> writeHeatMap(const std::filesystem::path& path, std::span<const float> values, std::uint32_t width,
-                             std::uint32_t height, const HeatMapOptions& options = {});
+Result<HeatMap> makeHeatMap(std::span<const float> values, std::uint32_t width,
+                            std::uint32_t height, const HeatMapOptions& options = {});
+Result<HeatMap> writeHeatMap(const std::filesystem::path& path, std::span<const float> values,
+                             std::uint32_t width, std::uint32_t height,
+                             const HeatMapOptions& options = {});
 
 }  // namespace engine::metrics

@@ -28,19 +28,20 @@ double pixelAbsoluteError(glm::vec4 a, glm::vec4 b) {
 double pixelRelativeError(glm::vec4 a, glm::vec4 reference) {
     double sum = 0.0;
     for (int c = 0; c < 3; ++c)
-        sum += std::abs(double(a[c]) - double(reference[c])) / (std::abs(double(reference[c])) + kRmaeEpsilon);
+        sum += std::abs(double(a[c]) - double(reference[c])) /
+               (std::abs(double(reference[c])) + kRmaeEpsilon);
     return sum;
 }
 
 Status checkComparable(ImageView image, ImageView reference) {
     for (const ImageView* v : {&image, &reference}) {
         if (v->pixels.size() != std::size_t(v->width) * v->height)
-            return makeError("{} holds {} pixels, not {}x{}", v == &image ? "image" : "reference", v->pixels.size(),
-                             v->width, v->height);
+            return makeError("{} holds {} pixels, not {}x{}", v == &image ? "image" : "reference",
+                             v->pixels.size(), v->width, v->height);
     }
     if (image.width != reference.width || image.height != reference.height)
-        return makeError("image is {}x{} but the reference is {}x{}", image.width, image.height, reference.width,
-                         reference.height);
+        return makeError("image is {}x{} but the reference is {}x{}", image.width, image.height,
+                         reference.width, reference.height);
     if (image.pixels.empty()) return makeError("the images are empty (0 pixels)");
     return {};
 }
@@ -83,12 +84,13 @@ Result<double> relativeMeanAbsoluteError(ImageView image, ImageView reference) {
     return e->rmae;
 }
 
-Result<std::vector<float>> perPixelError(ImageView image, ImageView reference, PixelErrorKind kind) {
+Result<std::vector<float>> perPixelError(ImageView image, ImageView reference,
+                                         PixelErrorKind kind) {
     if (Status s = checkComparable(image, reference); !s) return s.error();
     std::vector<float> out(image.pixels.size());
     for (std::size_t i = 0; i < out.size(); ++i) {
         glm::vec4 a = image.pixels[i], b = reference.pixels[i];
-        double v = kind == PixelErrorKind::Absolute ? pixelAbsoluteError(a, b)
+        double v = kind == PixelErrorKind::Absolute  ? pixelAbsoluteError(a, b)
                    : kind == PixelErrorKind::Squared ? pixelSquaredError(a, b)
                                                      : pixelRelativeError(a, b);
         out[i] = static_cast<float>(v / 3.0);

@@ -16,10 +16,9 @@
 #pragma once
 
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <span>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "core/error.h"
 
@@ -53,8 +52,8 @@ double pixelRelativeError(glm::vec4 a, glm::vec4 reference);
 Status checkComparable(ImageView image, ImageView reference);
 
 Result<ImageErrors> compareImages(ImageView image, ImageView reference);
-Result<double> meanSquaredError(ImageView image, ImageView reference);          // thesis eq. 2
-Result<double> meanAbsoluteError(ImageView image, ImageView reference);         // thesis eq. 4
+Result<double> meanSquaredError(ImageView image, ImageView reference);           // thesis eq. 2
+Result<double> meanAbsoluteError(ImageView image, ImageView reference);          // thesis eq. 4
 Result<double> relativeMeanAbsoluteError(ImageView image, ImageView reference);  // RMAE
 
 enum class PixelErrorKind { Absolute, Squared, Relative };

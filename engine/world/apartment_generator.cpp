@@ -44,18 +44,22 @@ void generateApartment(BrickGrid& grid, const ApartmentParams& p) {
     // Roof: parapet and a stair house.
     box({lo.x, hi.y, lo.z}, {hi.x, hi.y + 1, hi.z}, p.wall);
     box({lo.x + 1, hi.y, lo.z + 1}, {hi.x - 1, hi.y + 1, hi.z - 1}, kEmpty);
-    box({coreLo.x - 1, hi.y, coreLo.z - 1}, {coreLo.x + coreSize.x + 1, hi.y + 5, coreLo.z + coreSize.z + 1}, p.wall);
+    box({coreLo.x - 1, hi.y, coreLo.z - 1},
+        {coreLo.x + coreSize.x + 1, hi.y + 5, coreLo.z + coreSize.z + 1}, p.wall);
 
     // Windows and balconies, facade by facade.
     const Facade facades[] = {
-        {2, 0, lo.z, -1, lo.x, hi.x}, {2, 0, hi.z - 1, +1, lo.x, hi.x},
-        {0, 2, lo.x, -1, lo.z, hi.z}, {0, 2, hi.x - 1, +1, lo.z, hi.z},
+        {2, 0, lo.z, -1, lo.x, hi.x},
+        {2, 0, hi.z - 1, +1, lo.x, hi.x},
+        {0, 2, lo.x, -1, lo.z, hi.z},
+        {0, 2, hi.x - 1, +1, lo.z, hi.z},
     };
     const int ww = p.windowSize.x, wh = std::min(p.windowSize.y, p.storey - 3);
     for (const Facade& f : facades) {
         const int span = f.to - f.from - 4;
         const int count = std::max(0, (span - ww) / p.windowSpacing + 1);
-        const int start = f.from + 2 + (span - ((count - 1) * p.windowSpacing + ww)) / 2;  // centred
+        const int start =
+            f.from + 2 + (span - ((count - 1) * p.windowSpacing + ww)) / 2;  // centred
         for (int s = 0; s < storeys; ++s) {
             int y = lo.y + s * p.storey + 2;
             for (int w = 0; w < count; ++w) {
@@ -95,7 +99,8 @@ void generateApartment(BrickGrid& grid, const ApartmentParams& p) {
     // Neon strips down the four vertical edges.
     if (p.cornerLight != kEmpty) {
         for (int cx : {lo.x, hi.x - 1})
-            for (int cz : {lo.z, hi.z - 1}) box({cx, lo.y, cz}, {cx + 1, hi.y, cz + 1}, p.cornerLight);
+            for (int cz : {lo.z, hi.z - 1})
+                box({cx, lo.y, cz}, {cx + 1, hi.y, cz + 1}, p.cornerLight);
     }
 
     // The rock underneath: layers shrinking by a random 0..3 voxels per side, like an inverted

@@ -6,9 +6,8 @@
 #pragma once
 
 #include <cstdint>
-#include <vector>
-
 #include <glm/glm.hpp>
+#include <vector>
 
 #include "world/brick_grid.h"
 
@@ -25,8 +24,8 @@ struct ApartmentParams {
     int baseDepth = 24;           // depth of the rock underneath (0 = none)
     std::uint32_t seed = 1;
     MaterialId wall = kEmpty, slab = kEmpty, railing = kEmpty, base = kEmpty;
-    MaterialId cornerLight = kEmpty;          // neon strips on the vertical edges (kEmpty = none)
-    std::vector<MaterialId> windowLights;     // lit panes pick one of these
+    MaterialId cornerLight = kEmpty;       // neon strips on the vertical edges (kEmpty = none)
+    std::vector<MaterialId> windowLights;  // lit panes pick one of these
 };
 
 void generateApartment(BrickGrid& grid, const ApartmentParams& p);

@@ -14,7 +14,7 @@ struct BridgeParams {
     glm::ivec3 min{0}, max{0};  // the deck (max exclusive); it runs along the longer of x and z
     int railingHeight = 3;      // above the deck
     int postSpacing = 4;
-    int lightSpacing = 8;       // 0 = no lights
+    int lightSpacing = 8;  // 0 = no lights
     MaterialId deck = kEmpty, railing = kEmpty, light = kEmpty;
 };
 

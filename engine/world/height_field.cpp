@@ -6,7 +6,8 @@
 
 namespace engine::world {
 
-void fillHeightField(BrickGrid& grid, const std::function<int(int, int)>& heightAt, const ColumnMaterials& m) {
+void fillHeightField(BrickGrid& grid, const std::function<int(int, int)>& heightAt,
+                     const ColumnMaterials& m) {
     const glm::ivec3 cells = grid.sizeInCells();
     const bool cliffs = m.cliff != kEmpty && m.cliffStep < (1 << 30);
     // Heights of one 8x8 column of cells plus a one-voxel border (for the cliff test).
@@ -41,15 +42,18 @@ void fillHeightField(BrickGrid& grid, const std::function<int(int, int)>& height
                                                 std::abs(top - h(x, z - 1)) > m.cliffStep ||
                                                 std::abs(top - h(x, z + 1)) > m.cliffStep);
                         MaterialId surface = top - 1 >= m.snowLine && m.snow != kEmpty ? m.snow
-                                             : cliff                                  ? m.cliff
-                                                                                      : m.top;
+                                             : cliff                                   ? m.cliff
+                                                                                       : m.top;
                         MaterialId soil = cliff ? m.cliff : m.soil;
                         for (int y = 0; y < 8; ++y) {
                             int wy = y0 + y;
                             MaterialId v = kEmpty;
-                            if (wy == top - 1) v = surface;
-                            else if (wy < top - 1 && wy >= top - 1 - m.soilDepth) v = soil;
-                            else if (wy < top - 1) v = m.rock;
+                            if (wy == top - 1)
+                                v = surface;
+                            else if (wy < top - 1 && wy >= top - 1 - m.soilDepth)
+                                v = soil;
+                            else if (wy < top - 1)
+                                v = m.rock;
                             voxels[brickVoxelIndex({x, y, z})] = v;
                         }
                     }

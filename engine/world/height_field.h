@@ -24,6 +24,7 @@ struct ColumnMaterials {
 
 // heightAt(x, z) is the first empty y of column (x, z) (0 = an empty column). Columns cover the
 // grid's whole footprint.
-void fillHeightField(BrickGrid& grid, const std::function<int(int, int)>& heightAt, const ColumnMaterials& m);
+void fillHeightField(BrickGrid& grid, const std::function<int(int, int)>& heightAt,
+                     const ColumnMaterials& m);
 
 }  // namespace engine::world

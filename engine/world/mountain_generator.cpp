@@ -31,7 +31,8 @@ int mountainHeight(const MountainParams& p, int x, int z) {
     // Concave flanks: steep near the summit, flattening into the foothills.
     float massif = std::pow(std::max(0.0f, 1.0f - d), 1.6f);
     float ridge = ridgedNoise(fx, fz, p);
-    float rise = (p.peakHeight - p.baseHeight) * massif * (1.0f - p.ridges + p.ridges * 2.0f * ridge);
+    float rise =
+        (p.peakHeight - p.baseHeight) * massif * (1.0f - p.ridges + p.ridges * 2.0f * ridge);
     float hills = p.hills * (2.0f * valueNoise(fx / 57.0f, fz / 57.0f, p.seed ^ 0x51ed27u) - 1.0f);
     float h = p.baseHeight + hills + rise;
     if (p.terrace > 0) h = std::floor(h / float(p.terrace)) * float(p.terrace);
@@ -39,7 +40,8 @@ int mountainHeight(const MountainParams& p, int x, int z) {
 }
 
 void generateMountain(BrickGrid& grid, const MountainParams& p) {
-    fillHeightField(grid, [&](int x, int z) { return mountainHeight(p, x, z); }, p.materials);
+    fillHeightField(
+        grid, [&](int x, int z) { return mountainHeight(p, x, z); }, p.materials);
 }
 
 }  // namespace engine::world

@@ -4,7 +4,6 @@
 #pragma once
 
 #include <cstdint>
-
 #include <glm/glm.hpp>
 
 #include "world/brick_grid.h"
@@ -22,7 +21,7 @@ struct MountainParams {
     float ridges = 0.35f;       // 0..1: how deeply ridged noise cuts the flanks
     float wavelength = 64.0f;   // of the first ridge octave, in voxels
     int octaves = 4;
-    int terrace = 0;            // > 0: heights snap down to multiples of this (steps)
+    int terrace = 0;  // > 0: heights snap down to multiples of this (steps)
     std::uint32_t seed = 1;
 };
 

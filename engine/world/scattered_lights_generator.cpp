@@ -16,10 +16,12 @@ int generateScatteredLights(BrickGrid& grid, const ScatteredLightsParams& p) {
     for (int gz = 0; gz < nz; ++gz)
         for (int gx = 0; gx < nx; ++gx) {
             // Drawn for every cell, placed or not, so a change elsewhere never shifts the others.
-            int ox = rng.uniformInt(0, p.spacing - p.size.x), oz = rng.uniformInt(0, p.spacing - p.size.z);
+            int ox = rng.uniformInt(0, p.spacing - p.size.x),
+                oz = rng.uniformInt(0, p.spacing - p.size.z);
             glm::ivec3 lo{p.margin + gx * p.spacing + ox, 0, p.margin + gz * p.spacing + oz};
             for (int z = 0; z < p.size.z; ++z)
-                for (int x = 0; x < p.size.x; ++x) lo.y = std::max(lo.y, groundHeight(grid, lo.x + x, lo.z + z));
+                for (int x = 0; x < p.size.x; ++x)
+                    lo.y = std::max(lo.y, groundHeight(grid, lo.x + x, lo.z + z));
             if (lo.y + p.size.y > world.y) continue;
             fillBox(grid, Box{lo, lo + p.size}, p.light);
             ++placed;

@@ -6,7 +6,6 @@
 #pragma once
 
 #include <cstdint>
-
 #include <glm/glm.hpp>
 
 #include "world/brick_grid.h"
@@ -14,9 +13,9 @@
 namespace engine::world {
 
 struct ScatteredLightsParams {
-    int spacing = 8;             // grid cell edge in voxels
-    glm::ivec3 size{1, 3, 1};    // each light's box; x and z at most spacing
-    int margin = 0;              // keep this far from the world's x and z edges
+    int spacing = 8;           // grid cell edge in voxels
+    glm::ivec3 size{1, 3, 1};  // each light's box; x and z at most spacing
+    int margin = 0;            // keep this far from the world's x and z edges
     std::uint32_t seed = 9;
     MaterialId light = kEmpty;
 };

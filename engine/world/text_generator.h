@@ -4,9 +4,8 @@
 // wall is enclosed on every side but its face.
 #pragma once
 
-#include <string>
-
 #include <glm/glm.hpp>
+#include <string>
 
 #include "world/brick_grid.h"
 

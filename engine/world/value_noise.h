@@ -4,7 +4,6 @@
 
 #include <cmath>
 #include <cstdint>
-
 #include <glm/glm.hpp>
 
 #include "core/hash.h"
@@ -12,7 +11,8 @@
 namespace engine::world {
 
 inline float latticeValue(int x, int z, std::uint32_t seed) {
-    std::uint32_t h = hashCombine(hashCombine(seed, static_cast<std::uint32_t>(x)), static_cast<std::uint32_t>(z));
+    std::uint32_t h = hashCombine(hashCombine(seed, static_cast<std::uint32_t>(x)),
+                                  static_cast<std::uint32_t>(z));
     return static_cast<float>(h) * (1.0f / 4294967296.0f);
 }
 

@@ -1,9 +1,9 @@
+#include "core/bitmap_font.h"
+
 #include <gtest/gtest.h>
 
 #include <set>
 #include <string>
-
-#include "core/bitmap_font.h"
 
 using namespace engine;
 

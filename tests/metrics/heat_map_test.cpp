@@ -1,3 +1,5 @@
+#include "metrics/heat_map.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -5,8 +7,6 @@
 #include <fstream>
 #include <limits>
 #include <vector>
-
-#include "metrics/heat_map.h"
 
 using namespace engine::metrics;
 
@@ -45,7 +45,8 @@ TEST(HeatMap, RampIsPerceptuallyOrdered) {
 }
 
 TEST(HeatMap, MapsZeroToTheBottomAndTheMaxToTheTop) {
-    std::vector<float> values = {0.0f, 0.5f, 1.0f, 2.0f, std::numeric_limits<float>::quiet_NaN(), 0.25f};
+    std::vector<float> values = {0.0f, 0.5f, 1.0f, 2.0f, std::numeric_limits<float>::quiet_NaN(),
+                                 0.25f};
     auto map = makeHeatMap(values, 3, 2, HeatMapOptions{1.0f, false});
     ASSERT_TRUE(map.ok()) << map.error().message;
     EXPECT_EQ(map->width, 3u);
@@ -89,7 +90,8 @@ TEST(HeatMap, WritesAPngOfTheImageSizePlusTheLegend) {
     EXPECT_NE(map->rgba8[ramp], map->rgba8[ramp + w - 1]);
     // Labels are drawn in white into the strip.
     int white = 0;
-    for (std::size_t i = std::size_t(h) * w; i < map->rgba8.size(); ++i) white += map->rgba8[i] == 0xFFFFFFFFu;
+    for (std::size_t i = std::size_t(h) * w; i < map->rgba8.size(); ++i)
+        white += map->rgba8[i] == 0xFFFFFFFFu;
     EXPECT_GT(white, 10);
     std::filesystem::remove(path);
 
@@ -104,5 +106,6 @@ TEST(HeatMap, RejectsBadInput) {
     EXPECT_FALSE(makeHeatMap(values, 10, 1, HeatMapOptions{-1.0f, true}).ok());
     auto bad = writeHeatMap("/nonexistent-dir/x.png", values, 10, 1);
     ASSERT_FALSE(bad.ok());
-    EXPECT_NE(bad.error().message.find("/nonexistent-dir/x.png"), std::string::npos) << bad.error().message;
+    EXPECT_NE(bad.error().message.find("/nonexistent-dir/x.png"), std::string::npos)
+        << bad.error().message;
 }

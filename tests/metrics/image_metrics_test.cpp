@@ -1,10 +1,10 @@
+#include "metrics/image_metrics.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 #include <vector>
-
-#include "metrics/image_metrics.h"
 
 using namespace engine::metrics;
 
@@ -21,7 +21,9 @@ T get(engine::Result<T> r) {
     return r.ok() ? std::move(r).value() : T{};
 }
 
-ImageView view(const std::vector<glm::vec4>& p, std::uint32_t w, std::uint32_t h) { return {p, w, h}; }
+ImageView view(const std::vector<glm::vec4>& p, std::uint32_t w, std::uint32_t h) {
+    return {p, w, h};
+}
 
 std::vector<glm::vec4> noiseImage(std::uint32_t n, std::uint32_t seed) {
     std::vector<glm::vec4> p(n);
@@ -45,7 +47,8 @@ TEST(ImageMetrics, HandComputedTinyImage) {
     // thesis eqs. 3-4: PAE = 0.75 and 3; MAE = 3.75 / 6
     EXPECT_DOUBLE_EQ(e->mae, 0.625);
     // RMAE: |a-b| / (|b| + 0.01) per channel, the last one against a black reference channel
-    double rmae = (0.5 / 0.51 + 0.0 / 0.51 + 0.25 / 0.26 + 0.0 / 0.01 + 1.0 / 1.01 + 2.0 / 0.01) / 6.0;
+    double rmae =
+        (0.5 / 0.51 + 0.0 / 0.51 + 0.25 / 0.26 + 0.0 / 0.01 + 1.0 / 1.01 + 2.0 / 0.01) / 6.0;
     EXPECT_NEAR(e->rmae, rmae, 1e-12);
     EXPECT_NEAR(e->rmae, 202.93202963 / 6.0, 1e-8);  // 0.98039216 + 0.96153846 + 0.99009901 + 200
     EXPECT_EQ(e->pixels, 2u);
@@ -94,7 +97,8 @@ TEST(ImageMetrics, ScalingScalesTheErrors) {
 TEST(ImageMetrics, RmaeOfAKnownRelativeError) {
     // 50 % too bright everywhere against a reference of 1: |1.5 - 1| / (1 + 0.01).
     std::vector<glm::vec4> ref(12, glm::vec4(1.0f)), img(12, glm::vec4(1.5f));
-    EXPECT_NEAR(get(relativeMeanAbsoluteError(view(img, 4, 3), view(ref, 4, 3))), 0.5 / 1.01, 1e-12);
+    EXPECT_NEAR(get(relativeMeanAbsoluteError(view(img, 4, 3), view(ref, 4, 3))), 0.5 / 1.01,
+                1e-12);
     // A bright reference pixel forgives the same absolute error a dark one does not.
     std::vector<glm::vec4> bright(1, glm::vec4(100.0f)), brightOff(1, glm::vec4(101.0f));
     std::vector<glm::vec4> dark(1, glm::vec4(0.125f)), darkOff(1, glm::vec4(1.125f));

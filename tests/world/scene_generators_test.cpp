@@ -31,14 +31,15 @@ std::uint64_t countMaterial(const BrickGrid& grid, MaterialId m) {
 
 int emptyNeighbours(const BrickGrid& grid, glm::ivec3 p) {
     int n = 0;
-    for (glm::ivec3 d : {glm::ivec3(1, 0, 0), glm::ivec3(-1, 0, 0), glm::ivec3(0, 1, 0), glm::ivec3(0, -1, 0),
-                         glm::ivec3(0, 0, 1), glm::ivec3(0, 0, -1)})
+    for (glm::ivec3 d : {glm::ivec3(1, 0, 0), glm::ivec3(-1, 0, 0), glm::ivec3(0, 1, 0),
+                         glm::ivec3(0, -1, 0), glm::ivec3(0, 0, 1), glm::ivec3(0, 0, -1)})
         n += grid.get(p + d) == kEmpty;
     return n;
 }
 
 std::string errorOf(const std::string& generator) {
-    std::string text = "[world]\nsize = [32, 32, 32]\n[[material]]\nname = \"stone\"\n[[generator]]\n" + generator;
+    std::string text =
+        "[world]\nsize = [32, 32, 32]\n[[material]]\nname = \"stone\"\n[[generator]]\n" + generator;
     auto scene = loadSceneText(text, "test.toml");
     EXPECT_FALSE(scene.ok()) << "expected an error for:\n" << generator;
     return scene.ok() ? std::string() : scene.error().message;
@@ -69,7 +70,8 @@ TEST(TextGenerator, GlyphsStandUprightAlongRight) {
     p.material = kLight;
     generateText(grid, p);
     for (int y = 2; y < 9; ++y) EXPECT_EQ(grid.get({2, y, 5}), kLight) << "the L's bar, y " << y;
-    for (int x = 2; x < 7; ++x) EXPECT_EQ(grid.get({x, 2, 5}), kLight) << "the L's foot on the baseline, x " << x;
+    for (int x = 2; x < 7; ++x)
+        EXPECT_EQ(grid.get({x, 2, 5}), kLight) << "the L's foot on the baseline, x " << x;
     EXPECT_EQ(grid.get({3, 8, 5}), kEmpty) << "nothing right of the bar's top";
     // Depth goes away from the reader: the face looks along cross(right, up) = +z, layers go -z.
     p.depth = 2;
@@ -103,13 +105,21 @@ TEST(TextGenerator, LettersSetIntoAWallAreEnclosedButForTheirFace) {
 }
 
 TEST(TextGenerator, SceneFileErrorsNameTheLine) {
-    EXPECT_EQ(errorOf("type = \"text\"\ntext = \"50%\"\norigin = [0, 0, 0]\nmaterial = \"stone\"\n"),
-              "test.toml:5: text: no glyph for '%' (the font has A-Z, 0-9, . - + :)");
-    std::string e = errorOf("type = \"text\"\ntext = \"A\"\norigin = [0, 0, 0]\nright = [1, 1, 0]\nmaterial = \"stone\"\n");
-    EXPECT_NE(e.find("test.toml:5: text: 'right' and 'up' must be perpendicular"), std::string::npos) << e;
-    e = errorOf("type = \"text\"\ntext = \"A\"\norigin = [0, 0, 0]\nup = [1, 0, 0]\nmaterial = \"stone\"\n");
+    EXPECT_EQ(
+        errorOf("type = \"text\"\ntext = \"50%\"\norigin = [0, 0, 0]\nmaterial = \"stone\"\n"),
+        "test.toml:5: text: no glyph for '%' (the font has A-Z, 0-9, . - + :)");
+    std::string e = errorOf(
+        "type = \"text\"\ntext = \"A\"\norigin = [0, 0, 0]\nright = [1, 1, 0]\nmaterial = "
+        "\"stone\"\n");
+    EXPECT_NE(e.find("test.toml:5: text: 'right' and 'up' must be perpendicular"),
+              std::string::npos)
+        << e;
+    e = errorOf(
+        "type = \"text\"\ntext = \"A\"\norigin = [0, 0, 0]\nup = [1, 0, 0]\nmaterial = "
+        "\"stone\"\n");
     EXPECT_NE(e.find("perpendicular"), std::string::npos) << e;
-    e = errorOf("type = \"text\"\ntext = \"A\"\norigin = [0, 0, 0]\nmaterial = \"stone\"\nsize = 3\n");
+    e = errorOf(
+        "type = \"text\"\ntext = \"A\"\norigin = [0, 0, 0]\nmaterial = \"stone\"\nsize = 3\n");
     EXPECT_EQ(e, "test.toml:10: unknown key 'size'");
 }
 
@@ -126,7 +136,8 @@ TEST(MengerGenerator, HasTwentyToTheLevelCubes) {
     EXPECT_EQ(grid.solidVoxels(), 64000u);
     EXPECT_EQ(grid.get(p.origin), kStone) << "corners stay";
     EXPECT_EQ(grid.get(p.origin + 27), kEmpty) << "the centre is hollow";
-    EXPECT_EQ(grid.get(p.origin + glm::ivec3(0, 27, 27)), kEmpty) << "a tunnel runs through the faces";
+    EXPECT_EQ(grid.get(p.origin + glm::ivec3(0, 27, 27)), kEmpty)
+        << "a tunnel runs through the faces";
     EXPECT_EQ(grid.get(p.origin + glm::ivec3(7, 7, 0)), kEmpty) << "second-level tunnel";
     EXPECT_EQ(grid.get(p.origin + glm::ivec3(2, 2, 0)), kEmpty) << "third-level tunnel";
     EXPECT_EQ(grid.get(p.origin + glm::ivec3(1, 1, 0)), kStone);
@@ -192,7 +203,8 @@ TEST(MountainGenerator, ColumnsFollowTheHeightFunction) {
             int h = mountainHeight(p, x, z);
             ASSERT_EQ(groundHeight(grid, x, z), h) << x << ", " << z;
             EXPECT_EQ(h % 2, 0) << "terraces of 2";
-            EXPECT_EQ(grid.get({x, h - 1, z}), h - 1 >= 50 ? kLight : kStone) << "snow above the snow line";
+            EXPECT_EQ(grid.get({x, h - 1, z}), h - 1 >= 50 ? kLight : kStone)
+                << "snow above the snow line";
         }
     // Ridges scale the rise by 1 +- 0.35, hills add +-8: the summit is at least 10 - 8 + 0.65 * 80.
     EXPECT_GT(mountainHeight(p, 64, 64), 50);
@@ -270,14 +282,18 @@ TEST(ApartmentGenerator, SeedChangesTheFacadesNotTheShell) {
 }
 
 TEST(SceneGenerators, ParseErrorsNameTheLine) {
-    EXPECT_EQ(errorOf("type = \"menger\"\nlevel = 9\nmaterial = \"stone\"\n"), "test.toml:7: 'level' must be in 0..6");
-    EXPECT_EQ(errorOf("type = \"scattered_lights\"\nspacing = 4\nsize = [5, 1, 1]\nlight = \"stone\"\n"),
-              "test.toml:8: 'size' must be at least 1, at most 'spacing' across and 256 high");
-    EXPECT_EQ(errorOf("type = \"apartment\"\nmin = [0, 0, 0]\nsize = [16, 16, 16]\nwall = \"stone\"\n"
-                      "slab = \"stone\"\nwindows = [\"stone\", \"glas\"]\n"),
-              "test.toml:11: unknown material 'glas'");
+    EXPECT_EQ(errorOf("type = \"menger\"\nlevel = 9\nmaterial = \"stone\"\n"),
+              "test.toml:7: 'level' must be in 0..6");
+    EXPECT_EQ(
+        errorOf("type = \"scattered_lights\"\nspacing = 4\nsize = [5, 1, 1]\nlight = \"stone\"\n"),
+        "test.toml:8: 'size' must be at least 1, at most 'spacing' across and 256 high");
+    EXPECT_EQ(
+        errorOf("type = \"apartment\"\nmin = [0, 0, 0]\nsize = [16, 16, 16]\nwall = \"stone\"\n"
+                "slab = \"stone\"\nwindows = [\"stone\", \"glas\"]\n"),
+        "test.toml:11: unknown material 'glas'");
     EXPECT_EQ(errorOf("type = \"bridge\"\nmin = [0, 0, 0]\nmax = [8, 0, 8]\ndeck = \"stone\"\n"),
               "test.toml:8: 'max' must exceed 'min' on every axis");
-    EXPECT_EQ(errorOf("type = \"mountain\"\ntop = \"stone\"\nsoil = \"stone\"\nrock = \"stone\"\nridges = 2.0\n"),
+    EXPECT_EQ(errorOf("type = \"mountain\"\ntop = \"stone\"\nsoil = \"stone\"\nrock = "
+                      "\"stone\"\nridges = 2.0\n"),
               "test.toml:10: 'ridges' must be in 0..1");
 }

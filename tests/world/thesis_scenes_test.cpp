@@ -16,7 +16,7 @@ namespace {
 
 struct ThesisScene {
     const char* world;
-    int views;                     // camera presets: the thesis's "scene 1" and "scene 2" (+ overview)
+    int views;  // camera presets: the thesis's "scene 1" and "scene 2" (+ overview)
     std::uint64_t thesisEmissive;  // thesis Tables 1-3
     std::uint64_t shipped;         // what worlds/<world>.toml generates
 };
@@ -41,7 +41,9 @@ std::uint64_t exposedEmissiveVoxels(const Scene& scene) {
                 glm::ivec3 c{cx, cy, cz};
                 std::uint32_t value = grid.cell(c);
                 if (value == shared::CELL_EMPTY) continue;
-                if (!BrickGrid::cellIsBrick(value) && !scene.palette[BrickGrid::cellMaterial(value)].emissive()) continue;
+                if (!BrickGrid::cellIsBrick(value) &&
+                    !scene.palette[BrickGrid::cellMaterial(value)].emissive())
+                    continue;
                 BrickVoxels voxels = grid.readCell(c);
                 for (int i = 0; i < kBrickVoxels; ++i) {
                     if (!scene.palette[voxels[i]].emissive()) continue;
@@ -58,7 +60,8 @@ std::uint64_t exposedEmissiveVoxels(const Scene& scene) {
 }
 
 Scene load(const char* world) {
-    auto scene = loadSceneFile(std::filesystem::path(VOX_SOURCE_DIR) / "worlds" / (std::string(world) + ".toml"));
+    auto scene = loadSceneFile(std::filesystem::path(VOX_SOURCE_DIR) / "worlds" /
+                               (std::string(world) + ".toml"));
     EXPECT_TRUE(scene.ok()) << (scene.ok() ? "" : scene.error().message);
     return scene.ok() ? std::move(scene).value() : Scene{};
 }
@@ -69,15 +72,21 @@ TEST(ThesisScenes, EmissiveCountsMatchTheThesis) {
     for (const ThesisScene& s : kScenes) {
         auto start = std::chrono::steady_clock::now();
         Scene scene = load(s.world);
-        double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         std::uint64_t emissive = scene.emissiveVoxels();
-        std::printf("%-10s %7llu emissive voxels (thesis %llu, %+.2f %%), generated in %.3f s\n", s.world,
-                    static_cast<unsigned long long>(emissive), static_cast<unsigned long long>(s.thesisEmissive),
-                    100.0 * (double(emissive) - double(s.thesisEmissive)) / double(s.thesisEmissive), seconds);
+        std::printf(
+            "%-10s %7llu emissive voxels (thesis %llu, %+.2f %%), generated in %.3f s\n", s.world,
+            static_cast<unsigned long long>(emissive),
+            static_cast<unsigned long long>(s.thesisEmissive),
+            100.0 * (double(emissive) - double(s.thesisEmissive)) / double(s.thesisEmissive),
+            seconds);
         EXPECT_EQ(emissive, s.shipped) << s.world;
-        EXPECT_LE(std::abs(double(emissive) - double(s.thesisEmissive)), 0.02 * double(s.thesisEmissive))
+        EXPECT_LE(std::abs(double(emissive) - double(s.thesisEmissive)),
+                  0.02 * double(s.thesisEmissive))
             << s.world << ": more than 2 % from the thesis's count";
-        EXPECT_TRUE(glm::all(glm::lessThanEqual(scene.grid.sizeInVoxels(), glm::ivec3(512)))) << s.world;
+        EXPECT_TRUE(glm::all(glm::lessThanEqual(scene.grid.sizeInVoxels(), glm::ivec3(512))))
+            << s.world;
         EXPECT_GE(scene.cameras.size(), std::size_t(s.views)) << s.world;
     }
 }

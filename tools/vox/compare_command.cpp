@@ -1,11 +1,11 @@
 // vox compare A.exr B.exr: error of image A against reference B (thesis §3.3 MAE and MSE, RMAE),
 // optionally an error heat map and a JSON record.
+#include <fmt/format.h>
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-
-#include <fmt/format.h>
 
 #include "commands.h"
 #include "io/image_io.h"
@@ -25,7 +25,8 @@ struct CompareOptions {
 
 engine::Result<engine::io::ExrImage> loadExr(const std::string& path) {
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) return engine::makeError("{}: no such file", path);
+    if (!std::filesystem::is_regular_file(path, ec))
+        return engine::makeError("{}: no such file", path);
     auto image = engine::io::readExr(path);
     if (!image) {
         // OpenEXR's messages can span lines; the command line promises one.
@@ -55,11 +56,17 @@ std::string jsonNumber(double v) { return std::isfinite(v) ? fmt::format("{:.9g}
 int runCompare(const CompareOptions& o) {
     using namespace engine::metrics;
     PixelErrorKind kind;
-    if (o.heatmapError == "abs") kind = PixelErrorKind::Absolute;
-    else if (o.heatmapError == "squared") kind = PixelErrorKind::Squared;
-    else if (o.heatmapError == "relative") kind = PixelErrorKind::Relative;
-    else return fail(engine::makeError("--heatmap-error: expected abs, squared or relative, got '{}'", o.heatmapError));
-    if (!(o.heatmapMax >= 0.0f)) return fail(engine::makeError("--heatmap-max must be >= 0 (0 = automatic)"));
+    if (o.heatmapError == "abs")
+        kind = PixelErrorKind::Absolute;
+    else if (o.heatmapError == "squared")
+        kind = PixelErrorKind::Squared;
+    else if (o.heatmapError == "relative")
+        kind = PixelErrorKind::Relative;
+    else
+        return fail(engine::makeError(
+            "--heatmap-error: expected abs, squared or relative, got '{}'", o.heatmapError));
+    if (!(o.heatmapMax >= 0.0f))
+        return fail(engine::makeError("--heatmap-max must be >= 0 (0 = automatic)"));
     if (!o.heatmap.empty() && std::filesystem::path(o.heatmap).extension() != ".png")
         return fail(engine::makeError("--heatmap {}: the file must end in .png", o.heatmap));
 
@@ -68,8 +75,9 @@ int runCompare(const CompareOptions& o) {
     auto reference = loadExr(o.reference);
     if (!reference) return fail(reference.error());
     if (image->width != reference->width || image->height != reference->height)
-        return fail(engine::makeError("{} is {}x{} but the reference {} is {}x{}", o.image, image->width,
-                                      image->height, o.reference, reference->width, reference->height));
+        return fail(engine::makeError("{} is {}x{} but the reference {} is {}x{}", o.image,
+                                      image->width, image->height, o.reference, reference->width,
+                                      reference->height));
     ImageView a{image->pixels, image->width, image->height};
     ImageView b{reference->pixels, reference->width, reference->height};
     auto errors = compareImages(a, b);
@@ -91,32 +99,37 @@ int runCompare(const CompareOptions& o) {
         std::error_code ec;
         std::filesystem::path out(o.heatmap);
         if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path(), ec);
-        auto written = writeHeatMap(out, *values, a.width, a.height, HeatMapOptions{o.heatmapMax, true});
+        auto written =
+            writeHeatMap(out, *values, a.width, a.height, HeatMapOptions{o.heatmapMax, true});
         if (!written) return fail(written.error());
         map = std::move(*written);
-        std::printf("wrote      %s (%s error per pixel, colour range 0 .. %.3g)\n", o.heatmap.c_str(),
-                    o.heatmapError.c_str(), map.maxValue);
+        std::printf("wrote      %s (%s error per pixel, colour range 0 .. %.3g)\n",
+                    o.heatmap.c_str(), o.heatmapError.c_str(), map.maxValue);
     }
     if (!o.json.empty()) {
         std::string text = fmt::format(
-            "{{\n  \"image\": {},\n  \"reference\": {},\n  \"width\": {},\n  \"height\": {},\n  \"mae\": {},\n"
+            "{{\n  \"image\": {},\n  \"reference\": {},\n  \"width\": {},\n  \"height\": {},\n  "
+            "\"mae\": {},\n"
             "  \"mse\": {},\n  \"rmae\": {},\n  \"rmae_epsilon\": {},\n  \"non_finite_pixels\": {}",
-            jsonString(o.image), jsonString(o.reference), a.width, a.height, jsonNumber(errors->mae),
-            jsonNumber(errors->mse), jsonNumber(errors->rmae), kRmaeEpsilon, errors->nonFinitePixels);
+            jsonString(o.image), jsonString(o.reference), a.width, a.height,
+            jsonNumber(errors->mae), jsonNumber(errors->mse), jsonNumber(errors->rmae),
+            kRmaeEpsilon, errors->nonFinitePixels);
         if (!o.heatmap.empty())
-            text += fmt::format(",\n  \"heatmap\": {{\"path\": {}, \"error\": {}, \"max\": {}}}", jsonString(o.heatmap),
-                                jsonString(o.heatmapError), jsonNumber(map.maxValue));
+            text += fmt::format(",\n  \"heatmap\": {{\"path\": {}, \"error\": {}, \"max\": {}}}",
+                                jsonString(o.heatmap), jsonString(o.heatmapError),
+                                jsonNumber(map.maxValue));
         text += "\n}\n";
         std::error_code ec;
         std::filesystem::path out(o.json);
         if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path(), ec);
-        engine::Status s = engine::io::writeAtomically(out, [&](const std::filesystem::path& temp) -> engine::Status {
-            std::ofstream file(temp, std::ios::binary);
-            file << text;
-            file.close();
-            if (!file) return engine::makeError("{}: cannot write", o.json);
-            return {};
-        });
+        engine::Status s = engine::io::writeAtomically(
+            out, [&](const std::filesystem::path& temp) -> engine::Status {
+                std::ofstream file(temp, std::ios::binary);
+                file << text;
+                file.close();
+                if (!file) return engine::makeError("{}: cannot write", o.json);
+                return {};
+            });
         if (!s) return fail(s.error());
         std::printf("wrote      %s\n", o.json.c_str());
     }
@@ -126,13 +139,17 @@ int runCompare(const CompareOptions& o) {
 }  // namespace
 
 void addCompareCommand(CLI::App& app, int& exitCode) {
-    auto* cmd = app.add_subcommand("compare", "Error of an EXR image against a reference EXR: MAE, MSE, RMAE");
+    auto* cmd = app.add_subcommand("compare",
+                                   "Error of an EXR image against a reference EXR: MAE, MSE, RMAE");
     auto o = std::make_shared<CompareOptions>();
     cmd->add_option("image", o->image, "Image to measure (linear EXR)")->required();
-    cmd->add_option("reference", o->reference, "Reference image (linear EXR), e.g. a converged path trace")
+    cmd->add_option("reference", o->reference,
+                    "Reference image (linear EXR), e.g. a converged path trace")
         ->required();
-    cmd->add_option("--heatmap", o->heatmap, "Write a per-pixel error heat map (PNG, with a legend strip)");
-    cmd->add_option("--heatmap-error", o->heatmapError, "Error shown in the heat map: abs, squared or relative")
+    cmd->add_option("--heatmap", o->heatmap,
+                    "Write a per-pixel error heat map (PNG, with a legend strip)");
+    cmd->add_option("--heatmap-error", o->heatmapError,
+                    "Error shown in the heat map: abs, squared or relative")
         ->capture_default_str();
     cmd->add_option("--heatmap-max", o->heatmapMax,
                     "Error at the top of the colour ramp (0 = the 99th percentile)")
