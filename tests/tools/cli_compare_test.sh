@@ -57,7 +57,10 @@ else
     dims=$(od -An -tu1 -j16 -N8 "$tmp/heat/ab.png" | awk '{ print $1*16777216+$2*65536+$3*256+$4 "x" $5*16777216+$6*65536+$7*256+$8 }')
     [ "$dims" = "64x57" ] || fail "heat map is $dims, want 64x57 (64x40 plus a 17-row legend)"
 fi
-grep -q "\"mae\": $mae" "$tmp/ab.json" || fail "JSON lacks \"mae\": $mae"; 
+# The JSON holds more digits than the printout (9 vs 6 significant): equal to 6 digits.
+jmae=$(sed -n 's/.*"mae": \([^,]*\),.*/\1/p' "$tmp/ab.json")
+awk -v j="$jmae" -v p="$mae" 'BEGIN { d = j - p; if (d < 0) d = -d; exit !(j != "" && d <= 1e-5 * p) }' ||
+    fail "JSON \"mae\": '$jmae' differs from the printed MAE $mae"
 grep -q "\"rmae_epsilon\": 0.01" "$tmp/ab.json" || fail "JSON lacks the RMAE epsilon"
 grep -q "\"heatmap\": {\"path\"" "$tmp/ab.json" || fail "JSON lacks the heat map"
 
