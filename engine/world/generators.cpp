@@ -4,30 +4,11 @@
 #include <cmath>
 
 #include "core/hash.h"
+#include "world/height_field.h"
+#include "world/value_noise.h"
 #include "world/world_edits.h"
 
 namespace engine::world {
-
-namespace {
-
-float latticeValue(int x, int z, std::uint32_t seed) {
-    std::uint32_t h = hashCombine(hashCombine(seed, static_cast<std::uint32_t>(x)), static_cast<std::uint32_t>(z));
-    return static_cast<float>(h) * (1.0f / 4294967296.0f);
-}
-
-// Smoothly interpolated value noise in [0, 1).
-float valueNoise(float x, float z, std::uint32_t seed) {
-    float fx = std::floor(x), fz = std::floor(z);
-    int ix = static_cast<int>(fx), iz = static_cast<int>(fz);
-    float tx = x - fx, tz = z - fz;
-    tx = tx * tx * (3.0f - 2.0f * tx);
-    tz = tz * tz * (3.0f - 2.0f * tz);
-    float a = latticeValue(ix, iz, seed), b = latticeValue(ix + 1, iz, seed);
-    float c = latticeValue(ix, iz + 1, seed), d = latticeValue(ix + 1, iz + 1, seed);
-    return glm::mix(glm::mix(a, b, tx), glm::mix(c, d, tx), tz);
-}
-
-}  // namespace
 
 int terrainHeight(const TerrainParams& p, int x, int z) {
     float sum = 0.0f, norm = 0.0f, amp = 1.0f, freq = 1.0f / std::max(p.wavelength, 1.0f);
@@ -42,43 +23,12 @@ int terrainHeight(const TerrainParams& p, int x, int z) {
 }
 
 void generateTerrain(BrickGrid& grid, const TerrainParams& p) {
-    const glm::ivec3 cells = grid.sizeInCells();
-    std::array<int, 64> heights{};
-    for (int cz = 0; cz < cells.z; ++cz) {
-        for (int cx = 0; cx < cells.x; ++cx) {
-            int minH = 1 << 30, maxH = 0;
-            for (int z = 0; z < 8; ++z)
-                for (int x = 0; x < 8; ++x) {
-                    int h = terrainHeight(p, cx * 8 + x, cz * 8 + z);
-                    heights[x + 8 * z] = h;
-                    minH = std::min(minH, h);
-                    maxH = std::max(maxH, h);
-                }
-            for (int cy = 0; cy < cells.y; ++cy) {
-                int y0 = cy * 8;
-                if (y0 >= maxH) break;
-                glm::ivec3 c{cx, cy, cz};
-                if (y0 + 8 <= minH - 1 - p.soilDepth) {
-                    grid.writeCellUniform(c, p.rock);
-                    continue;
-                }
-                BrickVoxels voxels{};
-                for (int z = 0; z < 8; ++z)
-                    for (int x = 0; x < 8; ++x) {
-                        int h = heights[x + 8 * z];
-                        for (int y = 0; y < 8; ++y) {
-                            int wy = y0 + y;
-                            MaterialId m = kEmpty;
-                            if (wy == h - 1) m = p.top;
-                            else if (wy < h - 1 && wy >= h - 1 - p.soilDepth) m = p.soil;
-                            else if (wy < h - 1) m = p.rock;
-                            voxels[brickVoxelIndex({x, y, z})] = m;
-                        }
-                    }
-                grid.writeCell(c, voxels);
-            }
-        }
-    }
+    ColumnMaterials m;
+    m.top = p.top;
+    m.soil = p.soil;
+    m.rock = p.rock;
+    m.soilDepth = p.soilDepth;
+    fillHeightField(grid, [&](int x, int z) { return terrainHeight(p, x, z); }, m);
 }
 
 void generateCornellBox(BrickGrid& grid, const CornellParams& p) {

@@ -3,12 +3,19 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <vector>
 #include <string>
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include "world/apartment_generator.h"
+#include "world/bridge_generator.h"
 #include "world/generators.h"
+#include "world/menger_generator.h"
+#include "world/mountain_generator.h"
+#include "world/scattered_lights_generator.h"
+#include "world/text_generator.h"
 #include "world/world_edits.h"
 
 namespace engine::world {
@@ -92,6 +99,29 @@ public:
                 auto v = (*a)[i].value<double>();
                 if (!v) mParser.fail(n, "'{}' must be an array of {} numbers", key, N);
                 out[i] = *v;
+            }
+            return out;
+        }
+        glm::vec2 vec2(std::string_view key, glm::vec2 fallback, bool required = false) {
+            return glm::vec2(vector<2>(key, glm::dvec2(fallback), required));
+        }
+        glm::ivec2 ivec2(std::string_view key, glm::ivec2 fallback, bool required = false) {
+            glm::dvec2 v = vector<2>(key, glm::dvec2(fallback), required);
+            if (glm::any(glm::notEqual(glm::floor(v), v)) || glm::any(glm::greaterThan(glm::abs(v), glm::dvec2(1 << 20))))
+                mParser.fail(node(key), "'{}' must hold whole numbers of voxels", key);
+            return glm::ivec2(v);
+        }
+        // An array of strings, e.g. windows = ["warm", "cool"].
+        std::vector<std::string> strings(std::string_view key) {
+            const toml::node* n = node(key);
+            std::vector<std::string> out;
+            if (!n) return out;
+            const toml::array* a = n->as_array();
+            if (!a) mParser.fail(n, "'{}' must be an array of strings", key);
+            for (const toml::node& e : *a) {
+                auto v = e.value<std::string>();
+                if (!v) mParser.fail(n, "'{}' must be an array of strings", key);
+                out.push_back(*v);
             }
             return out;
         }
@@ -263,9 +293,142 @@ private:
             if (p.count < 0 || p.count > 1000000) fail(g.node("count"), "'count' must be in 0..1000000");
             if (p.lampSize < 1 || p.lampSize > 64) fail(g.node("lamp_size"), "'lamp_size' must be in 1..64");
             generateLamps(grid, p);
+        } else if (type == "mountain") {
+            parseMountain(g, scene);
+        } else if (type == "scattered_lights") {
+            parseScatteredLights(g, scene);
+        } else if (type == "text") {
+            parseText(g, scene);
+        } else if (type == "menger") {
+            parseMenger(g, scene);
+        } else if (type == "apartment") {
+            parseApartment(g, scene);
+        } else if (type == "bridge") {
+            parseBridge(g, scene);
         } else {
-            fail(g.node("type"), "unknown generator '{}' (known: terrain, box, sphere, cornell, buildings, lamps)", type);
+            fail(g.node("type"), "unknown generator '{}' (known: {})", type, kGeneratorTypes);
         }
+    }
+
+    static constexpr const char* kGeneratorTypes =
+        "terrain, box, sphere, cornell, buildings, lamps, mountain, scattered_lights, text, menger, apartment, bridge";
+
+    void parseMountain(Table& g, Scene& scene) {
+        MountainParams p;
+        ColumnMaterials& m = p.materials;
+        m.top = material(g, scene, "top");
+        m.soil = material(g, scene, "soil");
+        m.rock = material(g, scene, "rock");
+        m.soilDepth = g.integer("soil_depth", m.soilDepth);
+        m.snow = material(g, scene, "snow", "empty");
+        m.snowLine = g.integer("snow_line", m.snowLine);
+        m.cliff = material(g, scene, "cliff", "empty");
+        m.cliffStep = g.integer("cliff_step", m.cliffStep);
+        glm::vec3 size(scene.grid.sizeInVoxels());
+        p.peak = g.vec2("peak", {size.x * 0.5f, size.z * 0.5f});
+        p.peakHeight = static_cast<float>(g.number("peak_height", p.peakHeight));
+        p.baseHeight = static_cast<float>(g.number("base_height", p.baseHeight));
+        p.radius = static_cast<float>(g.number("radius", p.radius));
+        p.hills = static_cast<float>(g.number("hills", p.hills));
+        p.ridges = static_cast<float>(g.number("ridges", p.ridges));
+        p.wavelength = static_cast<float>(g.number("wavelength", p.wavelength));
+        p.octaves = g.integer("octaves", p.octaves);
+        p.terrace = g.integer("terrace", p.terrace);
+        p.seed = static_cast<std::uint32_t>(g.integer("seed", static_cast<int>(p.seed)));
+        if (p.octaves < 1 || p.octaves > 12) fail(g.node("octaves"), "'octaves' must be in 1..12");
+        if (p.radius <= 0.0f) fail(g.node("radius"), "'radius' must be positive");
+        if (p.ridges < 0.0f || p.ridges > 1.0f) fail(g.node("ridges"), "'ridges' must be in 0..1");
+        if (p.terrace < 0 || p.terrace > 64) fail(g.node("terrace"), "'terrace' must be in 0..64");
+        if (m.soilDepth < 0) fail(g.node("soil_depth"), "'soil_depth' must not be negative");
+        generateMountain(scene.grid, p);
+    }
+
+    void parseScatteredLights(Table& g, Scene& scene) {
+        ScatteredLightsParams p;
+        p.spacing = g.integer("spacing", p.spacing);
+        p.size = g.ivec3("size", p.size);
+        p.margin = g.integer("margin", p.margin);
+        p.seed = static_cast<std::uint32_t>(g.integer("seed", static_cast<int>(p.seed)));
+        p.light = material(g, scene, "light");
+        if (p.spacing < 1 || p.spacing > 4096) fail(g.node("spacing"), "'spacing' must be in 1..4096");
+        if (glm::any(glm::lessThan(p.size, glm::ivec3(1))) || p.size.x > p.spacing || p.size.z > p.spacing || p.size.y > 256)
+            fail(g.node("size"), "'size' must be at least 1, at most 'spacing' across and 256 high");
+        if (p.margin < 0) fail(g.node("margin"), "'margin' must not be negative");
+        generateScatteredLights(scene.grid, p);
+    }
+
+    void parseText(Table& g, Scene& scene) {
+        TextParams p;
+        p.text = g.string("text");
+        p.origin = g.ivec3("origin", {}, true);
+        p.right = g.ivec3("right", p.right);
+        p.up = g.ivec3("up", p.up);
+        p.scale = g.integer("scale", p.scale);
+        p.depth = g.integer("depth", p.depth);
+        p.spacing = g.integer("spacing", p.spacing);
+        p.material = material(g, scene, "material");
+        if (std::string problem = validateTextParams(p); !problem.empty()) fail(&g.raw(), "text: {}", problem);
+        generateText(scene.grid, p);
+    }
+
+    void parseMenger(Table& g, Scene& scene) {
+        MengerParams p;
+        p.origin = g.ivec3("origin", p.origin);
+        p.level = g.integer("level", p.level);
+        p.scale = g.integer("scale", p.scale);
+        p.material = material(g, scene, "material");
+        if (p.level < 0 || p.level > 6) fail(g.node("level"), "'level' must be in 0..6");
+        if (p.scale < 1 || p.scale > 64) fail(g.node("scale"), "'scale' must be in 1..64");
+        generateMenger(scene.grid, p);
+    }
+
+    void parseApartment(Table& g, Scene& scene) {
+        ApartmentParams p;
+        p.min = g.ivec3("min", {}, true);
+        p.size = g.ivec3("size", {}, true);
+        p.storey = g.integer("storey", p.storey);
+        p.windowSize = g.ivec2("window_size", p.windowSize);
+        p.windowSpacing = g.integer("window_spacing", p.windowSpacing);
+        p.lit = static_cast<float>(g.number("lit", p.lit));
+        p.balconies = static_cast<float>(g.number("balconies", p.balconies));
+        p.baseDepth = g.integer("base_depth", p.baseDepth);
+        p.seed = static_cast<std::uint32_t>(g.integer("seed", static_cast<int>(p.seed)));
+        p.wall = material(g, scene, "wall");
+        p.slab = material(g, scene, "slab");
+        p.railing = material(g, scene, "railing", "empty");
+        p.base = material(g, scene, "base", "empty");
+        p.cornerLight = material(g, scene, "corner_light", "empty");
+        for (const std::string& name : g.strings("windows")) {
+            auto id = scene.palette.find(name);
+            if (!id) fail(g.node("windows"), "unknown material '{}'", name);
+            p.windowLights.push_back(*id);
+        }
+        if (p.storey < 6 || p.storey > 64) fail(g.node("storey"), "'storey' must be in 6..64");
+        if (p.size.x < 8 || p.size.z < 8 || p.size.y < p.storey + 1)
+            fail(g.node("size"), "'size' must be at least 8 across and one storey ('storey' + 1) high");
+        if (p.windowSize.x < 1 || p.windowSize.y < 1 || p.windowSpacing <= p.windowSize.x)
+            fail(g.node("window_size"), "windows must be at least 1x1 and narrower than 'window_spacing'");
+        if (p.lit < 0.0f || p.lit > 1.0f || p.balconies < 0.0f || p.balconies > 1.0f)
+            fail(&g.raw(), "'lit' and 'balconies' are fractions in 0..1");
+        if (p.baseDepth < 0) fail(g.node("base_depth"), "'base_depth' must not be negative");
+        generateApartment(scene.grid, p);
+    }
+
+    void parseBridge(Table& g, Scene& scene) {
+        BridgeParams p;
+        p.min = g.ivec3("min", {}, true);
+        p.max = g.ivec3("max", {}, true);
+        p.railingHeight = g.integer("railing_height", p.railingHeight);
+        p.postSpacing = g.integer("post_spacing", p.postSpacing);
+        p.lightSpacing = g.integer("light_spacing", p.lightSpacing);
+        p.deck = material(g, scene, "deck");
+        p.railing = material(g, scene, "railing", "empty");
+        p.light = material(g, scene, "light", "empty");
+        if (Box{p.min, p.max}.empty()) fail(g.node("max"), "'max' must exceed 'min' on every axis");
+        if (p.postSpacing < 1) fail(g.node("post_spacing"), "'post_spacing' must be positive");
+        if (p.lightSpacing < 0) fail(g.node("light_spacing"), "'light_spacing' must not be negative");
+        if (p.railingHeight < 0 || p.railingHeight > 64) fail(g.node("railing_height"), "'railing_height' must be in 0..64");
+        generateBridge(scene.grid, p);
     }
 
     void parseCamera(const toml::node& node, Scene& scene) {

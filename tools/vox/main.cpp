@@ -40,11 +40,12 @@ int fail(const engine::Error& error) {
 
 int main(int argc, char** argv) {
     engine::log::init();
-    CLI::App app{"vox: voxel engine tool (render, inspect and benchmark brick-grid worlds)", "vox"};
+    CLI::App app{"vox: voxel engine tool (render, inspect, compare and benchmark brick-grid worlds)", "vox"};
     app.require_subcommand(1);
     int exitCode = 0;
     vox::addRenderCommand(app, exitCode);
     vox::addInfoCommand(app, exitCode);
+    vox::addCompareCommand(app, exitCode);
     CLI::App* bench = app.add_subcommand("bench", "Benchmarks (results as CSV/JSON under out/)");
     bench->require_subcommand(1);
     vox::addBenchTraverseCommand(*bench, exitCode);
