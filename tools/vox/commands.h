@@ -17,6 +17,8 @@ void addInfoCommand(CLI::App& app, int& exitCode);
 void addCompareCommand(CLI::App& app, int& exitCode);
 void addBenchTraverseCommand(CLI::App& bench, int& exitCode);
 void addBenchEmittersCommand(CLI::App& bench, int& exitCode);
+void addBenchRestirCommand(CLI::App& bench, int& exitCode);
+void addBenchAccuracyCommand(CLI::App& bench, int& exitCode);
 
 // Loads a world by name or path; an empty argument means the built-in default world.
 engine::Result<engine::world::Scene> loadWorld(const std::string& nameOrPath);

@@ -50,6 +50,8 @@ int main(int argc, char** argv) {
     bench->require_subcommand(1);
     vox::addBenchTraverseCommand(*bench, exitCode);
     vox::addBenchEmittersCommand(*bench, exitCode);
+    vox::addBenchRestirCommand(*bench, exitCode);
+    vox::addBenchAccuracyCommand(*bench, exitCode);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

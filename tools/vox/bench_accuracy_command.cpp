@@ -1,0 +1,188 @@
+// vox bench accuracy: every lighting method and setting against the converged reference on each
+// scene, with per-pass GPU timings — the tables of docs/ACCURACY.md, laid out like the thesis's
+// Tables 1-3 (kernel times per stage, and MAE/MSE per scene).
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+#include <fmt/format.h>
+
+#include "commands.h"
+#include "gpu/context.h"
+#include "metrics/image_metrics.h"
+#include "render/renderer.h"
+
+namespace vox {
+
+namespace {
+
+using engine::lighting::LightingSettings;
+using engine::lighting::Method;
+
+struct AccuracyOptions {
+    std::vector<std::string> worlds{"cornell", "mountain", "letters", "apartments"};
+    std::string size = "160x96";
+    std::uint32_t frames = 16;
+    std::uint32_t referenceSpp = 1024;
+    std::uint32_t bruteForceLimit = 2000;
+    std::string output = "out/accuracy";
+};
+
+struct Row {
+    std::string label;
+    std::map<std::string, double> passMs;  // median per pass over the measured frames
+    double totalMs = 0.0, mae = 0.0, mse = 0.0;
+    std::uint32_t emitters = 0;
+};
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0.0 : v[v.size() / 2];
+}
+
+Row run(engine::gpu::Context& gpu, engine::world::Scene& scene, const engine::world::CameraPreset& camera,
+        const engine::render::FrameSettings& fs, LightingSettings l, std::uint32_t frames,
+        const std::vector<glm::vec4>& reference, std::string label) {
+    engine::render::Renderer renderer(gpu);
+    std::map<std::string, std::vector<double>> times;
+    std::vector<double> totals;
+    Row row;
+    row.label = std::move(label);
+    int counted = 0;
+    for (std::uint32_t i = 0; i < frames; ++i) {
+        engine::render::FrameResult r = renderer.render(scene, camera, fs, l);
+        row.emitters = r.emitters;
+        if (i < frames / 2) continue;  // the first half builds temporal history
+        for (const auto& [name, ms] : r.passMs) times[name].push_back(ms);
+        totals.push_back(r.totalMs() - r.passMsOf("upload"));
+        engine::render::FrameImages img = renderer.readback();
+        auto e = engine::metrics::compareImages({img.radiance, fs.width, fs.height}, {reference, fs.width, fs.height});
+        row.mae += e->mae;
+        row.mse += e->mse;
+        ++counted;
+        if (l.method != Method::Restir) l.seed += 7919;  // memoryless methods: independent frames
+    }
+    for (auto& [name, v] : times) row.passMs[name] = median(v);
+    row.totalMs = median(totals);
+    row.mae /= counted;
+    row.mse /= counted;
+    return row;
+}
+
+std::vector<std::pair<std::string, LightingSettings>> configurations(std::uint32_t emitters, std::uint32_t bruteForceLimit,
+                                                                     bool hasBrickLights) {
+    std::vector<std::pair<std::string, LightingSettings>> out;
+    for (bool area : {false, true}) {
+        for (std::uint32_t m : {1u, 8u, 16u, 32u}) {
+            LightingSettings l;
+            l.area = area;
+            l.candidates = m;
+            out.push_back({fmt::format("ReSTIR biased, {}, M={}", area ? "area" : "point", m), l});
+        }
+        LightingSettings u;
+        u.area = area;
+        u.unbiased = true;
+        out.push_back({fmt::format("ReSTIR unbiased, {}, M=32", area ? "area" : "point"), u});
+        if (hasBrickLights) {
+            LightingSettings b;
+            b.area = area;
+            b.brickLights = false;
+            out.push_back({fmt::format("ReSTIR biased, {}, M=32, brick lights off", area ? "area" : "point"), b});
+        }
+    }
+    LightingSettings uniformCandidates;
+    uniformCandidates.byPower = false;
+    out.push_back({"ReSTIR biased, area, M=32, uniform candidates (thesis)", uniformCandidates});
+    LightingSettings temporalOnly;
+    temporalOnly.spatial = false;
+    out.push_back({"ReSTIR without spatial reuse, area, M=32", temporalOnly});
+    LightingSettings ris;
+    ris.method = Method::Ris;
+    ris.temporal = ris.spatial = ris.candidateVisibility = false;
+    out.push_back({"RIS without reuse, area, M=32", ris});
+    LightingSettings uniform;
+    uniform.method = Method::Uniform;
+    uniform.byPower = false;
+    out.push_back({"Uniform light sampling, area, 1 ray", uniform});
+    if (emitters <= bruteForceLimit) {
+        LightingSettings brute;
+        brute.method = Method::BruteForce;
+        out.push_back({fmt::format("Brute force, area ({} rays)", emitters), brute});
+    }
+    return out;
+}
+
+int runAccuracy(const AccuracyOptions& o) {
+    auto size = parseSize(o.size, "--size");
+    if (!size) return fail(size.error());
+    if (o.frames < 2 || o.frames > 1000) return fail(engine::makeError("--frames must be in 2..1000"));
+    auto ctx = engine::gpu::Context::create({});
+    if (!ctx) return fail(ctx.error());
+    engine::gpu::Context& gpu = **ctx;
+    engine::render::FrameSettings fs;
+    fs.width = (*size).x;
+    fs.height = (*size).y;
+    std::filesystem::create_directories(o.output);
+    std::ofstream md(std::filesystem::path(o.output) / "accuracy_tables.md");
+    std::ofstream csv(std::filesystem::path(o.output) / "accuracy.csv");
+    csv << "scene,emitters,configuration,primary_ms,initial_ms,temporal_ms,spatial_ms,shade_ms,total_ms,mae,mse\n";
+    md << fmt::format("Measured on {} ({}) at {}x{}, {} frames per setting (the last {} measured), reference {} spp.\n\n",
+                      gpu.info().name, gpu.info().driver, fs.width, fs.height, o.frames, o.frames - o.frames / 2,
+                      o.referenceSpp);
+    for (const std::string& name : o.worlds) {
+        auto scene = loadWorld(name);
+        if (!scene) return fail(scene.error());
+        engine::world::CameraPreset camera = scene->camera();
+        std::fprintf(stderr, "%s: reference (%u spp) ...\n", scene->name.c_str(), o.referenceSpp);
+        engine::render::Renderer refRenderer(gpu);
+        LightingSettings ref;
+        ref.method = Method::Reference;
+        ref.samplesPerFrame = 16;
+        for (std::uint32_t s = 0; s < o.referenceSpp; s += ref.samplesPerFrame) refRenderer.render(*scene, camera, fs, ref);
+        std::vector<glm::vec4> reference = refRenderer.readback().radiance;
+        std::uint32_t emitters = refRenderer.emitters().aliveCount();
+        bool brickLights = false;
+        for (const auto& e : refRenderer.emitters().slots()) brickLights |= e.minCorner.w == 8 && (e.info.w & 1u);
+        auto configs = configurations(emitters, o.bruteForceLimit, brickLights);
+
+        md << fmt::format("### {} — {} emissive voxels, {} emitters with brick lights on\n\n", scene->name,
+                          scene->emissiveVoxels(), emitters);
+        md << "| setting | primary | candidates | temporal | spatial | shading | total ms | MAE | MSE |\n";
+        md << "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+        for (std::size_t i = 0; i < configs.size(); ++i) {
+            std::fprintf(stderr, "\r  %zu/%zu %-60s", i + 1, configs.size(), configs[i].first.c_str());
+            Row r = run(gpu, *scene, camera, fs, configs[i].second, o.frames, reference, configs[i].first);
+            auto ms = [&](const char* pass) { return r.passMs.count(pass) ? r.passMs[pass] : 0.0; };
+            double shading = ms("restir_shade") + ms("light_sampling");
+            auto cell = [](double v) { return v > 0.0 ? fmt::format("{:.2f}", v) : std::string("–"); };
+            md << fmt::format("| {} | {} | {} | {} | {} | {} | {:.2f} | {:.4e} | {:.4e} |\n", r.label,
+                              cell(ms("primary_rays")), cell(ms("restir_initial")), cell(ms("restir_temporal")),
+                              cell(ms("restir_spatial")), cell(shading), r.totalMs, r.mae, r.mse);
+            csv << fmt::format("{},{},\"{}\",{},{},{},{},{},{},{},{}\n", scene->name, r.emitters, r.label,
+                               ms("primary_rays"), ms("restir_initial"), ms("restir_temporal"), ms("restir_spatial"),
+                               shading, r.totalMs, r.mae, r.mse);
+        }
+        std::fprintf(stderr, "\n");
+        md << "\n";
+    }
+    if (!md || !csv) return fail(engine::makeError("{}: cannot write results", o.output));
+    std::printf("wrote    %s/accuracy_tables.md and accuracy.csv\n", o.output.c_str());
+    return 0;
+}
+
+}  // namespace
+
+void addBenchAccuracyCommand(CLI::App& bench, int& exitCode) {
+    auto* cmd = bench.add_subcommand("accuracy", "Every method and setting vs the reference: MAE, MSE, per-pass ms");
+    auto o = std::make_shared<AccuracyOptions>();
+    cmd->add_option("worlds", o->worlds, "Worlds (default: the four thesis scenes)");
+    cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
+    cmd->add_option("--frames", o->frames, "Frames per setting (the last half are measured)")->capture_default_str();
+    cmd->add_option("--ref-spp", o->referenceSpp, "Reference samples per pixel")->capture_default_str();
+    cmd->add_option("-o,--output", o->output, "Output folder (markdown tables and CSV)")->capture_default_str();
+    cmd->callback([o, &exitCode] { exitCode = runAccuracy(*o); });
+}
+
+}  // namespace vox
