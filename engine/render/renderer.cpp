@@ -171,8 +171,12 @@ void Renderer::recordLighting(gpu::CommandList& cmd, const lighting::LightingSet
                                         mFinalReservoirs[mCurrent ^ 1u]},
                                        mSize);
             }
-            // The spatial pass also copies candidates to the final reservoirs when it has no taps.
-            mRestirSpatial.record(cmd, scene, {mFrameParams, mRestirParams, gbuffer, mCandidates, final}, mSize);
+            if (lighting.method == Method::Restir && lighting.spatial) {
+                mRestirSpatial.record(cmd, scene, {mFrameParams, mRestirParams, gbuffer, mCandidates, final}, mSize);
+            } else {
+                cmd.copyBuffer(mCandidates, final, {{0, 0, mCandidates.size()}});
+                cmd.barrier();
+            }
             mRestirShade.record(cmd, scene, {mFrameParams, mRestirParams, gbuffer, final, mRadiance}, mSize);
             break;
         }
