@@ -5,7 +5,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <map>
 
 #include <fmt/format.h>
 
@@ -13,6 +12,7 @@
 #include "gpu/context.h"
 #include "metrics/image_metrics.h"
 #include "render/renderer.h"
+#include "sweep_runner.h"
 
 namespace vox {
 
@@ -29,47 +29,6 @@ struct AccuracyOptions {
     std::uint32_t bruteForceLimit = 2000;
     std::string output = "out/accuracy";
 };
-
-struct Row {
-    std::string label;
-    std::map<std::string, double> passMs;  // median per pass over the measured frames
-    double totalMs = 0.0, mae = 0.0, mse = 0.0;
-    std::uint32_t emitters = 0;
-};
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0.0 : v[v.size() / 2];
-}
-
-Row run(engine::gpu::Context& gpu, engine::world::Scene& scene, const engine::world::CameraPreset& camera,
-        const engine::render::FrameSettings& fs, LightingSettings l, std::uint32_t frames,
-        const std::vector<glm::vec4>& reference, std::string label) {
-    engine::render::Renderer renderer(gpu);
-    std::map<std::string, std::vector<double>> times;
-    std::vector<double> totals;
-    Row row;
-    row.label = std::move(label);
-    int counted = 0;
-    for (std::uint32_t i = 0; i < frames; ++i) {
-        engine::render::FrameResult r = renderer.render(scene, camera, fs, l);
-        row.emitters = r.emitters;
-        if (i < frames / 2) continue;  // the first half builds temporal history
-        for (const auto& [name, ms] : r.passMs) times[name].push_back(ms);
-        totals.push_back(r.totalMs() - r.passMsOf("upload"));
-        engine::render::FrameImages img = renderer.readback();
-        auto e = engine::metrics::compareImages({img.radiance, fs.width, fs.height}, {reference, fs.width, fs.height});
-        row.mae += e->mae;
-        row.mse += e->mse;
-        ++counted;
-        if (l.method != Method::Restir) l.seed += 7919;  // memoryless methods: independent frames
-    }
-    for (auto& [name, v] : times) row.passMs[name] = median(v);
-    row.totalMs = median(totals);
-    row.mae /= counted;
-    row.mse /= counted;
-    return row;
-}
 
 std::vector<std::pair<std::string, LightingSettings>> configurations(std::uint32_t emitters, std::uint32_t bruteForceLimit,
                                                                      bool hasBrickLights) {
@@ -135,16 +94,14 @@ int runAccuracy(const AccuracyOptions& o) {
         auto scene = loadWorld(name);
         if (!scene) return fail(scene.error());
         engine::world::CameraPreset camera = scene->camera();
-        std::fprintf(stderr, "%s: reference (%u spp) ...\n", scene->name.c_str(), o.referenceSpp);
-        engine::render::Renderer refRenderer(gpu);
-        LightingSettings ref;
-        ref.method = Method::Reference;
-        ref.samplesPerFrame = 16;
-        for (std::uint32_t s = 0; s < o.referenceSpp; s += ref.samplesPerFrame) refRenderer.render(*scene, camera, fs, ref);
-        std::vector<glm::vec4> reference = refRenderer.readback().radiance;
-        std::uint32_t emitters = refRenderer.emitters().aliveCount();
+        auto cached = cachedReference(gpu, *scene, camera, fs, o.referenceSpp, 0, std::filesystem::path(o.output) / "cache");
+        if (!cached) return fail(cached.error());
+        const std::vector<glm::vec4>& reference = *cached;
+        engine::lighting::EmitterList lights;
+        lights.rebuild(*scene);
+        std::uint32_t emitters = lights.aliveCount();
         bool brickLights = false;
-        for (const auto& e : refRenderer.emitters().slots()) brickLights |= e.minCorner.w == 8 && (e.info.w & 1u);
+        for (const auto& e : lights.slots()) brickLights |= e.minCorner.w == 8 && (e.info.w & 1u);
         auto configs = configurations(emitters, o.bruteForceLimit, brickLights);
 
         md << fmt::format("### {} — {} emissive voxels, {} emitters with brick lights on\n\n", scene->name,
@@ -153,7 +110,7 @@ int runAccuracy(const AccuracyOptions& o) {
         md << "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
         for (std::size_t i = 0; i < configs.size(); ++i) {
             std::fprintf(stderr, "\r  %zu/%zu %-60s", i + 1, configs.size(), configs[i].first.c_str());
-            Row r = run(gpu, *scene, camera, fs, configs[i].second, o.frames, reference, configs[i].first);
+            SweepPoint r = measureSetting(gpu, *scene, camera, fs, configs[i].second, o.frames, reference, configs[i].first);
             auto ms = [&](const char* pass) { return r.passMs.count(pass) ? r.passMs[pass] : 0.0; };
             double shading = ms("restir_shade") + ms("light_sampling");
             auto cell = [](double v) { return v > 0.0 ? fmt::format("{:.2f}", v) : std::string("–"); };

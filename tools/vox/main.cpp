@@ -52,6 +52,7 @@ int main(int argc, char** argv) {
     vox::addBenchEmittersCommand(*bench, exitCode);
     vox::addBenchRestirCommand(*bench, exitCode);
     vox::addBenchAccuracyCommand(*bench, exitCode);
+    vox::addBenchSweepCommand(*bench, exitCode);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -1,0 +1,220 @@
+// vox bench sweep: lighting methods x settings on each scene, each point's time and error from
+// the same run, written as CSV/JSON and charted (error against milliseconds, Pareto front joined,
+// tools/plot_sweep.py). vox bench recommend: the cheapest setting a sweep found that meets a
+// target error on a scene — model no more than the scene needs.
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "commands.h"
+#include "gpu/context.h"
+#include "lighting/emitter_list.h"
+#include "lighting_options.h"
+#include "sweep_runner.h"
+
+namespace vox {
+
+namespace {
+
+using engine::lighting::LightingSettings;
+using engine::lighting::Method;
+
+struct SweepOptions {
+    std::vector<std::string> worlds{"cornell", "mountain", "letters", "apartments"};
+    std::string methods = "restir,restir-unbiased,ris,uniform";
+    std::string candidates = "1,8,32";
+    std::string modes = "point,area";
+    std::string brickLights = "on,off";
+    std::string rays = "1,4,16";
+    std::string size = "128x72";
+    std::uint32_t frames = 12;
+    std::uint32_t referenceSpp = 1024;
+    std::string output = "out/sweep";
+};
+
+std::vector<std::string> splitList(const std::string& s) {
+    std::vector<std::string> out;
+    std::stringstream in(s);
+    std::string item;
+    while (std::getline(in, item, ',')) {
+        if (!item.empty()) out.push_back(item);
+    }
+    return out;
+}
+
+engine::Result<std::vector<std::uint32_t>> numbers(const std::string& s, const char* option) {
+    std::vector<std::uint32_t> out;
+    for (const std::string& item : splitList(s)) {
+        char* end = nullptr;
+        unsigned long v = std::strtoul(item.c_str(), &end, 10);
+        if (!end || *end || v < 1 || v > 4096) return engine::makeError("{}: '{}' is not a number in 1..4096", option, item);
+        out.push_back(std::uint32_t(v));
+    }
+    if (out.empty()) return engine::makeError("{}: empty list", option);
+    return out;
+}
+
+// All settings of the sweep, labelled.
+engine::Result<std::vector<std::pair<std::string, LightingSettings>>> settingsOf(const SweepOptions& o) {
+    auto ms = numbers(o.candidates, "--candidates");
+    if (!ms) return ms.error();
+    auto rays = numbers(o.rays, "--rays");
+    if (!rays) return rays.error();
+    std::vector<std::pair<std::string, LightingSettings>> out;
+    for (const std::string& method : splitList(o.methods)) {
+        for (const std::string& mode : splitList(o.modes)) {
+            if (mode != "point" && mode != "area") return engine::makeError("--modes: '{}' is not point or area", mode);
+            for (const std::string& bricks : splitList(o.brickLights)) {
+                if (bricks != "on" && bricks != "off") return engine::makeError("--brick-lights: '{}' is not on or off", bricks);
+                LightingOptions lo;
+                lo.method = method;
+                lo.mode = mode;
+                lo.brickLights = bricks;
+                auto base = lightingSettings(lo);
+                if (!base) return base.error();
+                std::string tag = fmt::format("{} {}{}", method, mode, bricks == "off" ? " voxels" : "");
+                if (base->method == Method::Uniform) {
+                    for (std::uint32_t n : *rays) {
+                        LightingSettings l = *base;
+                        l.shadowRays = n;
+                        out.push_back({fmt::format("{} {} rays", tag, n), l});
+                    }
+                } else if (base->method == Method::Restir || base->method == Method::Ris) {
+                    for (std::uint32_t m : *ms) {
+                        LightingSettings l = *base;
+                        l.candidates = m;
+                        out.push_back({fmt::format("{} M={}", tag, m), l});
+                    }
+                } else {
+                    out.push_back({tag, *base});
+                }
+            }
+        }
+    }
+    return out;
+}
+
+int runSweep(const SweepOptions& o) {
+    auto size = parseSize(o.size, "--size");
+    if (!size) return fail(size.error());
+    if (o.frames < 2 || o.frames > 1000) return fail(engine::makeError("--frames must be in 2..1000"));
+    auto settings = settingsOf(o);
+    if (!settings) return fail(settings.error());
+    auto ctx = engine::gpu::Context::create({});
+    if (!ctx) return fail(ctx.error());
+    engine::render::FrameSettings fs;
+    fs.width = (*size).x;
+    fs.height = (*size).y;
+    std::filesystem::path out(o.output);
+    std::filesystem::create_directories(out);
+    std::ofstream csv(out / "sweep.csv");
+    csv << "scene,method,setting,emitters,total_ms,primary_ms,lighting_ms,mae,mse,rmae\n";
+    std::size_t total = o.worlds.size() * settings->size(), done = 0;
+    for (const std::string& name : o.worlds) {
+        auto scene = loadWorld(name);
+        if (!scene) return fail(scene.error());
+        engine::world::CameraPreset camera = scene->camera();
+        auto reference = cachedReference(**ctx, *scene, camera, fs, o.referenceSpp, 0, out / "cache");
+        if (!reference) return fail(reference.error());
+        // Brick lights on and off are the same lights in a scene without uniform emissive bricks.
+        engine::lighting::EmitterList lights;
+        lights.rebuild(*scene);
+        bool hasBrickLights = false;
+        for (const auto& e : lights.slots()) hasBrickLights |= e.minCorner.w == 8 && (e.info.w & 1u);
+        for (const auto& [label, l] : *settings) {
+            ++done;
+            if (!l.brickLights && !hasBrickLights) continue;
+            std::fprintf(stderr, "\r  [%zu/%zu] %s: %-40s", done, total, scene->name.c_str(), label.c_str());
+            SweepPoint p = measureSetting(**ctx, *scene, camera, fs, l, o.frames, *reference, label);
+            double primary = p.passMs.count("primary_rays") ? p.passMs.at("primary_rays") : 0.0;
+            double tonemap = p.passMs.count("tonemap") ? p.passMs.at("tonemap") : 0.0;
+            csv << fmt::format("{},{},\"{}\",{},{},{},{},{},{},{}\n", p.scene, p.method, p.label, p.emitters, p.totalMs,
+                               primary, p.totalMs - primary - tonemap, p.mae, p.mse, p.rmae);
+            csv.flush();
+        }
+    }
+    std::fprintf(stderr, "\n");
+    if (!csv) return fail(engine::makeError("{}: cannot write results", (out / "sweep.csv").string()));
+    std::printf("wrote    %s\n", (out / "sweep.csv").string().c_str());
+    // The chart needs Debian's matplotlib; without it the CSV is still complete.
+    std::string plot = fmt::format("/usr/bin/python3 {}/tools/plot_sweep.py {} {}", VOX_SOURCE_DIR,
+                                   (out / "sweep.csv").string(), out.string());
+    if (std::system(plot.c_str()) != 0) std::fprintf(stderr, "note: chart not drawn (needs python3-matplotlib)\n");
+    return 0;
+}
+
+struct RecommendOptions {
+    std::string world;
+    double targetMae = 0.0;
+    std::string sweep = "out/sweep/sweep.csv";
+};
+
+int runRecommend(const RecommendOptions& o) {
+    if (!(o.targetMae > 0.0)) return fail(engine::makeError("--target-mae must be positive"));
+    auto scene = loadWorld(o.world);
+    if (!scene) return fail(scene.error());
+    std::ifstream in(o.sweep);
+    if (!in) return fail(engine::makeError("{}: no sweep results; run `vox bench sweep {}` first", o.sweep, o.world));
+    std::string line;
+    std::getline(in, line);  // header
+    struct Candidate {
+        std::string setting;
+        double ms, mae;
+    };
+    std::vector<Candidate> rows;
+    while (std::getline(in, line)) {
+        // scene,method,"setting",emitters,total_ms,primary_ms,lighting_ms,mae,mse,rmae
+        std::size_t q1 = line.find('"'), q2 = line.find('"', q1 + 1);
+        if (q1 == std::string::npos || q2 == std::string::npos) continue;
+        if (line.substr(0, line.find(',')) != scene->name) continue;
+        std::vector<std::string> rest = splitList(line.substr(q2 + 2));
+        if (rest.size() < 5) continue;
+        rows.push_back({line.substr(q1 + 1, q2 - q1 - 1), std::atof(rest[1].c_str()), std::atof(rest[4].c_str())});
+    }
+    if (rows.empty()) return fail(engine::makeError("{}: no rows for scene '{}'; run `vox bench sweep {}`", o.sweep, scene->name, o.world));
+    const Candidate* best = nullptr;
+    for (const Candidate& c : rows) {
+        if (c.mae <= o.targetMae && (!best || c.ms < best->ms)) best = &c;
+    }
+    if (!best) {
+        auto closest = std::min_element(rows.begin(), rows.end(), [](const Candidate& a, const Candidate& b) { return a.mae < b.mae; });
+        std::printf("no swept setting reaches MAE %.3e on %s; the most accurate is '%s' (MAE %.3e, %.2f ms)\n", o.targetMae,
+                    scene->name.c_str(), closest->setting.c_str(), closest->mae, closest->ms);
+        return 1;
+    }
+    std::printf("%s: cheapest setting with MAE <= %.3e: '%s' (MAE %.3e, %.2f ms per frame; %zu settings swept)\n",
+                scene->name.c_str(), o.targetMae, best->setting.c_str(), best->mae, best->ms, rows.size());
+    return 0;
+}
+
+}  // namespace
+
+void addBenchSweepCommand(CLI::App& bench, int& exitCode) {
+    auto* cmd = bench.add_subcommand("sweep", "Methods x settings per scene: error against time, CSV and chart");
+    auto o = std::make_shared<SweepOptions>();
+    cmd->add_option("worlds", o->worlds, "Worlds (default: the four thesis scenes)");
+    cmd->add_option("--methods", o->methods, "Comma-separated methods")->capture_default_str();
+    cmd->add_option("--candidates", o->candidates, "Candidate counts M for restir/ris")->capture_default_str();
+    cmd->add_option("--modes", o->modes, "point, area or both")->capture_default_str();
+    cmd->add_option("--brick-lights", o->brickLights, "on, off or both")->capture_default_str();
+    cmd->add_option("--rays", o->rays, "Shadow rays for uniform light sampling")->capture_default_str();
+    cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
+    cmd->add_option("--frames", o->frames, "Frames per setting (the last half are measured)")->capture_default_str();
+    cmd->add_option("--ref-spp", o->referenceSpp, "Reference samples per pixel (cached on disk)")->capture_default_str();
+    cmd->add_option("-o,--output", o->output, "Output folder")->capture_default_str();
+    cmd->callback([o, &exitCode] { exitCode = runSweep(*o); });
+
+    auto* rec = bench.add_subcommand("recommend", "The cheapest swept setting that meets a target MAE on a scene");
+    auto r = std::make_shared<RecommendOptions>();
+    rec->add_option("world", r->world, "World name or scene file")->required();
+    rec->add_option("--target-mae", r->targetMae, "Target MAE against the reference")->required();
+    rec->add_option("--sweep", r->sweep, "Sweep results (CSV from vox bench sweep)")->capture_default_str();
+    rec->callback([r, &exitCode] { exitCode = runRecommend(*r); });
+}
+
+}  // namespace vox

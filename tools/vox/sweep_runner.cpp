@@ -1,0 +1,103 @@
+#include "sweep_runner.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "core/hash.h"
+#include "io/image_io.h"
+#include "metrics/image_metrics.h"
+#include "render/renderer.h"
+
+namespace vox {
+
+using engine::lighting::LightingSettings;
+using engine::lighting::Method;
+
+namespace {
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0.0 : v[v.size() / 2];
+}
+
+std::uint32_t hashBytes(const std::string& s, std::uint32_t h) {
+    for (unsigned char c : s) h = engine::hashCombine(h, c);
+    return h;
+}
+
+}  // namespace
+
+SweepPoint measureSetting(engine::gpu::Context& gpu, engine::world::Scene& scene,
+                          const engine::world::CameraPreset& camera, const engine::render::FrameSettings& frame,
+                          LightingSettings lighting, std::uint32_t frames, const std::vector<glm::vec4>& reference,
+                          std::string label) {
+    engine::render::Renderer renderer(gpu);
+    std::map<std::string, std::vector<double>> times;
+    std::vector<double> totals;
+    SweepPoint p;
+    p.scene = scene.name;
+    p.label = std::move(label);
+    p.method = engine::lighting::methodName(lighting.method);
+    if (lighting.method == Method::Restir && lighting.unbiased) p.method = "restir-unbiased";
+    int counted = 0;
+    for (std::uint32_t i = 0; i < frames; ++i) {
+        engine::render::FrameResult r = renderer.render(scene, camera, frame, lighting);
+        p.emitters = r.emitters;
+        if (i < frames / 2) continue;
+        for (const auto& [name, ms] : r.passMs) times[name].push_back(ms);
+        totals.push_back(r.totalMs() - r.passMsOf("upload"));
+        engine::render::FrameImages img = renderer.readback();
+        auto e = engine::metrics::compareImages({img.radiance, frame.width, frame.height},
+                                                {reference, frame.width, frame.height});
+        if (e.ok()) {
+            p.mae += e->mae;
+            p.mse += e->mse;
+            p.rmae += e->rmae;
+        }
+        ++counted;
+        if (lighting.method != Method::Restir) lighting.seed += 7919;  // memoryless methods: independent frames
+    }
+    for (auto& [name, v] : times) p.passMs[name] = median(v);
+    p.totalMs = median(totals);
+    p.mae /= std::max(counted, 1);
+    p.mse /= std::max(counted, 1);
+    p.rmae /= std::max(counted, 1);
+    return p;
+}
+
+engine::Result<std::vector<glm::vec4>> cachedReference(engine::gpu::Context& gpu, engine::world::Scene& scene,
+                                                       const engine::world::CameraPreset& camera,
+                                                       const engine::render::FrameSettings& frame, std::uint32_t spp,
+                                                       std::uint32_t bounces, const std::filesystem::path& cacheDir) {
+    std::ostringstream key;
+    std::ifstream source(scene.sourcePath, std::ios::binary);
+    key << source.rdbuf();
+    key << fmt::format("|{} {} {}|{} {} {}|{}|{}x{}|{}|{}", camera.position.x, camera.position.y, camera.position.z,
+                       camera.target.x, camera.target.y, camera.target.z, camera.fovYDegrees, frame.width,
+                       frame.height, spp, bounces);
+    std::uint32_t h = hashBytes(key.str(), 0x5eed);
+    std::filesystem::path file = cacheDir / fmt::format("reference-{}-{:08x}.exr", scene.name, h);
+    std::error_code ec;
+    if (std::filesystem::exists(file, ec)) {
+        auto img = engine::io::readExr(file);
+        if (img.ok() && img->width == frame.width && img->height == frame.height) return std::move(img->pixels);
+    }
+    std::fprintf(stderr, "%s: rendering the reference (%u spp, %u bounce(s)) ...\n", scene.name.c_str(), spp, bounces);
+    engine::render::Renderer renderer(gpu);
+    LightingSettings ref;
+    ref.method = Method::Reference;
+    ref.samplesPerFrame = 16;
+    ref.bounces = bounces;
+    for (std::uint32_t s = 0; s < spp; s += ref.samplesPerFrame) renderer.render(scene, camera, frame, ref);
+    std::vector<glm::vec4> pixels = renderer.readback().radiance;
+    std::filesystem::create_directories(cacheDir, ec);
+    engine::Status saved = engine::io::writeExr(file, frame.width, frame.height, pixels);
+    if (!saved) std::fprintf(stderr, "warning: %s\n", saved.error().message.c_str());
+    return pixels;
+}
+
+}  // namespace vox

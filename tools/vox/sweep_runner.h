@@ -1,0 +1,47 @@
+// Measuring lighting settings against a reference: the shared machinery of `vox bench accuracy`,
+// `vox bench sweep` and `vox bench recommend`. One point = one scene, view and setting, its
+// median per-pass GPU time and its error against the converged reference, from the same run.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/error.h"
+#include "lighting/lighting_settings.h"
+#include "render/camera.h"
+#include "world/scene.h"
+
+namespace engine::gpu {
+class Context;
+}
+
+namespace vox {
+
+struct SweepPoint {
+    std::string scene;
+    std::string label;
+    std::string method;
+    std::map<std::string, double> passMs;  // median per pass over the measured frames
+    double totalMs = 0.0;                  // median frame time, upload excluded
+    double mae = 0.0, mse = 0.0, rmae = 0.0;
+    std::uint32_t emitters = 0;
+};
+
+// Renders `frames` frames of a still camera; measures the second half (temporal history first).
+SweepPoint measureSetting(engine::gpu::Context& gpu, engine::world::Scene& scene,
+                          const engine::world::CameraPreset& camera, const engine::render::FrameSettings& frame,
+                          engine::lighting::LightingSettings lighting, std::uint32_t frames,
+                          const std::vector<glm::vec4>& reference, std::string label);
+
+// The converged reference of a scene and view: read from `cacheDir` when an EXR with the same
+// key (scene file contents, camera, size, samples, bounces) exists, else rendered and stored.
+engine::Result<std::vector<glm::vec4>> cachedReference(engine::gpu::Context& gpu, engine::world::Scene& scene,
+                                                       const engine::world::CameraPreset& camera,
+                                                       const engine::render::FrameSettings& frame, std::uint32_t spp,
+                                                       std::uint32_t bounces, const std::filesystem::path& cacheDir);
+
+}  // namespace vox
