@@ -20,6 +20,7 @@ void addBenchEmittersCommand(CLI::App& bench, int& exitCode);
 void addBenchRestirCommand(CLI::App& bench, int& exitCode);
 void addBenchAccuracyCommand(CLI::App& bench, int& exitCode);
 void addBenchSweepCommand(CLI::App& bench, int& exitCode);
+void addBenchStabilityCommand(CLI::App& bench, int& exitCode);
 
 // Loads a world by name or path; an empty argument means the built-in default world.
 engine::Result<engine::world::Scene> loadWorld(const std::string& nameOrPath);

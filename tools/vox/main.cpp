@@ -53,6 +53,7 @@ int main(int argc, char** argv) {
     vox::addBenchRestirCommand(*bench, exitCode);
     vox::addBenchAccuracyCommand(*bench, exitCode);
     vox::addBenchSweepCommand(*bench, exitCode);
+    vox::addBenchStabilityCommand(*bench, exitCode);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

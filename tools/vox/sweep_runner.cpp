@@ -72,13 +72,14 @@ SweepPoint measureSetting(engine::gpu::Context& gpu, engine::world::Scene& scene
 engine::Result<std::vector<glm::vec4>> cachedReference(engine::gpu::Context& gpu, engine::world::Scene& scene,
                                                        const engine::world::CameraPreset& camera,
                                                        const engine::render::FrameSettings& frame, std::uint32_t spp,
-                                                       std::uint32_t bounces, const std::filesystem::path& cacheDir) {
+                                                       std::uint32_t bounces, const std::filesystem::path& cacheDir,
+                                                       const std::string& variant) {
     std::ostringstream key;
     std::ifstream source(scene.sourcePath, std::ios::binary);
     key << source.rdbuf();
     key << fmt::format("|{} {} {}|{} {} {}|{}|{}x{}|{}|{}", camera.position.x, camera.position.y, camera.position.z,
                        camera.target.x, camera.target.y, camera.target.z, camera.fovYDegrees, frame.width,
-                       frame.height, spp, bounces);
+                       frame.height, spp, bounces) + "|" + variant;
     std::uint32_t h = hashBytes(key.str(), 0x5eed);
     std::filesystem::path file = cacheDir / fmt::format("reference-{}-{:08x}.exr", scene.name, h);
     std::error_code ec;

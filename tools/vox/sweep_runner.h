@@ -38,10 +38,12 @@ SweepPoint measureSetting(engine::gpu::Context& gpu, engine::world::Scene& scene
                           const std::vector<glm::vec4>& reference, std::string label);
 
 // The converged reference of a scene and view: read from `cacheDir` when an EXR with the same
-// key (scene file contents, camera, size, samples, bounces) exists, else rendered and stored.
+// key (scene file contents, camera, size, samples, bounces, and a variant tag naming edits made
+// after loading) exists, else rendered and stored.
 engine::Result<std::vector<glm::vec4>> cachedReference(engine::gpu::Context& gpu, engine::world::Scene& scene,
                                                        const engine::world::CameraPreset& camera,
                                                        const engine::render::FrameSettings& frame, std::uint32_t spp,
-                                                       std::uint32_t bounces, const std::filesystem::path& cacheDir);
+                                                       std::uint32_t bounces, const std::filesystem::path& cacheDir,
+                                                       const std::string& variant = {});
 
 }  // namespace vox
