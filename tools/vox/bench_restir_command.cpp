@@ -10,6 +10,7 @@
 #include "gpu/context.h"
 #include "metrics/image_metrics.h"
 #include "render/renderer.h"
+#include "sweep_runner.h"
 
 namespace vox {
 
@@ -25,44 +26,6 @@ struct RestirBenchOptions {
     std::uint32_t referenceSpp = 1024;
     std::string output = "out/bench_restir.json";
 };
-
-struct Measured {
-    double ms = 0.0;   // median GPU time per frame, upload excluded
-    double mse = 0.0;  // against the reference, mean over the measured frames or seeds
-    double mae = 0.0;
-};
-
-double frameMs(const engine::render::FrameResult& r) { return r.totalMs() - r.passMsOf("upload"); }
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
-
-// Renders `frames` frames of a still camera and measures the last half of them.
-Measured measure(engine::gpu::Context& ctx, engine::world::Scene& scene, const engine::world::CameraPreset& camera,
-                 const engine::render::FrameSettings& fs, LightingSettings l, std::uint32_t frames,
-                 const std::vector<glm::vec4>& reference) {
-    engine::render::Renderer renderer(ctx);
-    std::vector<double> times;
-    Measured m;
-    int counted = 0;
-    for (std::uint32_t i = 0; i < frames; ++i) {
-        auto r = renderer.render(scene, camera, fs, l);
-        if (i < frames / 2) continue;
-        times.push_back(frameMs(r));
-        auto img = renderer.readback();
-        auto errors = engine::metrics::compareImages({img.radiance, fs.width, fs.height}, {reference, fs.width, fs.height});
-        m.mse += errors->mse;
-        m.mae += errors->mae;
-        ++counted;
-        if (l.method != Method::Restir) l.seed += 7919;  // independent frames for the memoryless methods
-    }
-    m.ms = median(times);
-    m.mse /= counted;
-    m.mae /= counted;
-    return m;
-}
 
 int runRestirBench(const RestirBenchOptions& o) {
     auto size = parseSize(o.size, "--size");
@@ -90,51 +53,52 @@ int runRestirBench(const RestirBenchOptions& o) {
         if (!scene) return fail(scene.error());
         engine::world::CameraPreset camera = scene->camera();
 
-        engine::render::Renderer refRenderer(gpu);
-        LightingSettings ref;
-        ref.method = Method::Reference;
-        ref.samplesPerFrame = 16;
-        for (std::uint32_t s = 0; s < o.referenceSpp; s += ref.samplesPerFrame) refRenderer.render(*scene, camera, fs, ref);
-        std::vector<glm::vec4> reference = refRenderer.readback().radiance;
+        auto cached = cachedReference(gpu, *scene, camera, fs, o.referenceSpp, 0, std::filesystem::path(o.output).parent_path() / "cache");
+        if (!cached) return fail(cached.error());
+        const std::vector<glm::vec4>& reference = *cached;
+        auto measure = [&](const LightingSettings& l, std::uint32_t frames) {
+            return measureSetting(gpu, *scene, camera, fs, l, frames, reference, "");
+        };
 
         LightingSettings restir;  // defaults: biased, area, power, M = 32, temporal, spatial 5 x 30 px
-        Measured r = measure(gpu, *scene, camera, fs, restir, o.frames, reference);
+        SweepPoint r = measure(restir, o.frames);
 
         // Fit time = base + slope x n for each baseline, then pick n for ReSTIR's time.
         auto equalTime = [&](LightingSettings l, std::uint32_t& n, std::uint32_t LightingSettings::*knob) {
             l.*knob = 1;
-            double t1 = measure(gpu, *scene, camera, fs, l, 6, reference).ms;
+            double t1 = measure(l, 6).totalMs;
             l.*knob = 8;
-            double t8 = measure(gpu, *scene, camera, fs, l, 6, reference).ms;
+            double t8 = measure(l, 6).totalMs;
             double slope = std::max((t8 - t1) / 7.0, 1e-6);
             double base = t1 - slope;
-            n = std::clamp<std::uint32_t>(std::uint32_t(std::lround((r.ms - base) / slope)), 1u, 4096u);
+            n = std::clamp<std::uint32_t>(std::uint32_t(std::lround((r.totalMs - base) / slope)), 1u, 4096u);
             l.*knob = n;
-            Measured m = measure(gpu, *scene, camera, fs, l, 8, reference);
+            SweepPoint m = measure(l, 8);
             // One correction step: timings are noisy and not quite linear.
-            double perUnit = std::max((m.ms - base) / double(n), 1e-6);
-            std::uint32_t corrected = std::clamp<std::uint32_t>(std::uint32_t(std::lround((r.ms - base) / perUnit)), 1u, 4096u);
+            double perUnit = std::max((m.totalMs - base) / double(n), 1e-6);
+            std::uint32_t corrected =
+                std::clamp<std::uint32_t>(std::uint32_t(std::lround((r.totalMs - base) / perUnit)), 1u, 4096u);
             if (corrected == n) return m;
             n = corrected;
             l.*knob = n;
-            return measure(gpu, *scene, camera, fs, l, 8, reference);
+            return measure(l, 8);
         };
         LightingSettings uniform;
         uniform.method = Method::Uniform;
         uniform.byPower = false;
         std::uint32_t rays = 1, candidates = 1;
-        Measured u = equalTime(uniform, rays, &LightingSettings::shadowRays);
+        SweepPoint u = equalTime(uniform, rays, &LightingSettings::shadowRays);
         LightingSettings ris;
         ris.method = Method::Ris;
         ris.temporal = ris.spatial = ris.candidateVisibility = false;
-        Measured s = equalTime(ris, candidates, &LightingSettings::candidates);
+        SweepPoint s = equalTime(ris, candidates, &LightingSettings::candidates);
 
-        std::printf("%-12s %9.2f %11.3e | %9.2f %5u %11.3e %6.1fx | %9.2f %5u %11.3e %6.1fx\n", scene->name.c_str(), r.ms,
-                    r.mse, u.ms, rays, u.mse, u.mse / r.mse, s.ms, candidates, s.mse, s.mse / r.mse);
-        json << "  {\"scene\": \"" << scene->name << "\", \"emitters\": " << refRenderer.emitters().aliveCount()
-             << ", \"restir\": {\"ms\": " << r.ms << ", \"mse\": " << r.mse << ", \"mae\": " << r.mae << "}"
-             << ", \"uniform\": {\"rays\": " << rays << ", \"ms\": " << u.ms << ", \"mse\": " << u.mse
-             << ", \"mae\": " << u.mae << "}, \"ris\": {\"candidates\": " << candidates << ", \"ms\": " << s.ms
+        std::printf("%-12s %9.2f %11.3e | %9.2f %5u %11.3e %6.1fx | %9.2f %5u %11.3e %6.1fx\n", scene->name.c_str(), r.totalMs,
+                    r.mse, u.totalMs, rays, u.mse, u.mse / r.mse, s.totalMs, candidates, s.mse, s.mse / r.mse);
+        json << "  {\"scene\": \"" << scene->name << "\", \"emitters\": " << r.emitters
+             << ", \"restir\": {\"ms\": " << r.totalMs << ", \"mse\": " << r.mse << ", \"mae\": " << r.mae << "}"
+             << ", \"uniform\": {\"rays\": " << rays << ", \"ms\": " << u.totalMs << ", \"mse\": " << u.mse
+             << ", \"mae\": " << u.mae << "}, \"ris\": {\"candidates\": " << candidates << ", \"ms\": " << s.totalMs
              << ", \"mse\": " << s.mse << ", \"mae\": " << s.mae << "}, \"mse_ratio_uniform\": " << u.mse / r.mse
              << ", \"mse_ratio_ris\": " << s.mse / r.mse << "}" << (w + 1 < o.worlds.size() ? "," : "") << "\n";
     }
