@@ -64,6 +64,10 @@ public:
     FrameImages readback();
     // Forget temporal history and accumulated reference samples.
     void resetHistory();
+    // The frame index the next frame renders with (it seeds all randomness, then counts up).
+    // A capture sets it to the capture's own frame number so a slice rendered on another
+    // machine draws the same random numbers for the same frame.
+    void setFrameIndex(std::uint32_t index) { mFrameIndex = index; }
 
     GpuWorld& gpuWorld() { return mWorld; }
     const lighting::EmitterList& emitters() const { return mEmitters; }
