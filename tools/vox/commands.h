@@ -15,6 +15,7 @@ namespace vox {
 void addRenderCommand(CLI::App& app, int& exitCode);
 void addInfoCommand(CLI::App& app, int& exitCode);
 void addCompareCommand(CLI::App& app, int& exitCode);
+void addCaptureCommand(CLI::App& app, int& exitCode);
 void addBenchTraverseCommand(CLI::App& bench, int& exitCode);
 void addBenchEmittersCommand(CLI::App& bench, int& exitCode);
 void addBenchRestirCommand(CLI::App& bench, int& exitCode);

@@ -46,6 +46,7 @@ int main(int argc, char** argv) {
     vox::addRenderCommand(app, exitCode);
     vox::addInfoCommand(app, exitCode);
     vox::addCompareCommand(app, exitCode);
+    vox::addCaptureCommand(app, exitCode);
     CLI::App* bench = app.add_subcommand("bench", "Benchmarks (results as CSV/JSON under out/)");
     bench->require_subcommand(1);
     vox::addBenchTraverseCommand(*bench, exitCode);

@@ -1,0 +1,160 @@
+#!/usr/bin/env bash
+# vox capture through the command line: the same command twice writes byte-identical frames and
+# the same CSV apart from its timing columns (*_ms); a preview slice equals the whole capture's
+# frames exactly; every output is there; bad path files give one line naming file and line.
+set -u
+vox="$1"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+cat > "$tmp/yard.toml" <<'TOML'
+[world]
+name = "yard"
+size = [64, 40, 64]
+[[material]]
+name = "white"
+albedo = [0.75, 0.75, 0.75]
+[[material]]
+name = "lamp"
+emission = [1.0, 0.85, 0.6]
+strength = 6
+[[generator]]
+type = "box"
+min = [0, 0, 0]
+max = [64, 4, 64]
+material = "white"
+[[generator]]
+type = "box"
+min = [20, 4, 24]
+max = [28, 22, 32]
+material = "white"
+[[generator]]
+type = "box"
+min = [32, 24, 32]
+max = [40, 32, 40]
+material = "lamp"
+[[camera]]
+name = "front"
+position = [32, 36, -22]
+target = [32, 6, 30]
+[path]
+fps = 10
+duration = 1.1
+[[path.key]]
+time = 0
+position = [32, 36, -22]
+target = [32, 6, 30]
+[[path.key]]
+time = 1.1
+position = [52, 30, -12]
+target = [30, 8, 34]
+fov = 50
+[[path.event]]
+time = 0.3
+type = "light"
+material = "lamp"
+on = false
+[[path.event]]
+time = 0.6
+type = "box"
+min = [8, 4, 8]
+max = [12, 8, 12]
+material = "lamp"
+[[path.event]]
+time = 0.8
+type = "dynamic"
+object = "cart"
+TOML
+
+run() {  # run DIR ARGS... : a capture of the yard, stdout+stderr in DIR.log
+    local dir="$1"; shift
+    if ! "$vox" capture "$tmp/yard.toml" --out "$tmp/$dir" --size 64x48 --no-video "$@" >"$tmp/$dir.log" 2>&1; then
+        fail "vox capture $* exited non-zero:"; cat "$tmp/$dir.log"; return 1
+    fi
+}
+# The CSV without its timing columns (names ending in _ms).
+untimed() {
+    awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) keep[i] = ($i !~ /_ms$/) }
+             { line = ""; for (i = 1; i <= NF; i++) if (keep[i]) line = line $i ","; print line }' "$1"
+}
+
+# 1. Determinism: ReSTIR (temporal history, events, a moving camera), twice.
+run a && run b && {
+    n=$(ls "$tmp/a"/frame_*.png | wc -l)
+    [ "$n" -eq 12 ] || fail "expected 12 frames, got $n"
+    for f in "$tmp/a"/frame_*.png; do
+        cmp -s "$f" "$tmp/b/$(basename "$f")" || fail "$(basename "$f") differs between two identical runs"
+    done
+    [ "$(wc -l < "$tmp/a/capture.csv")" -eq 13 ] || fail "capture.csv should have a header and 12 rows"
+    if ! diff <(untimed "$tmp/a/capture.csv") <(untimed "$tmp/b/capture.csv") >/dev/null; then
+        fail "capture.csv differs outside its timing columns"
+    fi
+    grep -q "gpu_restir_temporal_ms" "$tmp/a/capture.csv" || fail "capture.csv lacks per-pass GPU columns"
+    [ "$(head -c 4 "$tmp/a/contact_sheet.png" | tail -c 3)" = "PNG" ] || fail "no contact sheet"
+    grep -q "video    skipped (--no-video)" "$tmp/a.log" || fail "--no-video was not reported"
+    grep -q "yard.toml:.*dynamic object 'cart' not started" "$tmp/a.log" || fail "the dynamic-object no-op was not reported"
+    # Events show in the counts: the lamp brick goes dark on frame 3, the new block lights on frame 6.
+    emitters=$(awk -F, 'NR > 1 { printf "%s ", $11 }' "$tmp/a/capture.csv")
+    [[ "$emitters" == "1 1 1 0 0 0 "* ]] || fail "emitters per frame: $emitters"
+    echo "ok: two ReSTIR captures are identical (12 PNGs, CSV without *_ms); emitters per frame: $emitters"
+}
+
+# 2. A preview slice is the whole capture's frames, exactly, and says which frames it holds.
+run p --method preview && run s --method preview --frames 5:8 --warmup 0 && {
+    for i in 5 6 7 8; do
+        f=$(printf "frame_%05d.png" "$i")
+        cmp -s "$tmp/p/$f" "$tmp/s/$f" || fail "preview slice frame $i differs from the whole capture"
+    done
+    [ ! -e "$tmp/s/frame_00004.png" ] && [ ! -e "$tmp/s/frame_00009.png" ] || fail "the slice wrote frames outside 5:8"
+    [ -e "$tmp/s/capture_00005-00008.csv" ] && [ -e "$tmp/s/contact_sheet_00005-00008.png" ] ||
+        fail "slice outputs are not named after the slice"
+    # Frame, time, camera and counts agree; the events and upload columns differ by design (a
+    # slice applies earlier events and uploads the whole world before its first frame).
+    diff <(cut -d, -f1,2,4-15 "$tmp/p/capture.csv" | sed -n '7,10p') \
+         <(cut -d, -f1,2,4-15 "$tmp/s/capture_00005-00008.csv" | tail -n +2) >/dev/null ||
+        fail "the slice's CSV rows differ from the whole capture's"
+    rays=$(awk -F, 'NR == 2 { print $15 }' "$tmp/p/capture.csv")
+    [ -n "$rays" ] && [ "$rays" -ge 3072 ] || fail "preview rays column: '$rays'"
+    echo "ok: preview slice 5:8 equals the whole capture's frames 5..8"
+}
+# A slice with warm-up renders the warm-up frames without writing them.
+run w --frames 9: --warmup 4 && {
+    [ "$(ls "$tmp/w"/frame_*.png | wc -l)" -eq 3 ] || fail "--frames 9: should write frames 9..11"
+    grep -q "after 4 warm-up frame(s)" "$tmp/w.log" || fail "the warm-up was not reported"
+    echo "ok: --frames 9: --warmup 4 wrote 3 frames"
+}
+
+# 3. Bad input: one line naming the file (and line), a non-zero exit.
+expect_error() {  # expect_error PATTERN -- command...
+    local pattern="$1"; shift 2
+    local err rc
+    err=$("$@" 2>&1 >/dev/null); rc=$?
+    if [ "$rc" -eq 0 ] || [ "$rc" -ge 128 ]; then fail "'$*' exited $rc (want 1..127)"; return; fi
+    if [ "$(printf '%s\n' "$err" | grep -c .)" -ne 1 ] || ! printf "%s" "$err" | grep -qE -- "$pattern"; then
+        fail "'$*' printed:"; printf '%s\n' "$err"; echo "  (want one line matching: $pattern)"; return
+    fi
+    echo "ok: $err"
+}
+key='[[path.key]]\ntime = 0\nposition = [0, 30, 0]\ntarget = [30, 0, 30]\n'
+printf "[path]\n$key[[path.key]]\ntime = 1\nposition = [9, 30, 0]\ntarget = [30, 0, 30]\nfovy = 40\n" > "$tmp/typo.toml"
+printf "[path]\nduration = 1\n$key[[path.event]]\ntime = 0.5\ntype = \"box\"\nmin = [0, 0, 0]\nmax = [4, 4, 4]\nmaterial = \"gold\"\n" > "$tmp/gold.toml"
+printf "[path]\n$key[[path.key]]\ntime = 0\nposition = [9, 30, 0]\ntarget = [30, 0, 30]\n" > "$tmp/order.toml"
+printf "[path]\n$key[[path.event]]\ntime = 0\ntype = \"light\"\nmaterial = \"lamp\"\non = \"off\"\n" > "$tmp/onoff.toml"
+printf "[path\n" > "$tmp/syntax.toml"
+printf '[world]\nsize = [16, 16, 16]\n' > "$tmp/nopath.toml"
+c=("$vox" capture "$tmp/yard.toml" --out "$tmp/e" --size 16x16 --no-video)
+expect_error "typo.toml:10: unknown key 'fovy'" -- "${c[@]}" --path "$tmp/typo.toml"
+expect_error "gold.toml:12: unknown material 'gold'" -- "${c[@]}" --path "$tmp/gold.toml"
+expect_error "order.toml:7: key times must increase" -- "${c[@]}" --path "$tmp/order.toml"
+expect_error "onoff.toml:10: 'on' must be true or false" -- "${c[@]}" --path "$tmp/onoff.toml"
+expect_error "syntax.toml:1:" -- "${c[@]}" --path "$tmp/syntax.toml"
+expect_error "nopath.toml: no \[path\] table" -- "$vox" capture "$tmp/nopath.toml" --out "$tmp/e"
+expect_error "--path nosuchpath: no such path file" -- "${c[@]}" --path nosuchpath
+expect_error "--frames: frame 40 is past the path's last frame \(11\)" -- "${c[@]}" --frames 40:50
+expect_error "--frames: expected A:B" -- "${c[@]}" --frames 3-5
+expect_error "--frames: 5:3 ends before it starts" -- "${c[@]}" --frames 5:3
+expect_error "required|--out" -- "$vox" capture "$tmp/yard.toml"
+
+[ $failures -eq 0 ] || { echo "$failures failure(s)"; exit 1; }
