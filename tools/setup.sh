@@ -13,6 +13,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libstb-dev libopenexr-dev libtomlplusplus-dev libcli11-dev libfmt-dev libspdlog-dev libimgui-dev
   python3 python3-matplotlib xvfb clang
+  ffmpeg  # optional: vox capture writes an MP4 when it is on PATH
 )
 
 missing=()

@@ -259,11 +259,13 @@ TEST_F(Flythroughs, WholeCaptureRepeatsExactly) {
 // A slice agrees with the whole capture. The preview has no history: exactly, with no warm-up.
 // ReSTIR has history, so a slice after W warm-up frames differs from the whole capture by noise
 // only. Metric: per-frame MAE of linear RGB radiance relative to the whole capture's mean
-// radiance. Tolerance: at most 0.85x the same metric between two whole captures with different
-// seeds (the method's own noise on that very frame), and below 0.1 absolute. Measured here (64^2,
-// W = 8): 0.023..0.043 against seed-to-seed 0.052..0.065, a worst ratio of 0.67. A slice that
-// draws the wrong frame's random numbers measures 1.0..1.1x (it is just another seed); one
-// that misses an event or puts the camera at the wrong time, far more.
+// radiance. Tolerance: on every frame at most the same metric between two whole captures with
+// different seeds (the method's own noise on that very frame), on average over the slice at most
+// 0.85 of it, and below 0.1 absolute. Measured here (64^2, W = 8): 0.023..0.043 against
+// seed-to-seed 0.052..0.065, ratio 0.67 worst, 0.55 mean; on the sandbox flythrough (320x180,
+// W = 30) 0.91 worst, 0.67 mean. A slice that draws the wrong frame's random numbers is just
+// another seed, ratio 1.0..1.1 (both checks fail); one that misses an event or puts the camera
+// at the wrong time is far off.
 TEST_F(Flythroughs, SliceAgreesWithWholeCapture) {
     LightingSettings preview;
     preview.method = Method::Preview;
@@ -279,7 +281,7 @@ TEST_F(Flythroughs, SliceAgreesWithWholeCapture) {
     std::vector<FrameImages> restirOther = play(0, 22, 0, other);
     std::vector<FrameImages> restirSlice = play(14, 22, 8, l);
     std::vector<FrameImages> restirCold = play(14, 22, 0, l);
-    double worstRatio = 0.0;
+    double worstRatio = 0.0, meanRatio = 0.0;
     for (std::size_t i = 0; i < restirSlice.size(); ++i) {
         const FrameImages& ref = restirWhole[14 + i];
         double slice8 = relativeMae(restirSlice[i], ref);
@@ -289,11 +291,13 @@ TEST_F(Flythroughs, SliceAgreesWithWholeCapture) {
             "frame %zu: relative MAE slice(W=8) %.4f, slice(W=0) %.4f, other seed %.4f, mean "
             "%.4f\n",
             14 + i, slice8, cold, noise, meanRadiance(ref));
-        EXPECT_LE(slice8, 0.85 * noise) << "frame " << 14 + i;
+        EXPECT_LE(slice8, noise) << "frame " << 14 + i;
         EXPECT_LT(slice8, 0.1) << "frame " << 14 + i;
         worstRatio = std::max(worstRatio, slice8 / noise);
+        meanRatio += slice8 / noise / double(restirSlice.size());
     }
-    std::printf("worst slice/noise ratio %.3f\n", worstRatio);
+    std::printf("slice/noise ratio: worst %.3f, mean %.3f\n", worstRatio, meanRatio);
+    EXPECT_LE(meanRatio, 0.85);
     // The check can fail: the frame before the block appears (frame 19) is not frame 20.
     EXPECT_GT(relativeMae(restirWhole[19], restirWhole[20]), 0.0);
 }

@@ -126,6 +126,22 @@ run w --frames 9: --warmup 4 && {
     echo "ok: --frames 9: --warmup 4 wrote 3 frames"
 }
 
+# With ffmpeg on PATH the capture ends with an MP4 of every written frame; without, it says so.
+if command -v ffmpeg >/dev/null && command -v ffprobe >/dev/null; then
+    if "$vox" capture "$tmp/yard.toml" --out "$tmp/v" --size 64x48 --method preview >"$tmp/v.log" 2>&1; then
+        frames=$(ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames -of csv=p=0 "$tmp/v/capture.mp4")
+        [ "$frames" = "12" ] || fail "capture.mp4 holds '$frames' frames, want 12"
+        echo "ok: capture.mp4 with $frames frames"
+    else
+        fail "capture with video failed:"; cat "$tmp/v.log"
+    fi
+else
+    PATH=/nonexistent "$vox" capture "$tmp/yard.toml" --out "$tmp/v" --size 32x24 --method preview >"$tmp/v.log" 2>&1 ||
+        fail "capture without ffmpeg failed"
+    grep -q "video    skipped: ffmpeg is not on PATH" "$tmp/v.log" || fail "a missing ffmpeg was not reported"
+    echo "ok: no ffmpeg on PATH: video skipped with a message (MP4 not tested)"
+fi
+
 # 3. Bad input: one line naming the file (and line), a non-zero exit.
 expect_error() {  # expect_error PATTERN -- command...
     local pattern="$1"; shift 2

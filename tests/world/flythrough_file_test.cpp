@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
 
 #include "world/scene_file.h"
@@ -152,6 +153,20 @@ TEST(FlythroughFile, DefaultWorldHasAFlythroughOfAtLeast120Frames) {
     EXPECT_TRUE(fly->checkFrames(fly->fps).ok());
     Status s = fly->timeline.bind(*scene);
     EXPECT_TRUE(s.ok()) << s.error().message;
+}
+
+TEST(FlythroughFile, EveryShippedPathFileLoads) {
+    int count = 0;
+    const auto dir = std::filesystem::path(VOX_SOURCE_DIR) / "worlds" / "paths";
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+        if (entry.path().extension() != ".toml") continue;
+        auto fly = loadFlythroughFile(entry.path());
+        ASSERT_TRUE(fly.ok()) << fly.error().message;
+        Status s = fly->checkFrames(fly->fps);
+        EXPECT_TRUE(s.ok()) << s.error().message;
+        ++count;
+    }
+    EXPECT_GE(count, 1);
 }
 
 TEST(FlythroughFile, ErrorsNameFileAndLine) {
