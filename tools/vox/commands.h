@@ -14,9 +14,12 @@ namespace vox {
 
 void addRenderCommand(CLI::App& app, int& exitCode);
 void addInfoCommand(CLI::App& app, int& exitCode);
+void addExportCommand(CLI::App& app, int& exitCode);
+void addImportCommand(CLI::App& app, int& exitCode);
 void addBenchTraverseCommand(CLI::App& bench, int& exitCode);
 
-// Loads a world by name or path; an empty argument means the built-in default world.
+// Loads a world by name or path (a .vdb is imported with default options); an empty argument
+// means the built-in default world.
 engine::Result<engine::world::Scene> loadWorld(const std::string& nameOrPath);
 // "640x360" -> {640, 360}; an error names the option.
 engine::Result<glm::uvec2> parseSize(const std::string& text, const char* option);

@@ -1,0 +1,226 @@
+#include "io/vdb_reader.h"
+
+#include <algorithm>
+#include <mutex>
+#include <new>
+#include <system_error>
+
+#include <fmt/format.h>
+
+namespace engine::io {
+
+namespace fs = std::filesystem;
+namespace vdb = openvdb;
+
+namespace {
+
+constexpr std::int64_t kVdbMagic = 0x56444220;
+constexpr char kHalfFloatSuffix[] = "_HalfFloat";
+
+std::string oneLine(std::string s) {
+    std::replace(s.begin(), s.end(), '\n', ' ');
+    std::replace(s.begin(), s.end(), '\r', ' ');
+    if (s.size() > 300) s = s.substr(0, 300) + "...";
+    return s;
+}
+
+std::string mib(std::uint64_t bytes) { return fmt::format("{:.1f} MiB", double(bytes) / (1 << 20)); }
+
+}  // namespace
+
+void initializeOpenVdb() {
+    static std::once_flag once;
+    std::call_once(once, [] { vdb::initialize(); });
+}
+
+std::uint64_t vdbSingleAllocationLimit(std::uint64_t fileBytes) { return fileBytes + (16ull << 20); }
+
+Result<std::uint64_t> vdbFileBytes(const fs::path& path) {
+    std::error_code ec;
+    fs::file_status st = fs::status(path, ec);
+    if (ec || !fs::exists(st)) return makeError("{}: cannot open: no such file", path.string());
+    if (!fs::is_regular_file(st)) return makeError("{}: cannot open: not a regular file", path.string());
+    std::uint64_t bytes = fs::file_size(path, ec);
+    if (ec) return makeError("{}: cannot open: {}", path.string(), ec.message());
+    if (bytes == 0) return makeError("{}: empty file (0 bytes), not a VDB file", path.string());
+    return bytes;
+}
+
+Error vdbError(const fs::path& path, const AllocationBudget* budget) {
+    const std::string file = path.string();
+    try {
+        throw;
+    } catch (const std::bad_alloc&) {
+        if (budget && budget->exceeded()) {
+            return makeError(
+                "{}: reading it needs more memory than the budget of {} allows (a request for {} bytes was "
+                "refused); the file is damaged or too large (raise --memory-budget)",
+                file, mib(budget->totalBytes()), budget->refusedBytes());
+        }
+        return makeError("{}: out of memory while reading", file);
+    } catch (const std::ios_base::failure&) {
+        return makeError("{}: truncated or corrupt VDB file (data ends or points outside the file)", file);
+    } catch (const vdb::IoError& e) {
+        std::string what = e.what() ? e.what() : "";
+        if (what.find("not a VDB file") != std::string::npos) return makeError("{}: not a VDB file", file);
+        return makeError("{}: corrupt VDB file ({})", file, oneLine(what));
+    } catch (const vdb::Exception& e) {
+        return makeError("{}: corrupt or unsupported VDB file ({})", file, oneLine(e.what() ? e.what() : "?"));
+    } catch (const std::exception& e) {
+        return makeError("{}: cannot read VDB file ({})", file, oneLine(e.what()));
+    } catch (...) {
+        return makeError("{}: cannot read VDB file (unknown error)", file);
+    }
+}
+
+VdbReader::VdbReader(const fs::path& path) : mPath(path) {
+    initializeOpenVdb();
+    std::error_code ec;
+    mFileBytes = fs::file_size(path, ec);
+    if (ec) throw vdb::IoError("cannot open " + path.string());
+    mStream.open(path, std::ios::in | std::ios::binary);
+    if (!mStream) throw vdb::IoError("cannot open " + path.string());
+    // From here on any short read or bad seek throws instead of leaving garbage behind.
+    mStream.exceptions(std::ios::failbit | std::ios::badbit);
+
+    std::int64_t magic = 0;
+    if (mFileBytes < sizeof(magic)) throw vdb::IoError("not a VDB file");
+    mStream.read(reinterpret_cast<char*>(&magic), sizeof(magic));
+    if (magic != kVdbMagic) throw vdb::IoError("not a VDB file");
+    mStream.seekg(0);
+
+    Archive::readHeader(mStream);
+    mFormatVersion = fileVersion();
+    if (mFormatVersion < vdb::OPENVDB_FILE_VERSION_GRID_INSTANCING)
+        throw vdb::IoError(fmt::format("file format {} predates OpenVDB 3 (format {}); re-save it with a newer OpenVDB",
+                                       mFormatVersion, int(vdb::OPENVDB_FILE_VERSION_GRID_INSTANCING)));
+    if (!inputHasGridOffsets()) throw vdb::IoError("file has no grid offsets (written as a stream), not supported");
+
+    mStreamMetadata = std::make_shared<vdb::io::StreamMetadata>();
+    mStreamMetadata->setSeekable(true);
+    vdb::io::setStreamMetadataPtr(mStream, mStreamMetadata, /*transfer=*/false);
+    setFormatVersion(mStream);
+    setLibraryVersion(mStream);
+    setDataCompression(mStream);
+
+    mFileMetadata.readMeta(mStream);
+
+    auto remaining = [&] { return mFileBytes - std::uint64_t(mStream.tellg()); };
+    auto readString = [&] {
+        std::uint32_t n = 0;
+        mStream.read(reinterpret_cast<char*>(&n), sizeof(n));
+        if (n > remaining()) throw std::ios_base::failure("string runs past the end of the file");
+        std::string s(n, '\0');
+        if (n) mStream.read(s.data(), n);
+        return s;
+    };
+    std::int32_t count = 0;
+    mStream.read(reinterpret_cast<char*>(&count), sizeof(count));
+    if (count < 0 || std::uint64_t(count) > remaining() / 36)
+        throw vdb::IoError(fmt::format("grid count {} does not fit in the file", count));
+
+    // Descriptors are parsed here rather than by GridDescriptor::read(), which throws on the
+    // first unregistered grid type and so would hide every other grid of the file.
+    for (std::int32_t i = 0; i < count; ++i) {
+        Entry e;
+        e.uniqueName = readString();
+        e.type = readString();
+        e.parent = readString();
+        bool half = false;
+        const std::size_t suffix = sizeof(kHalfFloatSuffix) - 1;
+        if (e.type.size() > suffix && e.type.compare(e.type.size() - suffix, suffix, kHalfFloatSuffix) == 0) {
+            e.type.resize(e.type.size() - suffix);
+            half = true;
+        }
+        e.name = vdb::io::GridDescriptor::stripSuffix(e.uniqueName);
+        std::int64_t pos[3];
+        mStream.read(reinterpret_cast<char*>(pos), sizeof(pos));
+        const std::int64_t here = mStream.tellg();
+        if (!(here <= pos[0] && pos[0] <= pos[1] && pos[1] <= pos[2] && std::uint64_t(pos[2]) <= mFileBytes))
+            throw vdb::IoError(fmt::format("grid '{}' has offsets outside the file", oneLine(e.name)));
+        vdb::io::GridDescriptor gd(e.uniqueName, e.type, half);
+        gd.setInstanceParentName(e.parent);
+        gd.setGridPos(pos[0]);
+        gd.setBlockPos(pos[1]);
+        gd.setEndPos(pos[2]);
+        mEntries.push_back(std::move(e));
+        mDescriptors.push_back(gd);
+        mStream.seekg(pos[2]);
+    }
+}
+
+std::string VdbReader::libraryVersion() const {
+    vdb::VersionId v = Archive::libraryVersion();
+    return fmt::format("{}.{}", v.first, v.second);
+}
+
+int VdbReader::find(const std::string& name) const {
+    for (std::size_t i = 0; i < mEntries.size(); ++i)
+        if (mEntries[i].name == name || mEntries[i].uniqueName == name) return int(i);
+    return -1;
+}
+
+std::size_t VdbReader::treeSource(std::size_t index) const {
+    // Follow instance links to the grid that stores the tree; a chain longer than the grid count
+    // is a cycle in a damaged file.
+    for (std::size_t hops = 0; hops <= mEntries.size(); ++hops) {
+        const std::string& parent = mEntries[index].parent;
+        if (parent.empty()) return index;
+        auto it = std::find_if(mEntries.begin(), mEntries.end(), [&](const Entry& e) { return e.uniqueName == parent; });
+        if (it == mEntries.end()) throw vdb::KeyError("grid '" + oneLine(mEntries[index].name) + "' is an instance of a missing grid");
+        index = std::size_t(it - mEntries.begin());
+    }
+    throw vdb::KeyError("grid instances form a cycle");
+}
+
+vdb::GridBase::Ptr VdbReader::readHeader(std::size_t index) { return read(index, Depth::Header, vdb::CoordBBox()); }
+vdb::GridBase::Ptr VdbReader::readTopology(std::size_t index) { return read(index, Depth::Topology, vdb::CoordBBox()); }
+vdb::GridBase::Ptr VdbReader::readRegion(std::size_t index, const vdb::CoordBBox& clip) {
+    return read(index, Depth::Region, clip);
+}
+
+vdb::GridBase::Ptr VdbReader::read(std::size_t index, Depth depth, const vdb::CoordBBox& clip) {
+    const vdb::io::GridDescriptor& gd = mDescriptors.at(index);
+    if (!vdb::GridBase::isRegistered(gd.gridType()))
+        throw vdb::TypeError("grid '" + oneLine(gd.gridName()) + "' has the unknown type " + oneLine(gd.gridType()));
+    vdb::GridBase::Ptr grid = vdb::GridBase::createGrid(gd.gridType());
+    // Point grids (multi-pass attribute buffers) hold particles, not voxels.
+    const bool points = gd.gridType().find("ptdataidx") != std::string::npos || gd.gridType().find("ptidx") != std::string::npos;
+    if (points && depth != Depth::Header)
+        throw vdb::TypeError("grid '" + oneLine(gd.gridName()) + "' is a point grid, which cannot be read as voxels");
+    grid->setSaveFloatAsHalf(gd.saveFloatAsHalf());
+
+    mStream.clear();  // a failed read of another grid must not poison this one
+    // The same per-grid stream set-up as io::Archive::readGrid(): grid class, background and
+    // half-float flags travel with the stream and steer how node values decode.
+    gd.seekToGrid(mStream);
+    auto streamMetadata = std::make_shared<vdb::io::StreamMetadata>(*mStreamMetadata);
+    streamMetadata->setHalfFloat(grid->saveFloatAsHalf());
+    vdb::io::setStreamMetadataPtr(mStream, streamMetadata, /*transfer=*/false);
+    struct Restore {
+        VdbReader& r;
+        ~Restore() { vdb::io::setStreamMetadataPtr(r.mStream, r.mStreamMetadata, false); }
+    } restore{*this};
+    vdb::io::setGridClass(mStream, vdb::GRID_UNKNOWN);
+    vdb::io::setGridBackgroundValuePtr(mStream, nullptr);
+    readGridCompression(mStream);
+    grid->readMeta(mStream);
+    streamMetadata->gridMetadata() = static_cast<vdb::MetaMap&>(*grid);
+    vdb::io::setGridClass(mStream, grid->getGridClass());
+    grid->readTransform(mStream);
+    if (grid->getName().empty()) grid->setName(gd.gridName());
+    if (depth == Depth::Header) return grid;
+
+    if (gd.isInstance()) {
+        std::size_t source = treeSource(index);
+        vdb::GridBase::Ptr parent = read(source, depth, clip);
+        if (parent->type() != grid->type()) throw vdb::TypeError("grid instance of a different type");
+        grid->setTree(parent->baseTreePtr());
+        return grid;
+    }
+    grid->readTopology(mStream);
+    if (depth == Depth::Region) grid->readBuffers(mStream, clip);
+    return grid;
+}
+
+}  // namespace engine::io
