@@ -180,6 +180,14 @@ Box toBox(const vdb::CoordBBox& b) {
 vdb::CoordBBox toCoordBBox(const Box& b) {
     return vdb::CoordBBox(vdb::Coord(b.min.x, b.min.y, b.min.z), vdb::Coord(b.max.x - 1, b.max.y - 1, b.max.z - 1));
 }
+// Widened to whole leaves: OpenVDB's clip turns every tile that a clip box cuts into a dense leaf
+// (2 KiB for floats), so an unaligned box would fill its whole boundary with leaves.
+vdb::CoordBBox leafAligned(const Box& b) {
+    auto down = [](int v) { return v >= 0 ? v & ~7 : -((-v + 7) & ~7); };
+    glm::ivec3 lo(down(b.min.x), down(b.min.y), down(b.min.z));
+    glm::ivec3 hi(down(b.max.x + 7), down(b.max.y + 7), down(b.max.z + 7));
+    return vdb::CoordBBox(vdb::Coord(lo.x, lo.y, lo.z), vdb::Coord(hi.x - 1, hi.y - 1, hi.z - 1));
+}
 Box unite(const Box& a, const Box& b) {
     if (a.empty()) return b;
     if (b.empty()) return a;
@@ -624,6 +632,8 @@ void Importer::readTopology() {
         mTiles.push_back({b, s});
     });
     mPlan.sourceLeaves = leafCount;
+    mLeaves.shrink_to_fit();
+    mTiles.shrink_to_fit();
     // Bytes of one loaded leaf: values plus the node (mask, origin, buffer header).
     std::uint64_t valueBytes = mKind == Kind::Colour ? 12 : 4;
     if (mGridHeader->isType<vdb::DoubleGrid>() || mGridHeader->isType<vdb::Int64Grid>()) valueBytes = 8;
@@ -823,13 +833,18 @@ void Importer::estimate(const world::Scene* target) {
     worldBytes += cells.x * cells.y * 8 * 2;                      // per-slab dirty lists
     std::uint64_t existing = target ? target->grid.liveBricks() : 0;
     worldBytes += (existing + mPlan.sampledCells) * kBrickBytes;  // the pool, reserved at once
-    std::uint64_t source = mShapeTopologyBytes + mSlabLeavesMax * mShapeLeafBytes + mLeaves.size() * sizeof(Box) +
-                           mTiles.size() * sizeof(TileInfo);
-    if (mColour) source += mColourTopologyBytes + mColourLeafBytes * std::min<std::uint64_t>(mColourLeaves.size(), 2 * mSlabLeavesMax) + mColourLeaves.size() * sizeof(Box);
+    // Each slab read rebuilds the source's topology (nodes, masks, tiles) next to that slab's leaf
+    // values; malloc adds a header to every node, hence the 1.25.
+    std::uint64_t source = (mShapeTopologyBytes * 5) / 4 + mSlabLeavesMax * mShapeLeafBytes +
+                           mLeaves.capacity() * sizeof(Box) + mTiles.capacity() * sizeof(TileInfo);
+    if (mColour)
+        source += (mColourTopologyBytes * 5) / 4 + mColourLeafBytes * std::min<std::uint64_t>(mColourLeaves.size(), 2 * mSlabLeavesMax) +
+                  mColourLeaves.capacity() * sizeof(Box);
     if (mRule == MaterialRule::Colour) source += 65536 * 96;  // histogram and mapper memo
+    source += 1 << 20;  // the reader: stream buffer, descriptors, file metadata
     mPlan.worldBytes = worldBytes;
     mPlan.sourceBytes = source;
-    mPlan.estimateBytes = worldBytes + source + (1 << 20);
+    mPlan.estimateBytes = worldBytes + source;
     if (mPlan.estimateBytes > mOptions.memoryBudgetBytes)
         failImport("{}: importing grid '{}' would need about {} (world {}x{}x{}: {} for the grid and up to {} bricks; {} "
                    "for the source), over the memory budget of {} (raise it with --memory-budget)",
@@ -946,7 +961,7 @@ void Importer::scanActive(SourceGrid& source, std::size_t index, const std::vect
         Box piece{glm::ivec3(region.min.x, region.min.y, std::max(region.min.z, z0)),
                   glm::ivec3(region.max.x, region.max.y, std::min(region.max.z, z1))};
         if (!piece.empty()) {
-            source.attach(mReader.readRegion(index, toCoordBBox(piece)));
+            source.attach(mReader.readRegion(index, leafAligned(piece)));
             vdb::CoordBBox origins(vdb::Coord(INT32_MIN / 2, INT32_MIN / 2, z0), vdb::Coord(INT32_MAX / 2, INT32_MAX / 2, z1 - 1));
             source.forEachActiveLeafVoxel(origins, toCoordBBox(piece), f);
             source.attach(nullptr);
@@ -1055,14 +1070,15 @@ void Importer::run(world::Scene& scene, bool intoExisting) {
                       glm::ivec3(mWorldBox.max.x, mWorldBox.max.y, std::min(mWorldBox.max.z, slab.cz1 * 8))};
         Box sourcePart = mMap.unorient(mMap.needed(worldPart)).intersect(mSourceBox);
         if (sourcePart.empty()) continue;
-        mShape->attach(mReader.readRegion(mGridIndex, toCoordBBox(sourcePart)));
+        mShape->attach(mReader.readRegion(mGridIndex, leafAligned(sourcePart)));
         if (mColour) {
-            vdb::CoordBBox region = toCoordBBox(sourcePart);
+            Box region = sourcePart;
             if (!mSameXform) {
-                vdb::BBoxd index = mColourXform->worldToIndex(mShapeXform->indexToWorld(region));
-                region = vdb::CoordBBox(vdb::Coord::floor(index.min()).offsetBy(-1), vdb::Coord::ceil(index.max()).offsetBy(1));
+                vdb::BBoxd index = mColourXform->worldToIndex(mShapeXform->indexToWorld(toCoordBBox(sourcePart)));
+                region = Box{glm::ivec3(int(std::floor(index.min().x())), int(std::floor(index.min().y())), int(std::floor(index.min().z()))) - 1,
+                             glm::ivec3(int(std::ceil(index.max().x())), int(std::ceil(index.max().y())), int(std::ceil(index.max().z()))) + 2};
             }
-            mColour->attach(mReader.readRegion(std::size_t(mColourIndex), region));
+            mColour->attach(mReader.readRegion(std::size_t(mColourIndex), leafAligned(region)));
         }
         for (int cz = std::max(slab.cz0, lo.z); cz < std::min(slab.cz1, hi.z + 1); ++cz) {
             for (int cy = lo.y; cy <= hi.y; ++cy) {

@@ -9,6 +9,8 @@
 
 namespace engine::io {
 
+void linkOpenVdbDecoders();  // io/openvdb_decoders.cpp
+
 namespace fs = std::filesystem;
 namespace vdb = openvdb;
 
@@ -83,10 +85,17 @@ VdbReader::VdbReader(const fs::path& path) : mPath(path) {
     // From here on any short read or bad seek throws instead of leaving garbage behind.
     mStream.exceptions(std::ios::failbit | std::ios::badbit);
 
+    linkOpenVdbDecoders();
     std::int64_t magic = 0;
-    if (mFileBytes < sizeof(magic)) throw vdb::IoError("not a VDB file");
+    std::uint32_t version = 0;
+    if (mFileBytes < sizeof(magic) + sizeof(version)) throw vdb::IoError("not a VDB file");
     mStream.read(reinterpret_cast<char*>(&magic), sizeof(magic));
     if (magic != kVdbMagic) throw vdb::IoError("not a VDB file");
+    // Checked here because OpenVDB only warns (on stderr) and then reads on regardless.
+    mStream.read(reinterpret_cast<char*>(&version), sizeof(version));
+    if (version > vdb::OPENVDB_FILE_VERSION)
+        throw vdb::IoError(fmt::format("file format {} is newer than this build's OpenVDB reads ({})", version,
+                                       vdb::OPENVDB_FILE_VERSION));
     mStream.seekg(0);
 
     Archive::readHeader(mStream);
