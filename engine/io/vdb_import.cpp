@@ -289,11 +289,6 @@ struct Mapping {
 
 // ---------------------------------------------------------------------------------------------
 
-struct TileInfo {
-    Box box;  // source index space, clipped to the imported box
-    Sample value;
-};
-
 enum CellMark : std::uint8_t { kCellNone = 0, kCellUniform = 1, kCellSample = 2 };
 
 bool isColourName(std::string name) {
@@ -338,13 +333,15 @@ private:
     void checkTransform(const vdb::GridBase& g);
     void selectColourGrid();
     void readTopology();
+    void readColourTopology();
+    void forEachSolidTile(const SourceGrid& topology, const std::function<void(const Box&, const Sample&)>& f) const;
     void place(const world::Scene* target);
     template <typename OnUniform>
-    void markCells(std::vector<std::uint8_t>& marks, OnUniform&& onUniform);
+    void markCells(const SourceGrid& topology, std::vector<std::uint8_t>& marks, OnUniform&& onUniform);
     void makeSlabs(const std::vector<std::uint8_t>& marks);
     void estimate(const world::Scene* target);
     void buildPalette();
-    void scanActive(SourceGrid& source, std::size_t index, const std::vector<Box>& leaves, const Box& region,
+    void scanActive(std::size_t index, const std::vector<Box>& leaves, const Box& region,
                     const std::function<void(const Sample&)>& f);
     bool solidAt(glm::ivec3 t, Sample& s) const;
     bool solid(const Sample& s) const;
@@ -381,7 +378,6 @@ private:
     Box mWorldBox;   // where it lands, clipped to the world
     glm::ivec3 mWorldSize{0};
     std::vector<Box> mLeaves;       // source leaf boxes (clipped to mSourceBox)
-    std::vector<TileInfo> mTiles;   // solid tiles (clipped)
     std::vector<Box> mColourLeaves; // colour grid leaf boxes
     std::uint64_t mShapeTopologyBytes = 0, mColourTopologyBytes = 0;
     std::uint64_t mShapeLeafBytes = 0, mColourLeafBytes = 0;
@@ -412,17 +408,17 @@ void Importer::plan(const world::Scene* target) {
     }
     selectGrid();
     selectColourGrid();
-    readTopology();
+    readTopology();  // leaves mShape holding the topology
     place(target);
     std::vector<std::uint8_t> marks(std::size_t(volume(Box{glm::ivec3(0), (mWorldSize + 7) / 8})), kCellNone);
-    {
-        // Counting pass: which cells need voxels, which fill whole from tiles.
-        markCells(marks, [&](glm::ivec3, int) {});
-        for (std::uint8_t m : marks) {
-            mPlan.sampledCells += (m == kCellSample);
-            mPlan.uniformCells += (m == kCellUniform);
-        }
+    // Counting pass: which cells need voxels, which fill whole from tiles.
+    markCells(*mShape, marks, [&](glm::ivec3, int) {});
+    for (std::uint8_t m : marks) {
+        mPlan.sampledCells += (m == kCellSample);
+        mPlan.uniformCells += (m == kCellUniform);
     }
+    mShape->attach(nullptr);
+    readColourTopology();
     makeSlabs(marks);
     estimate(target);
 }
@@ -623,24 +619,16 @@ void Importer::readTopology() {
         if (mKind == Kind::LevelSet) content = unite(content, b);
         mLeaves.push_back(b);
     });
-    mShape->forEachTile([&](const vdb::CoordBBox& box, const Sample& s) {
-        mPlan.sourceTiles++;
-        if (!solid(s)) return;
-        Box b = toBox(box).intersect(crop);
-        if (b.empty()) return;
-        content = unite(content, b);
-        mTiles.push_back({b, s});
-    });
+    mShape->forEachTile([&](const vdb::CoordBBox&, const Sample&) { mPlan.sourceTiles++; });
+    forEachSolidTile(*mShape, [&](const Box& b, const Sample&) { content = unite(content, b); });
     mPlan.sourceLeaves = leafCount;
     mLeaves.shrink_to_fit();
-    mTiles.shrink_to_fit();
     // Bytes of one loaded leaf: values plus the node (mask, origin, buffer header).
     std::uint64_t valueBytes = mKind == Kind::Colour ? 12 : 4;
     if (mGridHeader->isType<vdb::DoubleGrid>() || mGridHeader->isType<vdb::Int64Grid>()) valueBytes = 8;
     if (mGridHeader->isType<vdb::Vec3DGrid>()) valueBytes = 24;
     if (mKind == Kind::Mask) valueBytes = 0;
     mShapeLeafBytes = 512 * valueBytes + 128;
-    mShape->attach(nullptr);  // the topology has given what the plan needs
 
     mSourceBox = content.intersect(crop);
     if (mSourceBox.empty() && mOwn && !mOptions.crop) mSourceBox = Box{glm::ivec3(0), glm::ivec3(1)};  // an all-air world
@@ -649,7 +637,18 @@ void Importer::readTopology() {
         failImport("{}: grid '{}' is empty (no active voxels)", mFile, mPlan.grid);
     }
     mPlan.sourceBox = mSourceBox;
+}
 
+void Importer::forEachSolidTile(const SourceGrid& topology, const std::function<void(const Box&, const Sample&)>& f) const {
+    const Box crop = mOptions.crop ? *mOptions.crop : Box{glm::ivec3(INT32_MIN / 2), glm::ivec3(INT32_MAX / 2)};
+    topology.forEachTile([&](const vdb::CoordBBox& box, const Sample& s) {
+        if (!solid(s)) return;
+        Box b = toBox(box).intersect(crop);
+        if (!b.empty()) f(b, s);
+    });
+}
+
+void Importer::readColourTopology() {
     if (mColourIndex >= 0) {
         mColour = makeSource(*mReader.readHeader(std::size_t(mColourIndex)));
         mColour->attach(mReader.readTopology(std::size_t(mColourIndex)));
@@ -744,7 +743,7 @@ void Importer::place(const world::Scene* target) {
 // Marks cells to sample (touched by a leaf, or by a tile only in part) and reports cells a solid
 // tile covers whole, with a material that cannot vary inside the cell, through onUniform.
 template <typename OnUniform>
-void Importer::markCells(std::vector<std::uint8_t>& marks, OnUniform&& onUniform) {
+void Importer::markCells(const SourceGrid& topology, std::vector<std::uint8_t>& marks, OnUniform&& onUniform) {
     const glm::ivec3 cells = (mWorldSize + 7) / 8;
     auto cellIndex = [&](glm::ivec3 c) { return std::size_t(c.x) + std::size_t(cells.x) * (std::size_t(c.y) + std::size_t(cells.y) * std::size_t(c.z)); };
     const double margin = mTrilinear ? std::max({mMap.scale.x, mMap.scale.y, mMap.scale.z}) : 0.0;
@@ -762,11 +761,11 @@ void Importer::markCells(std::vector<std::uint8_t>& marks, OnUniform&& onUniform
             for (int y = lo.y; y <= hi.y; ++y)
                 for (int x = lo.x; x <= hi.x; ++x) marks[cellIndex({x, y, z})] = kCellSample;
     }
-    for (const TileInfo& tile : mTiles) {
-        Box oriented = mMap.orient(tile.box);
+    forEachSolidTile(topology, [&](const Box& tileBox, const Sample& tileValue) {
+        Box oriented = mMap.orient(tileBox);
         Box inside = mMap.centresInside(oriented, margin);
         glm::ivec3 lo, hi;
-        if (!cellRange(mMap.span(oriented, margin), lo, hi)) continue;
+        if (!cellRange(mMap.span(oriented, margin), lo, hi)) return;
         for (int z = lo.z; z <= hi.z; ++z) {
             for (int y = lo.y; y <= hi.y; ++y) {
                 for (int x = lo.x; x <= hi.x; ++x) {
@@ -778,7 +777,7 @@ void Importer::markCells(std::vector<std::uint8_t>& marks, OnUniform&& onUniform
                     bool whole = glm::all(glm::greaterThanEqual(cellBox.min, glm::max(inside.min, mWorldBox.min))) &&
                                  glm::all(glm::lessThanEqual(cellBox.max, glm::min(inside.max, mWorldBox.max)));
                     int material = 0;
-                    if (whole && uniformMaterial(tile.value, cellBox, material)) {
+                    if (whole && uniformMaterial(tileValue, cellBox, material)) {
                         m = kCellUniform;
                         onUniform(c, material);
                     } else {
@@ -787,12 +786,12 @@ void Importer::markCells(std::vector<std::uint8_t>& marks, OnUniform&& onUniform
                 }
             }
         }
-    }
+    });
 }
 
 void Importer::makeSlabs(const std::vector<std::uint8_t>& marks) {
-    // Leaves each cell-z layer needs; slabs of consecutive layers hold about 1/8 of the leaves
-    // (at least 2048), so the source's values are read in bounded pieces.
+    // Leaves each cell-z layer needs; slabs of consecutive layers hold about 1/16 of the leaves
+    // (at least 1024), so the source's values are read in bounded pieces.
     const glm::ivec3 cells = (mWorldSize + 7) / 8;
     std::vector<std::uint64_t> perLayer(std::size_t(cells.z) + 1, 0);
     const double margin = mTrilinear ? std::max({mMap.scale.x, mMap.scale.y, mMap.scale.z}) : 0.0;
@@ -805,7 +804,7 @@ void Importer::makeSlabs(const std::vector<std::uint8_t>& marks) {
     const std::size_t layer = std::size_t(cells.x) * std::size_t(cells.y);
     for (std::size_t i = 0; i < marks.size(); ++i)
         if (marks[i] == kCellSample) layerHasSamples[i / layer] = 1;
-    const std::uint64_t limit = std::max<std::uint64_t>(2048, (mLeaves.size() + 7) / 8);
+    const std::uint64_t limit = std::max<std::uint64_t>(1024, (mLeaves.size() + 15) / 16);
     int start = -1;
     std::uint64_t count = 0;
     for (int z = 0; z <= cells.z; ++z) {
@@ -836,7 +835,7 @@ void Importer::estimate(const world::Scene* target) {
     // Each slab read rebuilds the source's topology (nodes, masks, tiles) next to that slab's leaf
     // values; malloc adds a header to every node, hence the 1.25.
     std::uint64_t source = (mShapeTopologyBytes * 5) / 4 + mSlabLeavesMax * mShapeLeafBytes +
-                           mLeaves.capacity() * sizeof(Box) + mTiles.capacity() * sizeof(TileInfo);
+                           mLeaves.capacity() * sizeof(Box);
     if (mColour)
         source += (mColourTopologyBytes * 5) / 4 + mColourLeafBytes * std::min<std::uint64_t>(mColourLeaves.size(), 2 * mSlabLeavesMax) +
                   mColourLeaves.capacity() * sizeof(Box);
@@ -946,8 +945,10 @@ bool Importer::solidAt(glm::ivec3 t, Sample& s) const {
     return solid(s);
 }
 
-void Importer::scanActive(SourceGrid& source, std::size_t index, const std::vector<Box>& leaves, const Box& region,
+void Importer::scanActive(std::size_t index, const std::vector<Box>& leaves, const Box& region,
                           const std::function<void(const Sample&)>& f) {
+    auto sourcePtr = makeSource(*mReader.readHeader(index));
+    SourceGrid& source = *sourcePtr;
     // Leaf-aligned z ranges of about 1/8 of the leaves each; a leaf belongs to exactly one.
     std::vector<int> zs;
     for (const Box& b : leaves) zs.push_back(floorDiv(b.min.z, 8));
@@ -994,8 +995,12 @@ void Importer::buildPalette() {
                                        world::kMaxMaterials - 1);
                     }
                 };
-                for (const TileInfo& t : mTiles) note(std::int64_t(t.value.scalar));
-                scanActive(*mShape, mGridIndex, mLeaves, mSourceBox, [&](const Sample& s) { note(std::int64_t(s.scalar)); });
+                {
+                    auto topology = makeSource(*mGridHeader);
+                    topology->attach(mReader.readTopology(mGridIndex));
+                    forEachSolidTile(*topology, [&](const Box&, const Sample& s) { note(std::int64_t(s.scalar)); });
+                }
+                scanActive(mGridIndex, mLeaves, mSourceBox, [&](const Sample& s) { note(std::int64_t(s.scalar)); });
                 std::sort(values.begin(), values.end());
                 for (std::int64_t v : values) {
                     mIdLut[v] = int(mMaterials.size());
@@ -1016,11 +1021,15 @@ void Importer::buildPalette() {
                                  glm::ivec3(int(std::ceil(index.max().x())) + 2, int(std::ceil(index.max().y())) + 2,
                                             int(std::ceil(index.max().z())) + 2)};
                 }
-                scanActive(*mColour, std::size_t(mColourIndex), mColourLeaves, region,
+                scanActive(std::size_t(mColourIndex), mColourLeaves, region,
                            [&](const Sample& s) { histogram.add(s.colour); });
             } else {
-                for (const TileInfo& t : mTiles) histogram.add(t.value.colour, volume(t.box));
-                scanActive(*mShape, mGridIndex, mLeaves, mSourceBox, [&](const Sample& s) { histogram.add(s.colour); });
+                {
+                    auto topology = makeSource(*mGridHeader);
+                    topology->attach(mReader.readTopology(mGridIndex));
+                    forEachSolidTile(*topology, [&](const Box& b, const Sample& s) { histogram.add(s.colour, volume(b.intersect(mSourceBox))); });
+                }
+                scanActive(mGridIndex, mLeaves, mSourceBox, [&](const Sample& s) { histogram.add(s.colour); });
             }
             std::vector<glm::vec3> palette = quantizeColours(histogram, mOptions.maxColours);
             if (palette.empty()) palette.push_back(glm::vec3(0.7f));
@@ -1057,10 +1066,14 @@ void Importer::run(world::Scene& scene, bool intoExisting) {
         grid.reserveBricks(std::uint32_t(std::min<std::uint64_t>(grid.liveBricks() + mPlan.sampledCells, 0x7FFFFFF0u)));
         marks.assign(std::size_t(volume(Box{glm::ivec3(0), (mWorldSize + 7) / 8})), kCellNone);
     }
-    markCells(marks, [&](glm::ivec3 c, int material) {
-        grid.writeCellUniform(c, mRemap[std::size_t(material)]);
-        mReport.solidVoxels += world::kBrickVoxels;
-    });
+    {
+        auto topology = makeSource(*mGridHeader);
+        topology->attach(mReader.readTopology(mGridIndex));
+        markCells(*topology, marks, [&](glm::ivec3 c, int material) {
+            grid.writeCellUniform(c, mRemap[std::size_t(material)]);
+            mReport.solidVoxels += world::kBrickVoxels;
+        });
+    }
     grid.clearDirty();
 
     const glm::ivec3 cells = (mWorldSize + 7) / 8;

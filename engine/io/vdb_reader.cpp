@@ -28,6 +28,14 @@ std::string oneLine(std::string s) {
 
 std::string mib(std::uint64_t bytes) { return fmt::format("{:.1f} MiB", double(bytes) / (1 << 20)); }
 
+// OpenVDB's what() reads "IoError: detail"; keep the detail.
+std::string detail(const vdb::Exception& e) {
+    std::string what = e.what() ? e.what() : "";
+    std::size_t colon = what.find(": ");
+    if (colon != std::string::npos && colon < 24 && what.find(' ') > colon) what = what.substr(colon + 2);
+    return oneLine(what);
+}
+
 }  // namespace
 
 void initializeOpenVdb() {
@@ -63,11 +71,11 @@ Error vdbError(const fs::path& path, const AllocationBudget* budget) {
     } catch (const std::ios_base::failure&) {
         return makeError("{}: truncated or corrupt VDB file (data ends or points outside the file)", file);
     } catch (const vdb::IoError& e) {
-        std::string what = e.what() ? e.what() : "";
+        std::string what = detail(e);
         if (what.find("not a VDB file") != std::string::npos) return makeError("{}: not a VDB file", file);
-        return makeError("{}: corrupt VDB file ({})", file, oneLine(what));
+        return makeError("{}: truncated or corrupt VDB file ({})", file, what);
     } catch (const vdb::Exception& e) {
-        return makeError("{}: corrupt or unsupported VDB file ({})", file, oneLine(e.what() ? e.what() : "?"));
+        return makeError("{}: truncated, corrupt or unsupported VDB file ({})", file, detail(e));
     } catch (const std::exception& e) {
         return makeError("{}: cannot read VDB file ({})", file, oneLine(e.what()));
     } catch (...) {
@@ -146,7 +154,7 @@ VdbReader::VdbReader(const fs::path& path) : mPath(path) {
         mStream.read(reinterpret_cast<char*>(pos), sizeof(pos));
         const std::int64_t here = mStream.tellg();
         if (!(here <= pos[0] && pos[0] <= pos[1] && pos[1] <= pos[2] && std::uint64_t(pos[2]) <= mFileBytes))
-            throw vdb::IoError(fmt::format("grid '{}' has offsets outside the file", oneLine(e.name)));
+            throw vdb::IoError(fmt::format("grid '{}' reaches past the end of the file's {} bytes", oneLine(e.name), mFileBytes));
         vdb::io::GridDescriptor gd(e.uniqueName, e.type, half);
         gd.setInstanceParentName(e.parent);
         gd.setGridPos(pos[0]);

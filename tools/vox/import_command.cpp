@@ -18,21 +18,35 @@ namespace {
 // WORLD.toml + WORLD.vdb: the scene file names the payload with a vdb generator, so the world
 // stays editable as text (cameras, sky, more generators) while its voxels and palette live in
 // the exact, compact .vdb. With -o WORLD.vdb only the payload is written.
-int runImport(const std::string& input, const std::string& output, const VdbCliOptions& cli) {
+int runImport(const std::string& input, const std::string& output, bool dryRun, const VdbCliOptions& cli) {
     auto options = toImportOptions(cli);
     if (!options) return fail(options.error());
     fs::path out(output);
     const std::string ext = out.extension().string();
+    if (dryRun) {
+        engine::io::VdbImportReport report;
+        auto scene = engine::io::importVdb(input, *options, &report);
+        if (!scene) return fail(scene.error());
+        std::printf("imported %s (dry run: nothing written)\n%s", input.c_str(), engine::io::formatVdbImportReport(report).c_str());
+        engine::world::WorldInfo info = engine::world::describeWorld(*scene);
+        std::printf("  world size   %.2f MiB in memory (%llu bytes; %llu bricks, %llu homogeneous cells); peak heap during import %.2f MiB\n",
+                    double(info.totalBytes()) / (1 << 20), static_cast<unsigned long long>(info.totalBytes()),
+                    static_cast<unsigned long long>(info.bricks), static_cast<unsigned long long>(info.homogeneousCells),
+                    double(report.peakTrackedBytes) / (1 << 20));
+        return 0;
+    }
+    if (output.empty()) return fail(engine::makeError("{}: give -o WORLD.toml or WORLD.vdb (or --dry-run)", input));
     if (ext != ".toml" && ext != ".vdb") return fail(engine::makeError("-o {}: the file must end in .toml or .vdb", output));
-
-    engine::io::VdbImportReport report;
-    auto scene = engine::io::importVdb(input, *options, &report);
-    if (!scene) return fail(scene.error());
 
     fs::path payload = out;
     payload.replace_extension(".vdb");
-    if (ext == ".toml" && fs::exists(payload) && fs::equivalent(payload, fs::path(input)))
-        return fail(engine::makeError("-o {}: its payload {} would overwrite the input", output, payload.string()));
+    std::error_code ec;
+    if (ext == ".toml" && fs::equivalent(payload, fs::path(input), ec))
+        return fail(engine::makeError("{}: -o {} would overwrite the input with its payload {}; choose another name",
+                                      input, output, payload.string()));
+    engine::io::VdbImportReport report;
+    auto scene = engine::io::importVdb(input, *options, &report);
+    if (!scene) return fail(scene.error());
     engine::Status s = engine::io::exportVdb(*scene, payload);
     if (!s) return fail(s.error());
     if (ext == ".toml") {
@@ -69,10 +83,12 @@ void addImportCommand(CLI::App& app, int& exitCode) {
     auto input = std::make_shared<std::string>();
     auto output = std::make_shared<std::string>();
     auto cli = std::make_shared<VdbCliOptions>();
+    auto dryRun = std::make_shared<bool>(false);
     cmd->add_option("input", *input, "Input .vdb file")->required();
-    cmd->add_option("-o,--output", *output, "WORLD.toml (scene file + WORLD.vdb payload) or WORLD.vdb")->required();
+    cmd->add_option("-o,--output", *output, "WORLD.toml (scene file + WORLD.vdb payload) or WORLD.vdb");
+    cmd->add_flag("--dry-run", *dryRun, "Import and report (sizes, colour error, memory) without writing anything");
     addVdbImportOptions(*cmd, *cli);
-    cmd->callback([=, &exitCode] { exitCode = runImport(*input, *output, *cli); });
+    cmd->callback([=, &exitCode] { exitCode = runImport(*input, *output, *dryRun, *cli); });
 }
 
 }  // namespace vox
