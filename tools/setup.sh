@@ -9,7 +9,7 @@ packages=(
   build-essential cmake ninja-build pkg-config git
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
   glslang-tools glslang-dev spirv-tools
-  libglfw3-dev libglm-dev libopenvdb-dev libopenvdb-tools
+  libglfw3-dev libglm-dev libopenvdb-dev libopenvdb-tools libblosc-dev zlib1g-dev time
   libgtest-dev libgmock-dev libbenchmark-dev
   libstb-dev libopenexr-dev libtomlplusplus-dev libcli11-dev libfmt-dev libspdlog-dev libimgui-dev
   python3 python3-matplotlib xvfb clang

@@ -115,6 +115,12 @@ std::uint64_t BrickGrid::solidVoxels() const {
     return total;
 }
 
+void BrickGrid::reserveBricks(std::uint32_t n) {
+    mBrickVoxels.reserve(n);
+    mBrickMasks.reserve(n);
+    mBrickDirty.reserve(n);
+}
+
 void BrickGrid::clearDirty() {
     for (std::uint32_t b : mDirtyBricks) mBrickDirty[b] = 0;
     for (std::uint32_t c : mDirtyCells) mCellDirty[c] = 0;

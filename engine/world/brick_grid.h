@@ -87,6 +87,10 @@ public:
     std::uint32_t liveBricks() const { return brickCapacity() - static_cast<std::uint32_t>(mFreeBricks.size()); }
     std::uint32_t homogeneousCells() const;  // solid homogeneous cells (no storage)
     std::uint64_t solidVoxels() const;
+    // Reserves pool capacity for n bricks in one allocation: an importer that knows an upper bound
+    // avoids the pool's doubling (a 3x transient while a vector regrows). Pages never written are
+    // never touched, so an over-estimate costs address space, not memory.
+    void reserveBricks(std::uint32_t n);
 
     // Dirty tracking for the GPU mirror.
     std::span<const std::uint32_t> dirtyBricks() const { return mDirtyBricks; }

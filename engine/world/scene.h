@@ -29,6 +29,7 @@ struct SkyLight {
 struct Scene {
     std::string name = "untitled";
     std::string sourcePath;  // the file it came from, for messages
+    float voxelSize = 1.0f;  // edge of a voxel in world units (metres); exported as the VDB transform
     Palette palette;
     BrickGrid grid{glm::ivec3(8)};
     std::vector<CameraPreset> cameras;

@@ -11,6 +11,7 @@
 
 #include "world/apartment_generator.h"
 #include "world/bridge_generator.h"
+#include "io/vdb_import.h"
 #include "world/generators.h"
 #include "world/menger_generator.h"
 #include "world/mountain_generator.h"
@@ -183,6 +184,9 @@ private:
         if (!n || !n->as_table()) fail(&top.raw(), "missing [world] table");
         Table world(*this, *n->as_table());
         scene.name = world.string("name", "untitled");
+        scene.voxelSize = static_cast<float>(world.number("voxel_size", 1.0));
+        if (!(scene.voxelSize > 0.0f && scene.voxelSize <= 1e6f))
+            fail(world.node("voxel_size"), "'voxel_size' must be in (0, 1e6]");
         glm::ivec3 size = world.ivec3("size", {}, true);
         if (glm::any(glm::lessThan(size, glm::ivec3(1))) || glm::any(glm::greaterThan(size, glm::ivec3(kMaxWorldExtent))))
             fail(world.node("size"), "world size {}x{}x{} is outside 1..{} voxels per axis", size.x, size.y, size.z,
@@ -307,13 +311,15 @@ private:
             parseApartment(g, scene);
         } else if (type == "bridge") {
             parseBridge(g, scene);
+        } else if (type == "vdb") {
+            parseVdbGenerator(g, node, scene);
         } else {
             fail(g.node("type"), "unknown generator '{}' (known: {})", type, kGeneratorTypes);
         }
     }
 
     static constexpr const char* kGeneratorTypes =
-        "terrain, box, sphere, cornell, buildings, lamps, mountain, scattered_lights, text, menger, apartment, bridge";
+        "terrain, box, sphere, cornell, buildings, lamps, mountain, scattered_lights, text, menger, apartment, bridge, vdb";
 
     void parseMountain(Table& g, Scene& scene) {
         MountainParams p;
@@ -433,6 +439,61 @@ private:
         generateBridge(scene.grid, p);
     }
 
+    // An OpenVDB file (io/vdb_import.h); the keys mirror `vox import`'s options.
+    void parseVdbGenerator(Table& g, const toml::node& node, Scene& scene) {
+        namespace fs = std::filesystem;
+        io::VdbImportOptions o;
+        std::string source = g.string("source");
+        fs::path path = fs::path(source).is_absolute() ? fs::path(source) : fs::path(mSource).parent_path() / source;
+        o.grid = g.string("grid", "");
+        o.colourGrid = g.string("colour_grid", "");
+        std::string rule = g.string("rule", "auto");
+        if (rule == "auto") o.rule = io::MaterialRule::Auto;
+        else if (rule == "constant") o.rule = io::MaterialRule::Constant;
+        else if (rule == "height") o.rule = io::MaterialRule::Height;
+        else if (rule == "colour" || rule == "color") o.rule = io::MaterialRule::Colour;
+        else if (rule == "ids") o.rule = io::MaterialRule::Ids;
+        else fail(g.node("rule"), "unknown rule '{}' (known: auto, constant, height, colour, ids)", rule);
+        if (g.has("material")) {
+            MaterialId m = material(g, scene, "material");
+            if (m == kEmpty) fail(g.node("material"), "'material' must be a solid material");
+            o.material = scene.palette[m];
+            if (o.rule == io::MaterialRule::Auto) o.rule = io::MaterialRule::Constant;
+        }
+        if (const toml::node* n = g.node("materials")) {
+            const toml::array* a = n->as_array();
+            if (!a || a->empty()) fail(n, "'materials' must be a non-empty array of material names");
+            for (const toml::node& e : *a) {
+                auto name = e.value<std::string>();
+                auto id = name ? scene.palette.find(*name) : std::nullopt;
+                if (!id) fail(n, "'materials': unknown material '{}'", name ? *name : "?");
+                o.heightMaterials.push_back(scene.palette[*id]);
+            }
+        }
+        o.fogThreshold = static_cast<float>(g.number("fog_threshold", o.fogThreshold));
+        o.maxColours = g.integer("max_colours", o.maxColours);
+        if (o.maxColours < 1 || std::size_t(o.maxColours) >= kMaxMaterials)
+            fail(g.node("max_colours"), "'max_colours' must be in 1..{}", kMaxMaterials - 1);
+        o.voxelSize = static_cast<float>(g.number("voxel_size", 0.0));
+        if (o.voxelSize < 0.0f) fail(g.node("voxel_size"), "'voxel_size' must be positive");
+        if (g.has("offset")) o.offset = g.ivec3("offset", {});
+        if (g.has("crop_min") || g.has("crop_max")) {
+            Box crop{g.ivec3("crop_min", {}, true), g.ivec3("crop_max", {}, true)};
+            if (crop.empty()) fail(g.node("crop_max"), "'crop_max' must exceed 'crop_min' on every axis");
+            o.crop = crop;
+        }
+        std::string up = g.string("up", "auto");
+        if (up == "auto") o.up = io::UpAxis::Auto;
+        else if (up == "y") o.up = io::UpAxis::Y;
+        else if (up == "z") o.up = io::UpAxis::Z;
+        else fail(g.node("up"), "'up' must be \"y\", \"z\" or \"auto\"");
+        int budget = g.integer("memory_budget_mib", int(o.memoryBudgetBytes >> 20));
+        if (budget < 1) fail(g.node("memory_budget_mib"), "'memory_budget_mib' must be positive");
+        o.memoryBudgetBytes = std::uint64_t(budget) << 20;
+        Status s = io::importVdbInto(scene, path, o);
+        if (!s) fail(&node, "{}", s.error().message);
+    }
+
     void parseCamera(const toml::node& node, Scene& scene) {
         const toml::table* t = node.as_table();
         if (!t) fail(&node, "each [[camera]] must be a table");
@@ -470,6 +531,42 @@ Result<Scene> loadSceneFile(const std::filesystem::path& path) {
     text << in.rdbuf();
     if (in.bad()) return makeError("{}: read error", path.string());
     return loadSceneText(text.str(), path.string());
+}
+
+std::string sceneFileText(const Scene& scene, std::string_view comment, std::string_view generators) {
+    auto v3 = [](glm::vec3 v) { return fmt::format("[{}, {}, {}]", v.x, v.y, v.z); };
+    auto quoted = [](const std::string& s) {
+        std::string out = "\"";
+        for (char c : s) {
+            if (c == '"' || c == '\\') out += '\\';
+            if (static_cast<unsigned char>(c) < 0x20) {
+                out += fmt::format("\\u{:04x}", int(c));
+                continue;
+            }
+            out += c;
+        }
+        return out + "\"";
+    };
+    std::string s;
+    for (std::string_view line : {comment}) {
+        std::size_t start = 0;
+        while (start < line.size()) {
+            std::size_t end = line.find('\n', start);
+            if (end == std::string_view::npos) end = line.size();
+            s += fmt::format("# {}\n", line.substr(start, end - start));
+            start = end + 1;
+        }
+    }
+    glm::ivec3 size = scene.grid.sizeInVoxels();
+    s += fmt::format("[world]\nname = {}\nsize = [{}, {}, {}]\nvoxel_size = {}\n\n", quoted(scene.name), size.x, size.y,
+                     size.z, scene.voxelSize);
+    s += generators;
+    for (const CameraPreset& c : scene.cameras)
+        s += fmt::format("\n[[camera]]\nname = {}\nposition = {}\ntarget = {}\nfov = {}\n", quoted(c.name),
+                         v3(c.position), v3(c.target), c.fovYDegrees);
+    s += fmt::format("\n[sky]\nsun_direction = {}\nsun_radiance = {}\nsky_radiance = {}\n", v3(scene.sky.sunDirection),
+                     v3(scene.sky.sunRadiance), v3(scene.sky.skyRadiance));
+    return s;
 }
 
 Result<std::filesystem::path> resolveWorldPath(std::string_view nameOrPath) {

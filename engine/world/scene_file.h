@@ -16,7 +16,13 @@ inline constexpr std::uint64_t kMaxTopGridCells = 1ull << 25;
 inline constexpr int kMaxWorldExtent = 1 << 15;
 
 Result<Scene> loadSceneFile(const std::filesystem::path& path);
+// sourceName names the text in messages and is the folder that relative paths in it (a vdb
+// generator's source) are resolved against.
 Result<Scene> loadSceneText(std::string_view text, std::string_view sourceName);
+
+// A scene file for `scene` without its voxels: [world] (name, size, voxel size), the given
+// [[generator]] tables verbatim, cameras and sky. Floats are written in their shortest exact form.
+std::string sceneFileText(const Scene& scene, std::string_view comment, std::string_view generators);
 
 // Resolves a world argument: an existing path, or a name in the worlds/ folder
 // ("sandbox" -> worlds/sandbox.toml), looked up next to the working directory and the source

@@ -16,6 +16,8 @@ void addRenderCommand(CLI::App& app, int& exitCode);
 void addInfoCommand(CLI::App& app, int& exitCode);
 void addCompareCommand(CLI::App& app, int& exitCode);
 void addCaptureCommand(CLI::App& app, int& exitCode);
+void addExportCommand(CLI::App& app, int& exitCode);
+void addImportCommand(CLI::App& app, int& exitCode);
 void addBenchTraverseCommand(CLI::App& bench, int& exitCode);
 void addBenchEmittersCommand(CLI::App& bench, int& exitCode);
 void addBenchRestirCommand(CLI::App& bench, int& exitCode);
@@ -23,7 +25,8 @@ void addBenchAccuracyCommand(CLI::App& bench, int& exitCode);
 void addBenchSweepCommand(CLI::App& bench, int& exitCode);
 void addBenchStabilityCommand(CLI::App& bench, int& exitCode);
 
-// Loads a world by name or path; an empty argument means the built-in default world.
+// Loads a world by name or path (a .vdb is imported with default options); an empty argument
+// means the built-in default world.
 engine::Result<engine::world::Scene> loadWorld(const std::string& nameOrPath);
 // "640x360" -> {640, 360}; an error names the option.
 engine::Result<glm::uvec2> parseSize(const std::string& text, const char* option);

@@ -1,18 +1,38 @@
 #include <cstdio>
+#include <filesystem>
 
 #include "commands.h"
+#include "io/vdb_info.h"
 #include "shared/brick_grid.h"
+#include "vdb_options.h"
 #include "world/world_info.h"
 
 namespace vox {
 
 void addInfoCommand(CLI::App& app, int& exitCode) {
-    auto* cmd = app.add_subcommand("info", "Describe a world: size, bricks, voxels, emitters, memory");
+    auto* cmd = app.add_subcommand(
+        "info", "Describe a world (size, bricks, voxels, emitters, memory) or a .vdb file (grids, and what an import would make)");
     auto world = std::make_shared<std::string>();
     auto json = std::make_shared<bool>(false);
-    cmd->add_option("world", *world, "World name (worlds/NAME.toml) or scene file; default: sandbox");
-    cmd->add_flag("--json", *json, "Print JSON instead of text");
+    auto vdbOptions = std::make_shared<VdbCliOptions>();
+    cmd->add_option("world", *world, "World name (worlds/NAME.toml), scene file or .vdb file; default: sandbox");
+    cmd->add_flag("--json", *json, "Print JSON instead of text (worlds)");
+    addVdbImportOptions(*cmd, *vdbOptions);
     cmd->callback([=, &exitCode] {
+        if (std::filesystem::path(*world).extension() == ".vdb") {
+            auto options = toImportOptions(*vdbOptions);
+            if (!options) {
+                exitCode = fail(options.error());
+                return;
+            }
+            auto info = engine::io::describeVdbFile(*world, *options);
+            if (!info) {
+                exitCode = fail(info.error());
+                return;
+            }
+            std::printf("%s", engine::io::formatVdbFileInfo(*info).c_str());
+            return;
+        }
         auto scene = loadWorld(*world);
         if (!scene) {
             exitCode = fail(scene.error());

@@ -2,12 +2,17 @@
 #include <cstdio>
 
 #include "commands.h"
+#include <filesystem>
+
 #include "core/log.h"
+#include "io/vdb_import.h"
 #include "world/scene_file.h"
 
 namespace vox {
 
 engine::Result<engine::world::Scene> loadWorld(const std::string& nameOrPath) {
+    // A .vdb stands for itself: imported with the default options.
+    if (std::filesystem::path(nameOrPath).extension() == ".vdb") return engine::io::importVdb(nameOrPath);
     auto path = engine::world::resolveWorldPath(nameOrPath.empty() ? "sandbox" : nameOrPath);
     if (!path) return path.error();
     return engine::world::loadSceneFile(*path);
@@ -40,13 +45,15 @@ int fail(const engine::Error& error) {
 
 int main(int argc, char** argv) {
     engine::log::init();
-    CLI::App app{"vox: voxel engine tool (render, inspect, compare and benchmark brick-grid worlds)", "vox"};
+    CLI::App app{"vox: voxel engine tool (render, capture, inspect, compare, import, export and benchmark brick-grid worlds)", "vox"};
     app.require_subcommand(1);
     int exitCode = 0;
     vox::addRenderCommand(app, exitCode);
     vox::addInfoCommand(app, exitCode);
     vox::addCompareCommand(app, exitCode);
     vox::addCaptureCommand(app, exitCode);
+    vox::addExportCommand(app, exitCode);
+    vox::addImportCommand(app, exitCode);
     CLI::App* bench = app.add_subcommand("bench", "Benchmarks (results as CSV/JSON under out/)");
     bench->require_subcommand(1);
     vox::addBenchTraverseCommand(*bench, exitCode);

@@ -1,0 +1,36 @@
+// OpenVDB export: one .vdb per world (layout in io/vdb_layout.h and docs/VDB.md).
+//
+// The file is written grid by grid: each OpenVDB grid is built from the brick grid just before
+// it is written and released right after, so at most one grid exists in memory besides the world.
+// A homogeneous cell becomes one 8^3 tile and an empty cell nothing; only bricks become leaves,
+// so no dense copy of the world is ever made. The save is atomic: a temporary file beside the
+// target, flushed, then renamed, so a failed export leaves the previous file intact.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "world/scene.h"
+
+namespace engine::io {
+
+struct VdbExportOptions {
+    // Also write the albedo and emission grids (for other tools; import does not need them).
+    bool colourGrids = true;
+};
+
+struct VdbExportReport {
+    std::vector<std::string> grids;
+    std::uint64_t solidVoxels = 0;
+    std::uint64_t tiles = 0;   // homogeneous cells written as one tile each
+    std::uint64_t leaves = 0;  // bricks written as 8^3 leaves
+    std::uint64_t fileBytes = 0;
+};
+
+Status exportVdb(const world::Scene& scene, const std::filesystem::path& path, const VdbExportOptions& options = {},
+                 VdbExportReport* report = nullptr);
+
+}  // namespace engine::io

@@ -1,0 +1,316 @@
+#include "io/vdb_reader.h"
+
+#include <algorithm>
+#include <memory>
+#include <mutex>
+#include <type_traits>
+#include <new>
+#include <system_error>
+
+#include <fmt/format.h>
+
+namespace engine::io {
+
+void linkOpenVdbDecoders();  // io/openvdb_decoders.cpp
+
+namespace fs = std::filesystem;
+namespace vdb = openvdb;
+
+namespace {
+
+constexpr std::int64_t kVdbMagic = 0x56444220;
+constexpr char kHalfFloatSuffix[] = "_HalfFloat";
+
+std::string oneLine(std::string s) {
+    std::replace(s.begin(), s.end(), '\n', ' ');
+    std::replace(s.begin(), s.end(), '\r', ' ');
+    if (s.size() > 300) s = s.substr(0, 300) + "...";
+    return s;
+}
+
+std::string mib(std::uint64_t bytes) { return fmt::format("{:.1f} MiB", double(bytes) / (1 << 20)); }
+
+// OpenVDB's what() reads "IoError: detail"; keep the detail.
+std::string detail(const vdb::Exception& e) {
+    std::string what = e.what() ? e.what() : "";
+    std::size_t colon = what.find(": ");
+    if (colon != std::string::npos && colon < 24 && what.find(' ') > colon) what = what.substr(colon + 2);
+    return oneLine(what);
+}
+
+// Walks a tree's topology exactly as RootNode/InternalNode/LeafNode::readTopology() would, but
+// owning everything it allocates. Why: OpenVDB 10's RootNode::readTopology() allocates each
+// top-level child with a bare `new` and only stores it after the child's subtree has been read,
+// so an exception anywhere below (damaged masks, a chunk that does not decompress) leaks the
+// whole subtree. Walking first means OpenVDB only ever reads topology that is known to be good.
+template <typename NodeT>
+void walkNode(std::istream& is, bool fromHalf, std::uint32_t version) {
+    typename NodeT::NodeMaskType valueMask;
+    if constexpr (NodeT::LEVEL == 0) {
+        valueMask.load(is);
+    } else {
+        typename NodeT::NodeMaskType childMask;
+        childMask.load(is);
+        valueMask.load(is);
+        const bool oldVersion = version < vdb::OPENVDB_FILE_VERSION_NODE_MASK_COMPRESSION;
+        const vdb::Index count = oldVersion ? childMask.countOff() : NodeT::NUM_VALUES;
+        std::unique_ptr<typename NodeT::ValueType[]> values(new typename NodeT::ValueType[count]);
+        vdb::io::readCompressedValues(is, values.get(), count, valueMask, fromHalf);
+        for (auto it = childMask.beginOn(); it; ++it) walkNode<typename NodeT::ChildNodeType>(is, fromHalf, version);
+    }
+}
+
+template <typename TreeT>
+void walkTopology(std::istream& is, bool fromHalf, std::uint32_t version, std::uint64_t fileBytes) {
+    using RootT = typename TreeT::RootNodeType;
+    using ValueT = typename RootT::ValueType;
+    std::int32_t buffers = 0;  // TreeBase::readTopology(): always 1 since OpenVDB 3 (it only warns otherwise)
+    is.read(reinterpret_cast<char*>(&buffers), sizeof(buffers));
+    if (buffers != 1) throw vdb::IoError("multi-buffer trees are not supported (" + std::to_string(buffers) + " buffers)");
+    ValueT background;
+    is.read(reinterpret_cast<char*>(&background), sizeof(ValueT));
+    vdb::io::setGridBackgroundValuePtr(is, &background);
+    vdb::Index tiles = 0, children = 0;
+    is.read(reinterpret_cast<char*>(&tiles), sizeof(tiles));
+    is.read(reinterpret_cast<char*>(&children), sizeof(children));
+    const std::uint64_t remaining = fileBytes - std::uint64_t(is.tellg());
+    const std::uint64_t tileBytes = 3 * sizeof(std::int32_t) + sizeof(ValueT) + sizeof(bool);
+    if (std::uint64_t(tiles) * tileBytes + std::uint64_t(children) * 12 > remaining)
+        throw std::ios_base::failure("root node counts run past the end of the file");
+    is.seekg(std::streamoff(std::uint64_t(tiles) * tileBytes), std::ios_base::cur);
+    for (vdb::Index n = 0; n < children; ++n) {
+        std::int32_t origin[3];
+        is.read(reinterpret_cast<char*>(origin), sizeof(origin));
+        walkNode<typename RootT::ChildNodeType>(is, fromHalf, version);
+    }
+    vdb::io::setGridBackgroundValuePtr(is, nullptr);
+}
+
+// Grid types whose topology can be checked (and so read); the ones import and info use.
+template <typename F>
+bool withCheckedTreeType(const vdb::GridBase& g, F&& f) {
+    if (g.isType<vdb::FloatGrid>()) return f(static_cast<vdb::FloatTree*>(nullptr)), true;
+    if (g.isType<vdb::DoubleGrid>()) return f(static_cast<vdb::DoubleTree*>(nullptr)), true;
+    if (g.isType<vdb::Int32Grid>()) return f(static_cast<vdb::Int32Tree*>(nullptr)), true;
+    if (g.isType<vdb::Int64Grid>()) return f(static_cast<vdb::Int64Tree*>(nullptr)), true;
+    if (g.isType<vdb::BoolGrid>()) return f(static_cast<vdb::BoolTree*>(nullptr)), true;
+    if (g.isType<vdb::MaskGrid>()) return f(static_cast<vdb::MaskTree*>(nullptr)), true;
+    if (g.isType<vdb::Vec3SGrid>()) return f(static_cast<vdb::Vec3STree*>(nullptr)), true;
+    if (g.isType<vdb::Vec3DGrid>()) return f(static_cast<vdb::Vec3DTree*>(nullptr)), true;
+    return false;
+}
+
+}  // namespace
+
+void initializeOpenVdb() {
+    static std::once_flag once;
+    std::call_once(once, [] { vdb::initialize(); });
+}
+
+std::uint64_t vdbSingleAllocationLimit(std::uint64_t fileBytes) { return fileBytes + (16ull << 20); }
+
+Result<std::uint64_t> vdbFileBytes(const fs::path& path) {
+    std::error_code ec;
+    fs::file_status st = fs::status(path, ec);
+    if (ec || !fs::exists(st)) return makeError("{}: cannot open: no such file", path.string());
+    if (!fs::is_regular_file(st)) return makeError("{}: cannot open: not a regular file", path.string());
+    std::uint64_t bytes = fs::file_size(path, ec);
+    if (ec) return makeError("{}: cannot open: {}", path.string(), ec.message());
+    if (bytes == 0) return makeError("{}: empty file (0 bytes), not a VDB file", path.string());
+    return bytes;
+}
+
+Error vdbError(const fs::path& path, const AllocationBudget* budget) {
+    const std::string file = path.string();
+    try {
+        throw;
+    } catch (const std::bad_alloc&) {
+        if (budget && budget->exceeded()) {
+            return makeError(
+                "{}: reading it needs more memory than the budget of {} allows (a request for {} bytes was "
+                "refused); the file is damaged or too large (raise --memory-budget)",
+                file, mib(budget->totalBytes()), budget->refusedBytes());
+        }
+        return makeError("{}: out of memory while reading", file);
+    } catch (const std::ios_base::failure&) {
+        return makeError("{}: truncated or corrupt VDB file (data ends or points outside the file)", file);
+    } catch (const vdb::IoError& e) {
+        std::string what = detail(e);
+        if (what.find("not a VDB file") != std::string::npos) return makeError("{}: not a VDB file", file);
+        return makeError("{}: truncated or corrupt VDB file ({})", file, what);
+    } catch (const vdb::Exception& e) {
+        return makeError("{}: truncated, corrupt or unsupported VDB file ({})", file, detail(e));
+    } catch (const std::exception& e) {
+        return makeError("{}: cannot read VDB file ({})", file, oneLine(e.what()));
+    } catch (...) {
+        return makeError("{}: cannot read VDB file (unknown error)", file);
+    }
+}
+
+VdbReader::VdbReader(const fs::path& path) : mPath(path) {
+    initializeOpenVdb();
+    std::error_code ec;
+    mFileBytes = fs::file_size(path, ec);
+    if (ec) throw vdb::IoError("cannot open " + path.string());
+    mStream.open(path, std::ios::in | std::ios::binary);
+    if (!mStream) throw vdb::IoError("cannot open " + path.string());
+    // From here on any short read or bad seek throws instead of leaving garbage behind.
+    mStream.exceptions(std::ios::failbit | std::ios::badbit);
+
+    linkOpenVdbDecoders();
+    std::int64_t magic = 0;
+    std::uint32_t version = 0;
+    if (mFileBytes < sizeof(magic) + sizeof(version)) throw vdb::IoError("not a VDB file");
+    mStream.read(reinterpret_cast<char*>(&magic), sizeof(magic));
+    if (magic != kVdbMagic) throw vdb::IoError("not a VDB file");
+    // Checked here because OpenVDB only warns (on stderr) and then reads on regardless.
+    mStream.read(reinterpret_cast<char*>(&version), sizeof(version));
+    if (version > vdb::OPENVDB_FILE_VERSION)
+        throw vdb::IoError(fmt::format("file format {} is newer than this build's OpenVDB reads ({})", version,
+                                       vdb::OPENVDB_FILE_VERSION));
+    mStream.seekg(0);
+
+    Archive::readHeader(mStream);
+    mFormatVersion = fileVersion();
+    if (mFormatVersion < vdb::OPENVDB_FILE_VERSION_GRID_INSTANCING)
+        throw vdb::IoError(fmt::format("file format {} predates OpenVDB 3 (format {}); re-save it with a newer OpenVDB",
+                                       mFormatVersion, int(vdb::OPENVDB_FILE_VERSION_GRID_INSTANCING)));
+    if (!inputHasGridOffsets()) throw vdb::IoError("file has no grid offsets (written as a stream), not supported");
+
+    mStreamMetadata = std::make_shared<vdb::io::StreamMetadata>();
+    mStreamMetadata->setSeekable(true);
+    vdb::io::setStreamMetadataPtr(mStream, mStreamMetadata, /*transfer=*/false);
+    setFormatVersion(mStream);
+    setLibraryVersion(mStream);
+    setDataCompression(mStream);
+
+    mFileMetadata.readMeta(mStream);
+
+    auto remaining = [&] { return mFileBytes - std::uint64_t(mStream.tellg()); };
+    auto readString = [&] {
+        std::uint32_t n = 0;
+        mStream.read(reinterpret_cast<char*>(&n), sizeof(n));
+        if (n > remaining()) throw std::ios_base::failure("string runs past the end of the file");
+        std::string s(n, '\0');
+        if (n) mStream.read(s.data(), n);
+        return s;
+    };
+    std::int32_t count = 0;
+    mStream.read(reinterpret_cast<char*>(&count), sizeof(count));
+    if (count < 0 || std::uint64_t(count) > remaining() / 36)
+        throw vdb::IoError(fmt::format("grid count {} does not fit in the file", count));
+
+    // Descriptors are parsed here rather than by GridDescriptor::read(), which throws on the
+    // first unregistered grid type and so would hide every other grid of the file.
+    for (std::int32_t i = 0; i < count; ++i) {
+        Entry e;
+        e.uniqueName = readString();
+        e.type = readString();
+        e.parent = readString();
+        bool half = false;
+        const std::size_t suffix = sizeof(kHalfFloatSuffix) - 1;
+        if (e.type.size() > suffix && e.type.compare(e.type.size() - suffix, suffix, kHalfFloatSuffix) == 0) {
+            e.type.resize(e.type.size() - suffix);
+            half = true;
+        }
+        e.name = vdb::io::GridDescriptor::stripSuffix(e.uniqueName);
+        std::int64_t pos[3];
+        mStream.read(reinterpret_cast<char*>(pos), sizeof(pos));
+        const std::int64_t here = mStream.tellg();
+        if (!(here <= pos[0] && pos[0] <= pos[1] && pos[1] <= pos[2] && std::uint64_t(pos[2]) <= mFileBytes))
+            throw vdb::IoError(fmt::format("grid '{}' reaches past the end of the file's {} bytes", oneLine(e.name), mFileBytes));
+        vdb::io::GridDescriptor gd(e.uniqueName, e.type, half);
+        gd.setInstanceParentName(e.parent);
+        gd.setGridPos(pos[0]);
+        gd.setBlockPos(pos[1]);
+        gd.setEndPos(pos[2]);
+        mEntries.push_back(std::move(e));
+        mDescriptors.push_back(gd);
+        mStream.seekg(pos[2]);
+    }
+}
+
+std::string VdbReader::libraryVersion() const {
+    vdb::VersionId v = Archive::libraryVersion();
+    return fmt::format("{}.{}", v.first, v.second);
+}
+
+int VdbReader::find(const std::string& name) const {
+    for (std::size_t i = 0; i < mEntries.size(); ++i)
+        if (mEntries[i].name == name || mEntries[i].uniqueName == name) return int(i);
+    return -1;
+}
+
+std::size_t VdbReader::treeSource(std::size_t index) const {
+    // Follow instance links to the grid that stores the tree; a chain longer than the grid count
+    // is a cycle in a damaged file.
+    for (std::size_t hops = 0; hops <= mEntries.size(); ++hops) {
+        const std::string& parent = mEntries[index].parent;
+        if (parent.empty()) return index;
+        auto it = std::find_if(mEntries.begin(), mEntries.end(), [&](const Entry& e) { return e.uniqueName == parent; });
+        if (it == mEntries.end()) throw vdb::KeyError("grid '" + oneLine(mEntries[index].name) + "' is an instance of a missing grid");
+        index = std::size_t(it - mEntries.begin());
+    }
+    throw vdb::KeyError("grid instances form a cycle");
+}
+
+vdb::GridBase::Ptr VdbReader::readHeader(std::size_t index) { return read(index, Depth::Header, vdb::CoordBBox()); }
+vdb::GridBase::Ptr VdbReader::readTopology(std::size_t index) { return read(index, Depth::Topology, vdb::CoordBBox()); }
+vdb::GridBase::Ptr VdbReader::readRegion(std::size_t index, const vdb::CoordBBox& clip) {
+    return read(index, Depth::Region, clip);
+}
+
+vdb::GridBase::Ptr VdbReader::read(std::size_t index, Depth depth, const vdb::CoordBBox& clip) {
+    const vdb::io::GridDescriptor& gd = mDescriptors.at(index);
+    if (!vdb::GridBase::isRegistered(gd.gridType()))
+        throw vdb::TypeError("grid '" + oneLine(gd.gridName()) + "' has the unknown type " + oneLine(gd.gridType()));
+    vdb::GridBase::Ptr grid = vdb::GridBase::createGrid(gd.gridType());
+    // Point grids (multi-pass attribute buffers) hold particles, not voxels.
+    const bool points = gd.gridType().find("ptdataidx") != std::string::npos || gd.gridType().find("ptidx") != std::string::npos;
+    if (points && depth != Depth::Header)
+        throw vdb::TypeError("grid '" + oneLine(gd.gridName()) + "' is a point grid, which cannot be read as voxels");
+    grid->setSaveFloatAsHalf(gd.saveFloatAsHalf());
+
+    mStream.clear();  // a failed read of another grid must not poison this one
+    // The same per-grid stream set-up as io::Archive::readGrid(): grid class, background and
+    // half-float flags travel with the stream and steer how node values decode.
+    gd.seekToGrid(mStream);
+    auto streamMetadata = std::make_shared<vdb::io::StreamMetadata>(*mStreamMetadata);
+    streamMetadata->setHalfFloat(grid->saveFloatAsHalf());
+    vdb::io::setStreamMetadataPtr(mStream, streamMetadata, /*transfer=*/false);
+    struct Restore {
+        VdbReader& r;
+        ~Restore() { vdb::io::setStreamMetadataPtr(r.mStream, r.mStreamMetadata, false); }
+    } restore{*this};
+    vdb::io::setGridClass(mStream, vdb::GRID_UNKNOWN);
+    vdb::io::setGridBackgroundValuePtr(mStream, nullptr);
+    readGridCompression(mStream);
+    grid->readMeta(mStream);
+    streamMetadata->gridMetadata() = static_cast<vdb::MetaMap&>(*grid);
+    vdb::io::setGridClass(mStream, grid->getGridClass());
+    grid->readTransform(mStream);
+    if (grid->getName().empty()) grid->setName(gd.gridName());
+    if (depth == Depth::Header) return grid;
+
+    if (gd.isInstance()) {
+        std::size_t source = treeSource(index);
+        vdb::GridBase::Ptr parent = read(source, depth, clip);
+        if (parent->type() != grid->type()) throw vdb::TypeError("grid instance of a different type");
+        grid->setTree(parent->baseTreePtr());
+        return grid;
+    }
+    const std::streamoff topology = mStream.tellg();
+    const bool checked = withCheckedTreeType(*grid, [&](auto* tree) {
+        using TreeT = std::remove_pointer_t<decltype(tree)>;
+        walkTopology<TreeT>(mStream, grid->saveFloatAsHalf(), mFormatVersion, mFileBytes);
+    });
+    if (!checked)
+        throw vdb::TypeError("grid '" + oneLine(gd.gridName()) + "' has type " + grid->valueType() +
+                             ", whose nodes this reader does not load");
+    mStream.seekg(topology);
+    grid->readTopology(mStream);
+    if (depth == Depth::Region) grid->readBuffers(mStream, clip);
+    return grid;
+}
+
+}  // namespace engine::io

@@ -1,0 +1,45 @@
+// Helpers shared by the io tests: a scratch folder per test, and the check every failure message
+// must pass (one line that starts with the file's path).
+#pragma once
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <string>
+
+namespace vox_test {
+
+namespace fs = std::filesystem;
+
+class ScratchDir {
+public:
+    explicit ScratchDir(const std::string& name) {
+        const auto* info = testing::UnitTest::GetInstance()->current_test_info();
+        std::string test = info ? std::string(info->test_suite_name()) + "." + info->name() : name;
+        mPath = fs::path(testing::TempDir()) / ("vox_io_" + test + "_" + std::to_string(::getpid()));
+        fs::remove_all(mPath);
+        fs::create_directories(mPath);
+    }
+    ~ScratchDir() {
+        std::error_code ec;
+        fs::remove_all(mPath, ec);
+    }
+    fs::path operator/(const std::string& file) const { return mPath / file; }
+    const fs::path& path() const { return mPath; }
+
+private:
+    fs::path mPath;
+};
+
+// The folder with the real files nobody here wrote (../shared/data/vdb beside the checkout).
+inline fs::path sharedVdbDir() { return fs::path(VOX_SHARED_VDB_DIR); }
+
+inline ::testing::AssertionResult isOneLineNamingFile(const std::string& message, const fs::path& file) {
+    if (message.find('\n') != std::string::npos) return ::testing::AssertionFailure() << "more than one line: " << message;
+    if (message.rfind(file.string(), 0) != 0)
+        return ::testing::AssertionFailure() << "does not start with " << file.string() << ": " << message;
+    return ::testing::AssertionSuccess();
+}
+
+}  // namespace vox_test

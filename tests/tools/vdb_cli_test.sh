@@ -1,0 +1,99 @@
+#!/usr/bin/env bash
+# OpenVDB through the `vox` binary.
+#   vdb_cli_test.sh vdb_print VOX SAMPLES  OpenVDB's own vdb_print reads our files: grids, types and
+#                                          voxel counts as expected (exit 77 = skipped, no vdb_print)
+#   vdb_cli_test.sh errors VOX SAMPLES     bad files give one line naming the file and exit 1..127;
+#                                          a good import writes a scene file that loads and renders
+set -u
+mode="$1"; vox="$2"; samples="$3"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+if [ "$mode" = vdb_print ]; then
+    if ! command -v vdb_print >/dev/null; then
+        echo "SKIP: vdb_print not found (Debian package libopenvdb-tools; tools/setup.sh installs it)"
+        exit 77
+    fi
+    "$vox" export sandbox -o "$tmp/sandbox.vdb" >/dev/null || { echo "FAIL: export"; exit 1; }
+    json=$("$vox" info sandbox --json)
+    solid=$(sed -E 's/.*"solid_voxels": ([0-9]+).*/\1/' <<<"$json")
+    emissive=$(sed -E 's/.*"emissive_voxels": ([0-9]+).*/\1/' <<<"$json")
+    listing=$(vdb_print -l "$tmp/sandbox.vdb") || { echo "FAIL: vdb_print could not read our file"; exit 1; }
+    # One block per grid: "Name: X", "Type: Tree_T_5_4_3", "Number of active voxels: 1,234".
+    check_grid() {  # check_grid NAME TYPE COUNT
+        local block
+        block=$(awk -v n="Name: $1" '$0 == n {on = 1} on && /^$/ && seen {exit} on {print; seen = 1}' <<<"$listing")
+        local type count
+        type=$(grep -oE "Type: [A-Za-z0-9_]+" <<<"$block" | head -1 | cut -d' ' -f2)
+        count=$(grep -E "Number of active voxels" <<<"$block" | grep -oE "[0-9,]+$" | tr -d ,)
+        if [ "$type" != "$2" ] || [ "$count" != "$3" ]; then
+            fail "grid $1: vdb_print says type '$type', $count active voxels; want $2, $3"
+        else
+            echo "ok: vdb_print: $1 is $type with $count active voxels"
+        fi
+    }
+    check_grid material Tree_int32_5_4_3 "$solid"
+    check_grid albedo Tree_vec3s_5_4_3 "$solid"
+    check_grid emission Tree_vec3s_5_4_3 "$emissive"
+    meta=$(vdb_print -m "$tmp/sandbox.vdb")
+    grep -q "vox:material.00001.name: grass" <<<"$meta" && grep -q "vox:format: voxengine.world" <<<"$meta" \
+        && echo "ok: vdb_print shows the palette metadata" || fail "palette metadata missing from vdb_print -m"
+    [ $failures -eq 0 ] || { echo "$failures failure(s)"; exit 1; }
+    exit 0
+fi
+
+expect_error() {  # expect_error PATTERN FILE -- command...
+    local pattern="$1" file="$2"; shift 3
+    local err rc lines
+    err=$("$@" 2>&1 >/dev/null); rc=$?
+    lines=$(printf '%s\n' "$err" | grep -c .)
+    if [ "$rc" -eq 0 ] || [ "$rc" -ge 128 ]; then fail "'$*' exited $rc (want 1..127): $err"; return; fi
+    if [ "$lines" -ne 1 ] || ! grep -qF -- "$file" <<<"$err" || ! grep -qE -- "$pattern" <<<"$err"; then
+        fail "'$*' printed:"; printf '%s\n' "$err"; echo "  (want one line naming $file and matching: $pattern)"; return
+    fi
+    echo "ok: $err"
+}
+
+"$samples" fog-box "$tmp/fog.vdb"
+"$samples" wrong-types "$tmp/wrong.vdb"
+"$samples" rotated "$tmp/rotated.vdb"
+"$samples" giant-tile "$tmp/giant.vdb"
+"$samples" sphere "$tmp/sphere.vdb" 60
+size=$(stat -c %s "$tmp/sphere.vdb")
+head -c $((size / 2)) "$tmp/sphere.vdb" > "$tmp/truncated.vdb"
+{ head -c 16 "$tmp/sphere.vdb"; head -c 3000 /dev/urandom; } > "$tmp/noise.vdb"
+: > "$tmp/empty.vdb"
+printf 'not a vdb at all\n' > "$tmp/text.vdb"
+
+for cmd in import info; do
+    out=(); [ $cmd = import ] && out=(-o "$tmp/out.toml")
+    expect_error "truncated or corrupt" "$tmp/truncated.vdb" -- "$vox" $cmd "$tmp/truncated.vdb" "${out[@]}"
+    expect_error "corrupt|truncated|not a VDB|memory" "$tmp/noise.vdb" -- "$vox" $cmd "$tmp/noise.vdb" "${out[@]}"
+    expect_error "empty file" "$tmp/empty.vdb" -- "$vox" $cmd "$tmp/empty.vdb" "${out[@]}"
+    expect_error "not a VDB file" "$tmp/text.vdb" -- "$vox" $cmd "$tmp/text.vdb" "${out[@]}"
+done
+expect_error "nothing to import.*flow \(vec3i, unusable type\)" "$tmp/wrong.vdb" -- "$vox" import "$tmp/wrong.vdb" -o "$tmp/out.toml"
+expect_error "grid 'flow' has type vec3i, which cannot be imported" "$tmp/wrong.vdb" -- "$vox" import "$tmp/wrong.vdb" --grid flow -o "$tmp/out.toml"
+expect_error "rotated or sheared" "$tmp/rotated.vdb" -- "$vox" import "$tmp/rotated.vdb" -o "$tmp/out.toml"
+expect_error "over the engine's limit" "$tmp/giant.vdb" -- "$vox" import "$tmp/giant.vdb" -o "$tmp/out.toml"
+expect_error "would need about [0-9.]+ MiB.*over the memory budget of 4.0 MiB" "$tmp/sphere.vdb" -- "$vox" import "$tmp/sphere.vdb" --memory-budget 4 -o "$tmp/out.toml"
+expect_error "no such file" "$tmp/missing.vdb" -- "$vox" import "$tmp/missing.vdb" -o "$tmp/out.toml"
+[ -e "$tmp/out.toml" ] && fail "a failed import wrote $tmp/out.toml"
+
+# A good import: a scene file plus its payload, which loads, describes and renders.
+expect_error "would overwrite the input" "$tmp/fog.vdb" -- "$vox" import "$tmp/fog.vdb" -o "$tmp/fog.toml"
+if out=$("$vox" import "$tmp/fog.vdb" -o "$tmp/world.toml" 2>&1) && [ -s "$tmp/world.toml" ] && [ -s "$tmp/world.vdb" ]; then
+    echo "ok: import wrote world.toml and world.vdb"
+else
+    fail "good import failed: $out"
+fi
+info=$("$vox" info "$tmp/world.toml" 2>&1) && grep -qE "voxels +1632 solid" <<<"$info" && echo "ok: the imported world has its 1632 voxels" || fail "info on the import: $info"
+info=$("$vox" info "$tmp/sphere.vdb" 2>&1) && grep -q "import would" <<<"$info" && grep -q "level set" <<<"$info" \
+    && echo "ok: info on a foreign file says what an import would do" || fail "info sphere.vdb: $info"
+"$vox" render "$tmp/world.toml" --size 64x40 -o "$tmp/world.png" >/dev/null 2>&1 && [ -s "$tmp/world.png" ] \
+    && echo "ok: the imported world renders" || fail "render of the imported world"
+"$vox" export "$tmp/world.toml" -o "$tmp/again.vdb" >/dev/null 2>&1 && echo "ok: re-export" || fail "re-export"
+
+[ $failures -eq 0 ] || { echo "$failures failure(s)"; exit 1; }

@@ -1,0 +1,44 @@
+#include <cstdio>
+#include <filesystem>
+
+#include "commands.h"
+#include "io/vdb_export.h"
+
+namespace vox {
+
+void addExportCommand(CLI::App& app, int& exitCode) {
+    auto* cmd = app.add_subcommand("export", "Export a world to OpenVDB (.vdb): material ids, albedo, emission, palette");
+    auto world = std::make_shared<std::string>();
+    auto output = std::make_shared<std::string>();
+    auto idsOnly = std::make_shared<bool>(false);
+    cmd->add_option("world", *world, "World name (worlds/NAME.toml), scene file or .vdb")->required();
+    cmd->add_option("-o,--output", *output, "Output .vdb file")->required();
+    cmd->add_flag("--ids-only", *idsOnly, "Write only the material grid (no albedo/emission grids for other tools)");
+    cmd->callback([=, &exitCode] {
+        if (std::filesystem::path(*output).extension() != ".vdb") {
+            exitCode = fail(engine::makeError("-o {}: the file must end in .vdb", *output));
+            return;
+        }
+        auto scene = loadWorld(*world);
+        if (!scene) {
+            exitCode = fail(scene.error());
+            return;
+        }
+        engine::io::VdbExportOptions options;
+        options.colourGrids = !*idsOnly;
+        engine::io::VdbExportReport report;
+        engine::Status s = engine::io::exportVdb(*scene, *output, options, &report);
+        if (!s) {
+            exitCode = fail(s.error());
+            return;
+        }
+        std::string grids;
+        for (const auto& g : report.grids) grids += (grids.empty() ? "" : ", ") + g;
+        std::printf("wrote    %s (%.2f MiB)\ngrids    %s\nvoxels   %llu solid: %llu cells as 8^3 tiles, %llu bricks as leaves\n",
+                    output->c_str(), double(report.fileBytes) / (1 << 20), grids.c_str(),
+                    static_cast<unsigned long long>(report.solidVoxels), static_cast<unsigned long long>(report.tiles),
+                    static_cast<unsigned long long>(report.leaves));
+    });
+}
+
+}  // namespace vox

@@ -1,0 +1,94 @@
+#include <cstdio>
+#include <filesystem>
+
+#include "commands.h"
+#include "io/vdb_export.h"
+#include "io/vdb_import.h"
+#include "io/image_io.h"
+#include "vdb_options.h"
+#include "world/scene_file.h"
+#include "world/world_info.h"
+
+namespace vox {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// WORLD.toml + WORLD.vdb: the scene file names the payload with a vdb generator, so the world
+// stays editable as text (cameras, sky, more generators) while its voxels and palette live in
+// the exact, compact .vdb. With -o WORLD.vdb only the payload is written.
+int runImport(const std::string& input, const std::string& output, bool dryRun, const VdbCliOptions& cli) {
+    auto options = toImportOptions(cli);
+    if (!options) return fail(options.error());
+    fs::path out(output);
+    const std::string ext = out.extension().string();
+    if (dryRun) {
+        engine::io::VdbImportReport report;
+        auto scene = engine::io::importVdb(input, *options, &report);
+        if (!scene) return fail(scene.error());
+        std::printf("imported %s (dry run: nothing written)\n%s", input.c_str(), engine::io::formatVdbImportReport(report).c_str());
+        engine::world::WorldInfo info = engine::world::describeWorld(*scene);
+        std::printf("  world size   %.2f MiB in memory (%llu bytes; %llu bricks, %llu homogeneous cells); peak heap during import %.2f MiB\n",
+                    double(info.totalBytes()) / (1 << 20), static_cast<unsigned long long>(info.totalBytes()),
+                    static_cast<unsigned long long>(info.bricks), static_cast<unsigned long long>(info.homogeneousCells),
+                    double(report.peakTrackedBytes) / (1 << 20));
+        return 0;
+    }
+    if (output.empty()) return fail(engine::makeError("{}: give -o WORLD.toml or WORLD.vdb (or --dry-run)", input));
+    if (ext != ".toml" && ext != ".vdb") return fail(engine::makeError("-o {}: the file must end in .toml or .vdb", output));
+
+    fs::path payload = out;
+    payload.replace_extension(".vdb");
+    std::error_code ec;
+    if (ext == ".toml" && fs::equivalent(payload, fs::path(input), ec))
+        return fail(engine::makeError("{}: -o {} would overwrite the input with its payload {}; choose another name",
+                                      input, output, payload.string()));
+    engine::io::VdbImportReport report;
+    auto scene = engine::io::importVdb(input, *options, &report);
+    if (!scene) return fail(scene.error());
+    engine::Status s = engine::io::exportVdb(*scene, payload);
+    if (!s) return fail(s.error());
+    if (ext == ".toml") {
+        std::string generator = fmt::format("[[generator]]\ntype = \"vdb\"\nsource = \"{}\"\n", payload.filename().string());
+        std::string text = engine::world::sceneFileText(
+            *scene, fmt::format("Imported by `vox import` from {}.\nVoxels and palette live in {} (voxengine's VDB layout, docs/VDB.md);\n"
+                                "a [[material]] defined here with the same name overrides the payload's.",
+                                fs::path(input).filename().string(), payload.filename().string()),
+            generator);
+        s = engine::io::writeAtomically(out, [&](const fs::path& temp) -> engine::Status {
+            std::FILE* f = std::fopen(temp.c_str(), "wb");
+            if (!f) return engine::makeError("{}: cannot create file", output);
+            bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+            ok &= std::fclose(f) == 0;
+            if (!ok) return engine::makeError("{}: write failed", output);
+            return {};
+        });
+        if (!s) return fail(s.error());
+    }
+    std::printf("imported %s\n%s", input.c_str(), engine::io::formatVdbImportReport(report).c_str());
+    engine::world::WorldInfo info = engine::world::describeWorld(*scene);
+    std::printf("  world size   %.2f MiB in memory (%llu bricks, %llu homogeneous cells); peak heap during import %.2f MiB\n",
+                double(info.totalBytes()) / (1 << 20), static_cast<unsigned long long>(info.bricks),
+                static_cast<unsigned long long>(info.homogeneousCells), double(report.peakTrackedBytes) / (1 << 20));
+    if (ext == ".toml") std::printf("wrote    %s and %s\n", output.c_str(), payload.string().c_str());
+    else std::printf("wrote    %s\n", payload.string().c_str());
+    return 0;
+}
+
+}  // namespace
+
+void addImportCommand(CLI::App& app, int& exitCode) {
+    auto* cmd = app.add_subcommand("import", "Import an OpenVDB file as a world (scene file + .vdb payload)");
+    auto input = std::make_shared<std::string>();
+    auto output = std::make_shared<std::string>();
+    auto cli = std::make_shared<VdbCliOptions>();
+    auto dryRun = std::make_shared<bool>(false);
+    cmd->add_option("input", *input, "Input .vdb file")->required();
+    cmd->add_option("-o,--output", *output, "WORLD.toml (scene file + WORLD.vdb payload) or WORLD.vdb");
+    cmd->add_flag("--dry-run", *dryRun, "Import and report (sizes, colour error, memory) without writing anything");
+    addVdbImportOptions(*cmd, *cli);
+    cmd->callback([=, &exitCode] { exitCode = runImport(*input, *output, *dryRun, *cli); });
+}
+
+}  // namespace vox
