@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "gpu/command_list.h"
+#include "gpu/presenter.h"
 #include "shared/restir.h"
 
 namespace engine::render {
@@ -94,7 +95,7 @@ void Renderer::resetHistory() {
 }
 
 FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& camera, const FrameSettings& settings,
-                             const lighting::LightingSettings& lighting) {
+                             const lighting::LightingSettings& lighting, gpu::Presenter* presenter) {
     resize(settings.width, settings.height);
     if (mPrevLighting && !(*mPrevLighting == lighting)) {
         mHistoryValid = false;
@@ -140,7 +141,13 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
     mPrimary.record(cmd, {mWorld, mFrameParams, mGBuffers[mCurrent]}, mSize);
     recordLighting(cmd, lighting, mHistoryValid);
     mTonemap.record(cmd, {mFrameParams, mRadiance, mLdr}, mSize);
-    cmd.submitAndWait();
+    if (presenter) {
+        presenter->record(cmd, mLdr, mSize);
+        cmd.submitAndWait(presenter->submitSync());
+        presenter->endFrame();
+    } else {
+        cmd.submitAndWait();
+    }
     result.passMs = mTimer.results();
 
     if (lighting.method == lighting::Method::Reference) mAccumulatedSamples += std::max(lighting.samplesPerFrame, 1u);
