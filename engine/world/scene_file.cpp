@@ -321,7 +321,7 @@ private:
                      payload->sizeInVoxels().x, payload->sizeInVoxels().y, payload->sizeInVoxels().z,
                      grid.sizeInVoxels().x, grid.sizeInVoxels().y, grid.sizeInVoxels().z);
             for (std::uint32_t c : payload->cells()) {
-                MaterialId most = BrickGrid::cellMaterial(c);
+                MaterialId most = BrickGrid::cellIsBrick(c) ? kEmpty : BrickGrid::cellMaterial(c);
                 if (BrickGrid::cellIsBrick(c)) {
                     for (MaterialId m : payload->brickVoxels(BrickGrid::cellBrick(c))) most = std::max(most, m);
                 }
