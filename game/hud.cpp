@@ -10,7 +10,10 @@ namespace game {
 
 namespace {
 
-std::string megabytes(std::uint64_t bytes) { return fmt::format("{:.1f} MiB", double(bytes) / (1024.0 * 1024.0)); }
+std::string megabytes(std::uint64_t bytes) {
+    if (bytes < (1u << 20)) return fmt::format("{:.1f} KiB", double(bytes) / 1024.0);
+    return fmt::format("{:.1f} MiB", double(bytes) / (1024.0 * 1024.0));
+}
 
 ImU32 toColor(glm::vec3 linear) {
     // Albedo is linear; the swapchain shows sRGB values.
