@@ -140,7 +140,9 @@ void Hud::drawStats(const HudStats& stats, HudControls& controls, HudActions& ac
                 stats.windowSize.y);
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
     ImGui::SliderFloat("render scale", &controls.renderScale, 1.0f / 16.0f, 1.0f, "%.3f");
-    ImGui::Text("bricks %u, emitters %llu voxels", stats.liveBricks, static_cast<unsigned long long>(stats.emitters));
+    ImGui::Text("bricks %u, emitters %llu", stats.liveBricks, static_cast<unsigned long long>(stats.emitters));
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("emissive voxels with an exposed face; a cell all of one emissive material is one brick light");
     ImGui::Text("memory CPU %s, GPU %s", megabytes(stats.cpuMemory.topGridBytes + stats.cpuMemory.brickPoolBytes).c_str(),
                 megabytes(stats.gpuMemory.topGridBytes + stats.gpuMemory.brickPageBytes + stats.gpuMemory.pageTableBytes +
                           stats.gpuMemory.paletteBytes)

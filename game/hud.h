@@ -25,7 +25,7 @@ struct HudStats {
     glm::uvec2 renderSize{0}, windowSize{0};
     std::uint64_t frame = 0;
     std::uint32_t liveBricks = 0;
-    std::uint64_t emitters = 0;  // emissive voxels
+    std::uint64_t emitters = 0;  // lighting::EmitterList entries (exposed emissive voxels, brick lights)
     engine::world::GridMemory cpuMemory;
     engine::render::GpuWorldMemory gpuMemory;
     UndoStats undo;

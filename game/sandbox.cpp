@@ -27,6 +27,7 @@
 #include "gpu/context.h"
 #include "gpu/presenter.h"
 #include "io/image_io.h"
+#include "lighting/emitter_list.h"
 #include "render/camera.h"
 #include "render/renderer.h"
 #include "world/scene_file.h"
@@ -113,8 +114,9 @@ private:
     int mExitCode = 0;
 
     std::uint64_t mWorldVersion = 0, mSavedVersion = 0;
-    std::uint64_t mEmitterVersion = UINT64_MAX;
-    std::uint64_t mEmitters = 0;
+    // The HUD's emitter count; updated incrementally from the grid's touched cells before the
+    // renderer's upload clears them.
+    engine::lighting::EmitterList mEmitters;
     Pick mTarget;
 
     // Edits applied this frame, reported with the upload counter once the frame is presented.
@@ -196,6 +198,7 @@ engine::Status Sandbox::init() {
     mPresenter = std::make_unique<engine::gpu::Presenter>(*mCtx, mWindow->framebufferSize(), true);
     mRenderer = std::make_unique<engine::render::Renderer>(*mCtx);
     mHud.visible = mOptions.hud;
+    mEmitters.rebuild(mScene);
 
     const auto& dev = mCtx->info();
     glm::ivec3 size = mScene.grid.sizeInVoxels();
@@ -298,6 +301,7 @@ void Sandbox::frame() {
         }
     }
 
+    mEmitters.update(mScene);
     engine::render::FrameResult result;
     bool presented = false;
     if (mPresenter->beginFrame(framebuffer)) {
@@ -583,6 +587,10 @@ void Sandbox::runScriptActions() {
         switch (a.kind) {
             case ScriptAction::Kind::Screenshot: writeRenderImage(a.path); break;
             case ScriptAction::Kind::Capture: break;  // written with the frame above
+            case ScriptAction::Kind::Resize:
+                mWindow->resize(a.size);
+                message(fmt::format("window resized to {}x{}", a.size.x, a.size.y));
+                break;
             case ScriptAction::Kind::Quit: requestQuit(); break;
         }
     }
@@ -602,12 +610,7 @@ HudStats Sandbox::hudStats() {
     s.windowSize = fb;
     s.frame = mFrame;
     s.liveBricks = mScene.grid.liveBricks();
-    if (mEmitterVersion != mWorldVersion) {
-        // Scanning the bricks is a few ms on the default world: only after a change.
-        mEmitters = mScene.emissiveVoxels();
-        mEmitterVersion = mWorldVersion;
-    }
-    s.emitters = mEmitters;
+    s.emitters = mEmitters.aliveCount();
     s.cpuMemory = mScene.grid.memory();
     s.gpuMemory = mRenderer->gpuWorld().memory();
     s.undo = mUndo.stats();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -104,6 +105,15 @@ engine::Result<ScriptPlayer> ScriptPlayer::parse(std::string_view text, std::str
         } else if ((cmd == "screenshot" || cmd == "capture") && args(1)) {
             step.isAction = true;
             step.action = {cmd == "screenshot" ? ScriptAction::Kind::Screenshot : ScriptAction::Kind::Capture, w[2]};
+            player.mSteps.push_back(step);
+        } else if (cmd == "resize" && args(2)) {
+            auto v = vec2();
+            if (!v) return v.error();
+            if (v->x < 1 || v->y < 1 || v->x > 8192 || v->y > 8192 || v->x != std::floor(v->x) || v->y != std::floor(v->y))
+                return fail("resize: expected whole sizes in 1..8192");
+            step.isAction = true;
+            step.action.kind = ScriptAction::Kind::Resize;
+            step.action.size = glm::uvec2(*v);
             player.mSteps.push_back(step);
         } else if (cmd == "quit" && args(0)) {
             step.isAction = true;

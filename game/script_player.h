@@ -13,6 +13,7 @@
 //   scroll DY                wheel steps
 //   screenshot FILE          the rendered image (render resolution, no HUD) to PNG
 //   capture FILE             the window as presented (with the HUD) to PNG
+//   resize W H               resize the window (the swapchain and render size follow)
 //   quit                     as the window's close button (warns about unsaved changes)
 // Actions run after the frame's input is handled, on the frame that was just presented.
 #pragma once
@@ -29,9 +30,10 @@
 namespace game {
 
 struct ScriptAction {
-    enum class Kind { Screenshot, Capture, Quit };
+    enum class Kind { Screenshot, Capture, Resize, Quit };
     Kind kind = Kind::Quit;
     std::string path;
+    glm::uvec2 size{0};  // Resize
 };
 
 struct ScriptStep {

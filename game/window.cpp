@@ -85,6 +85,8 @@ void Window::setCursorCaptured(bool captured) {
 
 void Window::setTitle(const std::string& title) { glfwSetWindowTitle(mWindow, title.c_str()); }
 
+void Window::resize(glm::uvec2 size) { glfwSetWindowSize(mWindow, int(size.x), int(size.y)); }
+
 void Window::onKey(GLFWwindow* w, int key, int, int action, int) {
     if (action == GLFW_REPEAT || key == GLFW_KEY_UNKNOWN) return;
     self(w)->mEvents.push_back({InputEventType::Key, key, action == GLFW_PRESS, {}});

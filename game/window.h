@@ -42,6 +42,7 @@ public:
     void setCursorCaptured(bool captured);
     bool cursorCaptured() const { return mCaptured; }
     void setTitle(const std::string& title);
+    void resize(glm::uvec2 size);
 
 private:
     Window() = default;

@@ -30,6 +30,7 @@ grep -q "validation error" play.err && fail "Vulkan validation errors"
 [ -f saved.toml ] || fail "no saved.toml"
 [ -f sandbox_window.png ] || fail "no window capture"
 [ -f play.png ] || fail "no screenshot"
+grep -q "screenshot resized.png (640x360, window with HUD)" play.out || fail "the window did not resize to 640x360"
 
 # Quitting with unsaved changes asked first, and the quit after saving went through.
 grep -q "unsaved changes: Y saves and quits" play.out || fail "no unsaved-changes prompt"

@@ -18,6 +18,7 @@ TEST(ScriptPlayer, ParsesAbsoluteAndRelativeFramesTapsAndActions) {
 +3 click left
 20 screenshot out/a.png
 20 capture out/b.png
+20 resize 640 360
 21 quit
 )",
                                       "test.script");
@@ -40,7 +41,9 @@ TEST(ScriptPlayer, ParsesAbsoluteAndRelativeFramesTapsAndActions) {
     EXPECT_EQ(script->eventsFor(15)[0].type, InputEventType::MouseButton);
     EXPECT_EQ(script->eventsFor(16).size(), 1u);
     auto actions = script->actionsFor(20);
-    ASSERT_EQ(actions.size(), 2u);
+    ASSERT_EQ(actions.size(), 3u);
+    EXPECT_EQ(actions[2].kind, game::ScriptAction::Kind::Resize);
+    EXPECT_EQ(actions[2].size, glm::uvec2(640, 360));
     EXPECT_EQ(actions[0].kind, game::ScriptAction::Kind::Screenshot);
     EXPECT_EQ(actions[0].path, "out/a.png");
     EXPECT_EQ(actions[1].kind, game::ScriptAction::Kind::Capture);
@@ -60,6 +63,7 @@ TEST(ScriptPlayer, ErrorsNameFileAndLine) {
     expectError("0 click sideways\n", "unknown mouse button");
     expectError("0 fly away\n", "bad.script:1: unknown command");
     expectError("0 key W sideways\n", "expected 'down' or 'up'");
+    expectError("0 resize 0 10\n", "resize: expected whole sizes");
 }
 
 TEST(CameraController, SameInputSameFlightAndPresetsRoundTrip) {
