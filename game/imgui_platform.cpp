@@ -24,6 +24,10 @@ ImGuiPlatform::ImGuiPlatform() {
         {ImGuiKey_X, GLFW_KEY_X},             {ImGuiKey_Y, GLFW_KEY_Y},             {ImGuiKey_Z, GLFW_KEY_Z},
     };
     for (const auto& [imguiKey, glfwKey] : map) io.KeyMap[imguiKey] = glfwKey;
+    // Build the font atlas now, so a frame can be built even when nothing draws it.
+    unsigned char* pixels = nullptr;
+    int width = 0, height = 0;
+    io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
     ImGui::StyleColorsDark();
     ImGui::GetStyle().WindowRounding = 4.0f;
 }

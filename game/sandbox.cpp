@@ -554,6 +554,7 @@ void Sandbox::writeWindowCapture(const fs::path& path) {
 }
 
 void Sandbox::afterFrame(const engine::render::FrameResult& result, bool presented) {
+
     if (mFrameEdits > 0 && presented) {
         // The latency contract: this frame showed the edits and uploaded only what they touched.
         std::printf("frame %llu: presented %zu edit(s) changing %zu cell(s); uploaded %u brick(s), %u cell(s)%s\n",

@@ -57,6 +57,7 @@ Renderer::Renderer(gpu::Context& ctx)
       mGpuEmitters(ctx),
       mUploader(ctx),
       mTimer(ctx, 16),
+      mPresentTimer(ctx, 1),
       mPrimary(ctx),
       mPreview(ctx),
       mRestirInitial(ctx),
@@ -141,13 +142,7 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
     mPrimary.record(cmd, {mWorld, mFrameParams, mGBuffers[mCurrent]}, mSize);
     recordLighting(cmd, lighting, mHistoryValid);
     mTonemap.record(cmd, {mFrameParams, mRadiance, mLdr}, mSize);
-    if (presenter) {
-        presenter->record(cmd, mLdr, mSize);
-        cmd.submitAndWait(presenter->submitSync());
-        presenter->endFrame();
-    } else {
-        cmd.submitAndWait();
-    }
+    cmd.submitAndWait();
     result.passMs = mTimer.results();
 
     if (lighting.method == lighting::Method::Reference) mAccumulatedSamples += std::max(lighting.samplesPerFrame, 1u);
@@ -157,6 +152,16 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
     mHistoryValid = true;
     mCurrent ^= 1u;
     ++mFrameIndex;
+    if (presenter) {
+        // A submission of its own, so only this pass waits for the swapchain image. The tonemap
+        // pass's barrier orders the LDR writes before the copy in submission order.
+        gpu::CommandList present(mCtx, &mPresentTimer);
+        present.begin();
+        presenter->record(present, mLdr, mSize);
+        present.submitAndWait(presenter->submitSync());
+        presenter->endFrame();
+        for (const auto& pass : mPresentTimer.results()) result.passMs.push_back(pass);
+    }
     return result;
 }
 

@@ -6,8 +6,8 @@
 //   -> tonemap
 // with a GPU timestamp per pass. Temporal state (G-buffers and reservoirs of the previous frame)
 // ping-pongs between two buffers; a change of image size or method drops it. Given a
-// gpu::Presenter, the same submission ends with a "present" pass that puts the LDR image in a
-// window.
+// gpu::Presenter, a "present" pass then puts the LDR image in a window (its own submission,
+// timed like the others).
 #pragma once
 
 #include <memory>
@@ -90,6 +90,7 @@ private:
     lighting::GpuEmitterList mGpuEmitters;
     gpu::Uploader mUploader;
     gpu::TimestampTimer mTimer;
+    gpu::TimestampTimer mPresentTimer;
     PrimaryRayPass mPrimary;
     SunShadePass mPreview;
     RestirInitialPass mRestirInitial;
