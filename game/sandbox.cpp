@@ -37,10 +37,10 @@ namespace game {
 namespace fs = std::filesystem;
 namespace world = engine::world;
 
-std::string noDisplayMessage(const std::string& why) {
-    return fmt::format("vox play: {}; the sandbox needs a window. Render headless instead with "
-                       "`vox render [WORLD] -o out/render.png` (or `vox capture` for scripted flythroughs)",
-                       why);
+std::string noDisplayMessage(const std::string& why, bool captureCommand) {
+    return fmt::format("vox play: {}; the sandbox needs a window. Render headless instead: "
+                       "`vox render [WORLD] -o out/render.png`{}",
+                       why, captureCommand ? " (or `vox capture` for scripted flythroughs)" : "");
 }
 
 namespace {
@@ -183,7 +183,7 @@ engine::Status Sandbox::init() {
     windowOptions.size = mOptions.windowSize;
     windowOptions.title = title();
     auto window = Window::create(windowOptions);
-    if (!window) return window.error();
+    if (!window) return engine::Error{noDisplayMessage(window.error().message, mOptions.captureCommand)};
     mWindow = std::move(*window);
 
     engine::gpu::ContextOptions ctxOptions;
@@ -222,7 +222,8 @@ void Sandbox::setMouseLook(bool on) {
 int Sandbox::run() {
     engine::Status s = init();
     if (!s) {
-        std::fprintf(stderr, "vox play: %s\n", s.error().message.c_str());
+        const std::string& m = s.error().message;
+        std::fprintf(stderr, "%s%s\n", m.rfind("vox play:", 0) == 0 ? "" : "vox play: ", m.c_str());
         return 1;
     }
     mLastFrameStart = std::chrono::steady_clock::now();
@@ -633,7 +634,7 @@ HudStats Sandbox::hudStats() {
 
 int runPlay(const PlayOptions& options) {
     if (std::string why = displayProblem(); !why.empty()) {
-        std::fprintf(stderr, "%s\n", noDisplayMessage(why).c_str());
+        std::fprintf(stderr, "%s\n", noDisplayMessage(why, options.captureCommand).c_str());
         return 1;
     }
     Sandbox sandbox(options);

@@ -26,12 +26,13 @@ struct PlayOptions {
     double autosaveMinutes = 3.0;  // 0: off
     std::size_t undoMegabytes = 256;
     bool hud = true;
+    bool captureCommand = false;  // `vox capture` exists: the no-display message points to it too
 };
 
 // Runs the sandbox; prints its own errors (one line) and returns the process exit code.
 int runPlay(const PlayOptions& options);
 
-// The one-line message `vox play` prints when there is no display.
-std::string noDisplayMessage(const std::string& why);
+// The one-line message `vox play` prints when there is no display (or it cannot be opened).
+std::string noDisplayMessage(const std::string& why, bool captureCommand);
 
 }  // namespace game

@@ -21,6 +21,12 @@ std::string displayProblem() {
     const char* x11 = std::getenv("DISPLAY");
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
     if ((!x11 || !*x11) && (!wayland || !*wayland)) return "no display (DISPLAY and WAYLAND_DISPLAY are unset)";
+    // Set is not the same as reachable: try it.
+    glfwSetErrorCallback(&onGlfwError);
+    if (!glfwInit()) return "cannot open the display: " + gGlfwError;
+    bool vulkan = glfwVulkanSupported();
+    glfwTerminate();
+    if (!vulkan) return "the display has no Vulkan presentation support";
     return {};
 }
 

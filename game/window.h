@@ -23,7 +23,8 @@ struct WindowOptions {
     bool visible = true;
 };
 
-// Why no window can be opened here, in one line; empty when a display is present.
+// Why no window can be opened here, in one line; empty when a display is present and can be
+// opened (it is tried).
 std::string displayProblem();
 
 class Window {

@@ -21,7 +21,8 @@ void addPlayCommand(CLI::App& app, int& exitCode) {
         ->capture_default_str();
     cmd->add_option("--undo-mb", o->undoMegabytes, "Memory budget of the undo history in MiB")->capture_default_str();
     cmd->add_flag("!--no-hud", o->hud, "Start with the HUD hidden (Tab shows it)");
-    cmd->callback([o, size, &exitCode] {
+    cmd->callback([o, size, cmd, &exitCode] {
+        o->captureCommand = !cmd->get_parent()->get_subcommands([](const CLI::App* a) { return a->get_name() == "capture"; }).empty();
         auto parsed = parseSize(*size, "--size");
         if (!parsed) {
             exitCode = fail(parsed.error());
