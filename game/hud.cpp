@@ -140,6 +140,9 @@ void Hud::drawStats(const HudStats& stats, HudControls& controls, HudActions& ac
                 stats.windowSize.y);
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
     ImGui::SliderFloat("render scale", &controls.renderScale, 1.0f / 16.0f, 1.0f, "%.3f");
+    ImGui::SameLine();
+    ImGui::Checkbox("auto", &controls.autoScale);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("adapt the render scale to keep the frame responsive");
     ImGui::Text("bricks %u, emitters %llu", stats.liveBricks, static_cast<unsigned long long>(stats.emitters));
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("emissive voxels with an exposed face; a cell all of one emissive material is one brick light");
@@ -157,11 +160,50 @@ void Hud::drawStats(const HudStats& stats, HudControls& controls, HudActions& ac
     ImGui::SameLine();
     if (ImGui::Button("Save")) actions.save = true;
     ImGui::Text("%s%s", stats.savePath.c_str(), stats.unsaved ? " (unsaved changes)" : "");
-    // Only what the renderer offers today is switchable; ReSTIR DI (point/area, M, brick
-    // lights) and the irradiance cache (indirect on/off) add their settings here.
-    if (!ImGui::CollapsingHeader("Lighting: sun + sky, direct")) {
+    engine::lighting::LightingSettings& l = controls.lighting;
+    if (!ImGui::CollapsingHeader(fmt::format("Lighting: {}###lighting", engine::lighting::methodName(l.method)).c_str())) {
         ImGui::End();
         return;
+    }
+    const engine::lighting::Method methods[] = {engine::lighting::Method::Restir, engine::lighting::Method::Ris,
+                                                engine::lighting::Method::Uniform, engine::lighting::Method::BruteForce,
+                                                engine::lighting::Method::Reference, engine::lighting::Method::Preview};
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
+    if (ImGui::BeginCombo("method", engine::lighting::methodName(l.method))) {
+        for (engine::lighting::Method m : methods) {
+            if (ImGui::Selectable(engine::lighting::methodName(m), m == l.method)) l.method = m;
+        }
+        ImGui::EndCombo();
+    }
+    using engine::lighting::Method;
+    bool emitters = l.method != Method::Preview;
+    if (emitters) {
+        int mode = l.area ? 1 : 0;
+        ImGui::RadioButton("point", &mode, 0);
+        ImGui::SameLine();
+        ImGui::RadioButton("area", &mode, 1);
+        l.area = mode == 1;
+        ImGui::SameLine();
+        ImGui::Checkbox("brick lights", &l.brickLights);
+    }
+    if (l.method == Method::Restir || l.method == Method::Ris) {
+        int m = static_cast<int>(l.candidates);
+        ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
+        if (ImGui::SliderInt("M (candidates)", &m, 1, 64)) l.candidates = static_cast<std::uint32_t>(m);
+    }
+    if (l.method == Method::Restir) {
+        ImGui::Checkbox("temporal", &l.temporal);
+        ImGui::SameLine();
+        ImGui::Checkbox("spatial", &l.spatial);
+        ImGui::SameLine();
+        ImGui::Checkbox("unbiased", &l.unbiased);
+    }
+    if (l.method == Method::Reference) {
+        bool indirect = l.bounces > 0;
+        if (ImGui::Checkbox("indirect", &indirect)) l.bounces = indirect ? std::max(l.bounces, 2u) : 0u;
+    } else {
+        // The irradiance cache (indirect light for the real-time methods) is not built yet.
+        ImGui::TextDisabled("indirect: reference only (no irradiance cache yet)");
     }
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
     ImGui::SliderFloat("exposure", &controls.exposure, 0.05f, 8.0f, "%.2f", ImGuiSliderFlags_Logarithmic);

@@ -13,6 +13,7 @@
 #include "game/camera_controller.h"
 #include "game/edit_tools.h"
 #include "game/undo_history.h"
+#include "lighting/lighting_settings.h"
 #include "render/gpu_world.h"
 #include "shared/frame_params.h"
 #include "world/scene.h"
@@ -43,7 +44,9 @@ struct HudControls {
     const engine::world::Palette& palette;
     engine::world::SkyLight& sky;
     float& renderScale;
+    bool& autoScale;
     float& exposure;
+    engine::lighting::LightingSettings& lighting;
 };
 
 struct HudActions {

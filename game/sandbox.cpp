@@ -20,6 +20,7 @@
 #include "game/hud.h"
 #include "game/imgui_platform.h"
 #include "game/input.h"
+#include "game/render_scale_controller.h"
 #include "game/script_player.h"
 #include "game/undo_history.h"
 #include "game/window.h"
@@ -27,7 +28,6 @@
 #include "gpu/context.h"
 #include "gpu/presenter.h"
 #include "io/image_io.h"
-#include "lighting/emitter_list.h"
 #include "render/camera.h"
 #include "render/renderer.h"
 #include "world/scene_file.h"
@@ -106,6 +106,8 @@ private:
     double mCpuFrameMs = 0.0;
     engine::render::FrameResult mLastFrame;
     float mRenderScale = 0.25f;
+    bool mAutoScale = false;
+    RenderScaleController mScaleController{50.0, kMinRenderScale, 1.0f};
     float mExposure = 1.0f;
     std::size_t mCameraIndex = 0;
     bool mMouseLook = false;
@@ -114,9 +116,7 @@ private:
     int mExitCode = 0;
 
     std::uint64_t mWorldVersion = 0, mSavedVersion = 0;
-    // The HUD's emitter count; updated incrementally from the grid's touched cells before the
-    // renderer's upload clears them.
-    engine::lighting::EmitterList mEmitters;
+    engine::lighting::LightingSettings mLighting;
     Pick mTarget;
 
     // Edits applied this frame, reported with the upload counter once the frame is presented.
@@ -145,6 +145,8 @@ void Sandbox::message(std::string text) {
 
 engine::Status Sandbox::init() {
     mRenderScale = std::clamp(mOptions.renderScale, kMinRenderScale, 1.0f);
+    mAutoScale = mOptions.autoScale && mOptions.scriptPath.empty();  // scripts repeat exactly
+    mScaleController = RenderScaleController(mOptions.targetFrameMs, kMinRenderScale, 1.0f);
     if (!mOptions.scriptPath.empty()) {
         auto script = ScriptPlayer::load(mOptions.scriptPath);
         if (!script) return script.error();
@@ -198,7 +200,7 @@ engine::Status Sandbox::init() {
     mPresenter = std::make_unique<engine::gpu::Presenter>(*mCtx, mWindow->framebufferSize(), true);
     mRenderer = std::make_unique<engine::render::Renderer>(*mCtx);
     mHud.visible = mOptions.hud;
-    mEmitters.rebuild(mScene);
+    mLighting = mOptions.lighting;
 
     const auto& dev = mCtx->info();
     glm::ivec3 size = mScene.grid.sizeInVoxels();
@@ -268,8 +270,10 @@ void Sandbox::frame() {
     handleInput(dt);
 
     if (mTime - mMessageTime > kMessageSeconds) mMessage.clear();
-    HudControls controls{mTools, mScene.palette, mScene.sky, mRenderScale, mExposure};
+    HudControls controls{mTools, mScene.palette, mScene.sky, mRenderScale, mAutoScale, mExposure, mLighting};
+    float scaleBefore = mRenderScale;
     HudActions actions = mHud.draw(hudStats(), controls, mQuitPrompt);
+    if (mRenderScale != scaleBefore) mAutoScale = false;  // moved by hand: the hand wins
     mRenderScale = std::clamp(mRenderScale, kMinRenderScale, 1.0f);
     ImGui::Render();
     if (actions.undo) undo();
@@ -302,7 +306,6 @@ void Sandbox::frame() {
         }
     }
 
-    mEmitters.update(mScene);
     engine::render::FrameResult result;
     bool presented = false;
     if (mPresenter->beginFrame(framebuffer)) {
@@ -314,9 +317,23 @@ void Sandbox::frame() {
         settings.exposure = mExposure;
         mPresenter->setOverlay(ImGui::GetDrawData());
         if (mCaptureRequested) mPresenter->captureThisFrame();
-        result = mRenderer->render(mScene, mCamera.preset(), settings, {}, mPresenter.get());
+        result = mRenderer->render(mScene, mCamera.preset(), settings, mLighting, mPresenter.get());
         mLastFrame = result;
         presented = true;
+        if (mAutoScale) {
+            // The passes that scale with the render resolution; presenting fills the window
+            // whatever the scale.
+            double ms = result.totalMs() - result.passMsOf("present");
+            float next = mScaleController.update(mRenderScale, ms);
+            if (next != mRenderScale) {
+                glm::uvec2 from = renderSize(framebuffer);
+                mRenderScale = next;
+                glm::uvec2 to = renderSize(framebuffer);
+                message(fmt::format("render {}x{} -> {}x{}: frame passes took {:.0f} ms (median), aiming at {:.0f} ms "
+                                    "(auto scale)",
+                                    from.x, from.y, to.x, to.y, mScaleController.lastMedianMs(), mScaleController.targetMs()));
+            }
+        }
     } else {
         std::this_thread::sleep_for(std::chrono::milliseconds(16));  // minimised: do not spin
     }
@@ -402,8 +419,12 @@ void Sandbox::handleInput(float dt) {
         int m = (static_cast<int>(mTools.material) - 1 + materialStep) % materials;
         mTools.material = static_cast<world::MaterialId>((m + materials) % materials + 1);
     }
-    if (mInput.pressed(GLFW_KEY_PAGE_UP)) mRenderScale = std::min(1.0f, mRenderScale * 1.25f);
-    if (mInput.pressed(GLFW_KEY_PAGE_DOWN)) mRenderScale = std::max(kMinRenderScale, mRenderScale / 1.25f);
+    if (mInput.pressed(GLFW_KEY_PAGE_UP) || mInput.pressed(GLFW_KEY_PAGE_DOWN)) {
+        mAutoScale = false;
+        mRenderScale = mInput.pressed(GLFW_KEY_PAGE_UP) ? std::min(1.0f, mRenderScale * 1.25f)
+                                                         : std::max(kMinRenderScale, mRenderScale / 1.25f);
+        message(fmt::format("render scale {:.3f} (auto off; the HUD turns it back on)", mRenderScale));
+    }
     if (mInput.pressed(GLFW_KEY_C) && !mScene.cameras.empty()) {
         mCameraIndex = (mCameraIndex + 1) % mScene.cameras.size();
         mCamera.setFromPreset(mScene.cameras[mCameraIndex]);
@@ -518,9 +539,10 @@ void Sandbox::logView(const char* what, const fs::path& path) {
     if (!mEditLog) return;
     world::CameraPreset c = mCamera.preset();
     glm::uvec2 size = renderSize(mWindow->framebufferSize());
-    mEditLog << fmt::format("{} {} {} view {} {} {} {} {} {} fov {} size {} {} frame {} exposure {}\n", what, mFrame, path.string(),
-                            c.position.x, c.position.y, c.position.z, c.target.x, c.target.y, c.target.z, c.fovYDegrees,
-                            size.x, size.y, mFrame, mExposure)
+    mEditLog << fmt::format("{} {} {} view {} {} {} {} {} {} fov {} size {} {} frame {} exposure {} lighting {}\n", what,
+                            mFrame, path.string(), c.position.x, c.position.y, c.position.z, c.target.x, c.target.y,
+                            c.target.z, c.fovYDegrees, size.x, size.y, mFrame, mExposure,
+                            engine::lighting::methodName(mLighting.method))
              << std::flush;
 }
 
@@ -612,7 +634,7 @@ HudStats Sandbox::hudStats() {
     s.windowSize = fb;
     s.frame = mFrame;
     s.liveBricks = mScene.grid.liveBricks();
-    s.emitters = mEmitters.aliveCount();
+    s.emitters = mRenderer->emitters().aliveCount();
     s.cpuMemory = mScene.grid.memory();
     s.gpuMemory = mRenderer->gpuWorld().memory();
     s.undo = mUndo.stats();

@@ -12,6 +12,8 @@
 
 #include <glm/glm.hpp>
 
+#include "lighting/lighting_settings.h"
+
 namespace game {
 
 struct PlayOptions {
@@ -19,12 +21,15 @@ struct PlayOptions {
     std::string savePath;    // empty: the world itself if it is a save, else saves/NAME.toml
     std::string camera;      // preset to start from; empty: the first
     glm::uvec2 windowSize{1280, 720};
-    float renderScale = 0.25f;  // render resolution as a fraction of the window's
+    float renderScale = 0.25f;  // render resolution as a fraction of the window's (the start value)
+    bool autoScale = true;      // then adapt it to keep the GPU time near targetFrameMs
+    double targetFrameMs = 50.0;  // GPU time of the passes that scale with the render size
     std::string scriptPath;     // replay scripted input (fixed time step, live input ignored)
     std::uint64_t maxFrames = 0;  // quit after this many frames; 0: no limit
     std::string editLogPath;    // write every edit, undo, redo, save and screenshot view here
     double autosaveMinutes = 3.0;  // 0: off
     std::size_t undoMegabytes = 256;
+    engine::lighting::LightingSettings lighting;  // switchable live in the HUD
     bool hud = true;
     bool captureCommand = false;  // `vox capture` exists: the no-display message points to it too
 };

@@ -21,12 +21,12 @@ std::string displayProblem() {
     const char* x11 = std::getenv("DISPLAY");
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
     if ((!x11 || !*x11) && (!wayland || !*wayland)) return "no display (DISPLAY and WAYLAND_DISPLAY are unset)";
-    // Set is not the same as reachable: try it.
+    // Set is not the same as reachable: try it. GLFW stays initialised for the window that
+    // follows (glfwInit again is a no-op): closing the only connection would make an X server
+    // without -noreset (Xvfb's default) reset, and the window's connection could race it.
     glfwSetErrorCallback(&onGlfwError);
     if (!glfwInit()) return "cannot open the display: " + gGlfwError;
-    bool vulkan = glfwVulkanSupported();
-    glfwTerminate();
-    if (!vulkan) return "the display has no Vulkan presentation support";
+    if (!glfwVulkanSupported()) return "the display has no Vulkan presentation support";
     return {};
 }
 

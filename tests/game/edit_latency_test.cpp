@@ -28,11 +28,14 @@ TEST_F(EditLatency, NextFrameShowsTheEditAndUploadsOnlyTouchedBricks) {
     settings.width = 97;  // odd: the centre pixel's ray is the crosshair's
     settings.height = 55;
 
+    // Preview lighting is deterministic, so "undo restores the image" can be exact.
+    engine::lighting::LightingSettings lighting;
+    lighting.method = engine::lighting::Method::Preview;
     Renderer renderer(gpu_testing::context());
-    auto first = renderer.render(scene, camera.preset(), settings);
+    auto first = renderer.render(scene, camera.preset(), settings, lighting);
     EXPECT_TRUE(first.upload.full);
     FrameImages before = renderer.readback();
-    auto idle = renderer.render(scene, camera.preset(), settings);
+    auto idle = renderer.render(scene, camera.preset(), settings, lighting);
     EXPECT_EQ(idle.upload.bricks, 0u);
     EXPECT_EQ(idle.upload.cells, 0u);
 
@@ -47,7 +50,7 @@ TEST_F(EditLatency, NextFrameShowsTheEditAndUploadsOnlyTouchedBricks) {
     game::EditRecord rec = history.record(scene.grid, op->region(), "place", [&](BrickGrid& g) { game::applyEdit(g, *op); });
     ASSERT_EQ(rec.changedCells, 1u);
 
-    auto next = renderer.render(scene, camera.preset(), settings);
+    auto next = renderer.render(scene, camera.preset(), settings, lighting);
     EXPECT_FALSE(next.upload.full);
     EXPECT_LE(next.upload.bricks, rec.changedCells);
     EXPECT_LE(next.upload.cells, rec.changedCells);
@@ -66,7 +69,7 @@ TEST_F(EditLatency, NextFrameShowsTheEditAndUploadsOnlyTouchedBricks) {
     EXPECT_EQ(glm::ivec3(after.gbuffer[centre].voxel), placed);
 
     ASSERT_FALSE(history.undo(scene.grid).empty());
-    auto undone = renderer.render(scene, camera.preset(), settings);
+    auto undone = renderer.render(scene, camera.preset(), settings, lighting);
     EXPECT_LE(undone.upload.bricks + undone.upload.cells, 2u);
     FrameImages restored = renderer.readback();
     EXPECT_EQ(restored.rgba8, before.rgba8);

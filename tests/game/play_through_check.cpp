@@ -47,6 +47,7 @@ struct View {
     glm::uvec2 size{0};
     float exposure = 1.0f;
     std::string path;
+    std::string lighting;
 };
 
 Scene load(const char* path) {
@@ -134,7 +135,7 @@ int main(int argc, char** argv) {
         } else if (kind == "screenshot") {
             in >> view.path >> word >> view.camera.position.x >> view.camera.position.y >> view.camera.position.z >>
                 view.camera.target.x >> view.camera.target.y >> view.camera.target.z >> word >> view.camera.fovYDegrees >>
-                word >> view.size.x >> view.size.y >> word >> frame >> word >> view.exposure;
+                word >> view.size.x >> view.size.y >> word >> frame >> word >> view.exposure >> word >> view.lighting;
         }
     }
     const char* names[4] = {"places", "removes", "paints", "undos"};
@@ -147,6 +148,9 @@ int main(int argc, char** argv) {
 
     // 2. The screenshot against headless renders of both worlds at its view.
     EXPECT(view.size.x > 0, "no screenshot in the edit log");
+    // A pixel-exact comparison needs a deterministic method (ReSTIR's image depends on history).
+    EXPECT(view.lighting == "preview", "the screenshot was lit with '%s'; run the sandbox with --method preview",
+           view.lighting.c_str());
     auto shot = engine::io::readPng(argv[4]);
     if (!shot || view.size.x == 0) {
         if (!shot) std::printf("FAIL: %s\n", shot.error().message.c_str());
@@ -163,11 +167,13 @@ int main(int argc, char** argv) {
     settings.width = view.size.x;
     settings.height = view.size.y;
     settings.exposure = view.exposure;
+    engine::lighting::LightingSettings lighting;
+    lighting.method = engine::lighting::Method::Preview;
     engine::render::Renderer renderer(**ctx);
-    renderer.render(original, view.camera, settings);
+    renderer.render(original, view.camera, settings, lighting);
     engine::render::FrameImages before = renderer.readback();
     engine::render::Renderer rendererSaved(**ctx);
-    rendererSaved.render(saved, view.camera, settings);
+    rendererSaved.render(saved, view.camera, settings, lighting);
     engine::render::FrameImages after = rendererSaved.readback();
 
     EXPECT(shot->width == view.size.x && shot->height == view.size.y, "screenshot is %ux%u, the log says %ux%u",

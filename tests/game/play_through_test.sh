@@ -14,14 +14,18 @@ if ! command -v xvfb-run >/dev/null 2>&1; then
 fi
 rm -rf "$out" && mkdir -p "$out" && cd "$out" || exit 1
 failures=0
+# A server number of our own: two `xvfb-run -a` started together can race for the same one.
+xvfb() { xvfb-run -a -n $((100 + RANDOM % 800)) -s "-screen 0 1024x768x24" "$@"; }
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 
 world=$("$vox" info sandbox --json >/dev/null 2>&1 && echo sandbox)
 [ -n "$world" ] || { echo "FAIL: vox info sandbox"; exit 1; }
 
-# Render 128x72 (window 768x432 at scale 1/6); no autosave during the run.
-xvfb-run -a -s "-screen 0 1024x768x24" "$vox" play sandbox --script "$script" --size 768x432 \
-    --render-scale 0.1667 --save saved.toml --edit-log edits.log --autosave-minutes 0 >play.out 2>play.err
+# Render 128x72 (window 768x432 at scale 1/6); no autosave during the run. Preview lighting:
+# deterministic, so the screenshot can be compared pixel for pixel with a headless render.
+xvfb "$vox" play sandbox --script "$script" --size 768x432 \
+    --render-scale 0.1667 --method preview --save saved.toml --edit-log edits.log --autosave-minutes 0 \
+    >play.out 2>play.err
 rc=$?
 cat play.out
 [ -s play.err ] && { echo "--- stderr:"; cat play.err; }
@@ -48,7 +52,7 @@ echo "edit frames: $edits, each presented with only the touched bricks uploaded"
 "$check" "$(dirname "$script")/../../worlds/sandbox.toml" saved.toml edits.log play.png 10 3 2 2 || fail "play_through_check"
 
 # The save reopens in the sandbox at the saved view (a short second run, no edits).
-xvfb-run -a -s "-screen 0 1024x768x24" "$vox" play saved.toml --frames 2 --size 256x144 >reopen.out 2>&1 ||
+xvfb "$vox" play saved.toml --frames 2 --size 256x144 >reopen.out 2>&1 ||
     fail "reopening the save: $(cat reopen.out)"
 grep -q "saves to saved.toml" reopen.out || fail "reopened save does not save back to itself"
 

@@ -4,6 +4,7 @@
 #include <GLFW/glfw3.h>
 
 #include "game/camera_controller.h"
+#include "game/render_scale_controller.h"
 #include "game/script_player.h"
 
 using game::InputEventType;
@@ -93,4 +94,23 @@ TEST(CameraController, SameInputSameFlightAndPresetsRoundTrip) {
     EXPECT_EQ(cam.preset().position, start.position);
     // Right matches the renderer's basis (forward x world up).
     EXPECT_LT(glm::length(cam.right() - glm::normalize(glm::cross(cam.forward(), glm::vec3(0, 1, 0)))), 1e-5f);
+}
+
+TEST(RenderScaleController, SettlesNearTheTargetAndIgnoresNoise) {
+    // A device where a frame costs 400 ms at full resolution (time ~ pixels ~ scale^2).
+    game::RenderScaleController c(66.0, 1.0f / 16.0f, 1.0f);
+    float scale = 0.25f;
+    int changes = 0;
+    for (int frame = 0; frame < 400; ++frame) {
+        float next = c.update(scale, 400.0 * scale * scale);
+        changes += next != scale;
+        scale = next;
+    }
+    double ms = 400.0 * scale * scale;
+    EXPECT_GE(ms, 66.0 * 0.8);
+    EXPECT_LE(ms, 66.0 * 1.6);
+    EXPECT_LE(changes, 4);  // a few steps, then it holds
+    // Within the band, noise changes nothing.
+    game::RenderScaleController steady(66.0, 1.0f / 16.0f, 1.0f);
+    for (int frame = 0; frame < 200; ++frame) EXPECT_EQ(steady.update(0.3f, frame % 2 ? 60.0 : 75.0), 0.3f);
 }
