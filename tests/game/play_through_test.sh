@@ -21,10 +21,11 @@ fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 world=$("$vox" info sandbox --json >/dev/null 2>&1 && echo sandbox)
 [ -n "$world" ] || { echo "FAIL: vox info sandbox"; exit 1; }
 
-# Render 128x72 (window 768x432 at scale 1/6); no autosave during the run. Preview lighting:
-# deterministic, so the screenshot can be compared pixel for pixel with a headless render.
+# Render 128x72 (window 768x432 at scale 1/6); autosave every 0.03 minutes of the script's
+# clock (54 frames). Preview lighting: deterministic, so the screenshot can be compared pixel
+# for pixel with a headless render.
 xvfb "$vox" play sandbox --script "$script" --size 768x432 \
-    --render-scale 0.1667 --method preview --save saved.toml --edit-log edits.log --autosave-minutes 0 \
+    --render-scale 0.1667 --method preview --save saved.toml --edit-log edits.log --autosave-minutes 0.03 \
     >play.out 2>play.err
 rc=$?
 cat play.out
@@ -40,6 +41,10 @@ grep -q "screenshot resized.png (640x360, window with HUD)" play.out || fail "th
 grep -q "unsaved changes: Y saves and quits" play.out || fail "no unsaved-changes prompt"
 grep -q "quit cancelled" play.out || fail "the prompt did not cancel"
 grep -q "saved saved.toml" play.out || fail "no save"
+# Autosaves went to their own file, never over the save, and open as a world.
+grep -q "autosaved to saved.autosave.toml" play.out || fail "no autosave"
+"$vox" info saved.autosave.toml >/dev/null 2>&1 || fail "the autosave does not open"
+grep -q "^# Saved by vox play" saved.toml || fail "saved.toml is not a save"
 
 # Edit latency: every edit frame was presented with at most one brick and one cell uploaded
 # per changed cell (the renderer's upload counter).
