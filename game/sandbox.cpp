@@ -13,7 +13,6 @@
 #include <fmt/format.h>
 #include <imgui.h>
 
-#include "core/log.h"
 #include "game/autosave.h"
 #include "game/camera_controller.h"
 #include "game/edit_tools.h"
@@ -113,7 +112,6 @@ private:
     bool mMouseLook = false;
     bool mQuit = false;
     bool mQuitPrompt = false;
-    int mExitCode = 0;
 
     std::uint64_t mWorldVersion = 0, mSavedVersion = 0;
     engine::lighting::LightingSettings mLighting;
@@ -125,6 +123,7 @@ private:
     double mMessageTime = -1e9;
     bool mCaptureRequested = false;
     fs::path mPendingCapturePath, mPendingRenderPath;
+    std::string mTitle;
 };
 
 glm::uvec2 Sandbox::renderSize(glm::uvec2 framebuffer) const {
@@ -204,8 +203,9 @@ engine::Status Sandbox::init() {
 
     const auto& dev = mCtx->info();
     glm::ivec3 size = mScene.grid.sizeInVoxels();
-    std::printf("vox play: %s (%d x %d x %d voxels, %u bricks) on %s; saves to %s\n", mScene.name.c_str(), size.x, size.y,
-                size.z, mScene.grid.liveBricks(), dev.name.c_str(), mSavePath.string().c_str());
+    std::printf("vox play: %s (%d x %d x %d voxels, %u bricks) on %s%s; saves to %s\n", mScene.name.c_str(), size.x,
+                size.y, size.z, mScene.grid.liveBricks(), dev.name.c_str(),
+                mCtx->validationEnabled() ? " with validation" : "", mSavePath.string().c_str());
     if (mScript) std::printf("vox play: replaying %s (%zu steps, fixed %.4f s per frame)\n", mOptions.scriptPath.c_str(),
                              mScript->steps().size(), double(kScriptStep));
     std::fflush(stdout);
@@ -234,7 +234,7 @@ int Sandbox::run() {
         std::fprintf(stderr, "vox play: %u Vulkan validation error(s)\n", mCtx->validationErrors());
         return 1;
     }
-    return mExitCode;
+    return 0;
 }
 
 void Sandbox::frame() {
@@ -603,7 +603,10 @@ void Sandbox::afterFrame(const engine::render::FrameResult& result, bool present
             mAutosave.postpone(mTime);  // try again after another interval
         }
     }
-    mWindow->setTitle(title());
+    if (std::string t = title(); t != mTitle) {
+        mWindow->setTitle(t);
+        mTitle = std::move(t);
+    }
 }
 
 void Sandbox::runScriptActions() {

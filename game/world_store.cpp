@@ -67,7 +67,7 @@ public:
 
         std::string generator = fmt::format("[[generator]]\ntype = \"bricks\"\nfile = {}\n",
                                             engine::world::tomlString(payload.filename().string()));
-        std::string text = engine::world::sceneFileText(scene, generator, kSaveMarker);
+        std::string text = engine::world::sceneTextWithPalette(scene, generator, kSaveMarker);
         s = engine::io::writeAtomically(sceneFile, [&](const fs::path& temp) -> engine::Status {
             {
                 std::ofstream out(temp, std::ios::binary);

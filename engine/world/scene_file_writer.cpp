@@ -36,7 +36,7 @@ std::string tomlString(std::string_view text) {
     return out + "\"";
 }
 
-std::string sceneFileText(const Scene& scene, std::string_view generators, std::string_view headerComment) {
+std::string sceneTextWithPalette(const Scene& scene, std::string_view generators, std::string_view headerComment) {
     std::string out;
     if (!headerComment.empty()) out += fmt::format("# {}\n", headerComment);
     glm::ivec3 size = scene.grid.sizeInVoxels();

@@ -16,6 +16,6 @@ std::string tomlString(std::string_view text);
 
 // `generators` is TOML text inserted as is (zero or more [[generator]] tables). Numbers are
 // written so that loading the text gives back the same floats.
-std::string sceneFileText(const Scene& scene, std::string_view generators, std::string_view headerComment = {});
+std::string sceneTextWithPalette(const Scene& scene, std::string_view generators, std::string_view headerComment = {});
 
 }  // namespace engine::world

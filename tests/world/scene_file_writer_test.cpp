@@ -12,7 +12,7 @@ TEST(SceneFileWriter, BuiltInWorldsRoundTripWithoutTheirGenerators) {
         ASSERT_TRUE(path.ok());
         auto scene = loadSceneFile(*path);
         ASSERT_TRUE(scene.ok()) << scene.error().message;
-        std::string text = sceneFileText(*scene, "", "written by a test");
+        std::string text = sceneTextWithPalette(*scene, "", "written by a test");
         auto back = loadSceneText(text, "roundtrip.toml");
         ASSERT_TRUE(back.ok()) << back.error().message << "\n" << text;
         EXPECT_EQ(back->name, scene->name);
@@ -40,7 +40,7 @@ TEST(SceneFileWriter, QuotesNamesAndKeepsFloatsExact) {
     m.emissionStrength = 3.0f;
     scene.palette.add(m);
     scene.cameras.push_back({"c", {1e-3f, 123456.7f, -0.1f}, {2.0f, 2.0f, 2.0f}, 60.0f});
-    auto back = loadSceneText(sceneFileText(scene, ""), "t.toml");
+    auto back = loadSceneText(sceneTextWithPalette(scene, ""), "t.toml");
     ASSERT_TRUE(back.ok()) << back.error().message;
     EXPECT_EQ(back->name, scene.name);
     EXPECT_TRUE(back->palette == scene.palette);
