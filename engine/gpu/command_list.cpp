@@ -39,11 +39,11 @@ void CommandList::begin() {
     mRecording = true;
 }
 
-void CommandList::submitAndWait() {
+void CommandList::submitAndWait(const SubmitSync& sync) {
     CHECK(mRecording);
     VK_CHECK(vkEndCommandBuffer(mCmd));
     mRecording = false;
-    mCtx.submitAndWait(mCmd);
+    mCtx.submitAndWait(mCmd, sync);
     for (auto [pool, set] : mDescriptorSets) VK_CHECK(vkFreeDescriptorSets(mCtx.device(), pool, 1, &set));
     mDescriptorSets.clear();
 }

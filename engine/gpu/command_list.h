@@ -10,10 +10,11 @@
 #include <utility>
 #include <vector>
 
+#include "gpu/context.h"
+
 namespace engine::gpu {
 
 class Buffer;
-class Context;
 class TimestampTimer;
 
 class CommandList {
@@ -27,8 +28,9 @@ public:
     Context& context() const { return mCtx; }
 
     void begin();
-    // Ends recording, submits, waits, and releases per-submission resources.
-    void submitAndWait();
+    // Ends recording, submits, waits, and releases per-submission resources. `sync` ties the
+    // submission to a swapchain image (gpu/swapchain.h).
+    void submitAndWait(const SubmitSync& sync = {});
 
     void beginPass(const std::string& name);
     void endPass();

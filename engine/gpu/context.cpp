@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
+#include <optional>
 #include <string_view>
 #include <vector>
 
 #include "core/log.h"
 #include "gpu/vk_check.h"
+#include "gpu/window_surface.h"
 
 namespace engine::gpu {
 
@@ -70,6 +72,34 @@ const char* deviceTypeName(VkPhysicalDeviceType type) {
     }
 }
 
+bool hasDeviceExtension(VkPhysicalDevice device, const char* name) {
+    std::uint32_t count = 0;
+    vkEnumerateDeviceExtensionProperties(device, nullptr, &count, nullptr);
+    std::vector<VkExtensionProperties> exts(count);
+    vkEnumerateDeviceExtensionProperties(device, nullptr, &count, exts.data());
+    return std::any_of(exts.begin(), exts.end(), [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
+}
+
+// The queue family every submission goes to: compute with timestamps; when presenting, also
+// graphics (the HUD is drawn with a render pass) and present support for the surface. One
+// family for everything keeps ownership transfers out of the frame.
+std::optional<std::uint32_t> pickQueueFamily(VkPhysicalDevice device, VkSurfaceKHR surface) {
+    std::uint32_t familyCount = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(device, &familyCount, nullptr);
+    std::vector<VkQueueFamilyProperties> families(familyCount);
+    vkGetPhysicalDeviceQueueFamilyProperties(device, &familyCount, families.data());
+    for (std::uint32_t i = 0; i < familyCount; ++i) {
+        if (!(families[i].queueFlags & VK_QUEUE_COMPUTE_BIT) || families[i].timestampValidBits == 0) continue;
+        if (surface) {
+            VkBool32 present = VK_FALSE;
+            vkGetPhysicalDeviceSurfaceSupportKHR(device, i, surface, &present);
+            if (!present || !(families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT)) continue;
+        }
+        return i;
+    }
+    return std::nullopt;
+}
+
 // Real GPUs first; lavapipe (a CPU device) is the fallback.
 int deviceScore(VkPhysicalDeviceType type) {
     switch (type) {
@@ -111,6 +141,16 @@ Status Context::init(const ContextOptions& options) {
     std::vector<const char*> extensions;
     if (mValidation) layers.push_back(kValidationLayer);
     if (mDebugUtils) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+    std::vector<std::string> windowExtensions;
+    if (options.window) {
+        windowExtensions = windowInstanceExtensions();
+        if (windowExtensions.empty()) return makeError("the window system offers no Vulkan surface (GLFW: Vulkan not supported)");
+        for (const std::string& e : windowExtensions) {
+            if (!hasInstanceExtension(e.c_str()))
+                return makeError("the Vulkan loader lacks the instance extension {} needed to present to a window", e);
+            extensions.push_back(e.c_str());
+        }
+    }
 
     VkDebugUtilsMessengerCreateInfoEXT messengerInfo{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
     messengerInfo.messageSeverity =
@@ -147,6 +187,12 @@ Status Context::init(const ContextOptions& options) {
         if (create) VK_CHECK(create(mInstance, &messengerInfo, nullptr, &mMessenger));
     }
 
+    if (options.window) {
+        auto surface = createWindowSurface(mInstance, options.window);
+        if (!surface) return surface.error();
+        mSurface = *surface;
+    }
+
     std::uint32_t count = 0;
     vkEnumeratePhysicalDevices(mInstance, &count, nullptr);
     std::vector<VkPhysicalDevice> devices(count);
@@ -164,6 +210,10 @@ Status Context::init(const ContextOptions& options) {
         bool usable = props.apiVersion >= VK_API_VERSION_1_2 && f12.bufferDeviceAddress && f2.features.shaderInt64;
         if (!usable) {
             rejected += std::string(" ") + props.deviceName + " (needs Vulkan 1.2, bufferDeviceAddress, shaderInt64);";
+            continue;
+        }
+        if (mSurface && (!hasDeviceExtension(d, VK_KHR_SWAPCHAIN_EXTENSION_NAME) || !pickQueueFamily(d, mSurface))) {
+            rejected += std::string(" ") + props.deviceName + " (cannot present to the window);";
             continue;
         }
         if (wanted && !std::strstr(props.deviceName, wanted)) continue;
@@ -191,19 +241,9 @@ Status Context::init(const ContextOptions& options) {
     mInfo.maxStorageBufferRange = props.limits.maxStorageBufferRange;
     vkGetPhysicalDeviceMemoryProperties(mPhysicalDevice, &mMemoryProperties);
 
-    std::uint32_t familyCount = 0;
-    vkGetPhysicalDeviceQueueFamilyProperties(mPhysicalDevice, &familyCount, nullptr);
-    std::vector<VkQueueFamilyProperties> families(familyCount);
-    vkGetPhysicalDeviceQueueFamilyProperties(mPhysicalDevice, &familyCount, families.data());
-    bool found = false;
-    for (std::uint32_t i = 0; i < familyCount; ++i) {
-        if ((families[i].queueFlags & VK_QUEUE_COMPUTE_BIT) && families[i].timestampValidBits > 0) {
-            mQueueFamily = i;
-            found = true;
-            break;
-        }
-    }
-    if (!found) return makeError("{}: no compute queue with timestamps", mInfo.name);
+    std::optional<std::uint32_t> family = pickQueueFamily(mPhysicalDevice, mSurface);
+    if (!family) return makeError("{}: no compute queue with timestamps", mInfo.name);
+    mQueueFamily = *family;
 
     float priority = 1.0f;
     VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
@@ -222,6 +262,11 @@ Status Context::init(const ContextOptions& options) {
     deviceInfo.pNext = &enable;
     deviceInfo.queueCreateInfoCount = 1;
     deviceInfo.pQueueCreateInfos = &queueInfo;
+    const char* swapchainExtension = VK_KHR_SWAPCHAIN_EXTENSION_NAME;
+    if (mSurface) {
+        deviceInfo.enabledExtensionCount = 1;
+        deviceInfo.ppEnabledExtensionNames = &swapchainExtension;
+    }
     r = vkCreateDevice(mPhysicalDevice, &deviceInfo, nullptr, &mDevice);
     if (r != VK_SUCCESS) return makeError("{}: cannot create the Vulkan device ({})", mInfo.name, resultName(r));
     vkGetDeviceQueue(mDevice, mQueueFamily, 0, &mQueue);
@@ -232,7 +277,7 @@ Status Context::init(const ContextOptions& options) {
     VK_CHECK(vkCreateCommandPool(mDevice, &poolInfo, nullptr, &mCommandPool));
     VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
     VK_CHECK(vkCreateFence(mDevice, &fenceInfo, nullptr, &mFence));
-    log::info("Vulkan device: {} ({}, {})", mInfo.name, mInfo.type, mInfo.driver);
+    log::info("Vulkan device: {} ({}, {}){}", mInfo.name, mInfo.type, mInfo.driver, mSurface ? ", presenting to a window" : "");
     return {};
 }
 
@@ -243,6 +288,7 @@ Context::~Context() {
         vkDestroyCommandPool(mDevice, mCommandPool, nullptr);
         vkDestroyDevice(mDevice, nullptr);
     }
+    if (mSurface) vkDestroySurfaceKHR(mInstance, mSurface, nullptr);
     if (mMessenger) {
         auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
             vkGetInstanceProcAddr(mInstance, "vkDestroyDebugUtilsMessengerEXT"));
@@ -273,10 +319,19 @@ void Context::setObjectName(VkObjectType type, std::uint64_t handle, const char*
     setName(mDevice, &info);
 }
 
-void Context::submitAndWait(VkCommandBuffer commandBuffer) {
+void Context::submitAndWait(VkCommandBuffer commandBuffer, const SubmitSync& sync) {
     VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
     submit.commandBufferCount = 1;
     submit.pCommandBuffers = &commandBuffer;
+    if (sync.wait) {
+        submit.waitSemaphoreCount = 1;
+        submit.pWaitSemaphores = &sync.wait;
+        submit.pWaitDstStageMask = &sync.waitStage;
+    }
+    if (sync.signal) {
+        submit.signalSemaphoreCount = 1;
+        submit.pSignalSemaphores = &sync.signal;
+    }
     VK_CHECK(vkQueueSubmit(mQueue, 1, &submit, mFence));
     VK_CHECK(vkWaitForFences(mDevice, 1, &mFence, VK_TRUE, UINT64_MAX));
     VK_CHECK(vkResetFences(mDevice, 1, &mFence));

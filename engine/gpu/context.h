@@ -2,6 +2,11 @@
 // else lavapipe), the logical device with one compute queue, and the validation-message
 // counters tests assert on. Only engine/gpu/ includes vulkan.h; the rest of the engine holds
 // gpu:: objects.
+//
+// Headless by default. Given a window (ContextOptions::window) the context also owns the
+// window's surface: it enables the instance extensions the window system needs, and picks a
+// device and one queue family that computes, draws (the HUD) and presents to that surface,
+// with VK_KHR_swapchain enabled.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -13,6 +18,8 @@
 
 #include "core/error.h"
 
+struct GLFWwindow;
+
 namespace engine::gpu {
 
 struct ContextOptions {
@@ -21,6 +28,15 @@ struct ContextOptions {
     // Fail if validation was asked for but the layer is missing (tests must not pass vacuously).
     bool requireValidation = false;
     std::string applicationName = "vox";
+    // Present to this window (gpu/window_surface.h creates its surface); null for headless.
+    GLFWwindow* window = nullptr;
+};
+
+// Semaphores a submission waits on and signals (a swapchain image's acquire and present).
+struct SubmitSync {
+    VkSemaphore wait = VK_NULL_HANDLE;
+    VkPipelineStageFlags waitStage = 0;
+    VkSemaphore signal = VK_NULL_HANDLE;
 };
 
 struct DeviceInfo {
@@ -38,6 +54,7 @@ public:
     Context(const Context&) = delete;
     Context& operator=(const Context&) = delete;
 
+    VkInstance instance() const { return mInstance; }
     VkDevice device() const { return mDevice; }
     VkPhysicalDevice physicalDevice() const { return mPhysicalDevice; }
     VkQueue queue() const { return mQueue; }
@@ -46,6 +63,8 @@ public:
     const DeviceInfo& info() const { return mInfo; }
     bool validationEnabled() const { return mValidation; }
     bool debugUtils() const { return mDebugUtils; }
+    // The window's surface; VK_NULL_HANDLE for a headless context.
+    VkSurfaceKHR surface() const { return mSurface; }
 
     // Validation messages seen so far (errors are also printed to stderr).
     std::uint32_t validationErrors() const { return mValidationErrors.load(); }
@@ -57,7 +76,7 @@ public:
 
     // Incremented after every completed submission; pipelines recycle descriptor sets with it.
     std::uint64_t completedSubmissions() const { return mCompletedSubmissions; }
-    void submitAndWait(VkCommandBuffer commandBuffer);
+    void submitAndWait(VkCommandBuffer commandBuffer, const SubmitSync& sync = {});
 
 private:
     Context() = default;
@@ -69,6 +88,7 @@ private:
 
     VkInstance mInstance = VK_NULL_HANDLE;
     VkDebugUtilsMessengerEXT mMessenger = VK_NULL_HANDLE;
+    VkSurfaceKHR mSurface = VK_NULL_HANDLE;
     VkPhysicalDevice mPhysicalDevice = VK_NULL_HANDLE;
     VkDevice mDevice = VK_NULL_HANDLE;
     VkQueue mQueue = VK_NULL_HANDLE;

@@ -1,5 +1,5 @@
-// Per-pass GPU timestamps: a query pool with a begin/end pair per named pass, read back after the
-// frame's submission completes.
+// Per-pass GPU timestamps: a query pool with a begin/end pair per named pass (each stamp written
+// twice, see timestamp_timer.cpp for lavapipe), read back after the frame's submission completes.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -26,6 +26,8 @@ public:
     std::vector<std::pair<std::string, double>> results() const;
 
 private:
+    void stamp(VkCommandBuffer cmd, std::uint32_t query);
+
     Context& mCtx;
     VkQueryPool mPool = VK_NULL_HANDLE;
     std::uint32_t mMaxPasses;

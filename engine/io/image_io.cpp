@@ -1,5 +1,6 @@
 #include "io/image_io.h"
 
+#include <cstring>
 #include <functional>
 #include <system_error>
 #include <unistd.h>
@@ -14,6 +15,10 @@
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #define STBIW_WINDOWS_UTF8
 #include <stb_image_write.h>
+#define STB_IMAGE_IMPLEMENTATION
+#define STB_IMAGE_STATIC
+#define STBI_ONLY_PNG
+#include <stb_image.h>
 
 namespace engine::io {
 
@@ -49,6 +54,19 @@ Status writePng(const fs::path& path, std::uint32_t width, std::uint32_t height,
             return makeError("{}: cannot write PNG", path.string());
         return {};
     });
+}
+
+Result<PngImage> readPng(const fs::path& path) {
+    int w = 0, h = 0, channels = 0;
+    stbi_uc* data = stbi_load(path.c_str(), &w, &h, &channels, 4);
+    if (!data) return makeError("{}: cannot read PNG: {}", path.string(), stbi_failure_reason());
+    PngImage img;
+    img.width = std::uint32_t(w);
+    img.height = std::uint32_t(h);
+    img.rgba8.resize(std::size_t(w) * h);
+    std::memcpy(img.rgba8.data(), data, img.rgba8.size() * 4u);
+    stbi_image_free(data);
+    return img;
 }
 
 Status writeExr(const fs::path& path, std::uint32_t width, std::uint32_t height, std::span<const glm::vec4> linear) {

@@ -19,6 +19,13 @@ Status writePng(const std::filesystem::path& path, std::uint32_t width, std::uin
 Status writeExr(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height,
                 std::span<const glm::vec4> linear);
 
+// An 8-bit RGBA image, R in the low byte (the renderer's LDR layout).
+struct PngImage {
+    std::uint32_t width = 0, height = 0;
+    std::vector<std::uint32_t> rgba8;
+};
+Result<PngImage> readPng(const std::filesystem::path& path);
+
 struct ExrImage {
     std::uint32_t width = 0, height = 0;
     std::vector<glm::vec4> pixels;

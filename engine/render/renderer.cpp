@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "gpu/command_list.h"
+#include "gpu/presenter.h"
 #include "shared/restir.h"
 
 namespace engine::render {
@@ -56,6 +57,7 @@ Renderer::Renderer(gpu::Context& ctx)
       mGpuEmitters(ctx),
       mUploader(ctx),
       mTimer(ctx, 16),
+      mPresentTimer(ctx, 1),
       mPrimary(ctx),
       mPreview(ctx),
       mRestirInitial(ctx),
@@ -94,7 +96,7 @@ void Renderer::resetHistory() {
 }
 
 FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& camera, const FrameSettings& settings,
-                             const lighting::LightingSettings& lighting) {
+                             const lighting::LightingSettings& lighting, gpu::Presenter* presenter) {
     resize(settings.width, settings.height);
     if (mPrevLighting && !(*mPrevLighting == lighting)) {
         mHistoryValid = false;
@@ -150,6 +152,16 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
     mHistoryValid = true;
     mCurrent ^= 1u;
     ++mFrameIndex;
+    if (presenter) {
+        // A submission of its own, so only this pass waits for the swapchain image. The tonemap
+        // pass's barrier orders the LDR writes before the copy in submission order.
+        gpu::CommandList present(mCtx, &mPresentTimer);
+        present.begin();
+        presenter->record(present, mLdr, mSize);
+        present.submitAndWait(presenter->submitSync());
+        presenter->endFrame();
+        for (const auto& pass : mPresentTimer.results()) result.passMs.push_back(pass);
+    }
     return result;
 }
 

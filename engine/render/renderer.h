@@ -5,7 +5,9 @@
 //      sampling | brute force | reference path tracing (accumulates while nothing changes)
 //   -> tonemap
 // with a GPU timestamp per pass. Temporal state (G-buffers and reservoirs of the previous frame)
-// ping-pongs between two buffers; a change of image size or method drops it.
+// ping-pongs between two buffers; a change of image size or method drops it. Given a
+// gpu::Presenter, a "present" pass then puts the LDR image in a window (its own submission,
+// timed like the others).
 #pragma once
 
 #include <memory>
@@ -33,6 +35,10 @@
 #include "render/passes/tonemap_pass.h"
 #include "shared/gbuffer.h"
 
+namespace engine::gpu {
+class Presenter;
+}
+
 namespace engine::render {
 
 struct FrameResult {
@@ -58,8 +64,10 @@ class Renderer {
 public:
     explicit Renderer(gpu::Context& ctx);
 
+    // `presenter`, when given, must have begun its frame (Presenter::beginFrame); the frame is
+    // presented before this returns.
     FrameResult render(world::Scene& scene, const world::CameraPreset& camera, const FrameSettings& settings,
-                       const lighting::LightingSettings& lighting = {});
+                       const lighting::LightingSettings& lighting = {}, gpu::Presenter* presenter = nullptr);
     // Copies the last frame's buffers back to the host.
     FrameImages readback();
     // Forget temporal history and accumulated reference samples.
@@ -82,6 +90,7 @@ private:
     lighting::GpuEmitterList mGpuEmitters;
     gpu::Uploader mUploader;
     gpu::TimestampTimer mTimer;
+    gpu::TimestampTimer mPresentTimer;
     PrimaryRayPass mPrimary;
     SunShadePass mPreview;
     RestirInitialPass mRestirInitial;

@@ -1,5 +1,7 @@
 #include "world/scene_file.h"
 
+#include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -9,6 +11,7 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include "io/brick_payload.h"
 #include "world/apartment_generator.h"
 #include "world/bridge_generator.h"
 #include "io/vdb_import.h"
@@ -313,13 +316,34 @@ private:
             parseBridge(g, scene);
         } else if (type == "vdb") {
             parseVdbGenerator(g, node, scene);
+        } else if (type == "bricks") {
+            // A saved world's voxels (io/brick_payload.h), relative to this scene file.
+            std::filesystem::path file = g.string("file");
+            if (file.is_relative()) file = std::filesystem::path(mSource).parent_path() / file;
+            auto payload = io::readBrickPayload(file);
+            if (!payload) fail(g.node("file"), "{}", payload.error().message);
+            if (payload->sizeInCells() != grid.sizeInCells())
+                fail(g.node("file"), "{}: {}x{}x{} voxels, but [world] size is {}x{}x{}", file.string(),
+                     payload->sizeInVoxels().x, payload->sizeInVoxels().y, payload->sizeInVoxels().z,
+                     grid.sizeInVoxels().x, grid.sizeInVoxels().y, grid.sizeInVoxels().z);
+            for (std::uint32_t c : payload->cells()) {
+                MaterialId most = BrickGrid::cellIsBrick(c) ? kEmpty : BrickGrid::cellMaterial(c);
+                if (BrickGrid::cellIsBrick(c)) {
+                    for (MaterialId m : payload->brickVoxels(BrickGrid::cellBrick(c))) most = std::max(most, m);
+                }
+                if (most >= scene.palette.size())
+                    fail(g.node("file"), "{}: material {} is not in the palette ({} materials)", file.string(), most,
+                         scene.palette.size() - 1);
+            }
+            grid = std::move(*payload);
         } else {
             fail(g.node("type"), "unknown generator '{}' (known: {})", type, kGeneratorTypes);
         }
     }
 
     static constexpr const char* kGeneratorTypes =
-        "terrain, box, sphere, cornell, buildings, lamps, mountain, scattered_lights, text, menger, apartment, bridge, vdb";
+        "terrain, box, sphere, cornell, buildings, lamps, mountain, scattered_lights, text, menger, apartment, bridge, "
+        "vdb, bricks";
 
     void parseMountain(Table& g, Scene& scene) {
         MountainParams p;

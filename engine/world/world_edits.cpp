@@ -63,12 +63,19 @@ void fillBox(BrickGrid& grid, const Box& box, MaterialId material) {
         [&](glm::ivec3 p) { return box.contains(p); }, [&](glm::ivec3, MaterialId) { return material; });
 }
 
-void fillSphere(BrickGrid& grid, glm::vec3 center, float radius, MaterialId material) {
+Box sphereBounds(glm::vec3 center, float radius) {
+    return {glm::ivec3(glm::floor(center - radius)), glm::ivec3(glm::ceil(center + radius)) + 1};
+}
+
+namespace {
+
+// Applies `op` to the voxels whose centre lies within `radius` of `center`.
+template <typename Op>
+void editSphere(BrickGrid& grid, glm::vec3 center, float radius, Op&& op) {
     auto inside = [&](glm::ivec3 p) {
         glm::vec3 d = glm::vec3(p) + 0.5f - center;
         return glm::dot(d, d) <= radius * radius;
     };
-    Box bounds{glm::ivec3(glm::floor(center - radius)), glm::ivec3(glm::ceil(center + radius)) + 1};
     auto coverage = [&](const Box& cellBox) {
         // The sphere is convex: a cell whose 8 corner voxel centres are inside is fully inside.
         int corners = 0;
@@ -83,7 +90,24 @@ void fillSphere(BrickGrid& grid, glm::vec3 center, float radius, MaterialId mate
         glm::vec3 d = closest - center;
         return glm::dot(d, d) <= (radius + 1.0f) * (radius + 1.0f) ? Coverage::Partial : Coverage::None;
     };
-    editShape(grid, bounds, coverage, inside, [&](glm::ivec3, MaterialId) { return material; });
+    editShape(grid, sphereBounds(center, radius), coverage, inside, op);
+}
+
+}  // namespace
+
+void fillSphere(BrickGrid& grid, glm::vec3 center, float radius, MaterialId material) {
+    editSphere(grid, center, radius, [&](glm::ivec3, MaterialId) { return material; });
+}
+
+void paintBox(BrickGrid& grid, const Box& box, MaterialId material) {
+    editShape(
+        grid, box, [&](const Box& cellBox) { return boxCoverage(box, cellBox); },
+        [&](glm::ivec3 p) { return box.contains(p); },
+        [&](glm::ivec3, MaterialId m) { return m == kEmpty ? kEmpty : material; });
+}
+
+void paintSphere(BrickGrid& grid, glm::vec3 center, float radius, MaterialId material) {
+    editSphere(grid, center, radius, [&](glm::ivec3, MaterialId m) { return m == kEmpty ? kEmpty : material; });
 }
 
 void replaceMaterial(BrickGrid& grid, const Box& region, MaterialId from, MaterialId to) {

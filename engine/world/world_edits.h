@@ -12,6 +12,11 @@ namespace engine::world {
 void fillBox(BrickGrid& grid, const Box& box, MaterialId material);
 // Voxels whose centre lies within `radius` of `center` (in voxel units).
 void fillSphere(BrickGrid& grid, glm::vec3 center, float radius, MaterialId material);
+// The voxels fillSphere/paintSphere may touch.
+Box sphereBounds(glm::vec3 center, float radius);
+// Painting: solid voxels in the shape take `material`; empty space stays empty.
+void paintBox(BrickGrid& grid, const Box& box, MaterialId material);
+void paintSphere(BrickGrid& grid, glm::vec3 center, float radius, MaterialId material);
 // Within `region`, every voxel of material `from` becomes `to`.
 void replaceMaterial(BrickGrid& grid, const Box& region, MaterialId from, MaterialId to);
 

@@ -8,11 +8,14 @@
 #include <string>
 
 #include "core/error.h"
+#include "lighting_options.h"
 #include "world/scene.h"
 
 namespace vox {
 
 void addRenderCommand(CLI::App& app, int& exitCode);
+void addPlayCommand(CLI::App& app, int& exitCode);
+void addStartCommand(CLI::App& app, int& exitCode);
 void addInfoCommand(CLI::App& app, int& exitCode);
 void addCompareCommand(CLI::App& app, int& exitCode);
 void addCaptureCommand(CLI::App& app, int& exitCode);
@@ -24,6 +27,23 @@ void addBenchRestirCommand(CLI::App& bench, int& exitCode);
 void addBenchAccuracyCommand(CLI::App& bench, int& exitCode);
 void addBenchSweepCommand(CLI::App& bench, int& exitCode);
 void addBenchStabilityCommand(CLI::App& bench, int& exitCode);
+
+struct RenderOptions {
+    std::string world;
+    std::string camera;
+    std::string pos, target;
+    float fov = 0.0f;
+    std::string size = "640x360";
+    std::string output = "out/render.png";
+    std::string exr;
+    float exposure = 1.0f;
+    std::uint32_t frames = 1;
+    std::uint32_t spp = 64;
+    std::string timings;
+    LightingOptions lighting;
+};
+// `vox render`: renders one image headless; prints what it did, returns the exit code.
+int runRender(const RenderOptions& options);
 
 // Loads a world by name or path (a .vdb is imported with default options); an empty argument
 // means the built-in default world.

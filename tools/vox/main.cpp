@@ -45,9 +45,11 @@ int fail(const engine::Error& error) {
 
 int main(int argc, char** argv) {
     engine::log::init();
-    CLI::App app{"vox: voxel engine tool (render, capture, inspect, compare, import, export and benchmark brick-grid worlds)", "vox"};
+    CLI::App app{"vox: voxel engine tool (play, edit, render, capture, inspect, compare, import, export and benchmark brick-grid worlds)", "vox"};
     app.require_subcommand(1);
     int exitCode = 0;
+    vox::addStartCommand(app, exitCode);
+    vox::addPlayCommand(app, exitCode);
     vox::addRenderCommand(app, exitCode);
     vox::addInfoCommand(app, exitCode);
     vox::addCompareCommand(app, exitCode);

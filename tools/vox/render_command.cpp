@@ -11,23 +11,6 @@
 
 namespace vox {
 
-namespace {
-
-struct RenderOptions {
-    std::string world;
-    std::string camera;
-    std::string pos, target;
-    float fov = 0.0f;
-    std::string size = "640x360";
-    std::string output = "out/render.png";
-    std::string exr;
-    float exposure = 1.0f;
-    std::uint32_t frames = 1;
-    std::uint32_t spp = 64;
-    std::string timings;
-    LightingOptions lighting;
-};
-
 int runRender(const RenderOptions& o) {
     auto size = parseSize(o.size, "--size");
     if (!size) return fail(size.error());
@@ -141,8 +124,6 @@ int runRender(const RenderOptions& o) {
     }
     return 0;
 }
-
-}  // namespace
 
 void addRenderCommand(CLI::App& app, int& exitCode) {
     auto* cmd = app.add_subcommand("render", "Render a world headless to PNG (tonemapped) or EXR (linear)");

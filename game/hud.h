@@ -1,0 +1,78 @@
+// The HUD (Dear ImGui, core API only): frame time and per-pass GPU milliseconds, emitters,
+// bricks and memory, undo memory, lighting settings, the edit tool and material palette, the
+// keys, a crosshair with an outline of the voxels the next edit touches, messages, and the
+// unsaved-changes prompt. It reads a snapshot of the sandbox (HudStats), changes settings
+// through HudControls, and reports button presses as HudActions.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "game/camera_controller.h"
+#include "game/edit_tools.h"
+#include "game/undo_history.h"
+#include "lighting/lighting_settings.h"
+#include "render/gpu_world.h"
+#include "shared/frame_params.h"
+#include "world/scene.h"
+
+namespace game {
+
+struct HudStats {
+    double cpuFrameMs = 0.0;
+    std::vector<std::pair<std::string, double>> passMs;
+    glm::uvec2 renderSize{0}, windowSize{0};
+    std::uint64_t frame = 0;
+    std::uint32_t liveBricks = 0;
+    std::uint64_t emitters = 0;  // lighting::EmitterList entries (exposed emissive voxels, brick lights)
+    engine::world::GridMemory cpuMemory;
+    engine::render::GpuWorldMemory gpuMemory;
+    UndoStats undo;
+    std::string worldName, savePath;
+    bool unsaved = false;
+    bool mouseLook = false;
+    Pick target;
+    std::optional<engine::world::Box> preview;
+    shared::FrameParams view{};  // to project the outline and crosshair
+    std::string message;         // latest status line, empty for none
+};
+
+struct HudControls {
+    EditTools& tools;
+    const engine::world::Palette& palette;
+    engine::world::SkyLight& sky;
+    float& renderScale;
+    bool& autoScale;
+    float& exposure;
+    engine::lighting::LightingSettings& lighting;
+};
+
+struct HudActions {
+    bool save = false;
+    bool quitSave = false;     // unsaved prompt: save, then quit
+    bool quitDiscard = false;  // unsaved prompt: quit without saving
+    bool quitCancel = false;
+    bool undo = false, redo = false;
+};
+
+// The key list, shown in the HUD (and in README.md's "Playing" section).
+const std::vector<std::pair<const char*, const char*>>& keyBindings();
+
+class Hud {
+public:
+    bool visible = true;
+    bool showKeys = false;
+
+    // Builds this frame's HUD; call between ImGui::NewFrame and ImGui::Render.
+    HudActions draw(const HudStats& stats, HudControls& controls, bool quitPrompt);
+
+private:
+    void drawCrosshair(const HudStats& stats);
+    void drawStats(const HudStats& stats, HudControls& controls, HudActions& actions);
+    void drawTools(const HudStats& stats, HudControls& controls);
+    void drawKeys();
+};
+
+}  // namespace game

@@ -1,0 +1,669 @@
+#include "game/sandbox.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <optional>
+#include <thread>
+
+#include <GLFW/glfw3.h>
+#include <fmt/format.h>
+#include <imgui.h>
+
+#include "game/autosave.h"
+#include "game/camera_controller.h"
+#include "game/edit_tools.h"
+#include "game/hud.h"
+#include "game/imgui_platform.h"
+#include "game/input.h"
+#include "game/render_scale_controller.h"
+#include "game/script_player.h"
+#include "game/undo_history.h"
+#include "game/window.h"
+#include "game/world_store.h"
+#include "gpu/context.h"
+#include "gpu/presenter.h"
+#include "io/image_io.h"
+#include "render/camera.h"
+#include "render/renderer.h"
+#include "world/scene_file.h"
+
+namespace game {
+
+namespace fs = std::filesystem;
+namespace world = engine::world;
+
+std::string noDisplayMessage(const std::string& why, bool captureCommand) {
+    return fmt::format("vox play: {}; the sandbox needs a window. Render headless instead: "
+                       "`vox render [WORLD] -o out/render.png`{}",
+                       why, captureCommand ? " (or `vox capture` for scripted flythroughs)" : "");
+}
+
+namespace {
+
+constexpr float kScriptStep = 1.0f / 30.0f;  // seconds per frame while a script plays
+constexpr float kMinRenderScale = 1.0f / 16.0f;
+constexpr double kMessageSeconds = 4.0;
+constexpr const char* kSavedViewName = "saved view";
+
+class Sandbox {
+public:
+    explicit Sandbox(const PlayOptions& options) : mOptions(options), mUndo(options.undoMegabytes << 20),
+                                                   mAutosave(options.autosaveMinutes * 60.0) {}
+    int run();
+
+private:
+    engine::Status init();
+    void frame();
+    void handleInput(float dt);
+    void handleQuitPrompt();
+    void applyEdit(const EditOp& op);
+    void undo();
+    void redo();
+    engine::Status save(const fs::path& path, bool autosave);
+    void requestQuit();
+    void setMouseLook(bool on);
+    void message(std::string text);
+    void afterFrame(const engine::render::FrameResult& result, bool presented);
+    void runScriptActions();
+    void writeRenderImage(const fs::path& path);
+    void writeWindowCapture(const fs::path& path);
+    void logView(const char* what, const fs::path& path);
+    HudStats hudStats();
+    glm::uvec2 renderSize(glm::uvec2 framebuffer) const;
+    std::string title() const;
+    bool unsaved() const { return mWorldVersion != mSavedVersion; }
+
+    PlayOptions mOptions;
+    world::Scene mScene;
+    fs::path mWorldPath, mSavePath;
+    std::unique_ptr<WorldStore> mStore = makeWorldStore();
+
+    // Declaration order is destruction order reversed: the presenter needs the ImGui context
+    // and the device, and the device's surface needs the window.
+    std::unique_ptr<Window> mWindow;
+    std::unique_ptr<engine::gpu::Context> mCtx;
+    std::unique_ptr<ImGuiPlatform> mImGui;
+    std::unique_ptr<engine::gpu::Presenter> mPresenter;
+    std::unique_ptr<engine::render::Renderer> mRenderer;
+
+    std::optional<ScriptPlayer> mScript;
+    InputState mInput;
+    CameraController mCamera;
+    EditTools mTools;
+    UndoHistory mUndo;
+    Autosave mAutosave;
+    Hud mHud;
+    std::ofstream mEditLog;
+
+    std::uint64_t mFrame = 0;
+    double mTime = 0.0;  // seconds: the script clock, or wall clock since start
+    std::chrono::steady_clock::time_point mLastFrameStart;
+    double mCpuFrameMs = 0.0;
+    engine::render::FrameResult mLastFrame;
+    float mRenderScale = 0.25f;
+    bool mAutoScale = false;
+    RenderScaleController mScaleController{50.0, kMinRenderScale, 1.0f};
+    float mExposure = 1.0f;
+    std::size_t mCameraIndex = 0;
+    bool mMouseLook = false;
+    bool mQuit = false;
+    bool mQuitPrompt = false;
+
+    std::uint64_t mWorldVersion = 0, mSavedVersion = 0;
+    engine::lighting::LightingSettings mLighting;
+    Pick mTarget;
+
+    // Edits applied this frame, reported with the upload counter once the frame is presented.
+    std::size_t mFrameEdits = 0, mFrameChangedCells = 0;
+    std::string mMessage;
+    double mMessageTime = -1e9;
+    bool mCaptureRequested = false;
+    fs::path mPendingCapturePath, mPendingRenderPath;
+    std::string mTitle;
+};
+
+glm::uvec2 Sandbox::renderSize(glm::uvec2 framebuffer) const {
+    glm::vec2 s = glm::round(glm::vec2(framebuffer) * mRenderScale);
+    return glm::max(glm::uvec2(s), glm::uvec2(1));
+}
+
+std::string Sandbox::title() const {
+    return fmt::format("vox play - {}{}", mScene.name, unsaved() ? " (unsaved)" : "");
+}
+
+void Sandbox::message(std::string text) {
+    std::printf("frame %llu: %s\n", static_cast<unsigned long long>(mFrame), text.c_str());
+    std::fflush(stdout);
+    mMessage = std::move(text);
+    mMessageTime = mTime;
+}
+
+engine::Status Sandbox::init() {
+    mRenderScale = std::clamp(mOptions.renderScale, kMinRenderScale, 1.0f);
+    mAutoScale = mOptions.autoScale && mOptions.scriptPath.empty();  // scripts repeat exactly
+    mScaleController = RenderScaleController(mOptions.targetFrameMs, kMinRenderScale, 1.0f);
+    if (!mOptions.scriptPath.empty()) {
+        auto script = ScriptPlayer::load(mOptions.scriptPath);
+        if (!script) return script.error();
+        mScript = std::move(*script);
+    }
+    auto path = world::resolveWorldPath(mOptions.world.empty() ? "sandbox" : mOptions.world);
+    if (!path) return path.error();
+    mWorldPath = *path;
+    auto scene = mStore->load(mWorldPath);
+    if (!scene) return scene.error();
+    mScene = std::move(*scene);
+    if (!mOptions.camera.empty()) {
+        bool found = std::any_of(mScene.cameras.begin(), mScene.cameras.end(),
+                                 [&](const world::CameraPreset& c) { return c.name == mOptions.camera; });
+        if (!found) return engine::makeError("{}: no camera named '{}'", mWorldPath.string(), mOptions.camera);
+    }
+    mCamera.setFromPreset(mScene.camera(mOptions.camera));
+    for (std::size_t i = 0; i < mScene.cameras.size(); ++i) {
+        if (mScene.cameras[i].name == mCamera.preset().name) mCameraIndex = i;
+    }
+    if (mScene.palette.size() > 1) mTools.material = 1;
+    if (!mOptions.savePath.empty()) {
+        mSavePath = mOptions.savePath;
+    } else if (mStore->isSave(mWorldPath)) {
+        mSavePath = mWorldPath;
+    } else {
+        mSavePath = fs::path("saves") / (mScene.name + ".toml");
+    }
+    if (!mOptions.editLogPath.empty()) {
+        mEditLog.open(mOptions.editLogPath);
+        if (!mEditLog) return engine::makeError("{}: cannot write the edit log", mOptions.editLogPath);
+        mEditLog << "# vox play edit log: world " << mWorldPath.string() << "\n";
+    }
+
+    WindowOptions windowOptions;
+    windowOptions.size = mOptions.windowSize;
+    windowOptions.title = title();
+    auto window = Window::create(windowOptions);
+    if (!window) return engine::Error{noDisplayMessage(window.error().message, mOptions.captureCommand)};
+    mWindow = std::move(*window);
+
+    engine::gpu::ContextOptions ctxOptions;
+#ifndef NDEBUG
+    ctxOptions.validation = true;
+#endif
+    ctxOptions.window = mWindow->handle();
+    auto ctx = engine::gpu::Context::create(ctxOptions);
+    if (!ctx) return ctx.error();
+    mCtx = std::move(*ctx);
+    mImGui = std::make_unique<ImGuiPlatform>();
+    mPresenter = std::make_unique<engine::gpu::Presenter>(*mCtx, mWindow->framebufferSize(), true);
+    mRenderer = std::make_unique<engine::render::Renderer>(*mCtx);
+    mHud.visible = mOptions.hud;
+    mLighting = mOptions.lighting;
+
+    const auto& dev = mCtx->info();
+    glm::ivec3 size = mScene.grid.sizeInVoxels();
+    std::printf("vox play: %s (%d x %d x %d voxels, %u bricks) on %s%s; saves to %s\n", mScene.name.c_str(), size.x,
+                size.y, size.z, mScene.grid.liveBricks(), dev.name.c_str(),
+                mCtx->validationEnabled() ? " with validation" : "", mSavePath.string().c_str());
+    if (mScript) std::printf("vox play: replaying %s (%zu steps, fixed %.4f s per frame)\n", mOptions.scriptPath.c_str(),
+                             mScript->steps().size(), double(kScriptStep));
+    std::fflush(stdout);
+    // Live play starts looking around; a script's mouse is logical (never grabs a real one).
+    setMouseLook(true);
+    return {};
+}
+
+void Sandbox::setMouseLook(bool on) {
+    mMouseLook = on;
+    if (!mScript) mWindow->setCursorCaptured(on);
+    mInput.resetCursorTracking();
+    if (!on) mTools.cancelDrag();
+}
+
+int Sandbox::run() {
+    engine::Status s = init();
+    if (!s) {
+        const std::string& m = s.error().message;
+        std::fprintf(stderr, "%s%s\n", m.rfind("vox play:", 0) == 0 ? "" : "vox play: ", m.c_str());
+        return 1;
+    }
+    mLastFrameStart = std::chrono::steady_clock::now();
+    while (!mQuit) frame();
+    if (mCtx && mCtx->validationErrors() > 0) {
+        std::fprintf(stderr, "vox play: %u Vulkan validation error(s)\n", mCtx->validationErrors());
+        return 1;
+    }
+    return 0;
+}
+
+void Sandbox::frame() {
+    auto start = std::chrono::steady_clock::now();
+    float dt;
+    if (mScript) {
+        dt = kScriptStep;
+    } else {
+        dt = std::min(0.1f, std::chrono::duration<float>(start - mLastFrameStart).count());
+    }
+    mCpuFrameMs = std::chrono::duration<double, std::milli>(start - mLastFrameStart).count();
+    mLastFrameStart = start;
+    mTime += dt;
+
+    // Input: a script replaces live input entirely, except the close button.
+    std::vector<InputEvent> live = mWindow->pollEvents();
+    mInput.beginFrame();
+    if (mScript) {
+        for (const InputEvent& e : live) {
+            if (e.type == InputEventType::Close) mInput.apply(e);
+        }
+        for (const InputEvent& e : mScript->eventsFor(mFrame)) mInput.apply(e);
+    } else {
+        for (const InputEvent& e : live) mInput.apply(e);
+    }
+
+    glm::uvec2 framebuffer = mWindow->framebufferSize();
+    glm::uvec2 windowSize = mWindow->windowSize();
+    glm::vec2 cursorScale = windowSize.x > 0 && windowSize.y > 0 ? glm::vec2(framebuffer) / glm::vec2(windowSize) : glm::vec2(1.0f);
+    mImGui->newFrame(mInput, framebuffer, cursorScale, dt, !mMouseLook);
+    ImGui::NewFrame();
+
+    handleInput(dt);
+
+    if (mTime - mMessageTime > kMessageSeconds) mMessage.clear();
+    HudControls controls{mTools, mScene.palette, mScene.sky, mRenderScale, mAutoScale, mExposure, mLighting};
+    float scaleBefore = mRenderScale;
+    HudActions actions = mHud.draw(hudStats(), controls, mQuitPrompt);
+    if (mRenderScale != scaleBefore) mAutoScale = false;  // moved by hand: the hand wins
+    mRenderScale = std::clamp(mRenderScale, kMinRenderScale, 1.0f);
+    ImGui::Render();
+    if (actions.undo) undo();
+    if (actions.redo) redo();
+    if (actions.save) {
+        if (engine::Status st = save(mSavePath, false); !st) message("save failed: " + st.error().message);
+    }
+    if (actions.quitSave || actions.quitDiscard || actions.quitCancel) {
+        mQuitPrompt = false;
+        if (actions.quitSave) {
+            if (engine::Status st = save(mSavePath, false); !st) {
+                message("save failed: " + st.error().message);
+            } else {
+                mQuit = true;
+            }
+        }
+        if (actions.quitDiscard) {
+            message("quit without saving");
+            mQuit = true;
+        }
+    }
+
+    // Script captures of the presented window must be requested before the frame is drawn.
+    if (mScript) {
+        for (const ScriptAction& a : mScript->actionsFor(mFrame)) {
+            if (a.kind == ScriptAction::Kind::Capture) {
+                mCaptureRequested = true;
+                mPendingCapturePath = a.path;
+            }
+        }
+    }
+
+    engine::render::FrameResult result;
+    bool presented = false;
+    if (mPresenter->beginFrame(framebuffer)) {
+        engine::render::FrameSettings settings;
+        glm::uvec2 size = renderSize(framebuffer);
+        settings.width = size.x;
+        settings.height = size.y;
+        settings.frameIndex = static_cast<std::uint32_t>(mFrame);
+        settings.exposure = mExposure;
+        mPresenter->setOverlay(ImGui::GetDrawData());
+        if (mCaptureRequested) mPresenter->captureThisFrame();
+        result = mRenderer->render(mScene, mCamera.preset(), settings, mLighting, mPresenter.get());
+        mLastFrame = result;
+        presented = true;
+        if (mAutoScale) {
+            // The passes that scale with the render resolution; presenting fills the window
+            // whatever the scale.
+            double ms = result.totalMs() - result.passMsOf("present");
+            float next = mScaleController.update(mRenderScale, ms);
+            if (next != mRenderScale) {
+                glm::uvec2 from = renderSize(framebuffer);
+                mRenderScale = next;
+                glm::uvec2 to = renderSize(framebuffer);
+                message(fmt::format("render {}x{} -> {}x{}: frame passes took {:.0f} ms (median), aiming at {:.0f} ms "
+                                    "(auto scale)",
+                                    from.x, from.y, to.x, to.y, mScaleController.lastMedianMs(), mScaleController.targetMs()));
+            }
+        }
+    } else {
+        std::this_thread::sleep_for(std::chrono::milliseconds(16));  // minimised: do not spin
+    }
+    afterFrame(result, presented);
+    ++mFrame;
+    if (mOptions.maxFrames && mFrame >= mOptions.maxFrames) {
+        if (!mQuit) message(fmt::format("stopping after {} frames (--frames)", mOptions.maxFrames));
+        mQuit = true;
+    }
+}
+
+void Sandbox::handleInput(float dt) {
+    if (mInput.closeRequested()) requestQuit();
+    if (mQuitPrompt) {
+        handleQuitPrompt();
+        return;
+    }
+    bool hudMouse = !mMouseLook && mImGui->wantsMouse();
+
+    if (mInput.pressed(GLFW_KEY_ESCAPE)) {
+        if (mTools.dragging()) {
+            mTools.cancelDrag();
+        } else if (mMouseLook) {
+            setMouseLook(false);
+        } else {
+            requestQuit();
+            return;
+        }
+    }
+    // A click on the world (not on the HUD) takes the mouse back; it does not edit.
+    bool clickCaptured = false;
+    if (!mMouseLook && !hudMouse && mInput.buttonPressed(GLFW_MOUSE_BUTTON_LEFT)) {
+        setMouseLook(true);
+        clickCaptured = true;
+    }
+
+    mCamera.update(mInput, dt, mMouseLook);
+    mTarget = pick(mScene.grid, mCamera.position(), mCamera.forward());
+
+    if (mMouseLook && !clickCaptured) {
+        if (mInput.buttonPressed(GLFW_MOUSE_BUTTON_LEFT)) {
+            if (auto op = mTools.press(mTarget)) applyEdit(*op);
+        }
+        if (mInput.buttonReleased(GLFW_MOUSE_BUTTON_LEFT)) {
+            if (auto op = mTools.release(mTarget)) applyEdit(*op);
+        }
+        // Right button: remove with the current brush, whatever the tool.
+        if (mInput.buttonPressed(GLFW_MOUSE_BUTTON_RIGHT) || mInput.buttonReleased(GLFW_MOUSE_BUTTON_RIGHT)) {
+            Tool saved = mTools.tool;
+            mTools.tool = Tool::Remove;
+            std::optional<EditOp> op = mInput.buttonPressed(GLFW_MOUSE_BUTTON_RIGHT) ? mTools.press(mTarget) : mTools.release(mTarget);
+            mTools.tool = saved;
+            if (op) applyEdit(*op);
+        }
+        if (mInput.buttonPressed(GLFW_MOUSE_BUTTON_MIDDLE) || mInput.pressed(GLFW_KEY_I)) {
+            if (mTools.eyedrop(mTarget)) message("eyedropper: " + mScene.palette[mTools.material].name);
+        }
+    }
+
+    bool ctrl = mInput.ctrl();
+    if (ctrl) {
+        if (mInput.pressed(GLFW_KEY_Z)) mInput.shift() ? redo() : undo();
+        if (mInput.pressed(GLFW_KEY_Y)) redo();
+        if (mInput.pressed(GLFW_KEY_S)) {
+            if (engine::Status st = save(mSavePath, false); !st) message("save failed: " + st.error().message);
+        }
+        return;  // Ctrl+key is a command, never also a tool key
+    }
+    if (mInput.pressed(GLFW_KEY_1)) mTools.tool = Tool::Place;
+    if (mInput.pressed(GLFW_KEY_2)) mTools.tool = Tool::Remove;
+    if (mInput.pressed(GLFW_KEY_3)) mTools.tool = Tool::Paint;
+    if (mInput.pressed(GLFW_KEY_B)) {
+        mTools.cancelDrag();
+        mTools.brush = static_cast<Brush>((static_cast<int>(mTools.brush) + 1) % 3);
+        message(fmt::format("brush: {}", brushName(mTools.brush)));
+    }
+    if (mInput.pressed(GLFW_KEY_MINUS)) mTools.radius = std::max(0.5f, mTools.radius - 0.5f);
+    if (mInput.pressed(GLFW_KEY_EQUAL)) mTools.radius = std::min(32.0f, mTools.radius + 0.5f);
+    int materialStep = (mInput.pressed(GLFW_KEY_PERIOD) ? 1 : 0) - (mInput.pressed(GLFW_KEY_COMMA) ? 1 : 0);
+    if (!hudMouse && mInput.scroll() != 0.0f) materialStep += mInput.scroll() > 0.0f ? -1 : 1;
+    int materials = static_cast<int>(mScene.palette.size()) - 1;
+    if (materialStep != 0 && materials > 0) {
+        int m = (static_cast<int>(mTools.material) - 1 + materialStep) % materials;
+        mTools.material = static_cast<world::MaterialId>((m + materials) % materials + 1);
+    }
+    if (mInput.pressed(GLFW_KEY_PAGE_UP) || mInput.pressed(GLFW_KEY_PAGE_DOWN)) {
+        mAutoScale = false;
+        mRenderScale = mInput.pressed(GLFW_KEY_PAGE_UP) ? std::min(1.0f, mRenderScale * 1.25f)
+                                                         : std::max(kMinRenderScale, mRenderScale / 1.25f);
+        message(fmt::format("render scale {:.3f} (auto off; the HUD turns it back on)", mRenderScale));
+    }
+    if (mInput.pressed(GLFW_KEY_C) && !mScene.cameras.empty()) {
+        mCameraIndex = (mCameraIndex + 1) % mScene.cameras.size();
+        mCamera.setFromPreset(mScene.cameras[mCameraIndex]);
+        message("camera: " + mScene.cameras[mCameraIndex].name);
+    }
+    if (mInput.pressed(GLFW_KEY_TAB)) mHud.visible = !mHud.visible;
+    if (mInput.pressed(GLFW_KEY_F1)) mHud.showKeys = !mHud.showKeys;
+    if (mInput.pressed(GLFW_KEY_F12)) {
+        fs::path path = fs::path("screenshots") / fmt::format("{}-{}.png", mScene.name, mFrame);
+        if (mInput.shift()) {
+            mPendingRenderPath = path;
+        } else {
+            mCaptureRequested = true;
+            mPendingCapturePath = path;
+        }
+    }
+}
+
+void Sandbox::handleQuitPrompt() {
+    if (mInput.pressed(GLFW_KEY_Y) || mInput.pressed(GLFW_KEY_ENTER)) {
+        mQuitPrompt = false;
+        if (engine::Status st = save(mSavePath, false); !st) {
+            message("save failed: " + st.error().message);
+        } else {
+            mQuit = true;
+        }
+    } else if (mInput.pressed(GLFW_KEY_N)) {
+        mQuitPrompt = false;
+        message("quit without saving");
+        mQuit = true;
+    } else if (mInput.pressed(GLFW_KEY_ESCAPE)) {
+        mQuitPrompt = false;
+        message("quit cancelled");
+    }
+}
+
+void Sandbox::requestQuit() {
+    if (!unsaved()) {
+        mQuit = true;
+        return;
+    }
+    if (!mQuitPrompt) {
+        mQuitPrompt = true;
+        setMouseLook(false);
+        message(fmt::format("unsaved changes: Y saves and quits, N quits without saving, Esc cancels ({})",
+                            mSavePath.string()));
+    }
+}
+
+void Sandbox::applyEdit(const EditOp& op) {
+    EditRecord rec = mUndo.record(mScene.grid, op.region(), op.describe(mScene.palette),
+                                  [&](world::BrickGrid& grid) { game::applyEdit(grid, op); });
+    if (rec.changedCells == 0) {
+        message(op.describe(mScene.palette) + ": nothing changed");
+        return;
+    }
+    ++mWorldVersion;
+    ++mFrameEdits;
+    mFrameChangedCells += rec.changedCells;
+    if (mEditLog) {
+        glm::vec3 o = mCamera.position(), d = mCamera.forward();
+        mEditLog << fmt::format("edit {} {} {} ray {} {} {} {} {} {} box {} {} {} {} {} {} sphere {} {} {} {} material {} cells {}\n",
+                                mFrame, toolName(op.tool), brushName(op.brush), o.x, o.y, o.z, d.x, d.y, d.z, op.box.min.x,
+                                op.box.min.y, op.box.min.z, op.box.max.x, op.box.max.y, op.box.max.z, op.center.x,
+                                op.center.y, op.center.z, op.radius, op.material, rec.changedCells);
+        mEditLog.flush();
+    }
+    message(fmt::format("{} ({} cell{}){}", op.describe(mScene.palette), rec.changedCells, rec.changedCells == 1 ? "" : "s",
+                        rec.undoable ? "" : " - too large to undo within the budget"));
+}
+
+void Sandbox::undo() {
+    std::string label = mUndo.undo(mScene.grid);
+    if (label.empty()) {
+        message("nothing to undo");
+        return;
+    }
+    ++mWorldVersion;
+    if (mEditLog) mEditLog << fmt::format("undo {}\n", mFrame) << std::flush;
+    message("undo: " + label);
+}
+
+void Sandbox::redo() {
+    std::string label = mUndo.redo(mScene.grid);
+    if (label.empty()) {
+        message("nothing to redo");
+        return;
+    }
+    ++mWorldVersion;
+    if (mEditLog) mEditLog << fmt::format("redo {}\n", mFrame) << std::flush;
+    message("redo: " + label);
+}
+
+engine::Status Sandbox::save(const fs::path& path, bool autosave) {
+    // The current view becomes the first camera preset, so reopening the save resumes here.
+    std::vector<world::CameraPreset> presets = mScene.cameras;
+    world::CameraPreset view = mCamera.preset();
+    view.name = kSavedViewName;
+    std::erase_if(mScene.cameras, [](const world::CameraPreset& c) { return c.name == kSavedViewName; });
+    mScene.cameras.insert(mScene.cameras.begin(), view);
+    engine::Status s = mStore->save(mScene, path);
+    mScene.cameras = std::move(presets);
+    if (!s) return s;
+    mAutosave.written(mTime, mWorldVersion);
+    if (!autosave) mSavedVersion = mWorldVersion;
+    if (mEditLog) mEditLog << fmt::format("{} {} {}\n", autosave ? "autosave" : "save", mFrame, path.string()) << std::flush;
+    message(fmt::format("{} {}", autosave ? "autosaved to" : "saved", path.string()));
+    return {};
+}
+
+void Sandbox::logView(const char* what, const fs::path& path) {
+    if (!mEditLog) return;
+    world::CameraPreset c = mCamera.preset();
+    glm::uvec2 size = renderSize(mWindow->framebufferSize());
+    mEditLog << fmt::format("{} {} {} view {} {} {} {} {} {} fov {} size {} {} frame {} exposure {} lighting {}\n", what,
+                            mFrame, path.string(), c.position.x, c.position.y, c.position.z, c.target.x, c.target.y,
+                            c.target.z, c.fovYDegrees, size.x, size.y, mFrame, mExposure,
+                            engine::lighting::methodName(mLighting.method))
+             << std::flush;
+}
+
+void Sandbox::writeRenderImage(const fs::path& path) {
+    engine::render::FrameImages images = mRenderer->readback();
+    std::error_code ec;
+    if (path.has_parent_path()) fs::create_directories(path.parent_path(), ec);
+    engine::Status s = engine::io::writePng(path, images.width, images.height, images.rgba8);
+    if (!s) {
+        message("screenshot failed: " + s.error().message);
+        return;
+    }
+    logView("screenshot", path);
+    message(fmt::format("screenshot {} ({}x{}, rendered image)", path.string(), images.width, images.height));
+}
+
+void Sandbox::writeWindowCapture(const fs::path& path) {
+    const engine::gpu::WindowCapture& cap = mPresenter->capture();
+    if (cap.rgba8.empty()) {
+        message("window capture failed: no frame was presented");
+        return;
+    }
+    std::error_code ec;
+    if (path.has_parent_path()) fs::create_directories(path.parent_path(), ec);
+    engine::Status s = engine::io::writePng(path, cap.width, cap.height, cap.rgba8);
+    if (!s) {
+        message("screenshot failed: " + s.error().message);
+        return;
+    }
+    logView("capture", path);
+    message(fmt::format("screenshot {} ({}x{}, window with HUD)", path.string(), cap.width, cap.height));
+}
+
+void Sandbox::afterFrame(const engine::render::FrameResult& result, bool presented) {
+
+    if (mFrameEdits > 0 && presented) {
+        // The latency contract: this frame showed the edits and uploaded only what they touched.
+        std::printf("frame %llu: presented %zu edit(s) changing %zu cell(s); uploaded %u brick(s), %u cell(s)%s\n",
+                    static_cast<unsigned long long>(mFrame), mFrameEdits, mFrameChangedCells, result.upload.bricks,
+                    result.upload.cells, result.upload.full ? " (full upload)" : "");
+        std::fflush(stdout);
+        mFrameEdits = 0;
+        mFrameChangedCells = 0;
+    }
+    if (presented && mCaptureRequested) {
+        mCaptureRequested = false;
+        writeWindowCapture(mPendingCapturePath);
+    }
+    if (presented && !mPendingRenderPath.empty()) {
+        writeRenderImage(mPendingRenderPath);
+        mPendingRenderPath.clear();
+    }
+    if (mScript) runScriptActions();
+    if (mAutosave.due(mTime, mWorldVersion)) {
+        engine::Status s = save(autosavePath(mSavePath), true);
+        if (!s) {
+            message("autosave failed: " + s.error().message);
+            mAutosave.postpone(mTime);  // try again after another interval
+        }
+    }
+    if (std::string t = title(); t != mTitle) {
+        mWindow->setTitle(t);
+        mTitle = std::move(t);
+    }
+}
+
+void Sandbox::runScriptActions() {
+    for (const ScriptAction& a : mScript->actionsFor(mFrame)) {
+        switch (a.kind) {
+            case ScriptAction::Kind::Screenshot: writeRenderImage(a.path); break;
+            case ScriptAction::Kind::Capture: break;  // written with the frame above
+            case ScriptAction::Kind::Resize:
+                mWindow->resize(a.size);
+                message(fmt::format("window resized to {}x{}", a.size.x, a.size.y));
+                break;
+            case ScriptAction::Kind::Quit: requestQuit(); break;
+        }
+    }
+    // A script that ends without quitting stops one frame after its last step.
+    if (!mQuit && mFrame > mScript->lastFrame()) {
+        message(unsaved() ? "script ended with unsaved changes; quitting without saving" : "script ended");
+        mQuit = true;
+    }
+}
+
+HudStats Sandbox::hudStats() {
+    HudStats s;
+    s.cpuFrameMs = mCpuFrameMs;
+    s.passMs = mLastFrame.passMs;
+    glm::uvec2 fb = mWindow->framebufferSize();
+    s.renderSize = renderSize(fb);
+    s.windowSize = fb;
+    s.frame = mFrame;
+    s.liveBricks = mScene.grid.liveBricks();
+    s.emitters = mRenderer->emitters().aliveCount();
+    s.cpuMemory = mScene.grid.memory();
+    s.gpuMemory = mRenderer->gpuWorld().memory();
+    s.undo = mUndo.stats();
+    s.worldName = mScene.name;
+    s.savePath = mSavePath.string();
+    s.unsaved = unsaved();
+    s.mouseLook = mMouseLook;
+    s.target = mTarget;
+    s.preview = mTools.preview(mTarget);
+    engine::render::FrameSettings settings;
+    settings.width = s.renderSize.x;
+    settings.height = s.renderSize.y;
+    s.view = engine::render::makeFrameParams(mCamera.preset(), mScene.sky, settings);
+    s.message = mMessage;
+    return s;
+}
+
+}  // namespace
+
+int runPlay(const PlayOptions& options) {
+    if (std::string why = displayProblem(); !why.empty()) {
+        std::fprintf(stderr, "%s\n", noDisplayMessage(why, options.captureCommand).c_str());
+        return 1;
+    }
+    Sandbox sandbox(options);
+    return sandbox.run();
+}
+
+}  // namespace game

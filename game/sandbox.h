@@ -1,0 +1,43 @@
+// The play/edit sandbox behind `vox play`: a window showing the renderer's image, a fly camera,
+// edit tools with undo, a HUD, saving and autosaving. One frame of the loop:
+//   input (live, or a script's events for this frame) -> camera, tools, edits -> HUD ->
+//   render + present -> the frame's script actions, edit report, autosave.
+// Edits are applied before the frame is rendered, so an edit shows in the next presented frame,
+// and only the bricks it touched are uploaded (the upload counter is printed per edit).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include <glm/glm.hpp>
+
+#include "lighting/lighting_settings.h"
+
+namespace game {
+
+struct PlayOptions {
+    std::string world;       // name or path; empty: the default world
+    std::string savePath;    // empty: the world itself if it is a save, else saves/NAME.toml
+    std::string camera;      // preset to start from; empty: the first
+    glm::uvec2 windowSize{1280, 720};
+    float renderScale = 0.25f;  // render resolution as a fraction of the window's (the start value)
+    bool autoScale = true;      // then adapt it to keep the GPU time near targetFrameMs
+    double targetFrameMs = 50.0;  // GPU time of the passes that scale with the render size
+    std::string scriptPath;     // replay scripted input (fixed time step, live input ignored)
+    std::uint64_t maxFrames = 0;  // quit after this many frames; 0: no limit
+    std::string editLogPath;    // write every edit, undo, redo, save and screenshot view here
+    double autosaveMinutes = 3.0;  // 0: off
+    std::size_t undoMegabytes = 256;
+    engine::lighting::LightingSettings lighting;  // switchable live in the HUD
+    bool hud = true;
+    bool captureCommand = false;  // `vox capture` exists: the no-display message points to it too
+};
+
+// Runs the sandbox; prints its own errors (one line) and returns the process exit code.
+int runPlay(const PlayOptions& options);
+
+// The one-line message `vox play` prints when there is no display (or it cannot be opened).
+std::string noDisplayMessage(const std::string& why, bool captureCommand);
+
+}  // namespace game

@@ -1,0 +1,81 @@
+// Undo/redo for world edits. A step stores, for each top-grid cell the edit changed, that
+// cell's other state: a material for a uniform (or empty) cell, or a copy of its 8^3 brick.
+// Undo and redo swap the stored state with the world's, so one copy serves both directions
+// and the history costs what the edits touched, never a copy of the world.
+//
+// Memory is bounded: after each edit the oldest steps are dropped until the history fits in
+// maxBytes; an edit that alone exceeds the budget is applied but cannot be undone (reported).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "world/brick_grid.h"
+
+namespace game {
+
+struct UndoStats {
+    std::size_t bytes = 0;         // memory held by the history
+    std::size_t maxBytes = 0;      // the budget
+    std::size_t undoSteps = 0;     // steps that can be undone
+    std::size_t redoSteps = 0;     // steps that can be redone
+    std::size_t droppedSteps = 0;  // oldest steps dropped to stay within budget, since the start
+};
+
+struct EditRecord {
+    std::size_t changedCells = 0;  // cells whose contents the edit changed (the bricks to upload)
+    bool undoable = false;         // false if nothing changed or the step exceeded the budget
+};
+
+class UndoHistory {
+public:
+    explicit UndoHistory(std::size_t maxBytes) : mMaxBytes(maxBytes) {}
+
+    // Runs `edit` on `grid` and records the cells within `region` that it changed as one step.
+    // `edit` must not change anything outside `region`. Clears the redo steps if it changed
+    // something.
+    EditRecord record(engine::world::BrickGrid& grid, const engine::world::Box& region, std::string label,
+                      const std::function<void(engine::world::BrickGrid&)>& edit);
+
+    // Each returns the step's label, or an empty string when there is nothing to undo/redo.
+    std::string undo(engine::world::BrickGrid& grid);
+    std::string redo(engine::world::BrickGrid& grid);
+
+    bool canUndo() const { return mCursor > 0; }
+    bool canRedo() const { return mCursor < mSteps.size(); }
+    UndoStats stats() const;
+    void setMaxBytes(std::size_t maxBytes);
+    void clear();
+
+private:
+    // One cell's stored state: uniform material, or brick `brick` in Step::bricks.
+    struct CellState {
+        glm::ivec3 cell{0};
+        std::uint32_t brick = kNoBrick;
+        engine::world::MaterialId material = engine::world::kEmpty;
+    };
+    static constexpr std::uint32_t kNoBrick = UINT32_MAX;
+    struct Step {
+        std::string label;
+        std::vector<CellState> cells;
+        std::vector<engine::world::BrickVoxels> bricks;
+        std::size_t bytes() const;
+    };
+
+    static void capture(const engine::world::BrickGrid& grid, glm::ivec3 cell, Step& step, CellState& state);
+    // Writes the step's states into the grid and keeps the grid's previous states in their place.
+    static void swap(engine::world::BrickGrid& grid, Step& step);
+    void enforceBudget();
+
+    std::size_t mMaxBytes;
+    std::deque<Step> mSteps;
+    std::size_t mCursor = 0;  // steps [0, mCursor) are undoable, [mCursor, size) redoable
+    std::size_t mBytes = 0;
+    std::size_t mDropped = 0;
+};
+
+}  // namespace game

@@ -1,0 +1,111 @@
+#include "game/world_store.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <fstream>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "io/brick_payload.h"
+#include "io/image_io.h"
+#include "world/scene_file.h"
+#include "world/scene_file_writer.h"
+
+namespace game {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kSaveMarker = "Saved by vox play";
+
+// Payload generations of `stem` in `dir`: STEM.N.bricks.
+std::vector<std::pair<std::uint64_t, fs::path>> payloads(const fs::path& dir, const std::string& stem) {
+    std::vector<std::pair<std::uint64_t, fs::path>> out;
+    std::error_code ec;
+    for (const fs::directory_entry& e : fs::directory_iterator(dir.empty() ? "." : dir, ec)) {
+        std::string name = e.path().filename().string();
+        if (name.size() <= stem.size() + 1 || name.compare(0, stem.size() + 1, stem + ".") != 0) continue;
+        std::string rest = name.substr(stem.size() + 1);
+        auto dot = rest.find('.');
+        if (dot == std::string::npos || dot == 0 || rest.substr(dot) != ".bricks") continue;
+        std::string digits = rest.substr(0, dot);
+        if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 18) continue;
+        out.emplace_back(std::stoull(digits), e.path());
+    }
+    return out;
+}
+
+void syncDirectory(const fs::path& dir) {
+    int fd = ::open(dir.empty() ? "." : dir.c_str(), O_RDONLY | O_DIRECTORY);
+    if (fd < 0) return;
+    ::fsync(fd);
+    ::close(fd);
+}
+
+class BrickPayloadStore final : public WorldStore {
+public:
+    explicit BrickPayloadStore(SaveFaults faults) : mFaults(std::move(faults)) {}
+
+    engine::Status save(const engine::world::Scene& scene, const fs::path& sceneFile) override {
+        fs::path dir = sceneFile.parent_path();
+        std::error_code ec;
+        if (!dir.empty()) fs::create_directories(dir, ec);
+        if (ec) return engine::makeError("{}: cannot create the folder: {}", dir.string(), ec.message());
+        if (fs::exists(sceneFile, ec) && !isSave(sceneFile))
+            return engine::makeError("{}: not a save written by vox play; refusing to overwrite it", sceneFile.string());
+
+        std::string stem = sceneFile.stem().string();
+        std::uint64_t generation = 1;
+        for (const auto& [n, path] : payloads(dir, stem)) generation = std::max(generation, n + 1);
+        fs::path payload = dir / fmt::format("{}.{}.bricks", stem, generation);
+        engine::Status s = engine::io::writeAtomically(
+            payload, [&](const fs::path& temp) { return engine::io::writeBrickPayload(temp, scene.grid); });
+        if (!s) return s;
+
+        std::string generator = fmt::format("[[generator]]\ntype = \"bricks\"\nfile = {}\n",
+                                            engine::world::tomlString(payload.filename().string()));
+        std::string text = engine::world::sceneTextWithPalette(scene, generator, kSaveMarker);
+        s = engine::io::writeAtomically(sceneFile, [&](const fs::path& temp) -> engine::Status {
+            {
+                std::ofstream out(temp, std::ios::binary);
+                out << text;
+                out.flush();
+                if (!out) return engine::makeError("{}: write failed (disk full?)", sceneFile.string());
+            }
+            if (mFaults.beforeCommit) return mFaults.beforeCommit();
+            return {};
+        });
+        if (!s) {
+            fs::remove(payload, ec);  // the old scene file still names the old payload
+            return s;
+        }
+        syncDirectory(dir);
+        for (const auto& [n, path] : payloads(dir, stem)) {
+            if (n != generation) fs::remove(path, ec);
+        }
+        return {};
+    }
+
+    engine::Result<engine::world::Scene> load(const fs::path& sceneFile) override {
+        return engine::world::loadSceneFile(sceneFile);
+    }
+
+    bool isSave(const fs::path& sceneFile) const override {
+        std::ifstream in(sceneFile);
+        std::string first;
+        std::getline(in, first);
+        return first == std::string("# ") + kSaveMarker;
+    }
+
+private:
+    SaveFaults mFaults;
+};
+
+}  // namespace
+
+std::unique_ptr<WorldStore> makeWorldStore(SaveFaults faults) { return std::make_unique<BrickPayloadStore>(std::move(faults)); }
+
+}  // namespace game

@@ -1,0 +1,51 @@
+// `vox play [WORLD]`: the play/edit sandbox (game/sandbox.h). This file only maps options.
+#include "commands.h"
+#include "game/sandbox.h"
+
+namespace vox {
+
+void addPlayCommand(CLI::App& app, int& exitCode) {
+    auto* cmd = app.add_subcommand("play", "Play in and edit a world in a window (needs a display)");
+    auto o = std::make_shared<game::PlayOptions>();
+    auto size = std::make_shared<std::string>("1280x720");
+    auto lighting = std::make_shared<LightingOptions>();
+    cmd->add_option("world", o->world, "World name (worlds/NAME.toml) or scene file; default: sandbox");
+    cmd->add_option("--save", o->savePath, "Where Ctrl+S saves (default: the world if it is a save, else saves/NAME.toml)");
+    cmd->add_option("--camera", o->camera, "Camera preset to start from (default: the scene's first)");
+    cmd->add_option("--size", *size, "Window size WIDTHxHEIGHT")->capture_default_str();
+    cmd->add_option("--render-scale", o->renderScale,
+                    "Render resolution as a fraction of the window's (1/16..1); fixes it (default: start at 0.25 and "
+                    "adapt to keep frames near --target-ms)");
+    cmd->add_option("--target-ms", o->targetFrameMs, "Frame time the automatic render scale aims at")->capture_default_str();
+    cmd->add_option("--script", o->scriptPath, "Replay scripted input from FILE (format: game/script_player.h)");
+    cmd->add_option("--frames", o->maxFrames, "Quit after this many frames (0: no limit)")->capture_default_str();
+    cmd->add_option("--edit-log", o->editLogPath, "Write every edit, undo, redo, save and screenshot to FILE");
+    cmd->add_option("--autosave-minutes", o->autosaveMinutes, "Autosave interval to SAVE.autosave.toml (0: off)")
+        ->capture_default_str();
+    cmd->add_option("--undo-mb", o->undoMegabytes, "Memory budget of the undo history in MiB")->capture_default_str();
+    cmd->add_flag("!--no-hud", o->hud, "Start with the HUD hidden (Tab shows it)");
+    addLightingOptions(*cmd, *lighting);
+    cmd->callback([o, size, lighting, cmd, &exitCode] {
+        auto settings = lightingSettings(*lighting);
+        if (!settings) {
+            exitCode = fail(settings.error());
+            return;
+        }
+        o->lighting = *settings;
+        o->captureCommand = !cmd->get_parent()->get_subcommands([](const CLI::App* a) { return a->get_name() == "capture"; }).empty();
+        auto parsed = parseSize(*size, "--size");
+        if (!parsed) {
+            exitCode = fail(parsed.error());
+            return;
+        }
+        if (!(o->renderScale >= 1.0f / 16.0f && o->renderScale <= 1.0f)) {
+            exitCode = fail(engine::makeError("--render-scale must be in [0.0625, 1], got {}", o->renderScale));
+            return;
+        }
+        o->windowSize = *parsed;
+        o->autoScale = cmd->count("--render-scale") == 0;
+        exitCode = game::runPlay(*o);
+    });
+}
+
+}  // namespace vox
