@@ -35,6 +35,12 @@ std::string human(std::uint64_t bytes) {
     return fmt::format("{} B", bytes);
 }
 
+bool importableType(const vdb::GridBase& g) {
+    return g.isType<vdb::FloatGrid>() || g.isType<vdb::DoubleGrid>() || g.isType<vdb::Int32Grid>() ||
+           g.isType<vdb::Int64Grid>() || g.isType<vdb::BoolGrid>() || g.isType<vdb::MaskGrid>() ||
+           g.isType<vdb::Vec3SGrid>() || g.isType<vdb::Vec3DGrid>();
+}
+
 std::string describeTransform(const vdb::math::Transform& xf) {
     if (!xf.isLinear()) return fmt::format("{} (not linear: cannot be imported)", xf.mapType());
     vdb::Mat4d m = xf.baseMap()->getAffineMap()->getMat4();
@@ -77,26 +83,41 @@ Result<VdbFileInfo> describeVdbFile(const fs::path& path, const VdbImportOptions
             }
             // One grid's topology at a time; a damaged grid is reported, not fatal to the others.
             try {
-                vdb::GridBase::Ptr grid = reader.readTopology(i);
+                vdb::GridBase::Ptr grid = reader.readHeader(i);
                 g.type = grid->valueType();
                 g.gridClass = vdb::GridBase::gridClassToString(grid->getGridClass());
                 g.transform = describeTransform(grid->transform());
                 vdb::Vec3d vs = grid->voxelSize();
                 g.voxelSize = glm::dvec3(vs.x(), vs.y(), vs.z());
-                g.activeVoxels = grid->activeVoxelCount();
-                g.leaves = grid->baseTree().leafCount();
-                g.activeTiles = grid->baseTree().activeTileCount();
-                vdb::CoordBBox box = grid->evalActiveVoxelBoundingBox();
-                if (!box.empty())
-                    g.bounds = {glm::ivec3(box.min().x(), box.min().y(), box.min().z()),
-                                glm::ivec3(box.max().x(), box.max().y(), box.max().z()) + 1};
-                auto mem = vdb::DynamicPtrCast<const vdb::Int64Metadata>((*grid)[vdb::GridBase::META_FILE_MEM_BYTES]);
-                g.memoryBytes = mem ? std::uint64_t(std::max<std::int64_t>(mem->value(), 0)) : grid->memUsage();
                 g.metadata = listMetadata(*grid);
+                auto meta = [&](const char* key) { return vdb::DynamicPtrCast<const vdb::Int64Metadata>((*grid)[key]); };
+                auto coord = [&](const char* key) { return vdb::DynamicPtrCast<const vdb::Vec3IMetadata>((*grid)[key]); };
+                if (importableType(*grid)) {
+                    grid = reader.readTopology(i);
+                    g.activeVoxels = grid->activeVoxelCount();
+                    g.leaves = grid->baseTree().leafCount();
+                    g.activeTiles = grid->baseTree().activeTileCount();
+                    vdb::CoordBBox box = grid->evalActiveVoxelBoundingBox();
+                    if (!box.empty())
+                        g.bounds = {glm::ivec3(box.min().x(), box.min().y(), box.min().z()),
+                                    glm::ivec3(box.max().x(), box.max().y(), box.max().z()) + 1};
+                    auto mem = meta(vdb::GridBase::META_FILE_MEM_BYTES);
+                    g.memoryBytes = mem ? std::uint64_t(std::max<std::int64_t>(mem->value(), 0)) : grid->memUsage();
+                } else {
+                    // Not a type we load: report what the writer recorded about it.
+                    g.note = "type not importable; counts from the file's metadata";
+                    if (auto count = meta(vdb::GridBase::META_FILE_VOXEL_COUNT)) g.activeVoxels = std::uint64_t(std::max<std::int64_t>(count->value(), 0));
+                    if (auto mem = meta(vdb::GridBase::META_FILE_MEM_BYTES)) g.memoryBytes = std::uint64_t(std::max<std::int64_t>(mem->value(), 0));
+                    auto lo = coord(vdb::GridBase::META_FILE_BBOX_MIN), hi = coord(vdb::GridBase::META_FILE_BBOX_MAX);
+                    if (lo && hi && g.activeVoxels > 0)
+                        g.bounds = {glm::ivec3(lo->value().x(), lo->value().y(), lo->value().z()),
+                                    glm::ivec3(hi->value().x(), hi->value().y(), hi->value().z()) + 1};
+                }
             } catch (const std::bad_alloc&) {
                 throw;  // over the budget: the whole call fails with the budget's message
             } catch (...) {
-                g.problem = vdbError(path, nullptr).message;
+                std::string message = vdbError(path, nullptr).message;
+                g.problem = message.substr(std::min(message.size(), path.string().size() + 2));
             }
             out.grids.push_back(std::move(g));
         }
@@ -127,7 +148,7 @@ std::string formatVdbFileInfo(const VdbFileInfo& info) {
             s += fmt::format(" -- {}\n", g.problem);
             continue;
         }
-        s += fmt::format(", class {}\n", g.gridClass);
+        s += fmt::format(", class {}{}\n", g.gridClass, g.note.empty() ? "" : " (" + g.note + ")");
         s += fmt::format("    voxels     {} active ({} leaves, {} active tiles){}\n", g.activeVoxels, g.leaves,
                          g.activeTiles, g.activeVoxels == 0 ? ": empty" : "");
         if (!g.bounds.empty())

@@ -25,6 +25,7 @@ struct VdbGridInfo {
     world::Box bounds;                 // active voxels, index space (empty if none)
     std::uint64_t memoryBytes = 0;     // in memory when fully loaded (OpenVDB's file_mem_bytes or an estimate)
     std::vector<std::pair<std::string, std::string>> metadata;
+    std::string note;                  // e.g. counts taken from metadata
     std::string problem;               // set when the grid could not be read
 };
 

@@ -1,7 +1,9 @@
 #include "io/vdb_reader.h"
 
 #include <algorithm>
+#include <memory>
 #include <mutex>
+#include <type_traits>
 #include <new>
 #include <system_error>
 
@@ -34,6 +36,68 @@ std::string detail(const vdb::Exception& e) {
     std::size_t colon = what.find(": ");
     if (colon != std::string::npos && colon < 24 && what.find(' ') > colon) what = what.substr(colon + 2);
     return oneLine(what);
+}
+
+// Walks a tree's topology exactly as RootNode/InternalNode/LeafNode::readTopology() would, but
+// owning everything it allocates. Why: OpenVDB 10's RootNode::readTopology() allocates each
+// top-level child with a bare `new` and only stores it after the child's subtree has been read,
+// so an exception anywhere below (damaged masks, a chunk that does not decompress) leaks the
+// whole subtree. Walking first means OpenVDB only ever reads topology that is known to be good.
+template <typename NodeT>
+void walkNode(std::istream& is, bool fromHalf, std::uint32_t version) {
+    typename NodeT::NodeMaskType valueMask;
+    if constexpr (NodeT::LEVEL == 0) {
+        valueMask.load(is);
+    } else {
+        typename NodeT::NodeMaskType childMask;
+        childMask.load(is);
+        valueMask.load(is);
+        const bool oldVersion = version < vdb::OPENVDB_FILE_VERSION_NODE_MASK_COMPRESSION;
+        const vdb::Index count = oldVersion ? childMask.countOff() : NodeT::NUM_VALUES;
+        std::unique_ptr<typename NodeT::ValueType[]> values(new typename NodeT::ValueType[count]);
+        vdb::io::readCompressedValues(is, values.get(), count, valueMask, fromHalf);
+        for (auto it = childMask.beginOn(); it; ++it) walkNode<typename NodeT::ChildNodeType>(is, fromHalf, version);
+    }
+}
+
+template <typename TreeT>
+void walkTopology(std::istream& is, bool fromHalf, std::uint32_t version, std::uint64_t fileBytes) {
+    using RootT = typename TreeT::RootNodeType;
+    using ValueT = typename RootT::ValueType;
+    std::int32_t buffers = 0;  // TreeBase::readTopology(): always 1 since OpenVDB 3 (it only warns otherwise)
+    is.read(reinterpret_cast<char*>(&buffers), sizeof(buffers));
+    if (buffers != 1) throw vdb::IoError("multi-buffer trees are not supported (" + std::to_string(buffers) + " buffers)");
+    ValueT background;
+    is.read(reinterpret_cast<char*>(&background), sizeof(ValueT));
+    vdb::io::setGridBackgroundValuePtr(is, &background);
+    vdb::Index tiles = 0, children = 0;
+    is.read(reinterpret_cast<char*>(&tiles), sizeof(tiles));
+    is.read(reinterpret_cast<char*>(&children), sizeof(children));
+    const std::uint64_t remaining = fileBytes - std::uint64_t(is.tellg());
+    const std::uint64_t tileBytes = 3 * sizeof(std::int32_t) + sizeof(ValueT) + sizeof(bool);
+    if (std::uint64_t(tiles) * tileBytes + std::uint64_t(children) * 12 > remaining)
+        throw std::ios_base::failure("root node counts run past the end of the file");
+    is.seekg(std::streamoff(std::uint64_t(tiles) * tileBytes), std::ios_base::cur);
+    for (vdb::Index n = 0; n < children; ++n) {
+        std::int32_t origin[3];
+        is.read(reinterpret_cast<char*>(origin), sizeof(origin));
+        walkNode<typename RootT::ChildNodeType>(is, fromHalf, version);
+    }
+    vdb::io::setGridBackgroundValuePtr(is, nullptr);
+}
+
+// Grid types whose topology can be checked (and so read); the ones import and info use.
+template <typename F>
+bool withCheckedTreeType(const vdb::GridBase& g, F&& f) {
+    if (g.isType<vdb::FloatGrid>()) return f(static_cast<vdb::FloatTree*>(nullptr)), true;
+    if (g.isType<vdb::DoubleGrid>()) return f(static_cast<vdb::DoubleTree*>(nullptr)), true;
+    if (g.isType<vdb::Int32Grid>()) return f(static_cast<vdb::Int32Tree*>(nullptr)), true;
+    if (g.isType<vdb::Int64Grid>()) return f(static_cast<vdb::Int64Tree*>(nullptr)), true;
+    if (g.isType<vdb::BoolGrid>()) return f(static_cast<vdb::BoolTree*>(nullptr)), true;
+    if (g.isType<vdb::MaskGrid>()) return f(static_cast<vdb::MaskTree*>(nullptr)), true;
+    if (g.isType<vdb::Vec3SGrid>()) return f(static_cast<vdb::Vec3STree*>(nullptr)), true;
+    if (g.isType<vdb::Vec3DGrid>()) return f(static_cast<vdb::Vec3DTree*>(nullptr)), true;
+    return false;
 }
 
 }  // namespace
@@ -235,6 +299,15 @@ vdb::GridBase::Ptr VdbReader::read(std::size_t index, Depth depth, const vdb::Co
         grid->setTree(parent->baseTreePtr());
         return grid;
     }
+    const std::streamoff topology = mStream.tellg();
+    const bool checked = withCheckedTreeType(*grid, [&](auto* tree) {
+        using TreeT = std::remove_pointer_t<decltype(tree)>;
+        walkTopology<TreeT>(mStream, grid->saveFloatAsHalf(), mFormatVersion, mFileBytes);
+    });
+    if (!checked)
+        throw vdb::TypeError("grid '" + oneLine(gd.gridName()) + "' has type " + grid->valueType() +
+                             ", whose nodes this reader does not load");
+    mStream.seekg(topology);
     grid->readTopology(mStream);
     if (depth == Depth::Region) grid->readBuffers(mStream, clip);
     return grid;
