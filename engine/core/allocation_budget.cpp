@@ -19,13 +19,15 @@ std::atomic<std::int64_t> gPeak{0};
 std::atomic<std::uint64_t> gTotalLimit{0};
 std::atomic<std::uint64_t> gSingleLimit{0};
 std::atomic<std::uint64_t> gRefused{0};
+std::atomic<bool> gSoft{false};  // inside a Headroom: the total may be exceeded
 
 void* allocate(std::size_t n, std::size_t align) {
     const bool active = gActive.load(std::memory_order_relaxed);
     if (active) [[unlikely]] {
         std::int64_t used = gUsed.load(std::memory_order_relaxed);
         std::uint64_t after = used > 0 ? std::uint64_t(used) + n : n;
-        if (n > gSingleLimit.load(std::memory_order_relaxed) || after > gTotalLimit.load(std::memory_order_relaxed)) {
+        if (n > gSingleLimit.load(std::memory_order_relaxed) ||
+            (after > gTotalLimit.load(std::memory_order_relaxed) && !gSoft.load(std::memory_order_relaxed))) {
             std::uint64_t none = 0;
             gRefused.compare_exchange_strong(none, n ? n : 1);
             throw std::bad_alloc();
@@ -67,7 +69,10 @@ AllocationBudget::AllocationBudget(std::uint64_t totalBytes, std::uint64_t singl
     gActive = true;
 }
 
-AllocationBudget::~AllocationBudget() { gActive = false; }
+AllocationBudget::~AllocationBudget() {
+    gActive = false;
+    gSoft = false;
+}
 
 bool AllocationBudget::exceeded() const { return gRefused.load() != 0; }
 std::uint64_t AllocationBudget::refusedBytes() const { return gRefused.load(); }
@@ -78,6 +83,27 @@ std::uint64_t AllocationBudget::usedBytes() const {
 std::uint64_t AllocationBudget::peakBytes() const {
     std::int64_t p = gPeak.load();
     return p > 0 ? std::uint64_t(p) : 0;
+}
+
+void AllocationBudget::require(std::uint64_t bytes) {
+    if (!gActive.load()) return;
+    std::int64_t used = gUsed.load();
+    std::uint64_t after = (used > 0 ? std::uint64_t(used) : 0) + bytes;
+    if (after > gTotalLimit.load()) {
+        std::uint64_t none = 0;
+        gRefused.compare_exchange_strong(none, bytes ? bytes : 1);
+        throw std::bad_alloc();
+    }
+}
+
+AllocationBudget::Headroom::Headroom(std::uint64_t bytes) : mWasSoft(gSoft.load()) {
+    require(bytes);
+    gSoft = true;
+}
+AllocationBudget::Headroom::~Headroom() { gSoft = mWasSoft; }
+void AllocationBudget::Headroom::finish() {
+    gSoft = mWasSoft;
+    require(0);
 }
 
 AllocationBudget::LargeAllocations::LargeAllocations() : mSaved(gSingleLimit.load()) {

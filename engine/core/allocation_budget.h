@@ -30,6 +30,27 @@ public:
     std::uint64_t peakBytes() const;
     std::uint64_t totalBytes() const { return mTotal; }
 
+    // Throws std::bad_alloc, counted as a refused request, when `bytes` more would not fit in the
+    // active budget; for callers that know the size of a coming burst of small allocations and
+    // must not be interrupted half way (a library that is not exception-safe). No-op without a budget.
+    static void require(std::uint64_t bytes);
+
+    // For calls into code that is not exception-safe when an allocation fails (OpenVDB's tree
+    // reading leaks or corrupts state): require(bytes) on entry, then let the total be exceeded
+    // without throwing inside the call; finish() throws, at a safe point, if it was. The
+    // per-allocation ceiling still applies.
+    class Headroom {
+    public:
+        explicit Headroom(std::uint64_t bytes);
+        ~Headroom();
+        Headroom(const Headroom&) = delete;
+        Headroom& operator=(const Headroom&) = delete;
+        void finish();
+
+    private:
+        bool mWasSoft;
+    };
+
     // Within its scope, single requests up to the whole budget are allowed: for the engine's own
     // large buffers (the world's top grid and brick pool), which are sized from checked figures.
     class LargeAllocations {

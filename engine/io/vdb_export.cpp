@@ -23,7 +23,7 @@ class StreamingVdbWriter : private vdb::io::Archive {
 public:
     using GridMaker = std::function<vdb::GridBase::Ptr()>;
 
-    void write(std::ostream& os, const vdb::MetaMap& fileMetadata, const std::vector<GridMaker>& makers) const {
+    void writeStreamed(std::ostream& os, const vdb::MetaMap& fileMetadata, const std::vector<GridMaker>& makers) const {
         vdb::io::StreamMetadata::Ptr streamMetadata = std::make_shared<vdb::io::StreamMetadata>();
         vdb::io::setStreamMetadataPtr(os, streamMetadata, /*transfer=*/false);
         vdb::io::setDataCompression(os, compression());
@@ -147,7 +147,7 @@ Status exportVdb(const world::Scene& scene, const fs::path& path, const VdbExpor
             std::ofstream os(temp, std::ios::out | std::ios::binary | std::ios::trunc);
             if (!os) return makeError("{}: cannot create file", path.string());
             os.exceptions(std::ios::failbit | std::ios::badbit);
-            StreamingVdbWriter().write(os, fileMetadata, makers);
+            StreamingVdbWriter().writeStreamed(os, fileMetadata, makers);
             os.close();
         } catch (const std::ios_base::failure&) {
             return makeError("{}: write failed (disk full or not writable?)", path.string());

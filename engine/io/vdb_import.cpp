@@ -3,18 +3,25 @@
 #include <openvdb/tools/Interpolation.h>
 
 #include <algorithm>
+#include <array>
+#include <bitset>
 #include <cctype>
+#include <fstream>
 #include <cmath>
 #include <functional>
 #include <memory>
 #include <unordered_map>
 
 #include <fmt/format.h>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 #include "core/allocation_budget.h"
 #include "io/colour_quantizer.h"
 #include "io/vdb_layout.h"
 #include "io/vdb_reader.h"
+#include "io/vdb_tree_stream.h"
 #include "world/scene_file.h"
 
 namespace engine::io {
@@ -264,6 +271,12 @@ struct Mapping {
         }
         return j;
     }
+    // Exact mappings: the world voxel of source voxel i.
+    glm::ivec3 exactTarget(glm::ivec3 i) const {
+        glm::ivec3 j;
+        for (int a = 0; a < 3; ++a) j[a] = sign[a] > 0 ? i[perm[a]] : -i[perm[a]] - 1;
+        return j + glm::ivec3(offset);
+    }
     glm::ivec3 nearest(glm::ivec3 t) const {
         if (exact) return t - glm::ivec3(offset);
         glm::ivec3 j;
@@ -290,6 +303,16 @@ struct Mapping {
 // ---------------------------------------------------------------------------------------------
 
 enum CellMark : std::uint8_t { kCellNone = 0, kCellUniform = 1, kCellSample = 2 };
+
+// Calls f for each active voxel of a streamed leaf that lies in `box` (OpenVDB's leaf order: z fastest).
+template <typename F>
+void forLeafVoxels(const vdb::Coord& origin, const Sample* samples, const Box& box, F&& f) {
+    for (int i = 0; i < 512; ++i) {
+        if (!samples[i].active) continue;
+        const glm::ivec3 p(origin.x() + (i >> 6), origin.y() + ((i >> 3) & 7), origin.z() + (i & 7));
+        if (box.contains(p)) f(samples[i]);
+    }
+}
 
 bool isColourName(std::string name) {
     for (char& c : name) c = char(std::tolower(static_cast<unsigned char>(c)));
@@ -320,8 +343,8 @@ std::vector<world::Material> defaultHeightMaterials() {
 // One import, from the plan to the last slab.
 class Importer {
 public:
-    Importer(const fs::path& path, const VdbImportOptions& options, std::uint64_t fileBytes)
-        : mPath(path), mFile(path.string()), mOptions(options), mReader(path), mFileBytes(fileBytes) {}
+    Importer(const fs::path& path, const VdbImportOptions& options)
+        : mPath(path), mFile(path.string()), mOptions(options), mReader(path) {}
 
     // target: the scene an importVdbInto() writes into; null for a new world.
     void plan(const world::Scene* target);
@@ -335,12 +358,27 @@ private:
     void readTopology();
     void readColourTopology();
     void forEachSolidTile(const SourceGrid& topology, const std::function<void(const Box&, const Sample&)>& f) const;
-    void place(const world::Scene* target);
+    void placeAxesAndScale();
+    void placeOffset(const world::Scene* target);
+    void readTopologyStreaming();
+    template <typename TreeT>
+    void readTopologyStreamingTyped();
     template <typename OnUniform>
     void markCells(const SourceGrid& topology, std::vector<std::uint8_t>& marks, OnUniform&& onUniform);
     void makeSlabs(const std::vector<std::uint8_t>& marks);
     void estimate(const world::Scene* target);
     void buildPalette();
+    // Streaming: a voxel-for-voxel copy read leaf by leaf in file order, never building an
+    // OpenVDB tree (io/vdb_tree_stream.h). Solid tiles come first, then each leaf's voxels.
+    bool decideStreaming() const;
+    void streamPass(const std::function<void(const Box&, const Sample&)>& onTile,
+                    const std::function<void(const vdb::Coord&, const Sample*)>& onLeaf);
+    template <typename TreeT>
+    void streamPassTyped(const std::function<void(const Box&, const Sample&)>& onTile,
+                         const std::function<void(const vdb::Coord&, const Sample*)>& onLeaf);
+    void writeTileRegion(BrickGrid& grid, const Box& source, const Sample& s);
+    void writeLeaf(BrickGrid& grid, const vdb::Coord& origin, const Sample* samples);
+    void noteWrite(BrickGrid& grid);
     void scanActive(std::size_t index, const std::vector<Box>& leaves, const Box& region,
                     const std::function<void(const Sample&)>& f);
     bool solidAt(glm::ivec3 t, Sample& s) const;
@@ -355,7 +393,6 @@ private:
     std::string mFile;
     const VdbImportOptions& mOptions;
     VdbReader mReader;
-    std::uint64_t mFileBytes;
     VdbImportReport mReport;
     VdbImportPlan& mPlan = mReport.plan;
 
@@ -372,6 +409,8 @@ private:
     bool mSameXform = true;
     bool mTrilinear = false;   // level set, finer world on every axis
     bool mFootprint = false;   // level set, coarser world on some axis
+    bool mStreaming = false;   // see streamPass()
+    int mWritesSinceClear = 0;
 
     Mapping mMap;
     Box mSourceBox;  // source index box imported
@@ -408,18 +447,39 @@ void Importer::plan(const world::Scene* target) {
     }
     selectGrid();
     selectColourGrid();
-    readTopology();  // leaves mShape holding the topology
-    place(target);
-    std::vector<std::uint8_t> marks(std::size_t(volume(Box{glm::ivec3(0), (mWorldSize + 7) / 8})), kCellNone);
-    // Counting pass: which cells need voxels, which fill whole from tiles.
-    markCells(*mShape, marks, [&](glm::ivec3, int) {});
-    for (std::uint8_t m : marks) {
-        mPlan.sampledCells += (m == kCellSample);
-        mPlan.uniformCells += (m == kCellUniform);
+    placeAxesAndScale();
+    mStreaming = decideStreaming();
+    if (mStreaming) readTopologyStreaming();
+    else readTopology();  // leaves mShape holding the topology
+    placeOffset(target);
+    if (mStreaming) {
+        // Leaves give the cells that need voxels; tiles were counted while streaming.
+        std::vector<std::uint8_t> marks(std::size_t(volume(Box{glm::ivec3(0), (mWorldSize + 7) / 8})), kCellNone);
+        const glm::ivec3 cells = (mWorldSize + 7) / 8;
+        for (const Box& leaf : mLeaves) {
+            Box w = mMap.span(mMap.orient(leaf), 0.0).intersect(mWorldBox);
+            if (w.empty()) continue;
+            for (int z = w.min.z >> 3; z <= (w.max.z - 1) >> 3; ++z)
+                for (int y = w.min.y >> 3; y <= (w.max.y - 1) >> 3; ++y)
+                    for (int x = w.min.x >> 3; x <= (w.max.x - 1) >> 3; ++x) {
+                        std::uint8_t& m = marks[std::size_t(x) + std::size_t(cells.x) * (std::size_t(y) + std::size_t(cells.y) * std::size_t(z))];
+                        mPlan.sampledCells += (m == kCellNone);
+                        m = kCellSample;
+                    }
+        }
+        mLeaves = {};  // the import streams the leaves again
+    } else {
+        std::vector<std::uint8_t> marks(std::size_t(volume(Box{glm::ivec3(0), (mWorldSize + 7) / 8})), kCellNone);
+        // Counting pass: which cells need voxels, which fill whole from tiles.
+        markCells(*mShape, marks, [&](glm::ivec3, int) {});
+        for (std::uint8_t m : marks) {
+            mPlan.sampledCells += (m == kCellSample);
+            mPlan.uniformCells += (m == kCellUniform);
+        }
+        mShape->attach(nullptr);
+        readColourTopology();
+        makeSlabs(marks);
     }
-    mShape->attach(nullptr);
-    readColourTopology();
-    makeSlabs(marks);
     estimate(target);
 }
 
@@ -648,6 +708,74 @@ void Importer::forEachSolidTile(const SourceGrid& topology, const std::function<
     });
 }
 
+void Importer::readTopologyStreaming() {
+    const vdb::GridBase& g = *mGridHeader;
+    if (g.isType<vdb::FloatGrid>()) return readTopologyStreamingTyped<vdb::FloatTree>();
+    if (g.isType<vdb::DoubleGrid>()) return readTopologyStreamingTyped<vdb::DoubleTree>();
+    if (g.isType<vdb::Int32Grid>()) return readTopologyStreamingTyped<vdb::Int32Tree>();
+    if (g.isType<vdb::Int64Grid>()) return readTopologyStreamingTyped<vdb::Int64Tree>();
+    if (g.isType<vdb::Vec3SGrid>()) return readTopologyStreamingTyped<vdb::Vec3STree>();
+    if (g.isType<vdb::Vec3DGrid>()) return readTopologyStreamingTyped<vdb::Vec3DTree>();
+    throw vdb::TypeError("grid type cannot be streamed");
+}
+
+// readTopology() without an OpenVDB tree: the same figures from one walk over the nodes.
+template <typename TreeT>
+void Importer::readTopologyStreamingTyped() {
+    using Stream = TreeStream<TreeT>;
+    using ValueT = typename TreeT::ValueType;
+    const Box crop = mOptions.crop ? *mOptions.crop : Box{glm::ivec3(INT32_MIN / 2), glm::ivec3(INT32_MAX / 2)};
+    vdb::GridBase::Ptr header = mReader.openTree(mGridIndex);
+    const bool half = header->saveFloatAsHalf();
+    std::istream& topology = mReader.stream();
+    Box content;
+    auto tile = [&](const vdb::CoordBBox& box, const ValueT& value, bool active) {
+        mPlan.sourceTiles++;
+        const Sample s = toSample(value, active);
+        if (active) mPlan.sourceActiveVoxels += volume(toBox(box));
+        if (!solid(s)) return;
+        const Box b = toBox(box).intersect(crop);
+        if (b.empty()) return;
+        content = unite(content, b);
+        mPlan.uniformCells += volume(b) / world::kBrickVoxels;
+    };
+    const typename Stream::Root root = Stream::walk(topology, mReader.formatVersion(), half, mReader.fileBytes(), nullptr, tile);
+    Stream::stream(topology, nullptr, mReader.formatVersion(), half, root, tile,
+                   [&](const vdb::Coord& origin, const typename Stream::LeafMask& mask) {
+                       mPlan.sourceLeaves++;
+                       const std::uint64_t on = mask.countOn();
+                       mPlan.sourceActiveVoxels += on;
+                       const glm::ivec3 o(origin.x(), origin.y(), origin.z());
+                       Box b;
+                       if (mKind == Kind::LevelSet) {
+                           b = Box{o, o + 8};
+                       } else if (on) {
+                           b = Box{glm::ivec3(INT32_MAX), glm::ivec3(INT32_MIN)};
+                           for (auto it = mask.beginOn(); it; ++it) {
+                               const vdb::Index i = it.pos();
+                               const glm::ivec3 p = o + glm::ivec3(int(i >> 6), int((i >> 3) & 7), int(i & 7));
+                               b.min = glm::min(b.min, p);
+                               b.max = glm::max(b.max, p + 1);
+                           }
+                       }
+                       b = b.intersect(crop);
+                       if (!b.empty()) {
+                           content = unite(content, b);
+                           mLeaves.push_back(b);
+                       }
+                       return false;  // planning needs no values
+                   },
+                   {});
+    mLeaves.shrink_to_fit();
+    mSourceBox = content.intersect(crop);
+    if (mSourceBox.empty() && mOwn && !mOptions.crop) mSourceBox = Box{glm::ivec3(0), glm::ivec3(1)};  // an all-air world
+    if (mSourceBox.empty()) {
+        if (mOptions.crop) failImport("{}: nothing of grid '{}' lies inside the crop box", mFile, mPlan.grid);
+        failImport("{}: grid '{}' is empty (no active voxels)", mFile, mPlan.grid);
+    }
+    mPlan.sourceBox = mSourceBox;
+}
+
 void Importer::readColourTopology() {
     if (mColourIndex >= 0) {
         mColour = makeSource(*mReader.readHeader(std::size_t(mColourIndex)));
@@ -661,7 +789,7 @@ void Importer::readColourTopology() {
     }
 }
 
-void Importer::place(const world::Scene* target) {
+void Importer::placeAxesAndScale() {
     const std::string creatorFile = metaString(mReader.fileMetadata(), "creator");
     const std::string creatorGrid = metaString(*mGridHeader, "creator");
     bool upZ = mOptions.up == UpAxis::Z;
@@ -701,6 +829,11 @@ void Importer::place(const world::Scene* target) {
         mPlan.notes.push_back(mTrilinear ? "level set resampled finer: inside where the trilinear distance < 0"
                                          : "level set resampled coarser: conservative (solid if any source voxel in it is)");
     }
+}
+
+void Importer::placeOffset(const world::Scene* target) {
+    const bool upZ = mPlan.upZ;
+    const bool unitScale = mMap.scale == glm::dvec3(1.0);
 
     Box oriented = mMap.orient(mSourceBox);
     if (mOptions.offset) {
@@ -841,6 +974,10 @@ void Importer::estimate(const world::Scene* target) {
                   mColourLeaves.capacity() * sizeof(Box);
     if (mRule == MaterialRule::Colour) source += 65536 * 96;  // histogram and mapper memo
     source += 1 << 20;  // the reader: stream buffer, descriptors, file metadata
+    if (mStreaming) {
+        // No OpenVDB tree is built, neither for planning nor for the import.
+        source = 2 << 20;  // node masks on one path, one leaf's values, two stream buffers
+    }
     mPlan.worldBytes = worldBytes;
     mPlan.sourceBytes = source;
     mPlan.estimateBytes = worldBytes + source;
@@ -995,12 +1132,18 @@ void Importer::buildPalette() {
                                        world::kMaxMaterials - 1);
                     }
                 };
-                {
+                if (mStreaming) {
+                    streamPass([&](const Box&, const Sample& s) { note(std::int64_t(s.scalar)); },
+                               [&](const vdb::Coord& origin, const Sample* samples) {
+                                   forLeafVoxels(origin, samples, mSourceBox, [&](const Sample& v) { note(std::int64_t(v.scalar)); });
+                               });
+                } else {
                     auto topology = makeSource(*mGridHeader);
                     topology->attach(mReader.readTopology(mGridIndex));
                     forEachSolidTile(*topology, [&](const Box&, const Sample& s) { note(std::int64_t(s.scalar)); });
+                    topology.reset();
+                    scanActive(mGridIndex, mLeaves, mSourceBox, [&](const Sample& v) { note(std::int64_t(v.scalar)); });
                 }
-                scanActive(mGridIndex, mLeaves, mSourceBox, [&](const Sample& s) { note(std::int64_t(s.scalar)); });
                 std::sort(values.begin(), values.end());
                 for (std::int64_t v : values) {
                     mIdLut[v] = int(mMaterials.size());
@@ -1024,12 +1167,18 @@ void Importer::buildPalette() {
                 scanActive(std::size_t(mColourIndex), mColourLeaves, region,
                            [&](const Sample& s) { histogram.add(s.colour); });
             } else {
-                {
+                if (mStreaming) {
+                    streamPass([&](const Box& b, const Sample& s) { histogram.add(s.colour, volume(b.intersect(mSourceBox))); },
+                               [&](const vdb::Coord& origin, const Sample* samples) {
+                                   forLeafVoxels(origin, samples, mSourceBox, [&](const Sample& v) { histogram.add(v.colour); });
+                               });
+                } else {
                     auto topology = makeSource(*mGridHeader);
                     topology->attach(mReader.readTopology(mGridIndex));
                     forEachSolidTile(*topology, [&](const Box& b, const Sample& s) { histogram.add(s.colour, volume(b.intersect(mSourceBox))); });
+                    topology.reset();
+                    scanActive(mGridIndex, mLeaves, mSourceBox, [&](const Sample& v) { histogram.add(v.colour); });
                 }
-                scanActive(mGridIndex, mLeaves, mSourceBox, [&](const Sample& s) { histogram.add(s.colour); });
             }
             std::vector<glm::vec3> palette = quantizeColours(histogram, mOptions.maxColours);
             if (palette.empty()) palette.push_back(glm::vec3(0.7f));
@@ -1043,7 +1192,150 @@ void Importer::buildPalette() {
     }
 }
 
+bool Importer::decideStreaming() const {
+    const vdb::GridBase& g = *mGridHeader;
+    const bool type = g.isType<vdb::FloatGrid>() || g.isType<vdb::DoubleGrid>() || g.isType<vdb::Int32Grid>() ||
+                      g.isType<vdb::Int64Grid>() || g.isType<vdb::Vec3SGrid>() || g.isType<vdb::Vec3DGrid>();
+    return mMap.scale == glm::dvec3(1.0) && mColourIndex < 0 && type && mKind != Kind::Mask &&
+           mReader.formatVersion() >= vdb::OPENVDB_FILE_VERSION_NODE_MASK_COMPRESSION &&
+           mReader.grids()[mGridIndex].parent.empty();
+}
+
+void Importer::streamPass(const std::function<void(const Box&, const Sample&)>& onTile,
+                          const std::function<void(const vdb::Coord&, const Sample*)>& onLeaf) {
+    const vdb::GridBase& g = *mGridHeader;
+    if (g.isType<vdb::FloatGrid>()) return streamPassTyped<vdb::FloatTree>(onTile, onLeaf);
+    if (g.isType<vdb::DoubleGrid>()) return streamPassTyped<vdb::DoubleTree>(onTile, onLeaf);
+    if (g.isType<vdb::Int32Grid>()) return streamPassTyped<vdb::Int32Tree>(onTile, onLeaf);
+    if (g.isType<vdb::Int64Grid>()) return streamPassTyped<vdb::Int64Tree>(onTile, onLeaf);
+    if (g.isType<vdb::Vec3SGrid>()) return streamPassTyped<vdb::Vec3STree>(onTile, onLeaf);
+    if (g.isType<vdb::Vec3DGrid>()) return streamPassTyped<vdb::Vec3DTree>(onTile, onLeaf);
+    throw vdb::TypeError("grid type cannot be streamed");
+}
+
+template <typename TreeT>
+void Importer::streamPassTyped(const std::function<void(const Box&, const Sample&)>& onTile,
+                               const std::function<void(const vdb::Coord&, const Sample*)>& onLeaf) {
+    using Stream = TreeStream<TreeT>;
+    using ValueT = typename TreeT::ValueType;
+    const Box crop = mOptions.crop ? *mOptions.crop : Box{glm::ivec3(INT32_MIN / 2), glm::ivec3(INT32_MAX / 2)};
+    vdb::GridBase::Ptr header = mReader.openTree(mGridIndex);
+    const bool half = header->saveFloatAsHalf();
+    std::istream& topology = mReader.stream();
+    auto tile = [&](const vdb::CoordBBox& box, const ValueT& value, bool active) {
+        const Sample s = toSample(value, active);
+        if (!solid(s)) return;
+        const Box b = toBox(box).intersect(crop);
+        if (!b.empty()) onTile(b, s);
+    };
+    const typename Stream::Root root =
+        Stream::walk(topology, mReader.formatVersion(), half, mReader.fileBytes(), nullptr, tile);
+
+    // A second stream over the same file reads the leaf values while the first walks the nodes;
+    // it carries the same decoding state (format, compression, grid class and metadata).
+    std::ifstream values(mPath, std::ios::in | std::ios::binary);
+    if (!values) throw vdb::IoError("cannot reopen " + mFile);
+    values.exceptions(std::ios::failbit | std::ios::badbit);
+    vdb::io::setVersion(values, vdb::io::getLibraryVersion(topology), vdb::io::getFormatVersion(topology));
+    vdb::io::setDataCompression(values, vdb::io::getDataCompression(topology));
+    vdb::io::setGridClass(values, vdb::io::getGridClass(topology));
+    vdb::io::StreamMetadata::Ptr metadata = vdb::io::getStreamMetadataPtr(topology);
+    vdb::io::setStreamMetadataPtr(values, metadata, /*transfer=*/false);
+    mReader.seekToBuffers(mGridIndex);
+    values.seekg(topology.tellg());
+
+    std::vector<Sample> samples(512);
+    Stream::stream(
+        topology, &values, mReader.formatVersion(), half, root, tile,
+        [&](const vdb::Coord& origin, const typename Stream::LeafMask&) {
+            const glm::ivec3 o(origin.x(), origin.y(), origin.z());
+            return !Box{o, o + 8}.intersect(mSourceBox).empty();
+        },
+        [&](const vdb::Coord& origin, const typename Stream::LeafMask& mask, const ValueT* v) {
+            for (int i = 0; i < 512; ++i) samples[std::size_t(i)] = toSample(v[i], mask.isOn(vdb::Index(i)));
+            onLeaf(origin, samples.data());
+        });
+}
+
+void Importer::writeTileRegion(BrickGrid& grid, const Box& source, const Sample& s) {
+    const Box target = mMap.span(mMap.orient(source), 0.0).intersect(mWorldBox);
+    if (target.empty()) return;
+    const glm::ivec3 lo = target.min >> 3, hi = (target.max - 1) >> 3;
+    for (int cz = lo.z; cz <= hi.z; ++cz)
+        for (int cy = lo.y; cy <= hi.y; ++cy)
+            for (int cx = lo.x; cx <= hi.x; ++cx) {
+                const glm::ivec3 c(cx, cy, cz);
+                const Box cellBox{c * 8, c * 8 + 8};
+                const Box part = cellBox.intersect(target);
+                int material = 0;
+                if (part.min == cellBox.min && part.max == cellBox.max && uniformMaterial(s, cellBox, material)) {
+                    grid.writeCellUniform(c, mRemap[std::size_t(material)]);
+                    mReport.solidVoxels += world::kBrickVoxels;
+                    noteWrite(grid);
+                    continue;
+                }
+                world::BrickVoxels voxels = grid.readCell(c);
+                for (int z = part.min.z; z < part.max.z; ++z)
+                    for (int y = part.min.y; y < part.max.y; ++y)
+                        for (int x = part.min.x; x < part.max.x; ++x) {
+                            voxels[std::size_t(world::brickVoxelIndex(glm::ivec3(x, y, z) & 7))] =
+                                mRemap[std::size_t(materialFor({x, y, z}, s))];
+                            mReport.solidVoxels++;
+                        }
+                grid.writeCell(c, voxels);
+                noteWrite(grid);
+            }
+}
+
+void Importer::writeLeaf(BrickGrid& grid, const vdb::Coord& origin, const Sample* samples) {
+    // A leaf lands in one cell when the offset is leaf-aligned, else in up to eight.
+    struct Part {
+        glm::ivec3 cell;
+        world::BrickVoxels voxels;
+        std::bitset<512> set;
+    };
+    std::array<Part, 8> parts;
+    int used = 0;
+    for (int i = 0; i < 512; ++i) {
+        const glm::ivec3 src(origin.x() + (i >> 6), origin.y() + ((i >> 3) & 7), origin.z() + (i & 7));
+        if (!mSourceBox.contains(src) || !solid(samples[i])) continue;
+        const glm::ivec3 t = mMap.exactTarget(src);
+        if (!mWorldBox.contains(t)) continue;
+        const glm::ivec3 cell = t >> 3;
+        int p = 0;
+        while (p < used && parts[std::size_t(p)].cell != cell) ++p;
+        if (p == used) {
+            parts[std::size_t(used)].cell = cell;
+            parts[std::size_t(used)].set.reset();
+            ++used;
+        }
+        const int local = world::brickVoxelIndex(t & 7);
+        parts[std::size_t(p)].voxels[std::size_t(local)] = mRemap[std::size_t(materialFor(t, samples[i]))];
+        parts[std::size_t(p)].set.set(std::size_t(local));
+        mReport.solidVoxels++;
+    }
+    for (int p = 0; p < used; ++p) {
+        Part& part = parts[std::size_t(p)];
+        world::BrickVoxels voxels = grid.readCell(part.cell);
+        for (std::size_t v = 0; v < 512; ++v)
+            if (part.set.test(v)) voxels[v] = part.voxels[v];
+        grid.writeCell(part.cell, voxels);
+        noteWrite(grid);
+    }
+}
+
+void Importer::noteWrite(BrickGrid& grid) {
+    if (++mWritesSinceClear < 4096) return;
+    grid.clearDirty();  // keeps the dirty lists short; an imported world is uploaded whole anyway
+    mWritesSinceClear = 0;
+}
+
 void Importer::run(world::Scene& scene, bool intoExisting) {
+#if defined(__GLIBC__)
+    // Planning freed the source topology (thousands of small nodes); hand those pages back to
+    // the system before the world is built, or they stay resident as heap fragments.
+    malloc_trim(0);
+#endif
     buildPalette();
 
     // Import materials into the scene's palette: appended in order for a new world (so ids stay
@@ -1064,9 +1356,14 @@ void Importer::run(world::Scene& scene, bool intoExisting) {
         AllocationBudget::LargeAllocations large;  // checked by the estimate
         if (!intoExisting) grid = BrickGrid(mWorldSize);
         grid.reserveBricks(std::uint32_t(std::min<std::uint64_t>(grid.liveBricks() + mPlan.sampledCells, 0x7FFFFFF0u)));
-        marks.assign(std::size_t(volume(Box{glm::ivec3(0), (mWorldSize + 7) / 8})), kCellNone);
+        if (!mStreaming) marks.assign(std::size_t(volume(Box{glm::ivec3(0), (mWorldSize + 7) / 8})), kCellNone);
     }
-    {
+    if (mStreaming) {
+        streamPass([&](const Box& tile, const Sample& value) { writeTileRegion(grid, tile, value); },
+                   [&](const vdb::Coord& origin, const Sample* samples) { writeLeaf(grid, origin, samples); });
+        grid.clearDirty();
+        mSlabs.clear();
+    } else {
         auto topology = makeSource(*mGridHeader);
         topology->attach(mReader.readTopology(mGridIndex));
         markCells(*topology, marks, [&](glm::ivec3 c, int material) {
@@ -1154,16 +1451,16 @@ Result<T> runGuarded(const fs::path& path, const VdbImportOptions& options,
 }  // namespace
 
 Result<VdbImportPlan> planVdbImport(const fs::path& path, const VdbImportOptions& options) {
-    return runGuarded<VdbImportPlan>(path, options, [&](std::uint64_t bytes, const AllocationBudget&) {
-        Importer importer(path, options, bytes);
+    return runGuarded<VdbImportPlan>(path, options, [&](std::uint64_t, const AllocationBudget&) {
+        Importer importer(path, options);
         importer.plan(nullptr);
         return importer.report().plan;
     });
 }
 
 Result<world::Scene> importVdb(const fs::path& path, const VdbImportOptions& options, VdbImportReport* report) {
-    return runGuarded<world::Scene>(path, options, [&](std::uint64_t bytes, const AllocationBudget& budget) {
-        Importer importer(path, options, bytes);
+    return runGuarded<world::Scene>(path, options, [&](std::uint64_t, const AllocationBudget& budget) {
+        Importer importer(path, options);
         importer.plan(nullptr);
         world::Scene scene;
         importer.run(scene, /*intoExisting=*/false);
@@ -1175,8 +1472,8 @@ Result<world::Scene> importVdb(const fs::path& path, const VdbImportOptions& opt
 
 Status importVdbInto(world::Scene& scene, const fs::path& path, const VdbImportOptions& options,
                      VdbImportReport* report) {
-    auto done = runGuarded<bool>(path, options, [&](std::uint64_t bytes, const AllocationBudget& budget) {
-        Importer importer(path, options, bytes);
+    auto done = runGuarded<bool>(path, options, [&](std::uint64_t, const AllocationBudget& budget) {
+        Importer importer(path, options);
         importer.plan(&scene);
         importer.run(scene, /*intoExisting=*/true);
         importer.report().peakTrackedBytes = budget.peakBytes();

@@ -1,5 +1,7 @@
 #include "io/vdb_reader.h"
 
+#include "io/vdb_tree_stream.h"
+
 #include <algorithm>
 #include <memory>
 #include <mutex>
@@ -38,54 +40,11 @@ std::string detail(const vdb::Exception& e) {
     return oneLine(what);
 }
 
-// Walks a tree's topology exactly as RootNode/InternalNode/LeafNode::readTopology() would, but
-// owning everything it allocates. Why: OpenVDB 10's RootNode::readTopology() allocates each
-// top-level child with a bare `new` and only stores it after the child's subtree has been read,
-// so an exception anywhere below (damaged masks, a chunk that does not decompress) leaks the
-// whole subtree. Walking first means OpenVDB only ever reads topology that is known to be good.
-template <typename NodeT>
-void walkNode(std::istream& is, bool fromHalf, std::uint32_t version) {
-    typename NodeT::NodeMaskType valueMask;
-    if constexpr (NodeT::LEVEL == 0) {
-        valueMask.load(is);
-    } else {
-        typename NodeT::NodeMaskType childMask;
-        childMask.load(is);
-        valueMask.load(is);
-        const bool oldVersion = version < vdb::OPENVDB_FILE_VERSION_NODE_MASK_COMPRESSION;
-        const vdb::Index count = oldVersion ? childMask.countOff() : NodeT::NUM_VALUES;
-        std::unique_ptr<typename NodeT::ValueType[]> values(new typename NodeT::ValueType[count]);
-        vdb::io::readCompressedValues(is, values.get(), count, valueMask, fromHalf);
-        for (auto it = childMask.beginOn(); it; ++it) walkNode<typename NodeT::ChildNodeType>(is, fromHalf, version);
-    }
-}
-
-template <typename TreeT>
-void walkTopology(std::istream& is, bool fromHalf, std::uint32_t version, std::uint64_t fileBytes) {
-    using RootT = typename TreeT::RootNodeType;
-    using ValueT = typename RootT::ValueType;
-    std::int32_t buffers = 0;  // TreeBase::readTopology(): always 1 since OpenVDB 3 (it only warns otherwise)
-    is.read(reinterpret_cast<char*>(&buffers), sizeof(buffers));
-    if (buffers != 1) throw vdb::IoError("multi-buffer trees are not supported (" + std::to_string(buffers) + " buffers)");
-    ValueT background;
-    is.read(reinterpret_cast<char*>(&background), sizeof(ValueT));
-    vdb::io::setGridBackgroundValuePtr(is, &background);
-    vdb::Index tiles = 0, children = 0;
-    is.read(reinterpret_cast<char*>(&tiles), sizeof(tiles));
-    is.read(reinterpret_cast<char*>(&children), sizeof(children));
-    const std::uint64_t remaining = fileBytes - std::uint64_t(is.tellg());
-    const std::uint64_t tileBytes = 3 * sizeof(std::int32_t) + sizeof(ValueT) + sizeof(bool);
-    if (std::uint64_t(tiles) * tileBytes + std::uint64_t(children) * 12 > remaining)
-        throw std::ios_base::failure("root node counts run past the end of the file");
-    is.seekg(std::streamoff(std::uint64_t(tiles) * tileBytes), std::ios_base::cur);
-    for (vdb::Index n = 0; n < children; ++n) {
-        std::int32_t origin[3];
-        is.read(reinterpret_cast<char*>(origin), sizeof(origin));
-        walkNode<typename RootT::ChildNodeType>(is, fromHalf, version);
-    }
-    vdb::io::setGridBackgroundValuePtr(is, nullptr);
-}
-
+// Every tree is walked (io/vdb_tree_stream.h) before OpenVDB reads it. Why: OpenVDB 10's
+// RootNode::readTopology() allocates each top-level child with a bare `new` and stores it only
+// after the child's subtree has been read, and overwrites a child with a later one of the same
+// origin; a damaged file therefore leaks (or worse) when reading throws half way. Walking first
+// means OpenVDB only ever reads topology known to be good, with its memory needs known.
 // Grid types whose topology can be checked (and so read); the ones import and info use.
 template <typename F>
 bool withCheckedTreeType(const vdb::GridBase& g, F&& f) {
@@ -260,36 +219,56 @@ vdb::GridBase::Ptr VdbReader::readRegion(std::size_t index, const vdb::CoordBBox
     return read(index, Depth::Region, clip);
 }
 
-vdb::GridBase::Ptr VdbReader::read(std::size_t index, Depth depth, const vdb::CoordBBox& clip) {
+vdb::GridBase::Ptr VdbReader::openTree(std::size_t index) {
+    const vdb::io::GridDescriptor& gd = mDescriptors.at(index);
+    if (gd.isInstance()) throw vdb::TypeError("grid '" + oneLine(gd.gridName()) + "' is an instance; read it whole");
+    vdb::GridBase::Ptr grid = readGridStart(index);
+    return grid;  // the stream is at the topology, with this grid's state set until the next read
+}
+
+void VdbReader::seekToBuffers(std::size_t index) {
+    mStream.clear();
+    mDescriptors.at(index).seekToBlocks(mStream);
+}
+
+vdb::GridBase::Ptr VdbReader::readGridStart(std::size_t index) {
     const vdb::io::GridDescriptor& gd = mDescriptors.at(index);
     if (!vdb::GridBase::isRegistered(gd.gridType()))
         throw vdb::TypeError("grid '" + oneLine(gd.gridName()) + "' has the unknown type " + oneLine(gd.gridType()));
     vdb::GridBase::Ptr grid = vdb::GridBase::createGrid(gd.gridType());
-    // Point grids (multi-pass attribute buffers) hold particles, not voxels.
-    const bool points = gd.gridType().find("ptdataidx") != std::string::npos || gd.gridType().find("ptidx") != std::string::npos;
-    if (points && depth != Depth::Header)
-        throw vdb::TypeError("grid '" + oneLine(gd.gridName()) + "' is a point grid, which cannot be read as voxels");
     grid->setSaveFloatAsHalf(gd.saveFloatAsHalf());
-
-    mStream.clear();  // a failed read of another grid must not poison this one
+    mStream.clear();
     // The same per-grid stream set-up as io::Archive::readGrid(): grid class, background and
     // half-float flags travel with the stream and steer how node values decode.
     gd.seekToGrid(mStream);
-    auto streamMetadata = std::make_shared<vdb::io::StreamMetadata>(*mStreamMetadata);
-    streamMetadata->setHalfFloat(grid->saveFloatAsHalf());
-    vdb::io::setStreamMetadataPtr(mStream, streamMetadata, /*transfer=*/false);
-    struct Restore {
-        VdbReader& r;
-        ~Restore() { vdb::io::setStreamMetadataPtr(r.mStream, r.mStreamMetadata, false); }
-    } restore{*this};
+    mGridStreamMetadata = std::make_shared<vdb::io::StreamMetadata>(*mStreamMetadata);
+    mGridStreamMetadata->setHalfFloat(grid->saveFloatAsHalf());
+    vdb::io::setStreamMetadataPtr(mStream, mGridStreamMetadata, /*transfer=*/false);
     vdb::io::setGridClass(mStream, vdb::GRID_UNKNOWN);
     vdb::io::setGridBackgroundValuePtr(mStream, nullptr);
     readGridCompression(mStream);
     grid->readMeta(mStream);
-    streamMetadata->gridMetadata() = static_cast<vdb::MetaMap&>(*grid);
+    // Per-leaf sizes for delayed loading: we never delay-load, and OpenVDB 10 trusts this
+    // table's length when skipping leaves (it asserts, or reads past the end).
+    grid->removeMeta(vdb::GridBase::META_FILE_DELAYED_LOAD);
+    mGridStreamMetadata->gridMetadata() = static_cast<vdb::MetaMap&>(*grid);
     vdb::io::setGridClass(mStream, grid->getGridClass());
     grid->readTransform(mStream);
     if (grid->getName().empty()) grid->setName(gd.gridName());
+    return grid;
+}
+
+vdb::GridBase::Ptr VdbReader::read(std::size_t index, Depth depth, const vdb::CoordBBox& clip) {
+    const vdb::io::GridDescriptor& gd = mDescriptors.at(index);
+    // Point grids (multi-pass attribute buffers) hold particles, not voxels.
+    const bool points = gd.gridType().find("ptdataidx") != std::string::npos || gd.gridType().find("ptidx") != std::string::npos;
+    if (points && depth != Depth::Header)
+        throw vdb::TypeError("grid '" + oneLine(gd.gridName()) + "' is a point grid, which cannot be read as voxels");
+    struct Restore {
+        VdbReader& r;
+        ~Restore() { vdb::io::setStreamMetadataPtr(r.mStream, r.mStreamMetadata, false); }
+    } restore{*this};
+    vdb::GridBase::Ptr grid = readGridStart(index);
     if (depth == Depth::Header) return grid;
 
     if (gd.isInstance()) {
@@ -300,16 +279,25 @@ vdb::GridBase::Ptr VdbReader::read(std::size_t index, Depth depth, const vdb::Co
         return grid;
     }
     const std::streamoff topology = mStream.tellg();
+    TreeBytes bytes;
     const bool checked = withCheckedTreeType(*grid, [&](auto* tree) {
         using TreeT = std::remove_pointer_t<decltype(tree)>;
-        walkTopology<TreeT>(mStream, grid->saveFloatAsHalf(), mFormatVersion, mFileBytes);
+        bytes = TreeStream<TreeT>::walk(mStream, mFormatVersion, grid->saveFloatAsHalf(), mFileBytes,
+                                        depth == Depth::Region ? &clip : nullptr, {})
+                    .bytes;
     });
     if (!checked)
         throw vdb::TypeError("grid '" + oneLine(gd.gridName()) + "' has type " + grid->valueType() +
                              ", whose nodes this reader does not load");
+    // Refuse here, not inside OpenVDB: its tree reading is not exception-safe (a bad_alloc in
+    // the middle leaks or half-builds nodes), so it runs with headroom checked in advance and
+    // the budget enforced again right after.
+    const std::uint64_t expected = bytes.nodes + bytes.leafValues;
+    AllocationBudget::Headroom headroom(expected + expected / 8 + (1 << 20));
     mStream.seekg(topology);
     grid->readTopology(mStream);
     if (depth == Depth::Region) grid->readBuffers(mStream, clip);
+    headroom.finish();
     return grid;
 }
 

@@ -59,16 +59,25 @@ public:
     // outside it are dropped. CoordBBox::inf() reads the whole grid.
     openvdb::GridBase::Ptr readRegion(std::size_t index, const openvdb::CoordBBox& clip);
 
+    // For streaming a tree without building it (io/vdb_tree_stream.h): reads grid `index`'s
+    // metadata and transform and leaves stream() at its topology, with the grid's decoding state
+    // set until the next read. seekToBuffers() moves to the leaf values. Not for instances.
+    openvdb::GridBase::Ptr openTree(std::size_t index);
+    void seekToBuffers(std::size_t index);
+    std::istream& stream() { return mStream; }
+
 private:
     enum class Depth { Header, Topology, Region };
     openvdb::GridBase::Ptr read(std::size_t index, Depth depth, const openvdb::CoordBBox& clip);
+    openvdb::GridBase::Ptr readGridStart(std::size_t index);
     std::size_t treeSource(std::size_t index) const;  // the grid whose tree an instance shares
 
     std::filesystem::path mPath;
     std::uint64_t mFileBytes = 0;
     std::uint32_t mFormatVersion = 0;
     std::ifstream mStream;
-    openvdb::io::StreamMetadata::Ptr mStreamMetadata;
+    openvdb::io::StreamMetadata::Ptr mStreamMetadata;      // file level
+    openvdb::io::StreamMetadata::Ptr mGridStreamMetadata;  // the grid being read
     openvdb::MetaMap mFileMetadata;
     std::vector<Entry> mEntries;
     std::vector<openvdb::io::GridDescriptor> mDescriptors;

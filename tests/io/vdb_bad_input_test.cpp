@@ -151,7 +151,7 @@ TEST(VdbBadInput, TransformsWeCannotHonour) {
 
 TEST(VdbBadInput, OverBudgetAndOverLimitAreRefusedBeforeBuilding) {
     ScratchDir dir("budget");
-    samples::writeLevelSetSphere(dir / "sphere.vdb", 60.0f);  // needs about 9 MiB
+    samples::writeLevelSetSphere(dir / "sphere.vdb", 100.0f);  // needs about 6.4 MiB
     io::VdbImportOptions o;
     o.memoryBudgetBytes = 4ull << 20;
     std::string e = importError(dir / "sphere.vdb", o);

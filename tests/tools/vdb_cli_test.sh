@@ -60,7 +60,7 @@ expect_error() {  # expect_error PATTERN FILE -- command...
 "$samples" wrong-types "$tmp/wrong.vdb"
 "$samples" rotated "$tmp/rotated.vdb"
 "$samples" giant-tile "$tmp/giant.vdb"
-"$samples" sphere "$tmp/sphere.vdb" 60
+"$samples" sphere "$tmp/sphere.vdb" 100
 size=$(stat -c %s "$tmp/sphere.vdb")
 head -c $((size / 2)) "$tmp/sphere.vdb" > "$tmp/truncated.vdb"
 { head -c 16 "$tmp/sphere.vdb"; head -c 3000 /dev/urandom; } > "$tmp/noise.vdb"
