@@ -1333,8 +1333,11 @@ void Importer::noteWrite(BrickGrid& grid) {
 void Importer::run(world::Scene& scene, bool intoExisting) {
 #if defined(__GLIBC__)
     // Planning freed the source topology (thousands of small nodes); hand those pages back to
-    // the system before the world is built, or they stay resident as heap fragments.
+    // the system before the world is built, or they stay resident as heap fragments. And pin
+    // glibc's mmap threshold: OpenVDB's node buffers (128-768 KiB, allocated and freed per node)
+    // otherwise raise it, after which they are carved from the heap and linger there.
     malloc_trim(0);
+    mallopt(M_MMAP_THRESHOLD, 128 * 1024);
 #endif
     buildPalette();
 
