@@ -1,7 +1,9 @@
 #include "io/vdb_export.h"
 
+#include <algorithm>
 #include <fstream>
 #include <functional>
+#include <memory>
 #include <optional>
 
 #include "io/image_io.h"
@@ -17,8 +19,12 @@ using world::MaterialId;
 
 namespace {
 
-// io::Archive's own write() takes every grid at once; this one asks for each grid when its turn
-// comes, so only one is alive at a time. Same stream set-up and order as Archive::write().
+// io::Archive's own write() takes every grid at once and, for each, computes statistics and
+// OpenVDB 10's delayed-load tables by walking the grid's in-memory tree. Our grids have no tree
+// (BrickGridAsVdb), so this writer asks for each grid when its turn comes and writes the grid
+// record itself, in the same layout as Archive::writeGrid(): descriptor, offsets, metadata,
+// transform, topology, buffers. Delayed-load tables are optional in the format (files before
+// OpenVDB 6.1 have none); statistics come with the grid.
 class StreamingVdbWriter : private vdb::io::Archive {
 public:
     using GridMaker = std::function<vdb::GridBase::Ptr()>;
@@ -27,69 +33,243 @@ public:
         vdb::io::StreamMetadata::Ptr streamMetadata = std::make_shared<vdb::io::StreamMetadata>();
         vdb::io::setStreamMetadataPtr(os, streamMetadata, /*transfer=*/false);
         vdb::io::setDataCompression(os, compression());
-        vdb::io::setWriteGridStatsMetadata(os, isGridStatsMetadataEnabled());
+        vdb::io::setWriteGridStatsMetadata(os, false);
         writeHeader(os, /*seekable=*/true);
         fileMetadata.writeMeta(os);
         std::int32_t count = std::int32_t(makers.size());
         os.write(reinterpret_cast<const char*>(&count), sizeof(count));
         for (const GridMaker& make : makers) {
-            vdb::GridBase::ConstPtr grid = make();
+            vdb::GridBase::Ptr grid = make();
+            grid->insertMeta(vdb::GridBase::META_FILE_COMPRESSION, vdb::StringMetadata(vdb::io::compressionToString(compression())));
             vdb::io::GridDescriptor gd(grid->getName(), grid->type(), grid->saveFloatAsHalf());
-            writeGrid(gd, grid, os, /*seekable=*/true);
+            writeGridRecord(os, gd, *grid, streamMetadata);
+            vdb::io::setStreamMetadataPtr(os, streamMetadata, false);
             vdb::io::setDataCompression(os, compression());
         }
     }
+
+private:
+    void writeGridRecord(std::ostream& os, vdb::io::GridDescriptor& gd, const vdb::GridBase& grid,
+                         const vdb::io::StreamMetadata::Ptr& fileLevel) const {
+        auto streamMetadata = std::make_shared<vdb::io::StreamMetadata>(*fileLevel);
+        streamMetadata->setHalfFloat(grid.saveFloatAsHalf());
+        streamMetadata->gridMetadata() = static_cast<const vdb::MetaMap&>(grid);
+        vdb::io::setStreamMetadataPtr(os, streamMetadata, /*transfer=*/false);
+        gd.writeHeader(os);
+        const std::int64_t offsets = std::int64_t(os.tellp());
+        gd.writeStreamPos(os);  // placeholders, rewritten below
+        gd.setGridPos(os.tellp());
+        setGridCompression(os, grid);
+        grid.writeMeta(os);
+        grid.writeTransform(os);
+        grid.writeTopology(os);
+        gd.setBlockPos(os.tellp());
+        grid.writeBuffers(os);
+        gd.setEndPos(os.tellp());
+        os.seekp(offsets, std::ios_base::beg);
+        gd.writeStreamPos(os);
+        gd.seekToEnd(os);
+    }
 };
 
-vdb::Coord toCoord(glm::ivec3 v) { return vdb::Coord(v.x, v.y, v.z); }
+// One output grid written straight from the brick grid, never built as an OpenVDB tree: its
+// topology and leaf buffers are produced cell by cell while io::Archive writes it, in exactly the
+// byte layout Tree::writeTopology()/writeBuffers() would produce (RootNode, InternalNode 5 and 4,
+// LeafNode 3; root children sorted by origin, node children in bit order). Our bricks and
+// OpenVDB leaves share size and alignment, so an empty cell is nothing, a homogeneous cell one
+// tile of an internal node, and a brick one leaf.
+template <typename GridT>
+class BrickGridAsVdb final : public GridT {
+public:
+    using ValueT = typename GridT::ValueType;
+    using TreeT = typename GridT::TreeType;
+    using Int5T = typename TreeT::RootNodeType::ChildNodeType;
+    using Int4T = typename Int5T::ChildNodeType;
+    using LeafT = typename Int4T::ChildNodeType;
+    using ValueOf = std::function<std::optional<ValueT>(MaterialId)>;
 
-// Builds one grid from the brick grid: value(m) gives the voxel value of material m, or nullopt
-// to leave the voxel inactive. Homogeneous cells become level-1 tiles (exactly one 8^3 leaf's
-// extent, since our bricks and OpenVDB leaves share size and alignment).
-template <typename GridT, typename ValueOf>
-typename GridT::Ptr buildGrid(const world::Scene& scene, const char* name, const typename GridT::ValueType& background,
-                              ValueOf value, VdbExportReport* counts) {
-    using LeafT = typename GridT::TreeType::LeafNodeType;
-    auto grid = GridT::create(background);
+    BrickGridAsVdb(const BrickGrid& grid, ValueOf value)
+        : GridT(vdb::zeroVal<ValueT>()), mGrid(grid), mValue(std::move(value)), mBackground(vdb::zeroVal<ValueT>()) {
+        static_assert(LeafT::DIM == world::kBrickDim, "bricks must be OpenVDB leaves");
+        const glm::ivec3 cells = grid.sizeInCells();
+        // The Internal5 nodes (512^3 cells) with anything in them, in root-table order.
+        const glm::ivec3 nodes = (cells + (kCells5 - 1)) / kCells5;
+        for (int x = 0; x < nodes.x; ++x)
+            for (int y = 0; y < nodes.y; ++y)
+                for (int z = 0; z < nodes.z; ++z)
+                    if (anyContent(glm::ivec3(x, y, z) * kCells5, kCells5)) mRootChildren.emplace_back(x, y, z);
+        computeStats();
+    }
+
+    std::uint64_t tiles() const { return mTiles; }
+    std::uint64_t leaves() const { return mLeaves; }
+    std::uint64_t activeVoxels() const { return mActive; }
+
+    void writeTopology(std::ostream& os) const override {
+        const std::int32_t buffers = 1;  // TreeBase::writeTopology()
+        os.write(reinterpret_cast<const char*>(&buffers), sizeof(buffers));
+        os.write(reinterpret_cast<const char*>(&mBackground), sizeof(ValueT));
+        vdb::io::setGridBackgroundValuePtr(os, &mBackground);
+        const vdb::Index tiles = 0, children = vdb::Index(mRootChildren.size());
+        os.write(reinterpret_cast<const char*>(&tiles), sizeof(tiles));
+        os.write(reinterpret_cast<const char*>(&children), sizeof(children));
+        for (const glm::ivec3& node : mRootChildren) {
+            const int dim = int(Int5T::DIM);
+            const std::int32_t origin[3] = {node.x * dim, node.y * dim, node.z * dim};
+            os.write(reinterpret_cast<const char*>(origin), sizeof(origin));
+            writeInternal5(os, node * kCells5, /*topology=*/true);
+        }
+    }
+
+    void writeBuffers(std::ostream& os) const override {
+        vdb::io::setGridBackgroundValuePtr(os, &mBackground);
+        for (const glm::ivec3& node : mRootChildren) writeInternal5(os, node * kCells5, /*topology=*/false);
+    }
+
+private:
+    static constexpr int kCells4 = Int4T::DIM / LeafT::DIM;  // 16 cells per Internal4 axis
+    static constexpr int kCells5 = Int5T::DIM / LeafT::DIM;  // 512 cells per Internal5 axis
+    enum class Kind { Empty, Tile, Leaf };
+
+    Kind kind(glm::ivec3 c, ValueT* tile = nullptr) const {
+        if (!mGrid.containsCell(c)) return Kind::Empty;
+        const std::uint32_t cell = mGrid.cell(c);
+        if (cell == shared::CELL_EMPTY) return Kind::Empty;
+        if (!BrickGrid::cellIsBrick(cell)) {
+            std::optional<ValueT> v = mValue(BrickGrid::cellMaterial(cell));
+            if (!v) return Kind::Empty;
+            if (tile) *tile = *v;
+            return Kind::Tile;
+        }
+        for (MaterialId m : mGrid.brickVoxels(BrickGrid::cellBrick(cell)))
+            if (m != world::kEmpty && mValue(m)) return Kind::Leaf;
+        return Kind::Empty;
+    }
+
+    bool anyContent(glm::ivec3 first, int count) const {
+        const glm::ivec3 last = glm::min(first + count, mGrid.sizeInCells());
+        for (int z = first.z; z < last.z; ++z)
+            for (int y = first.y; y < last.y; ++y)
+                for (int x = first.x; x < last.x; ++x)
+                    if (kind({x, y, z}) != Kind::Empty) return true;
+        return false;
+    }
+
+    // A leaf's values in OpenVDB's order (x slowest, z fastest) and its active mask.
+    void leaf(glm::ivec3 c, ValueT* values, typename LeafT::NodeMaskType& mask) const {
+        const world::BrickVoxels& voxels = mGrid.brickVoxels(BrickGrid::cellBrick(mGrid.cell(c)));
+        mask.setOff();
+        for (vdb::Index i = 0; i < LeafT::SIZE; ++i) {
+            const MaterialId m = voxels[std::size_t(world::brickVoxelIndex(glm::ivec3(int(i >> 6), int((i >> 3) & 7), int(i & 7))))];
+            std::optional<ValueT> v = m != world::kEmpty ? mValue(m) : std::nullopt;
+            values[i] = v ? *v : mBackground;
+            if (v) mask.setOn(i);
+        }
+    }
+
+    template <typename NodeT>
+    static glm::ivec3 childCell(vdb::Index pos, int cellsPerChild) {
+        vdb::Coord local;
+        NodeT::offsetToLocalCoord(pos, local);
+        return glm::ivec3(local.x(), local.y(), local.z()) * cellsPerChild;
+    }
+
+    void writeInternal5(std::ostream& os, glm::ivec3 first, bool topology) const {
+        typename Int5T::NodeMaskType childMask, valueMask;
+        for (vdb::Index pos = 0; pos < Int5T::NUM_VALUES; ++pos)
+            if (anyContent(first + childCell<Int5T>(pos, kCells4), kCells4)) childMask.setOn(pos);
+        if (topology) {
+            childMask.save(os);
+            valueMask.save(os);
+            std::unique_ptr<ValueT[]> values(new ValueT[Int5T::NUM_VALUES]);
+            std::fill(values.get(), values.get() + Int5T::NUM_VALUES, mBackground);
+            vdb::io::writeCompressedValues(os, values.get(), Int5T::NUM_VALUES, valueMask, childMask, false);
+        }
+        for (auto it = childMask.beginOn(); it; ++it) writeInternal4(os, first + childCell<Int5T>(it.pos(), kCells4), topology);
+    }
+
+    void writeInternal4(std::ostream& os, glm::ivec3 first, bool topology) const {
+        typename Int4T::NodeMaskType childMask, valueMask;
+        std::unique_ptr<ValueT[]> values(new ValueT[Int4T::NUM_VALUES]);
+        for (vdb::Index pos = 0; pos < Int4T::NUM_VALUES; ++pos) {
+            values[pos] = mBackground;
+            switch (kind(first + childCell<Int4T>(pos, 1), &values[pos])) {
+                case Kind::Tile: valueMask.setOn(pos); break;
+                case Kind::Leaf: childMask.setOn(pos); values[pos] = vdb::zeroVal<ValueT>(); break;
+                case Kind::Empty: values[pos] = mBackground; break;
+            }
+        }
+        if (topology) {
+            childMask.save(os);
+            valueMask.save(os);
+            vdb::io::writeCompressedValues(os, values.get(), Int4T::NUM_VALUES, valueMask, childMask, false);
+        }
+        typename LeafT::NodeMaskType mask;
+        for (auto it = childMask.beginOn(); it; ++it) {
+            leaf(first + childCell<Int4T>(it.pos(), 1), values.get(), mask);
+            mask.save(os);  // LeafNode::writeTopology(), and the start of LeafNode::writeBuffers()
+            if (!topology) vdb::io::writeCompressedValues(os, values.get(), LeafT::SIZE, mask, typename LeafT::NodeMaskType(), false);
+        }
+    }
+
+    // The statistics io::Archive would have added (file_bbox_min/max, file_voxel_count,
+    // file_mem_bytes); computed here because it would compute them from an empty tree.
+    void computeStats() {
+        glm::ivec3 lo(INT32_MAX), hi(INT32_MIN);
+        const glm::ivec3 cells = mGrid.sizeInCells();
+        std::unique_ptr<ValueT[]> values(new ValueT[LeafT::SIZE]);
+        typename LeafT::NodeMaskType mask;
+        std::uint64_t int4 = 0;
+        for (int z = 0; z < cells.z; ++z)
+            for (int y = 0; y < cells.y; ++y)
+                for (int x = 0; x < cells.x; ++x) {
+                    const glm::ivec3 c(x, y, z);
+                    const Kind k = kind(c);
+                    if (k == Kind::Empty) continue;
+                    if (k == Kind::Tile) {
+                        mTiles++;
+                        mActive += LeafT::SIZE;
+                        lo = glm::min(lo, c * 8);
+                        hi = glm::max(hi, c * 8 + 7);
+                        continue;
+                    }
+                    mLeaves++;
+                    leaf(c, values.get(), mask);
+                    mActive += mask.countOn();
+                    for (auto it = mask.beginOn(); it; ++it) {
+                        const vdb::Index i = it.pos();
+                        const glm::ivec3 p = c * 8 + glm::ivec3(int(i >> 6), int((i >> 3) & 7), int(i & 7));
+                        lo = glm::min(lo, p);
+                        hi = glm::max(hi, p);
+                    }
+                }
+        for (const glm::ivec3& node : mRootChildren) {
+            for (vdb::Index pos = 0; pos < Int5T::NUM_VALUES; ++pos)
+                int4 += anyContent(node * kCells5 + childCell<Int5T>(pos, kCells4), kCells4);
+        }
+        if (mActive == 0) lo = hi = glm::ivec3(0);
+        this->insertMeta(vdb::GridBase::META_FILE_BBOX_MIN, vdb::Vec3IMetadata(vdb::Vec3i(lo.x, lo.y, lo.z)));
+        this->insertMeta(vdb::GridBase::META_FILE_BBOX_MAX, vdb::Vec3IMetadata(vdb::Vec3i(hi.x, hi.y, hi.z)));
+        this->insertMeta(vdb::GridBase::META_FILE_VOXEL_COUNT, vdb::Int64Metadata(std::int64_t(mActive)));
+        const std::uint64_t memory = mRootChildren.size() * sizeof(Int5T) + int4 * sizeof(Int4T) +
+                                     mLeaves * (sizeof(LeafT) + LeafT::SIZE * sizeof(ValueT));
+        this->insertMeta(vdb::GridBase::META_FILE_MEM_BYTES, vdb::Int64Metadata(std::int64_t(memory)));
+    }
+
+    const BrickGrid& mGrid;
+    ValueOf mValue;
+    ValueT mBackground;
+    std::vector<glm::ivec3> mRootChildren;
+    std::uint64_t mTiles = 0, mLeaves = 0, mActive = 0;
+};
+
+template <typename GridT>
+std::shared_ptr<BrickGridAsVdb<GridT>> gridOf(const world::Scene& scene, const char* name,
+                                              typename BrickGridAsVdb<GridT>::ValueOf value) {
+    auto grid = std::make_shared<BrickGridAsVdb<GridT>>(scene.grid, std::move(value));
     grid->setName(name);
     grid->setTransform(vdb::math::Transform::createLinearTransform(double(scene.voxelSize)));
     grid->setCreator("voxengine");
-    auto& tree = grid->tree();
-    const BrickGrid& g = scene.grid;
-    const glm::ivec3 cells = g.sizeInCells();
-    for (int z = 0; z < cells.z; ++z) {
-        for (int y = 0; y < cells.y; ++y) {
-            for (int x = 0; x < cells.x; ++x) {
-                const glm::ivec3 c(x, y, z);
-                const std::uint32_t cell = g.cell(c);
-                if (cell == shared::CELL_EMPTY) continue;
-                const vdb::Coord origin = toCoord(c * world::kBrickDim);
-                if (!BrickGrid::cellIsBrick(cell)) {
-                    std::optional<typename GridT::ValueType> v = value(BrickGrid::cellMaterial(cell));
-                    if (!v) continue;
-                    tree.addTile(1, origin, *v, true);
-                    if (counts) {
-                        counts->tiles++;
-                        counts->solidVoxels += world::kBrickVoxels;
-                    }
-                    continue;
-                }
-                const world::BrickVoxels& voxels = g.brickVoxels(BrickGrid::cellBrick(cell));
-                LeafT* leaf = nullptr;
-                for (int i = 0; i < world::kBrickVoxels; ++i) {
-                    if (voxels[i] == world::kEmpty) continue;
-                    std::optional<typename GridT::ValueType> v = value(voxels[i]);
-                    if (!v) continue;
-                    if (!leaf) leaf = tree.touchLeaf(origin);
-                    // Ours is x fastest, OpenVDB's leaf offset is z fastest.
-                    const vdb::Coord local(i & 7, (i >> 3) & 7, i >> 6);
-                    leaf->setValueOn(LeafT::coordToOffset(local), *v);
-                    if (counts) counts->solidVoxels++;
-                }
-                if (leaf && counts) counts->leaves++;
-            }
-        }
-    }
     return grid;
 }
 
@@ -105,18 +285,21 @@ Status exportVdb(const world::Scene& scene, const fs::path& path, const VdbExpor
     std::vector<StreamingVdbWriter::GridMaker> makers;
     VdbExportReport local;
     makers.push_back([&] {
-        auto grid = buildGrid<vdb::Int32Grid>(scene, vdb_layout::kMaterialGrid, 0,
-                                             [](MaterialId m) { return std::optional<std::int32_t>(m); }, &local);
+        auto grid = gridOf<vdb::Int32Grid>(scene, vdb_layout::kMaterialGrid,
+                                           [](MaterialId m) { return std::optional<std::int32_t>(m); });
         grid->insertMeta("vox:role", vdb::StringMetadata("material index into the vox:material.* palette"));
+        local.tiles = grid->tiles();
+        local.leaves = grid->leaves();
+        local.solidVoxels = grid->activeVoxels();
         return grid;
     });
     local.grids.push_back(vdb_layout::kMaterialGrid);
     if (options.colourGrids) {
         makers.push_back([&] {
-            auto grid = buildGrid<vdb::Vec3SGrid>(scene, vdb_layout::kAlbedoGrid, vdb::Vec3s(0.0f), [&](MaterialId m) {
+            auto grid = gridOf<vdb::Vec3SGrid>(scene, vdb_layout::kAlbedoGrid, [&](MaterialId m) {
                 glm::vec3 a = palette[m].albedo;
                 return std::optional<vdb::Vec3s>(vdb::Vec3s(a.x, a.y, a.z));
-            }, nullptr);
+            });
             grid->setVectorType(vdb::VEC_INVARIANT);
             grid->insertMeta("vox:role", vdb::StringMetadata("linear albedo"));
             return grid;
@@ -124,12 +307,11 @@ Status exportVdb(const world::Scene& scene, const fs::path& path, const VdbExpor
         local.grids.push_back(vdb_layout::kAlbedoGrid);
         if (anyEmissive) {
             makers.push_back([&] {
-                auto grid =
-                    buildGrid<vdb::Vec3SGrid>(scene, vdb_layout::kEmissionGrid, vdb::Vec3s(0.0f), [&](MaterialId m) {
-                        if (!palette[m].emissive()) return std::optional<vdb::Vec3s>();
-                        glm::vec3 e = palette[m].emittedRadiance();
-                        return std::optional<vdb::Vec3s>(vdb::Vec3s(e.x, e.y, e.z));
-                    }, nullptr);
+                auto grid = gridOf<vdb::Vec3SGrid>(scene, vdb_layout::kEmissionGrid, [&](MaterialId m) {
+                    if (!palette[m].emissive()) return std::optional<vdb::Vec3s>();
+                    glm::vec3 e = palette[m].emittedRadiance();
+                    return std::optional<vdb::Vec3s>(vdb::Vec3s(e.x, e.y, e.z));
+                });
                 grid->setVectorType(vdb::VEC_INVARIANT);
                 grid->insertMeta("vox:role", vdb::StringMetadata("emitted radiance (colour x strength)"));
                 return grid;

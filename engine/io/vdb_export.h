@@ -1,10 +1,10 @@
 // OpenVDB export: one .vdb per world (layout in io/vdb_layout.h and docs/VDB.md).
 //
-// The file is written grid by grid: each OpenVDB grid is built from the brick grid just before
-// it is written and released right after, so at most one grid exists in memory besides the world.
-// A homogeneous cell becomes one 8^3 tile and an empty cell nothing; only bricks become leaves,
-// so no dense copy of the world is ever made. The save is atomic: a temporary file beside the
-// target, flushed, then renamed, so a failed export leaves the previous file intact.
+// Streamed: no OpenVDB tree is built. Each grid's topology and leaf values are generated from the
+// brick grid cell by cell as the file is written (a homogeneous cell becomes one 8^3 tile, an
+// empty cell nothing, a brick one leaf), so exporting holds one leaf of values beyond the world.
+// The save is atomic: a temporary file beside the target, flushed, then renamed, so a failed
+// export leaves the previous file intact.
 #pragma once
 
 #include <cstdint>
