@@ -2,6 +2,8 @@
 
 #include "io/vdb_tree_stream.h"
 
+#include <openvdb/io/DelayedLoadMetadata.h>
+
 #include <algorithm>
 #include <memory>
 #include <mutex>
@@ -63,7 +65,14 @@ bool withCheckedTreeType(const vdb::GridBase& g, F&& f) {
 
 void initializeOpenVdb() {
     static std::once_flag once;
-    std::call_once(once, [] { vdb::initialize(); });
+    std::call_once(once, [] {
+        vdb::initialize();
+        // OpenVDB 10 decodes a grid's delayed-load tables ("__delayedload" metadata) with blosc
+        // as soon as it reads the grid's metadata, and blosc crashes on damaged input (found by
+        // the fuzz target). We never delay-load: unregistered, the tables are read as opaque
+        // bytes and dropped.
+        if (vdb::io::DelayedLoadMetadata::isRegisteredType()) vdb::io::DelayedLoadMetadata::unregisterType();
+    });
 }
 
 std::uint64_t vdbSingleAllocationLimit(std::uint64_t fileBytes) { return fileBytes + (16ull << 20); }

@@ -184,3 +184,35 @@ TEST(VdbBadInput, AbsurdAllocationsAreRefusedByTheBudget) {
     EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.0);
     EXPECT_NE(e.find("memory"), std::string::npos) << e;
 }
+
+// Regressions for what the fuzz target found in OpenVDB 10 (see engine/io/openvdb_decoders.cpp,
+// vdb_tree_stream.h and vdb_reader.cpp): each damaged file must fail cleanly.
+TEST(VdbBadInput, DamagedDelayedLoadTablesAreIgnored) {
+    // OpenVDB's own writer stores "__delayedload" tables; OpenVDB 10 would decode them with blosc.
+    ScratchDir dir("delayed");
+    samples::writeFogBox(dir / "f.vdb", glm::ivec3(0), glm::ivec3(20));
+    std::string bytes = bytesOf(dir / "f.vdb");
+    const std::size_t at = bytes.find("__delayedload");
+    ASSERT_NE(at, std::string::npos) << "OpenVDB 10 writes delayed-load tables";
+    for (std::size_t i = at + 13 + 4; i < std::min(bytes.size(), at + 13 + 200); ++i) bytes[i] = char(0x5A ^ i);
+    writeBytes(dir / "f.vdb", bytes);
+    auto scene = io::importVdb(dir / "f.vdb");
+    if (!scene.ok()) {
+        EXPECT_TRUE(vox_test::isOneLineNamingFile(scene.error().message, dir / "f.vdb"));
+    }
+}
+
+TEST(VdbBadInput, RootChildrenSharingAnOriginAreRefused) {
+    // OpenVDB 10 would overwrite the first child with the second and leak it.
+    ScratchDir dir("dup");
+    samples::writeFogBox(dir / "two.vdb", glm::ivec3(4090), glm::ivec3(4100));  // spans two root children
+    std::string bytes = bytesOf(dir / "two.vdb");
+    const std::int32_t second[3] = {4096, 0, 0}, first[3] = {0, 0, 0};
+    const std::string key(reinterpret_cast<const char*>(second), sizeof(second));
+    const std::size_t at = bytes.find(key);
+    ASSERT_NE(at, std::string::npos);
+    bytes.replace(at, sizeof(first), reinterpret_cast<const char*>(first), sizeof(first));
+    writeBytes(dir / "two.vdb", bytes);
+    std::string e = importError(dir / "two.vdb");
+    EXPECT_NE(e.find("two root children share an origin"), std::string::npos) << e;
+}
