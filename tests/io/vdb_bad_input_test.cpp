@@ -205,14 +205,23 @@ TEST(VdbBadInput, DamagedDelayedLoadTablesAreIgnored) {
 TEST(VdbBadInput, RootChildrenSharingAnOriginAreRefused) {
     // OpenVDB 10 would overwrite the first child with the second and leak it.
     ScratchDir dir("dup");
-    samples::writeFogBox(dir / "two.vdb", glm::ivec3(4090), glm::ivec3(4100));  // spans two root children
+    samples::writeFogBox(dir / "two.vdb", glm::ivec3(4090, 1, 1), glm::ivec3(4100, 7, 7));  // two root children along x
     std::string bytes = bytesOf(dir / "two.vdb");
+    // The root: one buffer, background 0, no tiles, two children, the first at (0, 0, 0).
+    const std::int32_t root[8] = {1, 0, 0, 2, 0, 0, 0};
+    const std::size_t start = bytes.find(std::string(reinterpret_cast<const char*>(root), 7 * sizeof(std::int32_t)));
+    ASSERT_NE(start, std::string::npos);
+    // The second child's origin (4096, 0, 0) follows the first child's subtree; the same bytes
+    // may also occur inside it, so patch each occurrence: every variant must fail cleanly, and
+    // the one that hits the origin with the duplicate-origin message.
     const std::int32_t second[3] = {4096, 0, 0}, first[3] = {0, 0, 0};
     const std::string key(reinterpret_cast<const char*>(second), sizeof(second));
-    const std::size_t at = bytes.find(key);
-    ASSERT_NE(at, std::string::npos);
-    bytes.replace(at, sizeof(first), reinterpret_cast<const char*>(first), sizeof(first));
-    writeBytes(dir / "two.vdb", bytes);
-    std::string e = importError(dir / "two.vdb");
-    EXPECT_NE(e.find("two root children share an origin"), std::string::npos) << e;
+    bool duplicate = false;
+    for (std::size_t at = bytes.find(key, start + 28); at != std::string::npos; at = bytes.find(key, at + 1)) {
+        std::string patched = bytes;
+        patched.replace(at, sizeof(first), reinterpret_cast<const char*>(first), sizeof(first));
+        writeBytes(dir / "dup.vdb", patched);
+        duplicate |= importError(dir / "dup.vdb").find("two root children share an origin") != std::string::npos;
+    }
+    EXPECT_TRUE(duplicate);
 }
