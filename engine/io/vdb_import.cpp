@@ -449,6 +449,7 @@ void Importer::plan(const world::Scene* target) {
     selectColourGrid();
     placeAxesAndScale();
     mStreaming = decideStreaming();
+    mPlan.streamed = mStreaming;
     if (mStreaming) readTopologyStreaming();
     else readTopology();  // leaves mShape holding the topology
     placeOffset(target);
@@ -1501,8 +1502,10 @@ std::string formatVdbImportPlan(const VdbImportPlan& p) {
                      p.worldBox.max.x, p.worldBox.max.y, p.worldBox.max.z);
     s += fmt::format("  cells        {} read voxel by voxel (at most that many bricks), {} filled whole from tiles\n",
                      p.sampledCells, p.uniformCells);
-    s += fmt::format("  memory       about {} ({} world, {} source in {} slab(s)); budget {}\n", mib(p.estimateBytes),
-                     mib(p.worldBytes), mib(p.sourceBytes), p.slabs, mib(p.budgetBytes));
+    s += fmt::format("  memory       about {} ({} world, {} source {}); budget {}\n", mib(p.estimateBytes),
+                     mib(p.worldBytes), mib(p.sourceBytes),
+                     p.streamed ? std::string("streamed leaf by leaf") : fmt::format("read in {} slab(s)", p.slabs),
+                     mib(p.budgetBytes));
     for (const std::string& n : p.notes) s += fmt::format("  note         {}\n", n);
     return s;
 }

@@ -72,6 +72,7 @@ struct VdbImportPlan {
     std::uint64_t sourceBytes = 0;   // source topology and the largest slab of leaf values
     std::uint64_t estimateBytes = 0;
     std::uint64_t budgetBytes = 0;
+    bool streamed = false;  // voxel for voxel, leaf by leaf, no OpenVDB tree; else in `slabs` slabs
     int slabs = 0;
     std::vector<std::string> notes;
 };
