@@ -44,6 +44,7 @@ std::string LightingSettings::describe() const {
         case Method::Reference: s += fmt::format(" {} bounce(s)", bounces); break;
         case Method::Preview: break;
     }
+    if (indirect == Indirect::Cache && method != Method::Reference) s += " + " + cache.describe();
     return s;
 }
 

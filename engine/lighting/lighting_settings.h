@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "core/error.h"
+#include "lighting/irradiance_cache_settings.h"
 
 namespace engine::lighting {
 
@@ -37,6 +38,8 @@ struct LightingSettings {
     std::uint32_t samplesPerFrame = 1;   // Reference: samples per pixel added per frame
     std::uint32_t bounces = 0;           // Reference: 0 = direct light only
     std::uint32_t seed = 1;
+    Indirect indirect = Indirect::None;  // Cache adds the irradiance cache's term to any method but Reference
+    IrradianceCacheSettings cache;
 
     bool operator==(const LightingSettings&) const = default;
     std::string describe() const;

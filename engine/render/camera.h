@@ -15,6 +15,7 @@ struct FrameSettings {
     std::uint32_t frameIndex = 0;
     std::uint32_t seed = 1;
     float exposure = 1.0f;
+    double timeSeconds = 0.0;  // scene time: dynamic objects' paths, the cache's fade
 };
 
 shared::FrameParams makeFrameParams(const world::CameraPreset& camera, const world::SkyLight& sky,

@@ -58,6 +58,7 @@ Renderer::Renderer(gpu::Context& ctx)
       mUploader(ctx),
       mTimer(ctx, 16),
       mPresentTimer(ctx, 1),
+      mLateTimer(ctx, 16),
       mPrimary(ctx),
       mPreview(ctx),
       mRestirInitial(ctx),
@@ -66,7 +67,8 @@ Renderer::Renderer(gpu::Context& ctx)
       mRestirShade(ctx),
       mLightSampling(ctx),
       mReference(ctx),
-      mTonemap(ctx) {
+      mTonemap(ctx),
+      mCache(ctx) {
     mFrameParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::FrameParams), "frame.params");
     mRestirParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::RestirParams), "restir.params");
 }
@@ -86,6 +88,8 @@ void Renderer::resize(std::uint32_t width, std::uint32_t height) {
     mRadiance = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(glm::vec4), "frame.radiance");
     mLdr = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(std::uint32_t), "frame.ldr");
     mRayStats = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(glm::uvec4), "frame.rayStats");
+    mIndirect = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(glm::vec4), "frame.indirect");
+    mGBufferHost = gpu::Buffer(mCtx, gpu::BufferKind::Readback, pixels * sizeof(shared::GBufferTexel), "frame.gbufferHost");
     resetHistory();
 }
 
@@ -115,6 +119,16 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
     cmd.begin();
     cmd.beginPass("upload");
     result.upload = mWorld.sync(scene, mUploader);
+    const bool useCache = lighting.indirect == lighting::Indirect::Cache && lighting.method != lighting::Method::Reference;
+    std::vector<glm::ivec3> editedCells;  // for the cache: static rays through them are stale
+    if (useCache && !result.upload.full) {
+        const glm::ivec3 cells = scene.grid.sizeInCells();
+        for (std::uint32_t c : scene.grid.touchedCells()) {
+            editedCells.push_back(glm::ivec3(c % cells.x, (c / cells.x) % cells.y, c / (cells.x * cells.y)) * 8);
+        }
+    } else if (useCache) {
+        mCache.clear();  // a new world
+    }
     scene.grid.clearDirty();
     lighting::EmitterUploadStats lightUpload = mGpuEmitters.sync(mEmitters, mUploader);
     const bool worldChanged = result.upload.bricks || result.upload.cells || lightUpload.slots || lightUpload.aliveAndAlias;
@@ -137,13 +151,38 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
         cmd.barrier();
         mAccumulatedSamples = 0;
     }
+    if (!useCache) cmd.fillBuffer(mIndirect, 0);
     cmd.endPass();
 
     mPrimary.record(cmd, {mWorld, mFrameParams, mGBuffers[mCurrent]}, mSize);
-    recordLighting(cmd, lighting, mHistoryValid);
-    mTonemap.record(cmd, {mFrameParams, mRadiance, mLdr}, mSize);
-    cmd.submitAndWait();
-    result.passMs = mTimer.results();
+    if (!useCache) {
+        recordLighting(cmd, lighting, mHistoryValid);
+        mTonemap.record(cmd, {mFrameParams, mRadiance, mLdr}, mSize);
+        cmd.submitAndWait();
+        result.passMs = mTimer.results();
+    } else {
+        // The cache needs this frame's visible voxels on the host: submit up to the G-buffer,
+        // read it, then record the rest.
+        cmd.copyBuffer(mGBuffers[mCurrent], mGBufferHost, {{0, 0, mGBuffers[mCurrent].size()}});
+        cmd.barrier();
+        cmd.submitAndWait();
+        result.passMs = mTimer.results();
+
+        gpu::CommandList late(mCtx, &mLateTimer);
+        late.begin();
+        late.beginPass("cache.prepare");
+        mCache.prepare(lighting.cache, mGBufferHost.view<shared::GBufferTexel>(), mSize, settings.timeSeconds, mFrameIndex,
+                       lighting.seed, editedCells, mUploader, late);
+        mUploader.record(late);
+        late.endPass();
+        recordLighting(late, lighting, mHistoryValid);
+        mCache.record(late, {mWorld, mGpuEmitters}, {mFrameParams, mGBuffers[mCurrent], mRadiance, mIndirect});
+        mTonemap.record(late, {mFrameParams, mRadiance, mLdr}, mSize);
+        late.submitAndWait();
+        for (const auto& pass : mLateTimer.results()) result.passMs.push_back(pass);
+        result.cacheUsed = true;
+        result.cache = mCache.stats();
+    }
 
     if (lighting.method == lighting::Method::Reference) mAccumulatedSamples += std::max(lighting.samplesPerFrame, 1u);
     result.referenceSamples = mAccumulatedSamples;
@@ -207,7 +246,7 @@ FrameImages Renderer::readback() {
     images.width = mSize.x;
     images.height = mSize.y;
     const gpu::Buffer& gbuffer = mGBuffers[mCurrent ^ 1u];  // the last rendered frame's
-    const gpu::Buffer* sources[] = {&mRadiance, &mLdr, &gbuffer, &mRayStats};
+    const gpu::Buffer* sources[] = {&mRadiance, &mLdr, &gbuffer, &mRayStats, &mIndirect};
     std::uint64_t total = 0;
     for (const gpu::Buffer* b : sources) total += b->size();
     gpu::Buffer readback(mCtx, gpu::BufferKind::Readback, total, "frame.readback");
@@ -232,6 +271,7 @@ FrameImages Renderer::readback() {
     take(images.rgba8, mLdr, at);
     take(images.gbuffer, gbuffer, at);
     take(images.rayStats, mRayStats, at);
+    take(images.indirect, mIndirect, at);
     return images;
 }
 

@@ -24,6 +24,7 @@
 #include "lighting/lighting_settings.h"
 #include "render/camera.h"
 #include "render/gpu_world.h"
+#include "render/irradiance_cache.h"
 #include "render/passes/light_sampling_pass.h"
 #include "render/passes/primary_ray_pass.h"
 #include "render/passes/reference_pass.h"
@@ -48,6 +49,8 @@ struct FrameResult {
     double emitterUpdateMs = 0.0;  // CPU time of the emitter list update
     std::uint32_t emitters = 0;
     std::uint32_t referenceSamples = 0;  // samples per pixel accumulated so far (reference)
+    bool cacheUsed = false;
+    IrradianceCacheStats cache;
     double totalMs() const;
     double passMsOf(const std::string& name) const;
 };
@@ -58,6 +61,7 @@ struct FrameImages {
     std::vector<std::uint32_t> rgba8;  // tonemapped sRGB, R in the low byte
     std::vector<shared::GBufferTexel> gbuffer;
     std::vector<glm::uvec4> rayStats;  // preview only: x primary steps, y shadow steps, z rays
+    std::vector<glm::vec4> indirect;   // the irradiance cache's term alone (zero without it)
 };
 
 class Renderer {
@@ -79,6 +83,7 @@ public:
 
     GpuWorld& gpuWorld() { return mWorld; }
     const lighting::EmitterList& emitters() const { return mEmitters; }
+    const IrradianceCache& irradianceCache() const { return mCache; }
 
 private:
     void resize(std::uint32_t width, std::uint32_t height);
@@ -91,6 +96,7 @@ private:
     gpu::Uploader mUploader;
     gpu::TimestampTimer mTimer;
     gpu::TimestampTimer mPresentTimer;
+    gpu::TimestampTimer mLateTimer;  // the passes after the G-buffer is read back
     PrimaryRayPass mPrimary;
     SunShadePass mPreview;
     RestirInitialPass mRestirInitial;
@@ -100,9 +106,11 @@ private:
     LightSamplingPass mLightSampling;
     ReferencePass mReference;
     TonemapPass mTonemap;
+    IrradianceCache mCache;
 
     glm::uvec2 mSize{0};
-    gpu::Buffer mFrameParams, mRestirParams, mRadiance, mLdr, mRayStats, mCandidates, mAccumulation;
+    gpu::Buffer mFrameParams, mRestirParams, mRadiance, mLdr, mRayStats, mCandidates, mAccumulation, mIndirect;
+    gpu::Buffer mGBufferHost;  // this frame's G-buffer on the host, for the cache's visible voxels
     gpu::Buffer mGBuffers[2], mFinalReservoirs[2];
     std::uint32_t mCurrent = 0;  // which of the ping-pong pair is this frame's
     std::uint32_t mFrameIndex = 0;

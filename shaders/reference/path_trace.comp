@@ -6,7 +6,7 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "common/camera.glsl"
-#include "common/surface.glsl"
+#include "common/direct_light.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -16,23 +16,6 @@ layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 1, std430) readonly buffer Re
 layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 2, std430) readonly buffer GBuffer { GBufferTexel gGBuffer[]; };
 layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 3, std430) buffer Accumulation { vec4 gAccum[]; };
 layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 4, std430) writeonly buffer Radiance { vec4 gRadiance[]; };
-
-vec3 directLight(Surface s, inout uint rng) {
-    vec3 direct = sunLight(s, gFrame);
-    uint slot;
-    if (!pickEmitter(rng, true, slot)) return direct;
-    GpuEmitter e = gEmitters[slot];
-    uint face;
-    float side = float(e.minCorner.w);
-    float pdf = emitterPdf(slot, true) * pickFace(e, s.position, rngNext(rng), face) / (side * side);
-    vec2 uv = vec2(rngNext(rng), rngNext(rng));
-    if (!(pdf > 0.0)) return direct;
-    vec3 toLight;
-    float dist;
-    vec3 f = lightContribution(s, e, face, uv, toLight, dist);
-    if (any(greaterThan(f, vec3(0.0))) && lightVisible(s, e, toLight, dist)) direct += f / pdf;
-    return direct;
-}
 
 vec3 cosineDirection(vec3 n, float u1, float u2) {
     float r = sqrt(u1), phi = 2.0 * PI * u2;
@@ -61,7 +44,7 @@ void main() {
             Surface s = primary;
             vec3 throughput = vec3(1.0);
             for (uint bounce = 0u; s.valid; ++bounce) {
-                L += throughput * directLight(s, rng);
+                L += throughput * directLight(s, gFrame, rng);
                 if (bounce >= bounces) break;
                 vec3 dir = cosineDirection(s.normal, rngNext(rng), rngNext(rng));
                 throughput *= s.albedo;  // cosine sampling of a diffuse BRDF: f cos / p = albedo

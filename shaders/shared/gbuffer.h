@@ -14,6 +14,8 @@ struct GBufferTexel {
 };
 SHARED_ASSERT_SIZE(GBufferTexel, 64);
 
+SHARED_CONST uint GBUFFER_FLAG_DYNAMIC = 1u;  // data.w: the voxel belongs to the dynamic set
+
 SHARED_END
 
 #endif

@@ -21,6 +21,15 @@ struct LightingOptions {
     std::uint32_t shadowRays = 1;
     std::uint32_t bounces = 0;
     std::uint32_t seed = 1;
+    std::string indirect = "none";
+    std::uint32_t cacheDirections = 128;
+    std::uint32_t cacheRays = 16;
+    std::uint32_t cacheBounces = 1;
+    float cacheAlpha = 0.03f;
+    std::uint32_t cacheNeighbourhood = 5;
+    float cacheMaxRay = 250.0f;
+    std::string cacheFilter = "on";
+    double cacheBudgetMb = 64.0;
 };
 
 void addLightingOptions(CLI::App& cmd, LightingOptions& o);

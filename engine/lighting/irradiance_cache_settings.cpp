@@ -1,0 +1,21 @@
+#include "lighting/irradiance_cache_settings.h"
+
+#include <fmt/format.h>
+
+namespace engine::lighting {
+
+const char* indirectName(Indirect i) {
+    switch (i) {
+        case Indirect::None: return "none";
+        case Indirect::Cache: return "cache";
+        case Indirect::Reference: return "reference";
+    }
+    return "?";
+}
+
+std::string IrradianceCacheSettings::describe() const {
+    return fmt::format("cache K={} S={} bounces={} alpha={:g} N={} {}", directions, raysPerUpdate, bounces, alpha,
+                       neighbourhood, filter ? "filtered" : "unfiltered");
+}
+
+}  // namespace engine::lighting

@@ -1,0 +1,34 @@
+// Knobs of the voxel-face irradiance cache (Cosin Ayerbe et al. §4), shared by the renderer, the
+// command line and scene files.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace engine::lighting {
+
+enum class Indirect {
+    None,       // direct light only
+    Cache,      // the voxel-face irradiance cache
+    Reference,  // the path tracer's bounces (the method becomes the reference)
+};
+
+struct IrradianceCacheSettings {
+    std::uint32_t directions = 128;    // K fixed jittered directions per face (16..256)
+    std::uint32_t raysPerUpdate = 16;  // of the K, traced per face per frame (a divisor of K); all K in K/S frames
+    std::uint32_t bounces = 1;         // 1 = the paper; more reads the cached irradiance at each ray's hit
+    float alpha = 0.03f;               // temporal blend E = a E_new + (1 - a) E_old
+    float fadeSeconds = 0.3f;          // dynamic entries fade to zero this long after their last update
+    std::uint32_t neighbourhood = 5;   // N^3 around each visible dynamic voxel (0, 3 or 5)
+    float maxRayLength = 250.0f;       // voxels; also the reach of an edit's invalidation
+    bool filter = true;                // 3^3 Gaussian over neighbouring voxels' faces
+    std::uint64_t budgetBytes = 64ull << 20;
+    bool fullRetrace = false;          // tests: the static set traces the whole world every update
+
+    bool operator==(const IrradianceCacheSettings&) const = default;
+    std::string describe() const;
+};
+
+const char* indirectName(Indirect i);
+
+}  // namespace engine::lighting

@@ -1,0 +1,230 @@
+#include "render/irradiance_cache.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <numeric>
+#include <unordered_set>
+
+#include "core/check.h"
+#include "core/hash.h"
+#include "gpu/command_list.h"
+#include "gpu/uploader.h"
+#include "shared/bindings.h"
+#include "shared/irradiance_cache.h"
+
+namespace engine::render {
+
+namespace {
+
+constexpr std::uint32_t kOwnBindings = 13;
+
+// K cosine-distributed directions in a face's frame (z along the normal): a Fibonacci lattice,
+// jittered by a seeded generator, so every face of every voxel sees the same fixed set.
+std::vector<glm::vec4> makeDirections(std::uint32_t count) {
+    std::vector<glm::vec4> dirs(count);
+    Rng rng(0x1C0FFEEu + count);
+    const float golden = 0.6180339887f;
+    for (std::uint32_t k = 0; k < count; ++k) {
+        float u1 = (static_cast<float>(k) + rng.nextFloat()) / static_cast<float>(count);
+        float u2 = std::fmod(static_cast<float>(k) * golden + rng.nextFloat() * 0.25f, 1.0f);
+        float r = std::sqrt(u1), phi = 2.0f * 3.14159265f * u2;
+        dirs[k] = glm::vec4(r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0f, 1.0f - u1)), 0.0f);
+    }
+    // Interleave so the S rays of one update spread over the hemisphere (index j * K/S + r).
+    std::vector<glm::vec4> out(count);
+    std::uint32_t step = 7;
+    while (std::gcd(step, count) != 1) step += 2;
+    for (std::uint32_t k = 0; k < count; ++k) out[k] = dirs[(k * step) % count];
+    return out;
+}
+
+std::uint64_t threadGroups(std::uint64_t threads, std::uint32_t& groupsY) {
+    std::uint64_t groups = (threads + shared::CACHE_GROUP_SIZE - 1) / shared::CACHE_GROUP_SIZE;
+    groupsY = static_cast<std::uint32_t>((groups + 65534) / 65535);
+    return std::min<std::uint64_t>(groups, 65535);
+}
+
+}  // namespace
+
+IrradianceCache::IrradianceCache(gpu::Context& ctx)
+    : mCtx(ctx),
+      mTraceStatic(ctx, "cache/trace_static", shared::LIT_PASS_BINDING_FIRST + kOwnBindings),
+      mVisibility(ctx, "cache/update_visibility", shared::LIT_PASS_BINDING_FIRST + kOwnBindings),
+      mBounce(ctx, "cache/light_bounce", shared::LIT_PASS_BINDING_FIRST + kOwnBindings),
+      mFilter(ctx, "cache/filter", shared::LIT_PASS_BINDING_FIRST + kOwnBindings),
+      mGather(ctx, "cache/gather", shared::LIT_PASS_BINDING_FIRST + kOwnBindings) {
+    mParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::CacheParams), "cache.params");
+}
+
+std::uint64_t IrradianceCache::bytesPerSlot(const lighting::IrradianceCacheSettings& s) {
+    return sizeof(shared::CacheEntry) + shared::CACHE_FACES * s.directions * 4ull   // entry, static hits
+           + 2ull * shared::CACHE_FACES * sizeof(glm::vec4)                          // irradiance, filtered
+           + 2ull * sizeof(shared::CacheBucket) + 2ull * 4                           // table, lists
+           + shared::CACHE_FACES * s.raysPerUpdate * 4ull;                           // selected hits
+}
+
+std::uint32_t IrradianceCache::directionIndex(std::uint32_t j) const {
+    std::uint32_t stride = mSettings.directions / mSettings.raysPerUpdate;
+    return j * stride + mRotation % stride;
+}
+
+void IrradianceCache::clear() {
+    mConfigured = false;
+}
+
+void IrradianceCache::reset(const lighting::IrradianceCacheSettings& settings) {
+    mSettings = settings;
+    mConfigured = true;
+    auto slots = static_cast<std::uint32_t>(
+        std::clamp<std::uint64_t>(settings.budgetBytes / bytesPerSlot(settings), 1, 1u << 24));
+    mDirectory = lighting::IrradianceCacheDirectory(slots);
+    mDirections = makeDirections(settings.directions);
+    mDirectionBuffer = gpu::Buffer(mCtx, gpu::BufferKind::Storage, mDirections.size() * sizeof(glm::vec4), "cache.directions");
+    mCapacity = 0;
+    mStaticHits = {};
+    mIrradiance = {};
+    mFiltered = {};
+    mEntries = {};
+    mLists = {};
+    mTable = {};
+    mSelectedHits = {};
+}
+
+void IrradianceCache::ensureCapacity(std::uint32_t slots, gpu::CommandList& cmd) {
+    if (slots <= mCapacity) return;
+    std::uint32_t capacity = std::min(std::max(std::bit_ceil(slots), 1024u), std::max(mDirectory.maxSlots(), slots));
+    auto grow = [&](gpu::Buffer& buffer, std::uint64_t bytesPerSlot, const char* name) {
+        gpu::Buffer bigger(mCtx, gpu::BufferKind::Storage, capacity * bytesPerSlot, name);
+        if (buffer.valid()) {
+            cmd.copyBuffer(buffer, bigger, {{0, 0, buffer.size()}});
+            mRetired.push_back(std::move(buffer));
+        }
+        buffer = std::move(bigger);
+    };
+    grow(mStaticHits, shared::CACHE_FACES * mSettings.directions * 4ull, "cache.staticHits");
+    grow(mIrradiance, shared::CACHE_FACES * sizeof(glm::vec4), "cache.irradiance");
+    grow(mFiltered, shared::CACHE_FACES * sizeof(glm::vec4), "cache.filtered");
+    mEntries = gpu::Buffer(mCtx, gpu::BufferKind::Storage, capacity * sizeof(shared::CacheEntry), "cache.entries");
+    mLists = gpu::Buffer(mCtx, gpu::BufferKind::Storage, 2ull * capacity * 4, "cache.lists");
+    mSelectedHits = gpu::Buffer(mCtx, gpu::BufferKind::Storage,
+                                std::uint64_t(capacity) * shared::CACHE_FACES * mSettings.raysPerUpdate * 4, "cache.selectedHits");
+    mCapacity = capacity;
+    cmd.barrier();
+}
+
+void IrradianceCache::prepare(const lighting::IrradianceCacheSettings& settings,
+                              std::span<const shared::GBufferTexel> gbuffer, glm::uvec2 size, double timeSeconds,
+                              std::uint32_t frameIndex, std::uint32_t seed, std::span<const glm::ivec3> editedCellMins,
+                              gpu::Uploader& uploader, gpu::CommandList& cmd) {
+    mRetired.clear();  // the previous frame has completed
+    if (!mConfigured || !(settings == mSettings)) reset(settings);
+    mStats = {};
+
+    // Visible voxels, from this frame's G-buffer; an N^3 neighbourhood around the dynamic ones so
+    // the values a moving object interpolates are ready before it gets there (§4.4).
+    std::unordered_set<std::uint64_t> seenStatic, seenDynamic;
+    std::vector<lighting::CacheKey> visible;
+    std::vector<glm::ivec3> dynamicVoxels;
+    for (const shared::GBufferTexel& g : gbuffer) {
+        if (static_cast<std::uint32_t>(g.voxel.w) >= 6u) continue;
+        glm::ivec3 v(g.voxel);
+        if ((g.data.w & shared::GBUFFER_FLAG_DYNAMIC) != 0u) {
+            if (seenDynamic.insert(lighting::packCacheKey({v, shared::CACHE_SET_DYNAMIC})).second) dynamicVoxels.push_back(v);
+        } else if (seenStatic.insert(lighting::packCacheKey({v, shared::CACHE_SET_STATIC})).second) {
+            visible.push_back({v, shared::CACHE_SET_STATIC});
+        }
+    }
+    mStats.visibleStatic = static_cast<std::uint32_t>(seenStatic.size());
+    mStats.visibleDynamic = static_cast<std::uint32_t>(dynamicVoxels.size());
+    const int half = static_cast<int>(settings.neighbourhood / 2);
+    std::unordered_set<std::uint64_t> added;
+    for (const glm::ivec3& v : dynamicVoxels) {
+        for (int z = -half; z <= half; ++z) {
+            for (int y = -half; y <= half; ++y) {
+                for (int x = -half; x <= half; ++x) {
+                    glm::ivec3 n = v + glm::ivec3(x, y, z);
+                    if (glm::any(glm::lessThan(n, glm::ivec3(0))) || glm::any(glm::greaterThan(n, glm::ivec3(0xFFFE)))) continue;
+                    lighting::CacheKey key{n, shared::CACHE_SET_DYNAMIC};
+                    if (added.insert(lighting::packCacheKey(key)).second) visible.push_back(key);
+                }
+            }
+        }
+    }
+
+    mStats.invalidated = mDirectory.invalidateStatic(editedCellMins, settings.maxRayLength);
+    lighting::CacheFrameLists lists = mDirectory.beginFrame(visible, timeSeconds, settings.fadeSeconds);
+    mUpdate = std::move(lists.update);
+    mTrace = std::move(lists.trace);
+    mStats.updated = static_cast<std::uint32_t>(mUpdate.size());
+    mStats.traced = static_cast<std::uint32_t>(mTrace.size());
+    mStats.entries = mDirectory.liveEntries();
+    mStats.dropped = lists.dropped;
+    mStats.evicted = lists.evicted;
+    mStats.rays = (std::uint64_t(mTrace.size()) * settings.directions + std::uint64_t(mUpdate.size()) * settings.raysPerUpdate) *
+                  shared::CACHE_FACES;
+    mFrameIndex = frameIndex;
+    mImage = size;
+    mRotation = frameIndex;
+
+    ensureCapacity(std::max(mDirectory.usedSlots(), 1u), cmd);
+    if (lists.tableChanged || !mTable.valid()) {
+        std::vector<shared::CacheBucket> table = mDirectory.buildTable();
+        if (!mTable.valid() || mTable.size() != table.size() * sizeof(shared::CacheBucket)) {
+            mTable = gpu::Buffer(mCtx, gpu::BufferKind::Storage, table.size() * sizeof(shared::CacheBucket), "cache.table");
+        }
+        uploader.write(mTable, 0, table.data(), table.size() * sizeof(shared::CacheBucket));
+    }
+    auto entries = mDirectory.entries();
+    uploader.write(mEntries, 0, entries.data(), entries.size_bytes());
+    uploader.write(mLists, 0, mUpdate.data(), mUpdate.size() * 4);
+    uploader.write(mLists, std::uint64_t(mCapacity) * 4, mTrace.data(), mTrace.size() * 4);
+    uploader.write(mDirectionBuffer, 0, mDirections.data(), mDirections.size() * sizeof(glm::vec4));
+
+    shared::CacheParams params{};
+    params.counts = glm::uvec4(mUpdate.size(), mTrace.size(), settings.directions, settings.raysPerUpdate);
+    params.frame = glm::uvec4(frameIndex, mRotation, settings.bounces, seed);
+    params.blend = glm::vec4(settings.alpha, std::min(settings.maxRayLength, shared::CACHE_MAX_RAY_LENGTH),
+                             static_cast<float>(timeSeconds), settings.fadeSeconds);
+    params.table = glm::uvec4(static_cast<std::uint32_t>(mTable.size() / sizeof(shared::CacheBucket)) - 1u, mCapacity,
+                              (settings.filter ? 0u : shared::CACHE_FLAG_NO_FILTER) |
+                                  (settings.fullRetrace ? shared::CACHE_FLAG_FULL_RETRACE : 0u),
+                              0u);
+    params.image = glm::uvec4(size, 0u, 0u);
+    uploader.write(mParams, 0, &params, sizeof(params));
+
+    mStats.bytes = mParams.size() + mDirectionBuffer.size() + mEntries.size() + mTable.size() + mLists.size() +
+                   mStaticHits.size() + mSelectedHits.size() + mIrradiance.size() + mFiltered.size();
+}
+
+void IrradianceCache::dispatch(gpu::CommandList& cmd, gpu::ComputePipeline& pipeline, const char* name,
+                               std::uint64_t threads, std::span<const gpu::Buffer* const> buffers) {
+    cmd.beginPass(name);
+    if (threads > 0) {
+        std::uint32_t groupsY = 1;
+        auto groupsX = static_cast<std::uint32_t>(threadGroups(threads, groupsY));
+        pipeline.dispatch(cmd, buffers, groupsX, groupsY);
+    }
+    cmd.endPass();
+    cmd.barrier();
+}
+
+void IrradianceCache::record(gpu::CommandList& cmd, const SceneBindings& scene, const Io& io) {
+    CHECK(mConfigured);
+    const std::vector<const gpu::Buffer*> buffers{
+        &scene.world.info(), &scene.world.cells(), &scene.world.pageTable(), &scene.world.palette(),
+        &scene.lights.info(), &scene.lights.emitters(), &scene.lights.alive(), &scene.lights.alias(),
+        &mParams, &io.frameParams, &mDirectionBuffer, &mEntries, &mTable, &mLists, &mStaticHits, &mSelectedHits,
+        &mIrradiance, &mFiltered, &io.gbuffer, &io.radiance, &io.indirect};
+    const std::uint64_t faces = shared::CACHE_FACES;
+    dispatch(cmd, mTraceStatic, "cache.trace_static", mTrace.size() * faces * mSettings.directions, buffers);
+    dispatch(cmd, mVisibility, "cache.visibility", mUpdate.size() * faces * mSettings.raysPerUpdate, buffers);
+    dispatch(cmd, mBounce, "cache.bounce", mUpdate.size() * faces, buffers);
+    dispatch(cmd, mFilter, "cache.filter", mUpdate.size() * faces, buffers);
+    cmd.beginPass("cache.gather");
+    mGather.dispatch(cmd, buffers, (mImage.x + 7) / 8, (mImage.y + 7) / 8);
+    cmd.endPass();
+    cmd.barrier();
+}
+
+}  // namespace engine::render

@@ -1,0 +1,25 @@
+#version 460
+// Irradiance cache, static set: traces each new (or invalidated) entry's K rays per exposed face
+// through the static world once and keeps the hit (voxel and face) for every later update.
+#extension GL_GOOGLE_include_directive : require
+
+#include "common/irradiance_cache.glsl"
+
+layout(local_size_x = CACHE_GROUP_SIZE) in;
+
+void main() {
+    uint K = gCache.counts.z;
+    uint thread = cacheThread();
+    uint item = thread / (CACHE_FACES * K);
+    if (item >= gCache.counts.y) return;
+    uint face = (thread / K) % CACHE_FACES;
+    uint k = thread % K;
+    uint slot = gLists[gCache.table.y + item];
+    ivec3 voxel = gEntries[slot].voxel.xyz;
+    uint packed = CACHE_HIT_MISS;
+    if (cacheFaceExposed(voxel, face, CACHE_SET_STATIC)) {
+        TraceResult hit = traceRay(cacheRayOrigin(voxel, face), cacheDirection(face, k), gCache.blend.y, true);
+        if (hit.hit) packed = packCacheHit(voxel, hit.voxel, hit.face, false);
+    }
+    gStaticHits[(slot * CACHE_FACES + face) * K + k] = packed;
+}
