@@ -150,6 +150,12 @@ void Hud::drawStats(const HudStats& stats, HudControls& controls, HudActions& ac
                 megabytes(stats.gpuMemory.topGridBytes + stats.gpuMemory.brickPageBytes + stats.gpuMemory.pageTableBytes +
                           stats.gpuMemory.paletteBytes)
                     .c_str());
+    if (stats.cacheUsed) {
+        ImGui::Text("irradiance cache %s, %u entries (%u visible)", megabytes(stats.cache.bytes).c_str(), stats.cache.entries,
+                    stats.cache.updated);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("entries of voxels the camera has seen, least recently seen evicted at the budget");
+    }
     ImGui::Text("undo %zu / redo %zu steps, %s of %s", stats.undo.undoSteps, stats.undo.redoSteps,
                 megabytes(stats.undo.bytes).c_str(), megabytes(stats.undo.maxBytes).c_str());
     if (stats.undo.droppedSteps) ImGui::Text("  %zu oldest steps dropped (budget)", stats.undo.droppedSteps);

@@ -15,6 +15,7 @@
 #include "game/undo_history.h"
 #include "lighting/lighting_settings.h"
 #include "render/gpu_world.h"
+#include "render/irradiance_cache.h"
 #include "shared/frame_params.h"
 #include "world/scene.h"
 
@@ -29,6 +30,8 @@ struct HudStats {
     std::uint64_t emitters = 0;  // lighting::EmitterList entries (exposed emissive voxels, brick lights)
     engine::world::GridMemory cpuMemory;
     engine::render::GpuWorldMemory gpuMemory;
+    bool cacheUsed = false;
+    engine::render::IrradianceCacheStats cache;
     UndoStats undo;
     std::string worldName, savePath;
     bool unsaved = false;

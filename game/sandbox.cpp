@@ -640,6 +640,8 @@ HudStats Sandbox::hudStats() {
     s.emitters = mRenderer->emitters().aliveCount();
     s.cpuMemory = mScene.grid.memory();
     s.gpuMemory = mRenderer->gpuWorld().memory();
+    s.cacheUsed = mLastFrame.cacheUsed;
+    s.cache = mLastFrame.cache;
     s.undo = mUndo.stats();
     s.worldName = mScene.name;
     s.savePath = mSavePath.string();

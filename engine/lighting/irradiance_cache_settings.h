@@ -4,6 +4,9 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
+
+#include "core/error.h"
 
 namespace engine::lighting {
 
@@ -30,5 +33,8 @@ struct IrradianceCacheSettings {
 };
 
 const char* indirectName(Indirect i);
+Result<Indirect> parseIndirect(std::string_view name);
+// Checks the ranges the shaders rely on; the message names the knob as scene files spell it.
+Status validate(const IrradianceCacheSettings& s);
 
 }  // namespace engine::lighting

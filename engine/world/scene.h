@@ -8,6 +8,7 @@
 
 #include <glm/glm.hpp>
 
+#include "lighting/irradiance_cache_settings.h"
 #include "world/brick_grid.h"
 #include "world/material.h"
 
@@ -34,6 +35,9 @@ struct Scene {
     BrickGrid grid{glm::ivec3(8)};
     std::vector<CameraPreset> cameras;
     SkyLight sky;
+    // [indirect]: how the world wants its indirect light; the command line overrides it.
+    lighting::Indirect indirect = lighting::Indirect::None;
+    lighting::IrradianceCacheSettings cache;
 
     // The named preset, the first one for an empty name, or a view of the whole world.
     CameraPreset camera(std::string_view name = {}) const;

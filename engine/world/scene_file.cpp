@@ -175,6 +175,7 @@ public:
             scene.sky.sunRadiance = sky.vec3("sun_radiance", scene.sky.sunRadiance);
             scene.sky.skyRadiance = sky.vec3("sky_radiance", scene.sky.skyRadiance);
         }
+        if (const toml::node* n = top.node("indirect")) parseIndirect(n, scene);
         // [path] (camera keys and events) is read by world/flythrough_file.h when a capture plays it.
         (void)top.node("path");
         scene.grid.clearDirty();
@@ -182,6 +183,34 @@ public:
     }
 
 private:
+    void parseIndirect(const toml::node* n, Scene& scene) {
+        const toml::table* t = n->as_table();
+        if (!t) fail(n, "'indirect' must be a table");
+        Table ind(*this, *t);
+        if (const toml::node* mode = ind.node("mode")) {
+            auto name = mode->value<std::string>();
+            auto parsed = lighting::parseIndirect(name ? *name : "");
+            if (!parsed) fail(mode, "indirect: {}", parsed.error().message);
+            scene.indirect = *parsed;
+        }
+        lighting::IrradianceCacheSettings& c = scene.cache;
+        auto count = [&](std::string_view key, std::uint32_t fallback) {
+            int v = ind.integer(key, static_cast<int>(fallback));
+            if (v < 0) fail(ind.node(key), "'{}' must not be negative", key);
+            return static_cast<std::uint32_t>(v);
+        };
+        c.directions = count("directions", c.directions);
+        c.raysPerUpdate = count("rays", c.raysPerUpdate);
+        c.bounces = count("bounces", c.bounces);
+        c.neighbourhood = count("neighbourhood", c.neighbourhood);
+        c.alpha = static_cast<float>(ind.number("alpha", c.alpha));
+        c.fadeSeconds = static_cast<float>(ind.number("fade", c.fadeSeconds));
+        c.maxRayLength = static_cast<float>(ind.number("max_ray", c.maxRayLength));
+        c.filter = ind.boolean("filter", c.filter);
+        c.budgetBytes = static_cast<std::uint64_t>(ind.number("budget_mb", double(c.budgetBytes) / 1048576.0) * 1048576.0);
+        if (Status s = lighting::validate(c); !s) fail(n, "indirect: {}", s.error().message);
+    }
+
     void parseWorld(Table& top, Scene& scene) {
         const toml::node* n = top.node("world");
         if (!n || !n->as_table()) fail(&top.raw(), "missing [world] table");

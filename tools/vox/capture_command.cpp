@@ -136,14 +136,14 @@ engine::Status writeCsv(const fs::path& file, const std::vector<FrameRow>& rows)
 int runCapture(const CaptureOptions& o) {
     auto size = parseSize(o.size, "--size");
     if (!size) return fail(size.error());
-    auto lighting = lightingSettings(o.lighting);
-    if (!lighting) return fail(lighting.error());
     if (o.out.empty()) return fail(engine::makeError("--out: give the output folder"));
     if (o.fps < 0.0 || o.fps > 1000.0) return fail(engine::makeError("--fps must be in (0, 1000]"));
     if (o.sheet > 1000) return fail(engine::makeError("--sheet must be in 0..1000"));
 
     auto scene = loadWorld(o.world);
     if (!scene) return fail(scene.error());
+    auto lighting = lightingSettings(o.lighting, &*scene);
+    if (!lighting) return fail(lighting.error());
     fs::path pathFile = scene->sourcePath;
     if (!o.path.empty()) {
         auto p = resolvePathFile(o.path);

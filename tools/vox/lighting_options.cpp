@@ -22,23 +22,19 @@ void addLightingOptions(CLI::App& cmd, LightingOptions& o) {
     cmd.add_option("--bounces", o.bounces, "reference: indirect bounces (0 = direct light only)")->capture_default_str();
     cmd.add_option("--seed", o.seed, "Random seed")->capture_default_str();
     cmd.add_option("--indirect", o.indirect,
-                   "Indirect light: none | cache (voxel-face irradiance cache) | reference (path-traced bounces)")
-        ->capture_default_str();
-    cmd.add_option("--cache-directions", o.cacheDirections, "cache: K directions per voxel face (16..256)")->capture_default_str();
-    cmd.add_option("--cache-rays", o.cacheRays, "cache: of the K, rays per face per frame (a divisor of K)")->capture_default_str();
-    cmd.add_option("--cache-bounces", o.cacheBounces, "cache: 1 = one bounce (the paper); more reads the cache at each hit")
-        ->capture_default_str();
-    cmd.add_option("--cache-alpha", o.cacheAlpha, "cache: temporal blend factor")->capture_default_str();
-    cmd.add_option("--cache-neighbourhood", o.cacheNeighbourhood, "cache: N^3 around visible dynamic voxels (0, 3, 5)")
-        ->capture_default_str();
-    cmd.add_option("--cache-max-ray", o.cacheMaxRay, "cache: ray length in voxels (also an edit's reach), up to 250")
-        ->capture_default_str();
-    cmd.add_option("--cache-filter", o.cacheFilter, "cache: 3^3 filter on|off")->capture_default_str();
-    cmd.add_option("--cache-budget-mb", o.cacheBudgetMb, "cache: memory budget in MiB (least recently seen evicted)")
-        ->capture_default_str();
+                   "Indirect light: none | cache (voxel-face irradiance cache) | reference (path-traced bounces); "
+                   "default: the scene's [indirect] mode, else none");
+    cmd.add_option("--cache-directions", o.cacheDirections, "cache: K directions per voxel face, 16..256 (128)");
+    cmd.add_option("--cache-rays", o.cacheRays, "cache: of the K, rays per face per frame, a divisor of K (16)");
+    cmd.add_option("--cache-bounces", o.cacheBounces, "cache: 1 = one bounce (the paper); more reads the cache at each hit (1)");
+    cmd.add_option("--cache-alpha", o.cacheAlpha, "cache: temporal blend factor (0.03)");
+    cmd.add_option("--cache-neighbourhood", o.cacheNeighbourhood, "cache: N^3 around visible dynamic voxels: 0, 3, 5 (5)");
+    cmd.add_option("--cache-max-ray", o.cacheMaxRay, "cache: ray length in voxels, also an edit's reach, up to 250 (250)");
+    cmd.add_option("--cache-filter", o.cacheFilter, "cache: 3^3 filter on|off (on)");
+    cmd.add_option("--cache-budget-mb", o.cacheBudgetMb, "cache: memory budget in MiB; least recently seen evicted (64)");
 }
 
-engine::Result<LightingSettings> lightingSettings(const LightingOptions& o) {
+engine::Result<LightingSettings> lightingSettings(const LightingOptions& o, const engine::world::Scene* scene) {
     LightingSettings s;
     std::string method = o.method;
     if (method == "restir-unbiased") {
@@ -90,38 +86,35 @@ engine::Result<LightingSettings> lightingSettings(const LightingOptions& o) {
     s.bounces = o.bounces;
     s.seed = o.seed;
 
-    if (o.indirect == "none") {
-        s.indirect = engine::lighting::Indirect::None;
-    } else if (o.indirect == "cache") {
-        s.indirect = engine::lighting::Indirect::Cache;
-    } else if (o.indirect == "reference") {
+    s.indirect = scene ? scene->indirect : engine::lighting::Indirect::None;
+    if (o.indirect) {
+        auto indirect = engine::lighting::parseIndirect(*o.indirect);
+        if (!indirect) return engine::makeError("--indirect: {}", indirect.error().message);
+        s.indirect = *indirect;
+    }
+    if (s.indirect == engine::lighting::Indirect::Reference) {
         // The path tracer with bounces is the indirect reference; it replaces the direct method.
-        s.indirect = engine::lighting::Indirect::Reference;
         s.method = Method::Reference;
         s.bounces = std::max(s.bounces, 1u);
-    } else {
-        return engine::makeError("--indirect: expected none, cache or reference, got '{}'", o.indirect);
     }
     auto& c = s.cache;
-    if (o.cacheDirections < 16 || o.cacheDirections > 256) return engine::makeError("--cache-directions must be in 16..256");
-    if (o.cacheRays < 1 || o.cacheRays > o.cacheDirections || o.cacheDirections % o.cacheRays != 0)
-        return engine::makeError("--cache-rays must divide --cache-directions ({})", o.cacheDirections);
-    if (o.cacheBounces < 1 || o.cacheBounces > 8) return engine::makeError("--cache-bounces must be in 1..8");
-    if (!(o.cacheAlpha > 0.0f && o.cacheAlpha <= 1.0f)) return engine::makeError("--cache-alpha must be in (0, 1]");
-    if (o.cacheNeighbourhood != 0 && o.cacheNeighbourhood != 3 && o.cacheNeighbourhood != 5)
-        return engine::makeError("--cache-neighbourhood must be 0, 3 or 5");
-    if (!(o.cacheMaxRay >= 1.0f && o.cacheMaxRay <= 250.0f)) return engine::makeError("--cache-max-ray must be in 1..250");
-    if (!(o.cacheBudgetMb >= 1.0 && o.cacheBudgetMb <= 16384.0)) return engine::makeError("--cache-budget-mb must be in 1..16384");
-    auto filter = onOff(o.cacheFilter, "--cache-filter");
-    if (!filter) return filter.error();
-    c.directions = o.cacheDirections;
-    c.raysPerUpdate = o.cacheRays;
-    c.bounces = o.cacheBounces;
-    c.alpha = o.cacheAlpha;
-    c.neighbourhood = o.cacheNeighbourhood;
-    c.maxRayLength = o.cacheMaxRay;
-    c.filter = *filter;
-    c.budgetBytes = static_cast<std::uint64_t>(o.cacheBudgetMb * 1024.0 * 1024.0);
+    if (scene) c = scene->cache;
+    c.directions = o.cacheDirections.value_or(c.directions);
+    c.raysPerUpdate = o.cacheRays.value_or(c.raysPerUpdate);
+    c.bounces = o.cacheBounces.value_or(c.bounces);
+    c.alpha = o.cacheAlpha.value_or(c.alpha);
+    c.neighbourhood = o.cacheNeighbourhood.value_or(c.neighbourhood);
+    c.maxRayLength = o.cacheMaxRay.value_or(c.maxRayLength);
+    if (o.cacheBudgetMb) {
+        if (!(*o.cacheBudgetMb >= 1.0 && *o.cacheBudgetMb <= 16384.0)) return engine::makeError("--cache-budget-mb must be in 1..16384");
+        c.budgetBytes = static_cast<std::uint64_t>(*o.cacheBudgetMb * 1048576.0);
+    }
+    if (o.cacheFilter) {
+        auto filter = onOff(*o.cacheFilter, "--cache-filter");
+        if (!filter) return filter.error();
+        c.filter = *filter;
+    }
+    if (engine::Status valid = engine::lighting::validate(c); !valid) return engine::makeError("cache: {}", valid.error().message);
     return s;
 }
 

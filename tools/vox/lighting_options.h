@@ -3,10 +3,12 @@
 
 #include <CLI/CLI.hpp>
 
+#include <optional>
 #include <string>
 
 #include "core/error.h"
 #include "lighting/lighting_settings.h"
+#include "world/scene.h"
 
 namespace vox {
 
@@ -21,18 +23,17 @@ struct LightingOptions {
     std::uint32_t shadowRays = 1;
     std::uint32_t bounces = 0;
     std::uint32_t seed = 1;
-    std::string indirect = "none";
-    std::uint32_t cacheDirections = 128;
-    std::uint32_t cacheRays = 16;
-    std::uint32_t cacheBounces = 1;
-    float cacheAlpha = 0.03f;
-    std::uint32_t cacheNeighbourhood = 5;
-    float cacheMaxRay = 250.0f;
-    std::string cacheFilter = "on";
-    double cacheBudgetMb = 64.0;
+    // Unset: the scene file's [indirect] table decides, else the defaults of IrradianceCacheSettings.
+    std::optional<std::string> indirect;
+    std::optional<std::uint32_t> cacheDirections, cacheRays, cacheBounces, cacheNeighbourhood;
+    std::optional<float> cacheAlpha, cacheMaxRay;
+    std::optional<std::string> cacheFilter;
+    std::optional<double> cacheBudgetMb;
 };
 
 void addLightingOptions(CLI::App& cmd, LightingOptions& o);
-engine::Result<engine::lighting::LightingSettings> lightingSettings(const LightingOptions& o);
+// `scene`, when given, supplies the indirect-light settings the command line leaves unset.
+engine::Result<engine::lighting::LightingSettings> lightingSettings(const LightingOptions& o,
+                                                                   const engine::world::Scene* scene = nullptr);
 
 }  // namespace vox

@@ -19,12 +19,12 @@ int runRender(const RenderOptions& o) {
     if (ext != ".png" && ext != ".exr") return fail(engine::makeError("-o {}: the file must end in .png or .exr", o.output));
     if (o.pos.empty() != o.target.empty()) return fail(engine::makeError("--pos and --target go together"));
 
-    auto lighting = lightingSettings(o.lighting);
-    if (!lighting) return fail(lighting.error());
     if (o.frames < 1 || o.frames > 100000) return fail(engine::makeError("--frames must be in 1..100000"));
     if (o.spp < 1 || o.spp > 1000000) return fail(engine::makeError("--spp must be in 1..1000000"));
     auto scene = loadWorld(o.world);
     if (!scene) return fail(scene.error());
+    auto lighting = lightingSettings(o.lighting, &*scene);
+    if (!lighting) return fail(lighting.error());
     engine::world::CameraPreset camera;
     if (!o.pos.empty()) {
         auto pos = parseVec3(o.pos, "--pos");
@@ -92,6 +92,12 @@ int runRender(const RenderOptions& o) {
     for (const auto& [name, ms] : frame.passMs) std::printf(" %s %.2f", name.c_str(), ms);
     std::printf("\n");
     std::printf("emitters %u (list update %.3f ms CPU)\n", frame.emitters, results.front().emitterUpdateMs);
+    if (frame.cacheUsed) {
+        const auto& c = frame.cache;
+        std::printf("cache    %u visible static + %u dynamic voxels, %u entries updated, %u live, %.2f MiB GPU, %llu rays\n",
+                    c.visibleStatic, c.visibleDynamic, c.updated, c.entries, double(c.bytes) / 1048576.0,
+                    static_cast<unsigned long long>(c.rays));
+    }
     if (!o.timings.empty()) {
         std::ofstream json(o.timings);
         json << "{\"world\": \"" << scene->name << "\", \"lighting\": \"" << l.describe() << "\", \"size\": ["
