@@ -27,6 +27,7 @@ void addBenchRestirCommand(CLI::App& bench, int& exitCode);
 void addBenchAccuracyCommand(CLI::App& bench, int& exitCode);
 void addBenchSweepCommand(CLI::App& bench, int& exitCode);
 void addBenchStabilityCommand(CLI::App& bench, int& exitCode);
+void addBenchCacheCommand(CLI::App& bench, int& exitCode);
 
 struct RenderOptions {
     std::string world;

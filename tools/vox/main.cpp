@@ -64,6 +64,7 @@ int main(int argc, char** argv) {
     vox::addBenchAccuracyCommand(*bench, exitCode);
     vox::addBenchSweepCommand(*bench, exitCode);
     vox::addBenchStabilityCommand(*bench, exitCode);
+    vox::addBenchCacheCommand(*bench, exitCode);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -1,0 +1,179 @@
+// vox bench cache: how the irradiance cache scales (issue 4, "Scaling"), all in one run so the
+// figures compare as ratios on a drifting machine:
+//   1. divide-and-win: the static set's visibility update re-tracing only the dynamic grid
+//      against re-tracing both worlds, frames interleaved (the paper reports 2.7-5.9x);
+//   2. cost against the number of camera-visible voxels (image sizes of one view);
+//   3. memory and update time against world size: the same view in ever larger worlds.
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+
+#include <fmt/format.h>
+
+#include "commands.h"
+#include "gpu/context.h"
+#include "render/renderer.h"
+#include "world/world_edits.h"
+
+namespace vox {
+
+namespace {
+
+struct CacheBenchOptions {
+    std::string world = "dragon_city";
+    std::string size = "128x96";
+    std::uint32_t frames = 12;
+    std::string output = "out/bench_cache.json";
+};
+
+double median(std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
+double cacheMs(const engine::render::FrameResult& r) {
+    double ms = 0.0;
+    for (const auto& [name, t] : r.passMs)
+        if (name.rfind("cache.", 0) == 0) ms += t;
+    return ms;
+}
+
+engine::lighting::LightingSettings cacheLighting() {
+    engine::lighting::LightingSettings l;
+    l.method = engine::lighting::Method::Preview;  // the direct term is not what is measured
+    l.indirect = engine::lighting::Indirect::Cache;
+    return l;
+}
+
+// A street of buildings along x in a world of `size`, closed by a wall at x = 100: the camera
+// sees the same voxels whatever the size; the rest of the world holds more of the same, out of view.
+engine::world::Scene streetWorld(glm::ivec3 size) {
+    using namespace engine::world;
+    Scene scene;
+    scene.name = fmt::format("street {}x{}x{}", size.x, size.y, size.z);
+    scene.grid = BrickGrid(size);
+    auto white = scene.palette.add(Material{"white", glm::vec3(0.75f)});
+    auto brick = scene.palette.add(Material{"brick", glm::vec3(0.7f, 0.3f, 0.2f)});
+    fillBox(scene.grid, Box{{0, 0, 0}, {size.x, 4, size.z}}, *white);
+    for (int x = 0; x + 12 <= size.x; x += 16) {
+        fillBox(scene.grid, Box{{x, 4, 4}, {x + 12, 24 + (x / 16 % 3) * 6, 20}}, *brick);
+        fillBox(scene.grid, Box{{x, 4, 44}, {x + 12, 20 + (x / 16 % 2) * 8, 60}}, *white);
+    }
+    fillBox(scene.grid, Box{{100, 4, 0}, {104, 40, 64}}, *brick);  // the end of the view; more world behind it
+    scene.cameras.push_back(CameraPreset{"street", {2.0f, 14.0f, 32.0f}, {60.0f, 8.0f, 32.0f}, 70.0f});
+    scene.grid.clearDirty();
+    return scene;
+}
+
+int runCacheBench(const CacheBenchOptions& o) {
+    auto size = parseSize(o.size, "--size");
+    if (!size) return fail(size.error());
+    if (o.frames < 4 || o.frames > 1000) return fail(engine::makeError("--frames must be in 4..1000"));
+    auto ctx = engine::gpu::Context::create({});
+    if (!ctx) return fail(ctx.error());
+    std::string json = "{\n";
+    engine::render::FrameSettings frame;
+
+    // 1. Divide-and-win on a world with dynamic objects, the two modes in alternate frames.
+    {
+        auto scene = loadWorld(o.world);
+        if (!scene) return fail(scene.error());
+        frame.width = size->x;
+        frame.height = size->y;
+        engine::render::Renderer divide(**ctx), full(**ctx);
+        auto lDivide = cacheLighting(), lFull = cacheLighting();
+        lFull.cache.fullRetrace = true;
+        std::vector<double> tDivide, tFull;
+        engine::render::FrameResult last;
+        std::printf("divide-and-win on %s at %ux%u, %u frames each ...\n", scene->name.c_str(), frame.width, frame.height,
+                    o.frames);
+        for (std::uint32_t i = 0; i < o.frames + 2; ++i) {
+            frame.timeSeconds = i / 30.0;
+            frame.frameIndex = i;
+            last = divide.render(*scene, scene->camera(), frame, lDivide);
+            auto f = full.render(*scene, scene->camera(), frame, lFull);
+            if (i < 2) continue;  // the first frames trace the static rays
+            tDivide.push_back(last.passMsOf("cache.visibility"));
+            tFull.push_back(f.passMsOf("cache.visibility"));
+        }
+        const double a = median(tDivide), b = median(tFull);
+        std::printf("| visibility update | dynamic-only re-trace | full re-trace | speed-up |\n|---|---|---|---|\n");
+        std::printf("| %s, %u entries, %u dynamic voxels visible | %.2f ms | %.2f ms | %.2fx |\n", scene->name.c_str(),
+                    last.cache.updated, last.cache.visibleDynamic, a, b, b / a);
+        json += fmt::format("  \"divide_and_win\": {{\"world\": \"{}\", \"entries\": {}, \"dynamic_ms\": {:.3f}, "
+                            "\"full_ms\": {:.3f}, \"speedup\": {:.3f}}},\n",
+                            scene->name, last.cache.updated, a, b, b / a);
+    }
+
+    // 2. Cost against the number of visible voxels: one view at growing image sizes.
+    {
+        engine::world::Scene scene = streetWorld({256, 64, 64});
+        std::printf("\n| image | visible voxels | cache entries updated | cache ms/frame | ms per 1000 entries |\n|---|---|---|---|---|\n");
+        json += "  \"visible\": [";
+        bool first = true;
+        for (std::uint32_t w : {32u, 64u, 96u, 128u}) {
+            engine::render::Renderer r(**ctx);
+            frame.width = w;
+            frame.height = w * 3 / 4;
+            std::vector<double> ms;
+            engine::render::FrameResult last;
+            for (std::uint32_t i = 0; i < o.frames; ++i) {
+                frame.frameIndex = i;
+                last = r.render(scene, scene.camera(), frame, cacheLighting());
+                if (i >= 2) ms.push_back(cacheMs(last) - last.passMsOf("cache.trace_static"));
+            }
+            const double m = median(ms);
+            std::printf("| %ux%u | %u | %u | %.2f | %.2f |\n", frame.width, frame.height, last.cache.visibleStatic,
+                        last.cache.updated, m, 1000.0 * m / std::max(1u, last.cache.updated));
+            json += fmt::format("{}{{\"width\": {}, \"visible\": {}, \"ms\": {:.3f}}}", first ? "" : ", ", frame.width,
+                                last.cache.visibleStatic, m);
+            first = false;
+        }
+        json += "],\n";
+    }
+
+    // 3. The same view in larger worlds: cache memory and update time must not follow.
+    {
+        std::printf("\n| world | world bricks | cache entries | cache MiB | cache ms/frame |\n|---|---|---|---|---|\n");
+        json += "  \"world_size\": [";
+        bool first = true;
+        frame.width = size->x;
+        frame.height = size->y;
+        for (int length : {128, 256, 512, 1024}) {
+            engine::world::Scene scene = streetWorld({length, 64, 64});
+            engine::render::Renderer r(**ctx);
+            std::vector<double> ms;
+            engine::render::FrameResult last;
+            for (std::uint32_t i = 0; i < o.frames; ++i) {
+                frame.frameIndex = i;
+                last = r.render(scene, scene.camera(), frame, cacheLighting());
+                if (i >= 2) ms.push_back(cacheMs(last) - last.passMsOf("cache.trace_static"));
+            }
+            std::printf("| %s | %u | %u | %.2f | %.2f |\n", scene.name.c_str(), scene.grid.liveBricks(), last.cache.entries,
+                        double(last.cache.bytes) / 1048576.0, median(ms));
+            json += fmt::format("{}{{\"length\": {}, \"entries\": {}, \"bytes\": {}, \"ms\": {:.3f}}}", first ? "" : ", ",
+                                length, last.cache.entries, last.cache.bytes, median(ms));
+            first = false;
+        }
+        json += "]\n}\n";
+    }
+    std::filesystem::create_directories(std::filesystem::path(o.output).parent_path());
+    std::ofstream(o.output) << json;
+    std::printf("\nwrote %s\n", o.output.c_str());
+    return 0;
+}
+
+}  // namespace
+
+void addBenchCacheCommand(CLI::App& bench, int& exitCode) {
+    auto* cmd = bench.add_subcommand("cache", "Irradiance cache: divide-and-win speed-up, cost vs visible voxels, memory vs world size");
+    auto o = std::make_shared<CacheBenchOptions>();
+    cmd->add_option("--world", o->world, "World with dynamic objects for the divide-and-win figure")->capture_default_str();
+    cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
+    cmd->add_option("--frames", o->frames, "Frames per measurement (medians; the first two are skipped)")->capture_default_str();
+    cmd->add_option("-o,--output", o->output, "JSON results")->capture_default_str();
+    cmd->callback([o, &exitCode] { exitCode = runCacheBench(*o); });
+}
+
+}  // namespace vox
