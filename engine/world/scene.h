@@ -1,5 +1,5 @@
 // A scene: the world grid with its palette, plus what a scene file says about viewing and
-// lighting it (camera presets, sun and sky).
+// lighting it (camera presets, sun and sky), and the dynamic objects moving through it.
 #pragma once
 
 #include <string>
@@ -9,6 +9,8 @@
 #include <glm/glm.hpp>
 
 #include "world/brick_grid.h"
+#include "world/dynamic_grid.h"
+#include "world/dynamic_object.h"
 #include "world/material.h"
 
 namespace engine::world {
@@ -34,6 +36,10 @@ struct Scene {
     BrickGrid grid{glm::ivec3(8)};
     std::vector<CameraPreset> cameras;
     SkyLight sky;
+    // Moving objects and this frame's voxelisation of them (world/dynamic_grid.h), posed by
+    // updateDynamicObjects from the frame's scene time.
+    std::vector<DynamicObject> objects;
+    DynamicGrid dynamic;
 
     // The named preset, the first one for an empty name, or a view of the whole world.
     CameraPreset camera(std::string_view name = {}) const;
