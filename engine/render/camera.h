@@ -15,6 +15,9 @@ struct FrameSettings {
     std::uint32_t frameIndex = 0;
     std::uint32_t seed = 1;
     float exposure = 1.0f;
+    // Scene time in seconds: poses the dynamic objects (world/dynamic_grid.h). The renderer
+    // remembers the last frame's time for their motion vectors.
+    double timeSeconds = 0.0;
 };
 
 shared::FrameParams makeFrameParams(const world::CameraPreset& camera, const world::SkyLight& sky,
