@@ -315,6 +315,7 @@ void Sandbox::frame() {
         settings.height = size.y;
         settings.frameIndex = static_cast<std::uint32_t>(mFrame);
         settings.exposure = mExposure;
+        settings.timeSeconds = mTime;  // dynamic objects: the script clock when scripted, else wall clock
         mPresenter->setOverlay(ImGui::GetDrawData());
         if (mCaptureRequested) mPresenter->captureThisFrame();
         result = mRenderer->render(mScene, mCamera.preset(), settings, mLighting, mPresenter.get());

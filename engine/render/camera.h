@@ -15,7 +15,10 @@ struct FrameSettings {
     std::uint32_t frameIndex = 0;
     std::uint32_t seed = 1;
     float exposure = 1.0f;
-    double timeSeconds = 0.0;  // scene time: dynamic objects' paths, the cache's fade
+    // Scene time in seconds: poses the dynamic objects (world/dynamic_grid.h) and times the
+    // irradiance cache's fade. The renderer
+    // remembers the last frame's time for their motion vectors.
+    double timeSeconds = 0.0;
 };
 
 shared::FrameParams makeFrameParams(const world::CameraPreset& camera, const world::SkyLight& sky,

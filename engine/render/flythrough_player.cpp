@@ -22,6 +22,7 @@ FlythroughPlayer::Frame FlythroughPlayer::render(std::uint32_t frame, const Fram
     out.camera = mFlythrough.camera.at(out.time, "path");
     FrameSettings s = settings;
     s.frameIndex = frame;
+    s.timeSeconds = out.time;  // dynamic objects follow the same clock as the camera and events
     mRenderer.setFrameIndex(frame);
     out.result = mRenderer.render(mScene, out.camera, s, lighting);
     return out;

@@ -23,7 +23,7 @@ bool samePalette(const std::vector<shared::GpuMaterial>& a, const std::vector<sh
 }
 }  // namespace
 
-GpuWorld::GpuWorld(gpu::Context& ctx) : mCtx(ctx) {}
+GpuWorld::GpuWorld(gpu::Context& ctx) : mCtx(ctx), mDynamic(ctx) {}
 
 WorldUploadStats GpuWorld::sync(const world::Scene& scene, gpu::Uploader& uploader) {
     const world::BrickGrid& grid = scene.grid;
@@ -84,12 +84,17 @@ WorldUploadStats GpuWorld::sync(const world::Scene& scene, gpu::Uploader& upload
     }
     stats.bytes += std::uint64_t(stats.bricks) * (kMaskBytes + kMaterialBytes);
 
+    stats.dynamicBytes = mDynamic.sync(scene.dynamic, uploader);
+    stats.bytes += stats.dynamicBytes;
+
     shared::BrickGridInfo info{};
     info.sizeInCells = glm::ivec4(grid.sizeInCells(), 0);
     info.sizeInVoxels = glm::ivec4(grid.sizeInVoxels(), 0);
     info.sizeInSuperCells = glm::ivec4(grid.sizeInSuperCells(), 0);
     info.counts = glm::uvec4(grid.liveBricks(), static_cast<std::uint32_t>(mPages.size()),
                              static_cast<std::uint32_t>(scene.palette.size()), 0u);
+    const std::uint64_t dynamicAddress = mDynamic.address();
+    info.dynamicGrid = glm::uvec4(std::uint32_t(dynamicAddress), std::uint32_t(dynamicAddress >> 32), 0u, 0u);
     uploader.write(mInfo, 0, &info, sizeof(info));
     return stats;
 }
@@ -134,6 +139,7 @@ GpuWorldMemory GpuWorld::memory() const {
     m.brickPageBytes = mPages.size() * kPageBytes;
     m.pageTableBytes = mPageTable.valid() ? mPageTable.size() : 0;
     m.paletteBytes = mPalette.valid() ? mPalette.size() : 0;
+    m.dynamicGridBytes = mDynamic.bytes();
     return m;
 }
 

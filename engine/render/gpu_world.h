@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "gpu/buffer.h"
+#include "render/gpu_dynamic_grid.h"
 #include "world/scene.h"
 
 namespace engine::gpu {
@@ -25,6 +26,7 @@ struct WorldUploadStats {
     std::uint32_t bricks = 0;      // bricks uploaded
     std::uint32_t cells = 0;       // top-grid cells uploaded
     std::uint64_t bytes = 0;
+    std::uint64_t dynamicBytes = 0;  // the dynamic grid, uploaded whole when it changed (0: unchanged)
 };
 
 struct GpuWorldMemory {
@@ -33,6 +35,7 @@ struct GpuWorldMemory {
     std::uint32_t brickPages = 0;
     std::uint64_t pageTableBytes = 0;
     std::uint64_t paletteBytes = 0;
+    std::uint64_t dynamicGridBytes = 0;
 };
 
 class GpuWorld {
@@ -43,12 +46,16 @@ public:
     // afterwards; the caller clears the grid's dirty marks once every consumer has seen them.
     WorldUploadStats sync(const world::Scene& scene, gpu::Uploader& uploader);
     // Forget the GPU state: the next sync uploads everything.
-    void invalidate() { mSizeInCells = glm::ivec3(0); }
+    void invalidate() {
+        mSizeInCells = glm::ivec3(0);
+        mDynamic.invalidate();
+    }
 
     const gpu::Buffer& info() const { return mInfo; }
     const gpu::Buffer& cells() const { return mCells; }
     const gpu::Buffer& pageTable() const { return mPageTable; }
     const gpu::Buffer& palette() const { return mPalette; }
+    const GpuDynamicGrid& dynamicGrid() const { return mDynamic; }
     GpuWorldMemory memory() const;
 
 private:
@@ -60,6 +67,7 @@ private:
     gpu::Buffer mInfo, mCells, mPageTable, mPalette;
     std::vector<gpu::Buffer> mPages;
     std::vector<shared::GpuMaterial> mUploadedPalette;
+    GpuDynamicGrid mDynamic;  // scene.dynamic, reached through the info's device address
 };
 
 }  // namespace engine::render

@@ -97,6 +97,7 @@ void Renderer::resetHistory() {
     mHistoryValid = false;
     mAccumulatedSamples = 0;
     mPrevCamera.reset();
+    mPrevTime.reset();
 }
 
 FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& camera, const FrameSettings& settings,
@@ -114,6 +115,11 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
     result.emitterUpdate = mEmitters.update(scene);
     result.emitterUpdateMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     result.emitters = mEmitters.aliveCount();
+    // Objects at this frame's time; their previous pose is at the last frame's (this one's on a
+    // first frame, like the camera), so motion vectors follow them.
+    start = std::chrono::steady_clock::now();
+    world::updateDynamicObjects(scene.objects, scene.dynamic, settings.timeSeconds, mPrevTime.value_or(settings.timeSeconds));
+    result.dynamicUpdateMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
     gpu::CommandList cmd(mCtx, &mTimer);
     cmd.begin();
@@ -131,7 +137,8 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
     }
     scene.grid.clearDirty();
     lighting::EmitterUploadStats lightUpload = mGpuEmitters.sync(mEmitters, mUploader);
-    const bool worldChanged = result.upload.bricks || result.upload.cells || lightUpload.slots || lightUpload.aliveAndAlias;
+    const bool worldChanged = result.upload.bricks || result.upload.cells || result.upload.dynamicBytes ||
+                              lightUpload.slots || lightUpload.aliveAndAlias;
 
     FrameSettings frame = settings;
     frame.frameIndex = mFrameIndex;
@@ -187,6 +194,7 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
     if (lighting.method == lighting::Method::Reference) mAccumulatedSamples += std::max(lighting.samplesPerFrame, 1u);
     result.referenceSamples = mAccumulatedSamples;
     mPrevCamera = camera;
+    mPrevTime = settings.timeSeconds;
     mPrevLighting = lighting;
     mHistoryValid = true;
     mCurrent ^= 1u;

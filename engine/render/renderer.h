@@ -1,5 +1,6 @@
 // Renderer: owns the frame. Each frame:
-//   upload (dirty bricks, changed emitters, frame constants)
+//   pose dynamic objects at the frame's scene time and re-voxelise them (CPU)
+//   upload (dirty bricks, the dynamic grid if it changed, changed emitters, frame constants)
 //   -> primary_rays (G-buffer with motion vectors)
 //   -> lighting: preview shading | ReSTIR (initial, temporal, spatial, shade) | RIS | light
 //      sampling | brute force | reference path tracing (accumulates while nothing changes)
@@ -47,6 +48,7 @@ struct FrameResult {
     WorldUploadStats upload;
     lighting::EmitterUpdateStats emitterUpdate;
     double emitterUpdateMs = 0.0;  // CPU time of the emitter list update
+    double dynamicUpdateMs = 0.0;  // CPU time of posing and re-voxelising dynamic objects
     std::uint32_t emitters = 0;
     std::uint32_t referenceSamples = 0;  // samples per pixel accumulated so far (reference)
     bool cacheUsed = false;
@@ -116,6 +118,7 @@ private:
     std::uint32_t mFrameIndex = 0;
     bool mHistoryValid = false;
     std::optional<world::CameraPreset> mPrevCamera;
+    std::optional<double> mPrevTime;  // last frame's scene time, for the objects' motion vectors
     std::optional<lighting::LightingSettings> mPrevLighting;
     std::uint32_t mAccumulatedSamples = 0;
 };

@@ -1,5 +1,5 @@
 // A scene: the world grid with its palette, plus what a scene file says about viewing and
-// lighting it (camera presets, sun and sky).
+// lighting it (camera presets, sun and sky), and the dynamic objects moving through it.
 #pragma once
 
 #include <string>
@@ -10,6 +10,8 @@
 
 #include "lighting/irradiance_cache_settings.h"
 #include "world/brick_grid.h"
+#include "world/dynamic_grid.h"
+#include "world/dynamic_object.h"
 #include "world/material.h"
 
 namespace engine::world {
@@ -38,6 +40,10 @@ struct Scene {
     // [indirect]: how the world wants its indirect light; the command line overrides it.
     lighting::Indirect indirect = lighting::Indirect::None;
     lighting::IrradianceCacheSettings cache;
+    // Moving objects and this frame's voxelisation of them (world/dynamic_grid.h), posed by
+    // updateDynamicObjects from the frame's scene time.
+    std::vector<DynamicObject> objects;
+    DynamicGrid dynamic;
 
     // The named preset, the first one for an empty name, or a view of the whole world.
     CameraPreset camera(std::string_view name = {}) const;

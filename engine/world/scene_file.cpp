@@ -160,6 +160,11 @@ public:
             if (!a) fail(n, "'generator' must be an array of tables ([[generator]])");
             for (const toml::node& g : *a) parseGenerator(g, scene);
         }
+        if (const toml::node* n = top.node("object")) {
+            const toml::array* a = n->as_array();
+            if (!a) fail(n, "'object' must be an array of tables ([[object]])");
+            for (const toml::node& o : *a) parseObject(o, scene);
+        }
         if (const toml::node* n = top.node("camera")) {
             const toml::array* a = n->as_array();
             if (!a) fail(n, "'camera' must be an array of tables ([[camera]])");
@@ -179,6 +184,7 @@ public:
         // [path] (camera keys and events) is read by world/flythrough_file.h when a capture plays it.
         (void)top.node("path");
         scene.grid.clearDirty();
+        updateDynamicObjects(scene.objects, scene.dynamic, 0.0, 0.0);
         return scene;
     }
 
@@ -545,6 +551,68 @@ private:
         o.memoryBudgetBytes = std::uint64_t(budget) << 20;
         Status s = io::importVdbInto(scene, path, o);
         if (!s) fail(&node, "{}", s.error().message);
+    }
+
+    // A dynamic object (world/dynamic_object.h): its model is built by [[object.generator]]
+    // tables, the same generators as the world's, run on the model's own grid in model
+    // coordinates; [[object.key]] tables are its path.
+    void parseObject(const toml::node& node, Scene& scene) {
+        const toml::table* t = node.as_table();
+        if (!t) fail(&node, "each [[object]] must be a table");
+        Table o(*this, *t);
+        DynamicObject object;
+        object.name = o.string("name", "object");
+        object.modelSize = o.ivec3("size", {}, true);
+        if (glm::any(glm::lessThan(object.modelSize, glm::ivec3(1))) ||
+            glm::any(glm::greaterThan(object.modelSize, glm::ivec3(kMaxObjectExtent))))
+            fail(o.node("size"), "object '{}': size must be 1..{} voxels per axis", object.name, kMaxObjectExtent);
+        object.model = BrickGrid(object.modelSize);
+
+        const toml::node* gens = o.node("generator");
+        const toml::array* ga = gens ? gens->as_array() : nullptr;
+        if (!ga || ga->empty())
+            fail(gens ? gens : &node, "object '{}' needs at least one [[object.generator]] for its model", object.name);
+        // The generators write scene.grid: lend them the model's grid for the while.
+        std::swap(scene.grid, object.model);
+        try {
+            for (const toml::node& g : *ga) parseGenerator(g, scene);
+        } catch (...) {
+            std::swap(scene.grid, object.model);
+            throw;
+        }
+        std::swap(scene.grid, object.model);
+        object.model.clearDirty();
+        if (object.model.solidVoxels() == 0) fail(gens, "object '{}': its generators leave the model empty", object.name);
+
+        bool loop = o.boolean("loop", true);
+        const toml::node* keys = o.node("key");
+        const toml::array* ka = keys ? keys->as_array() : nullptr;
+        if (!ka || ka->empty()) fail(keys ? keys : &node, "object '{}' needs at least one [[object.key]]", object.name);
+        std::vector<ObjectKey> path;
+        for (const toml::node& kn : *ka) {
+            const toml::table* kt = kn.as_table();
+            if (!kt) fail(&kn, "each [[object.key]] must be a table");
+            Table k(*this, *kt);
+            ObjectKey key;
+            if (!k.has("time")) fail(&kn, "key: missing 'time'");
+            key.time = k.number("time", 0.0);
+            if (!path.empty() && !(key.time > path.back().time))
+                fail(k.node("time"), "key times must increase ({} follows {})", key.time, path.back().time);
+            key.position = glm::dvec3(k.vec3("position", {}, true));
+            if (k.has("rotation") && (k.has("axis") || k.has("angle")))
+                fail(&kn, "key: give 'rotation' or 'axis' and 'angle', not both");
+            if (k.has("rotation")) {
+                key.rotation = rotationFromYawPitchRoll(glm::dvec3(k.vec3("rotation", {})));
+            } else if (k.has("axis") || k.has("angle")) {
+                glm::dvec3 axis(k.vec3("axis", {0.0f, 1.0f, 0.0f}));
+                if (glm::length(axis) < 1e-9) fail(k.node("axis"), "'axis' must not be zero");
+                key.rotation = rotationFromAxisAngle(axis, k.number("angle", 0.0));
+            }
+            path.push_back(key);
+        }
+        if (loop && path.size() < 2) fail(keys, "a looping path needs at least two keys");
+        object.path = ObjectPath(std::move(path), loop);
+        scene.objects.push_back(std::move(object));
     }
 
     void parseCamera(const toml::node& node, Scene& scene) {

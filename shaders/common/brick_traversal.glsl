@@ -2,6 +2,9 @@
 // operation (`precise` here, -ffp-contract=off there) so both agree hit for hit; read that file
 // for the method. Each step finds the coarsest empty block around the current voxel (32^3 super
 // cell, 8^3 cell, 4^3, 2^3, voxel) and jumps to where the ray leaves it.
+// traceGrid walks either the static world or the dynamic grid (grid-local coordinates); its
+// `dyn` flag is a constant at each call, so the compiler folds it away after inlining and the
+// static walk's arithmetic is the one the CPU reference agrees with bit for bit.
 #ifndef COMMON_BRICK_TRAVERSAL_GLSL
 #define COMMON_BRICK_TRAVERSAL_GLSL
 
@@ -21,15 +24,15 @@ TraceResult traceMiss(uint steps) {
 }
 
 // The exact voxel the ray is in at t, inside the block of size `exact` that holds v.
-ivec3 refineVoxel(ivec3 v, int exact, vec3 o, vec3 d, float t) {
+ivec3 refineVoxel(ivec3 v, int exact, vec3 o, vec3 d, float t, ivec3 size) {
     ivec3 lo = v & ~(exact - 1);
     precise vec3 p = o + t * d;
     // lo >= 0: truncation = floor. The block may overhang the world; the ray at t does not.
-    return clamp(ivec3(p), lo, min(lo + (exact - 1), gWorld.sizeInVoxels.xyz - 1));
+    return clamp(ivec3(p), lo, min(lo + (exact - 1), size - 1));
 }
 
-TraceResult traceRay(vec3 o, vec3 d, float tMax, bool hierarchical) {
-    const ivec3 size = gWorld.sizeInVoxels.xyz;
+TraceResult traceGrid(vec3 o, vec3 d, float tMax, bool hierarchical, bool dyn) {
+    const ivec3 size = gridSizeInVoxels(dyn);
 
     if (d == vec3(0.0)) return traceMiss(0u);
 
@@ -73,36 +76,34 @@ TraceResult traceRay(vec3 o, vec3 d, float tMax, bool hierarchical) {
     int exact = 1;
     for (uint steps = 1u; steps <= TRAVERSAL_MAX_STEPS; ++steps) {
         int s = 1;
-        if (hierarchical && worldSuperCell(v >> SUPER_SHIFT) == 0u) {
+        if (hierarchical && gridSuperCell(dyn, v >> SUPER_SHIFT) == 0u) {
             s = 32;
         } else {
             // Below super-cell level every test wants the exact voxel: refine once, here (the
             // CPU refines lazily per level; both give the same v at every test that reads it).
             if (exact > 1) {
-                v = refineVoxel(v, exact, o, d, t);
+                v = refineVoxel(v, exact, o, d, t, size);
                 exact = 1;
             }
-            uint cell = worldCell(v >> 3);
+            uint cell = gridCell(dyn, v >> 3);
             if (cell == CELL_EMPTY) {
                 s = 8;
             } else if ((cell & CELL_HOMOGENEOUS) != 0u) {
                 return TraceResult(true, v, face, t, cell & CELL_MATERIAL_MASK, steps);
             } else {
                 uint brick = cell - 1u;
-                BrickPage page = BrickPage(gPages[brick >> BRICK_PAGE_SHIFT]);
-                uint maskBase = (brick & (BRICK_PAGE_BRICKS - 1u)) * BRICK_MASK_WORDS;
                 ivec3 local = v & 7;
                 ivec3 b4 = local >> 2;
                 ivec3 b2 = local >> 1;
                 int bit2 = b2.x + 4 * b2.y + 16 * b2.z;
                 int bit = local.x + 8 * local.y + 64 * local.z;
-                if (hierarchical && ((page.words[maskBase + MASK_QUARTER_WORD] >> uint(b4.x + 2 * b4.y + 4 * b4.z)) & 1u) == 0u) {
+                if (hierarchical && ((gridMaskWord(dyn, brick, MASK_QUARTER_WORD) >> uint(b4.x + 2 * b4.y + 4 * b4.z)) & 1u) == 0u) {
                     s = 4;
                 } else if (hierarchical &&
-                           ((page.words[maskBase + MASK_COARSE_WORD + uint(bit2 >> 5)] >> uint(bit2 & 31)) & 1u) == 0u) {
+                           ((gridMaskWord(dyn, brick, MASK_COARSE_WORD + uint(bit2 >> 5)) >> uint(bit2 & 31)) & 1u) == 0u) {
                     s = 2;
-                } else if (((page.words[maskBase + uint(bit >> 5)] >> uint(bit & 31)) & 1u) != 0u) {
-                    return TraceResult(true, v, face, t, brickMaterial(brick, uint(bit)), steps);
+                } else if (((gridMaskWord(dyn, brick, uint(bit >> 5)) >> uint(bit & 31)) & 1u) != 0u) {
+                    return TraceResult(true, v, face, t, gridBrickMaterial(dyn, brick, uint(bit)), steps);
                 }
             }
         }
@@ -125,6 +126,11 @@ TraceResult traceRay(vec3 o, vec3 d, float tMax, bool hierarchical) {
         exact = s;
     }
     return traceMiss(TRAVERSAL_MAX_STEPS);
+}
+
+// The static world (the traversal tests call this directly; rays use traceScene).
+TraceResult traceRay(vec3 o, vec3 d, float tMax, bool hierarchical) {
+    return traceGrid(o, d, tMax, hierarchical, false);
 }
 
 #endif

@@ -4,7 +4,7 @@
 #ifndef COMMON_EMITTERS_GLSL
 #define COMMON_EMITTERS_GLSL
 
-#include "common/brick_traversal.glsl"
+#include "common/scene_trace.glsl"
 #include "common/rng.glsl"
 #include "shared/emitters.h"
 #include "shared/restir.h"
@@ -149,10 +149,12 @@ float lightSamplePdf(vec3 x, uint slot, uint face, bool byPower) {
 }
 
 // Is the light sample visible from the surface? The first thing the shadow ray hits must be the
-// emitter itself (or nothing before the sample point).
+// emitter itself (or nothing before the sample point); emitters are static, so an object's voxel
+// in the way occludes even inside the emitter's box.
 bool lightVisible(Surface s, GpuEmitter e, vec3 toLight, float dist) {
-    TraceResult hit = traceRay(s.position + s.normal * kRayOffset, toLight, dist + kRayOffset, true);
+    SceneHit hit = traceScene(s.position + s.normal * kRayOffset, toLight, dist + kRayOffset);
     if (!hit.hit) return true;
+    if (hit.dynamicSet) return false;
     ivec3 lo = e.minCorner.xyz;
     return all(greaterThanEqual(hit.voxel, lo)) && all(lessThan(hit.voxel, lo + e.minCorner.w));
 }

@@ -1,4 +1,7 @@
-// TEMPORARY static-only stand-in for the dynamic-objects branch's scene_trace.glsl (same API).
+// Rays against the whole scene: the static world and the dynamic grid, nearer hit wins.
+// Mirrors engine/world/scene_trace.cpp operation for operation (`precise` here,
+// -ffp-contract=off there); read that header for the rules. Every shader that traces rays for
+// shading uses traceScene, so objects are seen and cast shadows everywhere.
 #ifndef COMMON_SCENE_TRACE_GLSL
 #define COMMON_SCENE_TRACE_GLSL
 
@@ -6,7 +9,7 @@
 
 struct SceneHit {
     bool hit;
-    ivec3 voxel;
+    ivec3 voxel;  // world voxel coordinates
     uint face;
     float t;
     uint material;
@@ -14,32 +17,60 @@ struct SceneHit {
     bool dynamicSet;
 };
 
-bool dynamicGridPresent() { return false; }
+SceneHit sceneHitFrom(TraceResult r, ivec3 origin, bool dynamicSet) {
+    return SceneHit(r.hit, r.voxel + origin, r.hit ? r.face : FACE_NONE, r.t, r.material, r.steps, r.hit && dynamicSet);
+}
 
+// Distance along (o, d) to the plane of `face` of `voxel` (0 for FACE_INSIDE, +inf for FACE_NONE).
 float faceHitT(vec3 o, vec3 d, ivec3 voxel, uint face) {
-    if (face >= 6u) return 0.0;
-    uint axis = face >> 1u;
-    precise float plane = float(voxel[axis]) + ((face & 1u) != 0u ? 1.0 : 0.0);
-    precise float t = (plane - o[axis]) / d[axis];
+    if (face == FACE_INSIDE) return 0.0;
+    if (face >= 6u) return uintBitsToFloat(0x7f800000u);
+    int axis = int(face >> 1u);
+    precise float plane = float(voxel[axis] + int(face & 1u));
+    precise float inv = 1.0 / d[axis];
+    precise float t = (plane - o[axis]) * inv;
     return t;
 }
 
-SceneHit traceDynamic(vec3 o, vec3 d, float tMax) { return SceneHit(false, ivec3(0), FACE_NONE, 0.0, 0u, 0u, true); }
+// Dynamic grid only; voxel in world coordinates (grid-local + origin).
+SceneHit traceDynamic(vec3 o, vec3 d, float tMax) {
+    if (!dynamicGridPresent()) return sceneHitFrom(traceMiss(0u), ivec3(0), false);
+    ivec3 origin = dynamicGrid().header.origin.xyz;
+    precise vec3 local = o - vec3(origin);
+    return sceneHitFrom(traceGrid(local, d, tMax, true, true), origin, true);
+}
 
+// Static first; ts = faceHitT(static hit) (tMax if none); then dynamic with tMax = ts; the
+// dynamic hit wins only if hit && faceHitT(dynamic hit) < ts (strict: static wins ties).
 SceneHit traceScene(vec3 o, vec3 d, float tMax) {
-    TraceResult r = traceRay(o, d, tMax, true);
-    return SceneHit(r.hit, r.voxel, r.face, r.t, r.material, r.steps, false);
+    SceneHit s = sceneHitFrom(traceGrid(o, d, tMax, true, false), ivec3(0), false);
+    if (!dynamicGridPresent()) return s;
+    float ts = s.hit ? faceHitT(o, d, s.voxel, s.face) : tMax;
+    SceneHit h = traceDynamic(o, d, ts);
+    h.steps += s.steps;
+    if (h.hit && faceHitT(o, d, h.voxel, h.face) < ts) return h;
+    s.steps = h.steps;
+    return s;
 }
 
-uint staticVoxelMaterial(ivec3 v) {
-    if (any(lessThan(v, ivec3(0))) || any(greaterThanEqual(v, gWorld.sizeInVoxels.xyz))) return 0u;
-    uint cell = worldCell(v >> 3);
-    if (cell == CELL_EMPTY) return 0u;
-    if ((cell & CELL_HOMOGENEOUS) != 0u) return cell & CELL_MATERIAL_MASK;
-    ivec3 l = v & 7;
-    return brickMaterial(cell - 1u, uint(l.x + 8 * l.y + 64 * l.z));
+uint staticVoxelMaterial(ivec3 v) { return gridVoxelMaterial(false, v); }
+
+// World coordinates; 0 = empty, outside or no dynamic grid.
+uint dynamicVoxelMaterial(ivec3 v) {
+    if (!dynamicGridPresent()) return 0u;
+    return gridVoxelMaterial(true, v - dynamicGrid().header.origin.xyz);
 }
 
-uint dynamicVoxelMaterial(ivec3 v) { return 0u; }
+// The object whose bounds hold world voxel v (the first, where bounds overlap); -1 if none.
+int dynamicObjectAt(ivec3 v) {
+    if (!dynamicGridPresent()) return -1;
+    uint count = uint(dynamicGrid().header.origin.w);
+    DynamicObjectTable table = dynamicObjects();
+    for (uint i = 0u; i < count; ++i) {
+        GpuDynamicObject o = table.objects[i];
+        if (all(greaterThanEqual(v, o.boundsMin.xyz)) && all(lessThan(v, o.boundsMax.xyz))) return int(i);
+    }
+    return -1;
+}
 
 #endif

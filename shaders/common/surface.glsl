@@ -25,7 +25,7 @@ vec3 sunLight(Surface s, FrameParams f) {
     vec3 l = f.sunDirection.xyz;
     float cosine = dot(s.normal, l);
     if (cosine <= 0.0 || !any(greaterThan(f.sunRadiance.rgb, vec3(0.0)))) return vec3(0.0);
-    TraceResult hit = traceRay(s.position + s.normal * kRayOffset, l, 1.0e30, true);
+    SceneHit hit = traceScene(s.position + s.normal * kRayOffset, l, 1.0e30);
     return hit.hit ? vec3(0.0) : s.albedo / PI * f.sunRadiance.rgb * cosine;
 }
 

@@ -1,4 +1,7 @@
 // World resources (set 0, bindings 0-3) and voxel/brick accessors. Layouts: shared/brick_grid.h.
+// The dynamic grid (shared/dynamic_grid.h) is reached by the device address in the world info.
+// The grid* accessors take a `dyn` flag that is a constant at every call site, so after
+// inlining the compiler keeps one branch: the static path reads exactly what it always did.
 #ifndef COMMON_WORLD_GLSL
 #define COMMON_WORLD_GLSL
 
@@ -7,9 +10,17 @@
 
 #include "shared/bindings.h"
 #include "shared/brick_grid.h"
+#include "shared/dynamic_grid.h"
 #include "shared/material.h"
 
 layout(buffer_reference, std430, buffer_reference_align = 4) readonly buffer BrickPage { uint words[]; };
+layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer DynamicGridBuffer {
+    DynamicGridHeader header;
+    uint words[];
+};
+layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer DynamicObjectTable {
+    GpuDynamicObject objects[];
+};
 
 layout(set = 0, binding = WORLD_BINDING_INFO, std430) readonly buffer WorldInfoBuffer {
     BrickGridInfo gWorld;
@@ -39,6 +50,69 @@ uint brickMaterial(uint brick, uint voxelIndex) {
     uint word = page.words[BRICK_PAGE_MATERIAL_OFFSET + (brick & (BRICK_PAGE_BRICKS - 1u)) * BRICK_MATERIAL_WORDS +
                            (voxelIndex >> 1u)];
     return (word >> ((voxelIndex & 1u) * 16u)) & 0xFFFFu;
+}
+
+bool dynamicGridPresent() { return gWorld.dynamicGrid.x != 0u || gWorld.dynamicGrid.y != 0u; }
+
+uint64_t dynamicGridAddress() { return uint64_t(gWorld.dynamicGrid.x) | (uint64_t(gWorld.dynamicGrid.y) << 32); }
+
+// Only when dynamicGridPresent().
+DynamicGridBuffer dynamicGrid() { return DynamicGridBuffer(dynamicGridAddress()); }
+
+DynamicObjectTable dynamicObjects() {
+    DynamicGridBuffer g = dynamicGrid();
+    return DynamicObjectTable(dynamicGridAddress() + 96ul + 4ul * uint64_t(g.header.objects.x));
+}
+
+// The same accessors over either grid (grid-local coordinates).
+ivec3 gridSizeInVoxels(bool dyn) {
+    if (dyn) return dynamicGrid().header.sizeInVoxels.xyz;
+    return gWorld.sizeInVoxels.xyz;
+}
+
+uint gridSuperCell(bool dyn, ivec3 s) {
+    if (dyn) {
+        DynamicGridBuffer g = dynamicGrid();
+        ivec3 n = g.header.sizeInSuperCells.xyz;
+        return g.words[g.header.offsets.x + uint(s.x) + uint(n.x) * (uint(s.y) + uint(n.y) * uint(s.z))];
+    }
+    return worldSuperCell(s);
+}
+
+uint gridCell(bool dyn, ivec3 cell) {
+    if (dyn) {
+        DynamicGridBuffer g = dynamicGrid();
+        ivec3 n = g.header.sizeInCells.xyz;
+        return g.words[g.header.offsets.y + uint(cell.x) + uint(n.x) * (uint(cell.y) + uint(n.y) * uint(cell.z))];
+    }
+    return worldCell(cell);
+}
+
+uint gridMaskWord(bool dyn, uint brick, uint word) {
+    if (dyn) {
+        DynamicGridBuffer g = dynamicGrid();
+        return g.words[g.header.offsets.z + brick * BRICK_MASK_WORDS + word];
+    }
+    return brickMaskWord(brick, word);
+}
+
+uint gridBrickMaterial(bool dyn, uint brick, uint voxelIndex) {
+    if (dyn) {
+        DynamicGridBuffer g = dynamicGrid();
+        uint w = g.words[g.header.offsets.w + brick * BRICK_MATERIAL_WORDS + (voxelIndex >> 1u)];
+        return (w >> ((voxelIndex & 1u) * 16u)) & 0xFFFFu;
+    }
+    return brickMaterial(brick, voxelIndex);
+}
+
+// Material of a grid-local voxel, 0 = empty or outside.
+uint gridVoxelMaterial(bool dyn, ivec3 v) {
+    if (any(lessThan(v, ivec3(0))) || any(greaterThanEqual(v, gridSizeInVoxels(dyn)))) return 0u;
+    uint cell = gridCell(dyn, v >> 3);
+    if (cell == CELL_EMPTY) return 0u;
+    if ((cell & CELL_HOMOGENEOUS) != 0u) return cell & CELL_MATERIAL_MASK;
+    ivec3 l = v & 7;
+    return gridBrickMaterial(dyn, cell - 1u, uint(l.x + 8 * l.y + 64 * l.z));
 }
 
 ivec3 faceNormal(uint face) {

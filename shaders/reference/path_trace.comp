@@ -54,7 +54,7 @@ void main() {
                     throughput /= keep;
                 }
                 vec3 origin = s.position + s.normal * kRayOffset;
-                TraceResult hit = traceRay(origin, dir, 1.0e30, true);
+                SceneHit hit = traceScene(origin, dir, 1.0e30);
                 if (!hit.hit) {
                     L += throughput * skyBackground(gFrame, dir);
                     break;

@@ -50,8 +50,9 @@ struct BrickGridInfo {
     ivec4 sizeInVoxels;  // xyz: sizeInCells * 8
     ivec4 sizeInSuperCells;  // xyz: ceil(sizeInCells / 4)
     uvec4 counts;        // x: allocated bricks, y: pages, z: materials, w: unused
+    uvec4 dynamicGrid;   // xy: device address (low, high) of the dynamic grid (dynamic_grid.h), 0 = none
 };
-SHARED_ASSERT_SIZE(BrickGridInfo, 64);
+SHARED_ASSERT_SIZE(BrickGridInfo, 80);
 
 SHARED_END
 

@@ -7,6 +7,7 @@ SHARED_BEGIN
 
 SHARED_CONST uint TRACE_MODE_HIERARCHICAL = 0u;
 SHARED_CONST uint TRACE_MODE_PLAIN = 1u;
+SHARED_CONST uint TRACE_MODE_SCENE = 2u;  // traceScene: static world + dynamic grid (scene_trace.glsl)
 
 struct TraceRayInput {
     vec4 origin;     // xyz origin, w tMax
@@ -16,7 +17,7 @@ SHARED_ASSERT_SIZE(TraceRayInput, 32);
 
 struct TraceRayOutput {
     ivec4 voxel;  // xyz hit voxel, w face
-    uvec4 data;   // x hit (0/1), y material, z floatBits(t), w steps
+    uvec4 data;   // x hit (bit 0) and, in scene mode, dynamic set (bit 1), y material, z floatBits(t), w steps
 };
 SHARED_ASSERT_SIZE(TraceRayOutput, 32);
 

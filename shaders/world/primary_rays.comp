@@ -1,8 +1,10 @@
 #version 460
-// Primary rays: one camera ray per pixel through the brick grid, written to the G-buffer.
+// Primary rays: one camera ray per pixel through the static world and the dynamic grid, written
+// to the G-buffer with the set the voxel belongs to and a motion vector that follows moving
+// objects.
 #extension GL_GOOGLE_include_directive : require
 
-#include "common/brick_traversal.glsl"
+#include "common/scene_trace.glsl"
 #include "common/camera.glsl"
 #include "shared/gbuffer.h"
 
@@ -17,17 +19,23 @@ void main() {
     uint index = pixel.x + pixel.y * gFrame.imageSize.x;
 
     vec3 dir = cameraRayDirection(gFrame, pixel);
-    TraceResult hit = traceRay(gFrame.cameraPosition.xyz, dir, 1.0e30, true);
+    SceneHit hit = traceScene(gFrame.cameraPosition.xyz, dir, 1.0e30);
 
     GBufferTexel texel;
     texel.voxel = ivec4(hit.voxel, int(hit.hit ? hit.face : FACE_NONE));
-    texel.data = uvec4(hit.material, floatBitsToUint(hit.t), hit.steps, 0u);
+    texel.data = uvec4(hit.material, floatBitsToUint(hit.t), hit.steps, hit.dynamicSet ? GBUFFER_FLAG_DYNAMIC : 0u);
     vec3 position = gFrame.cameraPosition.xyz + dir * hit.t;
     texel.position = vec4(position, 0.0);
     texel.motion = vec4(0.0);
     if (hit.hit) {
-        // Where the previous frame's camera saw this point (static world: the same point).
-        vec3 rel = position - gFrame.prevCameraPosition.xyz;
+        // Where the previous frame's camera saw this point: the same point in the static world;
+        // on an object, the point that moved here (its previous pose times the inverse of this one).
+        vec3 prevPosition = position;
+        if (hit.dynamicSet) {
+            int object = dynamicObjectAt(hit.voxel);
+            if (object >= 0) prevPosition = (dynamicObjects().objects[object].prevFromCurrent * vec4(position, 1.0)).xyz;
+        }
+        vec3 rel = prevPosition - gFrame.prevCameraPosition.xyz;
         float z = dot(rel, gFrame.prevCameraForward.xyz);
         if (z > 1e-4) {
             float tanHalf = gFrame.cameraPosition.w;

@@ -3,7 +3,7 @@
 // Stands in for the lighting passes until ReSTIR and the irradiance cache exist.
 #extension GL_GOOGLE_include_directive : require
 
-#include "common/brick_traversal.glsl"
+#include "common/scene_trace.glsl"
 #include "common/camera.glsl"
 #include "shared/gbuffer.h"
 
@@ -42,7 +42,7 @@ void main() {
     uint shadowSteps = 0u;
     float visible = 0.0;
     if (nDotL > 0.0 && any(greaterThan(gFrame.sunRadiance.rgb, vec3(0.0)))) {
-        TraceResult shadow = traceRay(position, toSun, 1.0e30, true);
+        SceneHit shadow = traceScene(position, toSun, 1.0e30);
         shadowSteps = shadow.steps;
         visible = shadow.hit ? 0.0 : 1.0;
     }

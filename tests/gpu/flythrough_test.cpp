@@ -301,3 +301,35 @@ TEST_F(Flythroughs, SliceAgreesWithWholeCapture) {
     // The check can fail: the frame before the block appears (frame 19) is not frame 20.
     EXPECT_GT(relativeMae(restirWhole[19], restirWhole[20]), 0.0);
 }
+
+TEST_F(Flythroughs, ObjectsFollowTheCaptureClock) {
+    // Frame i poses objects at i / fps, and its motion vectors use frame i-1's pose.
+    std::string yard = std::string(kYard) + R"(
+[[object]]
+name = "block"
+size = [4, 4, 4]
+[[object.generator]]
+type = "box"
+min = [0, 0, 0]
+max = [4, 4, 4]
+material = "red"
+[[object.key]]
+time = 0.0
+position = [20, 10, 20]
+[[object.key]]
+time = 2.0
+position = [40, 10, 40]
+)";
+    auto scene = loadSceneText(yard, "yard.toml");
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    auto fly = loadFlythroughText(kPath, "yard_path.toml");
+    ASSERT_TRUE(fly.ok()) << fly.error().message;
+    Capture c{std::move(*scene), std::move(*fly)};
+    ASSERT_TRUE(c.fly.timeline.bind(c.scene).ok());
+    Renderer renderer(gpu_testing::context());
+    FlythroughPlayer player(renderer, c.scene, c.fly, c.fly.fps);
+    for (std::uint32_t i : {3u, 4u}) player.render(i, settings(16), LightingSettings{Method::Preview});
+    const DynamicObject& o = c.scene.objects.at(0);
+    EXPECT_EQ(o.current, o.path.at(4.0 / c.fly.fps));
+    EXPECT_EQ(o.previous, o.path.at(3.0 / c.fly.fps));
+}

@@ -104,3 +104,68 @@ TEST(SceneFile, EmptyAirCostsOnlyTopGridCells) {
     EXPECT_EQ(info.topGridBytes, 128u * 32u * 128u * 4u);
     EXPECT_EQ(info.brickPoolBytes, info.bricks * (1024u + 80u));
 }
+
+namespace {
+const char* kObject = R"([world]
+size = [32, 32, 32]
+[[material]]
+name = "stone"
+[[object]]
+name = "cube"
+size = [4, 4, 4]
+[[object.generator]]
+type = "box"
+min = [0, 0, 0]
+max = [4, 2, 4]
+material = "stone"
+[[object.key]]
+time = 0.0
+position = [10, 10, 10]
+[[object.key]]
+time = 2.0
+position = [20, 10, 10]
+rotation = [90, 0, 0]
+)";
+}  // namespace
+
+TEST(SceneFile, ObjectsBuildTheirModelsAndPaths) {
+    auto scene = loadSceneText(kObject, "test.toml");
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    EXPECT_EQ(scene->grid.solidVoxels(), 0u) << "object generators write the model, not the world";
+    ASSERT_EQ(scene->objects.size(), 1u);
+    const DynamicObject& o = scene->objects[0];
+    EXPECT_EQ(o.name, "cube");
+    EXPECT_EQ(o.modelSize, glm::ivec3(4));
+    EXPECT_EQ(o.model.solidVoxels(), 32u);
+    EXPECT_TRUE(o.path.loop());
+    EXPECT_EQ(o.path.at(1.0).position, glm::dvec3(15, 10, 10));
+    EXPECT_EQ(o.path.at(2.0).position, glm::dvec3(10, 10, 10)) << "the loop wraps at the last key";
+    // Loaded at time 0: the dynamic grid holds the cube's lower half at 8..11 x 8..9 x 8..11.
+    ASSERT_TRUE(scene->dynamic.present());
+    EXPECT_EQ(scene->dynamic.get({8, 8, 8}), 1);
+    EXPECT_EQ(scene->dynamic.get({11, 9, 11}), 1);
+    EXPECT_EQ(scene->dynamic.get({8, 10, 8}), kEmpty);
+}
+
+TEST(SceneFile, ObjectErrorsNameTheLine) {
+    std::string base = kObject;
+    auto with = [&](const std::string& from, const std::string& to) {
+        std::string s = base;
+        s.replace(s.find(from), from.size(), to);
+        return errorOf(s);
+    };
+    EXPECT_EQ(with("time = 2.0", "time = 0.0"), "test.toml:17: key times must increase (0 follows 0)");
+    EXPECT_EQ(with("type = \"box\"", "type = \"cube\""),
+              "test.toml:9: unknown generator 'cube' (known: terrain, box, sphere, cornell, buildings, lamps, "
+              "mountain, scattered_lights, text, menger, apartment, bridge, vdb, bricks)");
+    EXPECT_EQ(with("size = [4, 4, 4]", "size = [4, 0, 4]"), "test.toml:7: object 'cube': size must be 1..256 voxels per axis");
+    EXPECT_EQ(with("rotation = [90, 0, 0]", "rotation = [90, 0, 0]\nangle = 4"),
+              "test.toml:16: key: give 'rotation' or 'axis' and 'angle', not both");
+    EXPECT_EQ(with("position = [20, 10, 10]", "positon = [20, 10, 10]"), "test.toml:16: missing 'position'");
+    EXPECT_EQ(with("name = \"cube\"", "name = \"cube\"\nspeed = 3"), "test.toml:7: unknown key 'speed'");
+    EXPECT_EQ(with("max = [4, 2, 4]", "max = [0, 0, 0]"), "test.toml:8: object 'cube': its generators leave the model empty");
+    std::string e = errorOf(base.substr(0, base.find("[[object.key]]")));
+    EXPECT_EQ(e, "test.toml:5: object 'cube' needs at least one [[object.key]]");
+    e = errorOf(base.substr(0, base.find("[[object.key]]\ntime = 2.0")));
+    EXPECT_EQ(e, "test.toml:13: a looping path needs at least two keys");
+}

@@ -39,6 +39,7 @@ struct RenderOptions {
     std::string exr;
     float exposure = 1.0f;
     std::uint32_t frames = 1;
+    double time = 0.0;  // scene time in seconds: poses dynamic objects
     std::uint32_t spp = 64;
     std::string timings;
     LightingOptions lighting;

@@ -1,0 +1,80 @@
+#include "render/gpu_dynamic_grid.h"
+
+#include <algorithm>
+#include <bit>
+#include <cstring>
+#include <vector>
+
+#include "gpu/uploader.h"
+#include "shared/brick_grid.h"
+#include "shared/dynamic_grid.h"
+
+namespace engine::render {
+
+std::uint64_t GpuDynamicGrid::sync(const world::DynamicGrid& grid, gpu::Uploader& uploader) {
+    if (mSynced && grid.revision == mRevision) return 0;
+    mSynced = true;
+    mRevision = grid.revision;
+    mPresent = grid.present();
+    if (!mPresent) return 0;
+
+    const world::BrickGrid& g = grid.grid;
+    std::span<const std::uint32_t> supers = g.superCells(), cells = g.cells();
+    // Live bricks only, renumbered densely (the pool may hold free slots).
+    std::vector<std::uint32_t> cellWords(cells.begin(), cells.end());
+    std::vector<std::uint32_t> bricks;
+    for (std::uint32_t& c : cellWords) {
+        if (!world::BrickGrid::cellIsBrick(c)) continue;
+        bricks.push_back(world::BrickGrid::cellBrick(c));
+        c = std::uint32_t(bricks.size());  // brickIndex + 1
+    }
+    auto align4 = [](std::size_t w) { return (w + 3u) & ~std::size_t(3u); };
+    shared::DynamicGridHeader h{};
+    h.origin = glm::ivec4(grid.origin, int(grid.instances.size()));
+    h.sizeInCells = glm::ivec4(g.sizeInCells(), 0);
+    h.sizeInVoxels = glm::ivec4(g.sizeInVoxels(), 0);
+    h.sizeInSuperCells = glm::ivec4(g.sizeInSuperCells(), 0);
+    std::size_t words = 0;
+    h.offsets.x = std::uint32_t(words);
+    words = align4(words + supers.size());
+    h.offsets.y = std::uint32_t(words);
+    words = align4(words + cells.size());
+    h.offsets.z = std::uint32_t(words);
+    words += bricks.size() * shared::BRICK_MASK_WORDS;
+    h.offsets.w = std::uint32_t(words);
+    words += bricks.size() * shared::BRICK_MATERIAL_WORDS;
+    words = align4(words);
+    h.objects.x = std::uint32_t(words);
+    words += grid.instances.size() * (sizeof(shared::GpuDynamicObject) / 4u);
+
+    std::vector<std::uint32_t> data(sizeof(h) / 4u + words, 0u);
+    std::uint32_t* w = data.data() + sizeof(h) / 4u;
+    std::memcpy(data.data(), &h, sizeof(h));
+    std::copy(supers.begin(), supers.end(), w + h.offsets.x);
+    std::copy(cellWords.begin(), cellWords.end(), w + h.offsets.y);
+    for (std::size_t i = 0; i < bricks.size(); ++i) {
+        std::memcpy(w + h.offsets.z + i * shared::BRICK_MASK_WORDS, g.brickMask(bricks[i]).words.data(),
+                    shared::BRICK_MASK_WORDS * 4u);
+        std::memcpy(w + h.offsets.w + i * shared::BRICK_MATERIAL_WORDS, g.brickVoxels(bricks[i]).data(),
+                    shared::BRICK_MATERIAL_WORDS * 4u);
+    }
+    for (std::size_t i = 0; i < grid.instances.size(); ++i) {
+        const world::DynamicInstance& inst = grid.instances[i];
+        shared::GpuDynamicObject o{};
+        o.boundsMin = glm::ivec4(inst.bounds.min, 0);
+        o.boundsMax = glm::ivec4(inst.bounds.max, 0);
+        o.prevFromCurrent = glm::mat4(inst.prevFromCurrent());
+        std::memcpy(w + h.objects.x + i * (sizeof(o) / 4u), &o, sizeof(o));
+    }
+
+    const std::uint64_t bytes = data.size() * 4u;
+    if (!mBuffer.valid() || mBuffer.size() < bytes) {
+        // Grows by powers of two so an object moving about does not reallocate every frame.
+        mBuffer = gpu::Buffer(mCtx, gpu::BufferKind::Storage, std::max<std::uint64_t>(std::bit_ceil(bytes), 4096),
+                              "world.dynamicGrid");
+    }
+    uploader.write(mBuffer, 0, data.data(), bytes);
+    return bytes;
+}
+
+}  // namespace engine::render

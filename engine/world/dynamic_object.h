@@ -1,0 +1,70 @@
+// Dynamic objects: small voxel models moved by a rigid transform along a scripted path.
+//
+// A model is a BrickGrid of palette material ids spanning [0, modelSize); it turns about its
+// centre (the pivot) and the path places that centre in the world. Paths are keyframes (time,
+// position, rotation) joined by a cubic Hermite spline with Catmull–Rom tangents over key times
+// (positions) and slerp (rotations); a looping path wraps time into [first key, last key).
+// Everything is a pure function of the time, so a frame renders the same wherever it is rendered.
+// Each frame the objects are re-voxelised into one world-aligned grid (world/dynamic_grid.h).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include "world/brick_grid.h"
+
+namespace engine::world {
+
+struct ObjectKey {
+    double time = 0.0;             // seconds
+    glm::dvec3 position{0.0};      // world position of the model centre, voxel units
+    glm::dquat rotation{1.0, 0.0, 0.0, 0.0};
+};
+
+// Yaw about +Y, then pitch about +X, then roll about +Z (applied roll first), in degrees.
+glm::dquat rotationFromYawPitchRoll(glm::dvec3 degrees);
+glm::dquat rotationFromAxisAngle(glm::dvec3 axis, double degrees);
+
+struct RigidTransform {
+    glm::dvec3 position{0.0};  // where the pivot goes
+    glm::dquat rotation{1.0, 0.0, 0.0, 0.0};
+    bool operator==(const RigidTransform&) const = default;
+};
+
+class ObjectPath {
+public:
+    ObjectPath() = default;
+    // Keys sorted by strictly increasing time, at least one. A looping path should end on its
+    // first pose for a seamless loop; the tangents at its ends then wrap around.
+    ObjectPath(std::vector<ObjectKey> keys, bool loop);
+
+    RigidTransform at(double t) const;
+    const std::vector<ObjectKey>& keys() const { return mKeys; }
+    bool loop() const { return mLoop; }
+    double period() const { return mKeys.empty() ? 0.0 : mKeys.back().time - mKeys.front().time; }
+
+private:
+    glm::dvec3 tangent(std::size_t k) const;
+    std::vector<ObjectKey> mKeys{ObjectKey{}};
+    bool mLoop = false;
+};
+
+struct DynamicObject {
+    std::string name;
+    BrickGrid model{glm::ivec3(8)};
+    glm::ivec3 modelSize{8};  // the model's extent in voxels (the grid rounds it up to bricks)
+    ObjectPath path;
+    // Set by updateDynamicObjects (world/dynamic_grid.h): the poses of this frame and the last.
+    RigidTransform current, previous;
+
+    glm::dvec3 pivot() const { return glm::dvec3(modelSize) * 0.5; }
+    // world = position + rotation * (model - pivot)
+    glm::dmat4 worldFromModel(const RigidTransform& t) const;
+    // The voxels the model can cover under `t`: its transformed box, rounded outwards.
+    Box worldBounds(const RigidTransform& t) const;
+};
+
+}  // namespace engine::world

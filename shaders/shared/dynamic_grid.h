@@ -1,0 +1,34 @@
+// The dynamic brick grid as the GPU sees it (engine/world/dynamic_grid.h, uploaded whole by
+// render/gpu_dynamic_grid.h every frame it changes). One buffer, reached by the device address
+// in BrickGridInfo::dynamicGrid, so no binding numbers change:
+//   DynamicGridHeader, then uint words[]: super cells, top-grid cells, brick masks
+//   (BRICK_MASK_WORDS per brick), brick materials (BRICK_MATERIAL_WORDS per brick), then the
+//   object table (GpuDynamicObject per object) — each part at the word offset the header gives.
+// Cell encoding as in brick_grid.h; brick indices count from 0 in this buffer alone.
+#ifndef SHARED_DYNAMIC_GRID_H
+#define SHARED_DYNAMIC_GRID_H
+#include "interop.h"
+
+SHARED_BEGIN
+
+struct DynamicGridHeader {
+    ivec4 origin;            // xyz: world voxel of grid voxel (0,0,0) (brick-aligned), w: object count
+    ivec4 sizeInCells;
+    ivec4 sizeInVoxels;
+    ivec4 sizeInSuperCells;
+    uvec4 offsets;           // word offsets into words[]: x super cells, y cells, z masks, w materials
+    uvec4 objects;           // x: word offset of the object table (a multiple of 4), yzw unused
+};
+SHARED_ASSERT_SIZE(DynamicGridHeader, 96);
+
+// One object: where it is and how to take a point on it back to last frame, for motion vectors.
+struct GpuDynamicObject {
+    ivec4 boundsMin;      // xyz world voxels the object may cover (inclusive)
+    ivec4 boundsMax;      // xyz (exclusive)
+    mat4 prevFromCurrent; // previous worldFromModel * inverse(current worldFromModel)
+};
+SHARED_ASSERT_SIZE(GpuDynamicObject, 96);
+
+SHARED_END
+
+#endif
