@@ -8,8 +8,8 @@
 
 #include <fmt/format.h>
 
-#include "io/brick_payload.h"
 #include "io/image_io.h"
+#include "io/vdb_export.h"
 #include "world/scene_file.h"
 #include "world/scene_file_writer.h"
 
@@ -21,7 +21,7 @@ namespace {
 
 constexpr const char* kSaveMarker = "Saved by vox play";
 
-// Payload generations of `stem` in `dir`: STEM.N.bricks.
+// Payload generations of `stem` in `dir`: STEM.N.vdb.
 std::vector<std::pair<std::uint64_t, fs::path>> payloads(const fs::path& dir, const std::string& stem) {
     std::vector<std::pair<std::uint64_t, fs::path>> out;
     std::error_code ec;
@@ -30,7 +30,7 @@ std::vector<std::pair<std::uint64_t, fs::path>> payloads(const fs::path& dir, co
         if (name.size() <= stem.size() + 1 || name.compare(0, stem.size() + 1, stem + ".") != 0) continue;
         std::string rest = name.substr(stem.size() + 1);
         auto dot = rest.find('.');
-        if (dot == std::string::npos || dot == 0 || rest.substr(dot) != ".bricks") continue;
+        if (dot == std::string::npos || dot == 0 || rest.substr(dot) != ".vdb") continue;
         std::string digits = rest.substr(0, dot);
         if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 18) continue;
         out.emplace_back(std::stoull(digits), e.path());
@@ -45,9 +45,9 @@ void syncDirectory(const fs::path& dir) {
     ::close(fd);
 }
 
-class BrickPayloadStore final : public WorldStore {
+class VdbWorldStore final : public WorldStore {
 public:
-    explicit BrickPayloadStore(SaveFaults faults) : mFaults(std::move(faults)) {}
+    explicit VdbWorldStore(SaveFaults faults) : mFaults(std::move(faults)) {}
 
     engine::Status save(const engine::world::Scene& scene, const fs::path& sceneFile) override {
         fs::path dir = sceneFile.parent_path();
@@ -60,12 +60,15 @@ public:
         std::string stem = sceneFile.stem().string();
         std::uint64_t generation = 1;
         for (const auto& [n, path] : payloads(dir, stem)) generation = std::max(generation, n + 1);
-        fs::path payload = dir / fmt::format("{}.{}.bricks", stem, generation);
-        engine::Status s = engine::io::writeAtomically(
-            payload, [&](const fs::path& temp) { return engine::io::writeBrickPayload(temp, scene.grid); });
+        fs::path payload = dir / fmt::format("{}.{}.vdb", stem, generation);
+        // Atomic on its own (temporary file, flush, rename); colour grids included so other
+        // OpenVDB tools show the world in colour (loading needs only the ids).
+        engine::Status s = engine::io::exportVdb(scene, payload);
         if (!s) return s;
 
-        std::string generator = fmt::format("[[generator]]\ntype = \"bricks\"\nfile = {}\n",
+        // rule "ids": our own file's material grid, mapped by name onto the palette listed above
+        // it, which is the same palette in the same order; so every id comes back unchanged.
+        std::string generator = fmt::format("[[generator]]\ntype = \"vdb\"\nsource = {}\nrule = \"ids\"\n",
                                             engine::world::tomlString(payload.filename().string()));
         std::string text = engine::world::sceneTextWithPalette(scene, generator, kSaveMarker);
         s = engine::io::writeAtomically(sceneFile, [&](const fs::path& temp) -> engine::Status {
@@ -106,6 +109,6 @@ private:
 
 }  // namespace
 
-std::unique_ptr<WorldStore> makeWorldStore(SaveFaults faults) { return std::make_unique<BrickPayloadStore>(std::move(faults)); }
+std::unique_ptr<WorldStore> makeWorldStore(SaveFaults faults) { return std::make_unique<VdbWorldStore>(std::move(faults)); }
 
 }  // namespace game

@@ -1,15 +1,16 @@
 // Saving and loading the sandbox's worlds. A save is a scene file (palette, camera presets,
-// sky; world/scene_file_writer.h) plus a voxel payload beside it that the scene file names in
-// a generator, so `vox render SAVE.toml` and `vox play SAVE.toml` both open it.
+// sky; world/scene_file_writer.h) plus the world's voxels as an OpenVDB file beside it
+// (io/vdb_export.h, layout in docs/VDB.md) that the scene file names in a `vdb` generator with
+// rule "ids", so `vox render SAVE.toml` and `vox play SAVE.toml` both open it and other tools
+// read the .vdb directly. Loading a save gives back the saved world voxel for voxel (cell
+// encodings included: the exporter writes homogeneous cells as tiles and bricks as leaves) and
+// palette for palette (the scene file lists it in order; the import merges the .vdb's by name).
 //
-// Saves are atomic as a pair. The payload goes to a new file, `STEM.N.bricks` (N one more
-// than any before), written to a temporary name, flushed and renamed; then the scene file is
-// replaced the same way, and that rename is the commit. A crash or error at any point leaves
-// the previous scene file naming the previous payload, both intact; payloads no scene file
-// names are removed by the next successful save.
-//
-// The payload is io/brick_payload.h for now; the design calls for .vdb, and this interface is
-// where the OpenVDB exporter/importer plugs in when it lands.
+// Saves are atomic as a pair. The payload goes to a new file, `STEM.N.vdb` (N one more than
+// any before), which the exporter writes to a temporary name, flushes and renames; then the
+// scene file is replaced the same way, and that rename is the commit. A crash or error at any
+// point leaves the previous scene file naming the previous payload, both intact; payloads no
+// scene file names are removed by the next successful save.
 #pragma once
 
 #include <filesystem>

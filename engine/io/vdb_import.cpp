@@ -1433,8 +1433,10 @@ void Importer::run(world::Scene& scene, bool intoExisting) {
             scene.cameras = mWorldHeader.cameras;
             scene.sky = mWorldHeader.sky;
         }
+        // Into an existing scene the scene file stays the source: `vox capture` reads its [path]
+        // from there, and messages name it.
+        scene.sourcePath = mFile;
     }
-    scene.sourcePath = mFile;
 }
 
 template <typename T>

@@ -11,7 +11,6 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
-#include "io/brick_payload.h"
 #include "world/apartment_generator.h"
 #include "world/bridge_generator.h"
 #include "io/vdb_import.h"
@@ -352,25 +351,11 @@ private:
         } else if (type == "vdb") {
             parseVdbGenerator(g, node, scene);
         } else if (type == "bricks") {
-            // A saved world's voxels (io/brick_payload.h), relative to this scene file.
-            std::filesystem::path file = g.string("file");
-            if (file.is_relative()) file = std::filesystem::path(mSource).parent_path() / file;
-            auto payload = io::readBrickPayload(file);
-            if (!payload) fail(g.node("file"), "{}", payload.error().message);
-            if (payload->sizeInCells() != grid.sizeInCells())
-                fail(g.node("file"), "{}: {}x{}x{} voxels, but [world] size is {}x{}x{}", file.string(),
-                     payload->sizeInVoxels().x, payload->sizeInVoxels().y, payload->sizeInVoxels().z,
-                     grid.sizeInVoxels().x, grid.sizeInVoxels().y, grid.sizeInVoxels().z);
-            for (std::uint32_t c : payload->cells()) {
-                MaterialId most = BrickGrid::cellIsBrick(c) ? kEmpty : BrickGrid::cellMaterial(c);
-                if (BrickGrid::cellIsBrick(c)) {
-                    for (MaterialId m : payload->brickVoxels(BrickGrid::cellBrick(c))) most = std::max(most, m);
-                }
-                if (most >= scene.palette.size())
-                    fail(g.node("file"), "{}: material {} is not in the palette ({} materials)", file.string(), most,
-                         scene.palette.size() - 1);
-            }
-            grid = std::move(*payload);
+            // Saves by vox play before it wrote .vdb; the reader is gone (docs/SANDBOX.md says
+            // how to convert one).
+            fail(g.node("type"),
+                 "generator 'bricks' (the .bricks payload of older vox play saves) is no longer supported; "
+                 "saves are .vdb now (docs/SANDBOX.md, Saves)");
         } else {
             fail(g.node("type"), "unknown generator '{}' (known: {})", type, kGeneratorTypes);
         }
@@ -378,7 +363,7 @@ private:
 
     static constexpr const char* kGeneratorTypes =
         "terrain, box, sphere, cornell, buildings, lamps, mountain, scattered_lights, text, menger, apartment, bridge, "
-        "vdb, bricks";
+        "vdb";
 
     void parseMountain(Table& g, Scene& scene) {
         MountainParams p;

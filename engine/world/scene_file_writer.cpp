@@ -40,7 +40,8 @@ std::string sceneTextWithPalette(const Scene& scene, std::string_view generators
     std::string out;
     if (!headerComment.empty()) out += fmt::format("# {}\n", headerComment);
     glm::ivec3 size = scene.grid.sizeInVoxels();
-    out += fmt::format("[world]\nname = {}\nsize = [{}, {}, {}]\n", tomlString(scene.name), size.x, size.y, size.z);
+    out += fmt::format("[world]\nname = {}\nsize = [{}, {}, {}]\nvoxel_size = {}\n", tomlString(scene.name), size.x, size.y,
+                       size.z, number(scene.voxelSize));
     const auto& materials = scene.palette.materials();
     for (std::size_t i = 1; i < materials.size(); ++i) {
         const Material& m = materials[i];

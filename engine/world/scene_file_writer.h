@@ -1,7 +1,7 @@
 // Writes a Scene back as a scene file (the format of scene_file.h, documented in
-// worlds/README.md): world name and size, palette, the given generators, camera presets and
-// sky. Voxels are not generated from a description any more once edited, so a saved world's
-// generator list is usually one payload generator (see game/world_store.h).
+// worlds/README.md): world name, size and voxel size, palette, the given generators, camera
+// presets and sky. Voxels are not generated from a description any more once edited, so a
+// saved world's generator list is usually one payload generator (see game/world_store.h).
 #pragma once
 
 #include <string>

@@ -45,6 +45,13 @@ grep -q "saved saved.toml" play.out || fail "no save"
 grep -q "autosaved to saved.autosave.toml" play.out || fail "no autosave"
 "$vox" info saved.autosave.toml >/dev/null 2>&1 || fail "the autosave does not open"
 grep -q "^# Saved by vox play" saved.toml || fail "saved.toml is not a save"
+# The voxels went to an OpenVDB payload the save names (one generation left), which opens on
+# its own as our own VDB layout.
+payload=$(ls saved.[0-9]*.vdb 2>/dev/null)
+[ "$(echo "$payload" | grep -c .)" -eq 1 ] || fail "expected one saved.N.vdb payload, found: $payload"
+grep -q "source = \"$payload\"" saved.toml || fail "saved.toml does not name $payload"
+ls ./*.bricks >/dev/null 2>&1 && fail "a .bricks payload was written"
+"$vox" info "$payload" 2>&1 | grep -q "voxengine world" || fail "$payload is not a voxengine VDB world"
 
 # Edit latency: every edit frame was presented with at most one brick and one cell uploaded
 # per changed cell (the renderer's upload counter).

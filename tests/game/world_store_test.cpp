@@ -1,5 +1,6 @@
-// Saves round-trip exactly, and a save interrupted between writing and renaming (an error,
-// or the process dying there) leaves the previous save readable and unchanged.
+// Saves (scene file + .vdb payload) round-trip exactly, after any number of edits, and a save
+// that fails — writing the payload, or between writing the scene file and renaming it (an
+// error, or the process dying there) — leaves the previous save readable and unchanged.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -9,10 +10,13 @@
 
 #include <fmt/format.h>
 
+#include "core/hash.h"
 #include "game/autosave.h"
 #include "game/world_store.h"
+#include "io/vdb_import.h"
 #include "world/random_worlds.h"
 #include "world/scene_file.h"
+#include "world/world_edits.h"
 
 using namespace engine::world;
 namespace fs = std::filesystem;
@@ -60,6 +64,40 @@ std::size_t countFiles(const fs::path& dir, const std::string& extension) {
     return n;
 }
 
+fs::path onlyPayload(const fs::path& dir) {
+    fs::path payload;
+    for (const auto& e : fs::directory_iterator(dir))
+        if (e.path().extension() == ".vdb") payload = e.path();
+    return payload;
+}
+
+std::string bytesOf(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// Cell by cell, the encodings too: empty, homogeneous with the same material, or a brick with
+// the same voxels (BrickGrid::operator== compares exactly that; this says where they differ).
+void expectSameWorld(const Scene& a, const Scene& b, const std::string& what) {
+    ASSERT_EQ(a.grid.sizeInCells(), b.grid.sizeInCells()) << what;
+    EXPECT_TRUE(a.palette == b.palette) << what;
+    EXPECT_EQ(a.voxelSize, b.voxelSize) << what;
+    EXPECT_EQ(a.grid.solidVoxels(), b.grid.solidVoxels()) << what;
+    EXPECT_EQ(a.grid.homogeneousCells(), b.grid.homogeneousCells()) << what;
+    EXPECT_EQ(a.grid.liveBricks(), b.grid.liveBricks()) << what;
+    auto ca = a.grid.cells(), cb = b.grid.cells();
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < ca.size(); ++i) {
+        bool same = BrickGrid::cellIsBrick(ca[i]) == BrickGrid::cellIsBrick(cb[i]) &&
+                    (BrickGrid::cellIsBrick(ca[i])
+                         ? a.grid.brickVoxels(BrickGrid::cellBrick(ca[i])) == b.grid.brickVoxels(BrickGrid::cellBrick(cb[i]))
+                         : ca[i] == cb[i]);
+        differing += !same;
+    }
+    EXPECT_EQ(differing, 0u) << what << ": cells differ";
+    EXPECT_TRUE(a.grid == b.grid) << what;
+}
+
 }  // namespace
 
 TEST(WorldStore, SaveAndLoadRoundTripExactly) {
@@ -69,26 +107,72 @@ TEST(WorldStore, SaveAndLoadRoundTripExactly) {
     fs::path file = dir.path() / "world.toml";
     ASSERT_TRUE(store->save(scene, file).ok());
     EXPECT_TRUE(store->isSave(file));
+    // The scene file names the payload with the lossless rule.
+    const std::string text = bytesOf(file);
+    EXPECT_NE(text.find("type = \"vdb\"\nsource = \"world.1.vdb\"\nrule = \"ids\""), std::string::npos) << text;
+    EXPECT_EQ(countFiles(dir.path(), ".vdb"), 1u);
     auto loaded = store->load(file);
     ASSERT_TRUE(loaded.ok()) << loaded.error().message;
-    EXPECT_TRUE(loaded->grid == scene.grid);
+    expectSameWorld(scene, *loaded, "first save");
     EXPECT_EQ(loaded->name, scene.name);
-    EXPECT_TRUE(loaded->palette == scene.palette);
+    EXPECT_EQ(loaded->sourcePath, file.string());  // the scene file, not its payload
     ASSERT_EQ(loaded->cameras.size(), 1u);
     EXPECT_EQ(loaded->cameras[0].position, scene.cameras[0].position);
     EXPECT_EQ(loaded->cameras[0].target, scene.cameras[0].target);
     EXPECT_EQ(loaded->cameras[0].fovYDegrees, scene.cameras[0].fovYDegrees);
     EXPECT_EQ(loaded->sky.sunRadiance, scene.sky.sunRadiance);
-    // The plain scene loader opens it too (vox render SAVE.toml).
+    // The plain scene loader opens it too (vox render SAVE.toml), and the payload on its own is
+    // a whole world for any OpenVDB reader (vox import, other tools).
     EXPECT_TRUE(loadSceneFile(file).ok());
+    auto alone = engine::io::importVdb(dir.path() / "world.1.vdb");
+    ASSERT_TRUE(alone.ok()) << alone.error().message;
+    expectSameWorld(scene, *alone, "payload imported alone");
 
     // A second save replaces the payload; the old generation is removed.
     scene.grid.set({3, 3, 3}, 2);
     ASSERT_TRUE(store->save(scene, file).ok());
-    EXPECT_EQ(countFiles(dir.path(), ".bricks"), 1u);
+    EXPECT_EQ(countFiles(dir.path(), ".vdb"), 1u);
+    EXPECT_TRUE(fs::exists(dir.path() / "world.2.vdb"));
     auto again = store->load(file);
     ASSERT_TRUE(again.ok());
-    EXPECT_TRUE(again->grid == scene.grid);
+    expectSameWorld(scene, *again, "second save");
+}
+
+TEST(WorldStore, RoundTripsBitForBitAfterEdits) {
+    // Edits of every kind between saves — single voxels, boxes that make homogeneous cells,
+    // carving that frees bricks, a cell emptied whole, a new material — and each save loads back
+    // equal to the world in memory, which is then edited further from the loaded copy (as the
+    // sandbox does after opening a save).
+    TempDir dir;
+    fs::path file = dir.path() / "edited.toml";
+    Scene scene = makeScene(11);
+    scene.voxelSize = 0.25f;
+    auto store = game::makeWorldStore();
+    engine::Rng rng(2024);
+    const glm::ivec3 size = scene.grid.sizeInVoxels();
+    auto voxel = [&] { return glm::ivec3(rng.uniformInt(0, size.x - 1), rng.uniformInt(0, size.y - 1), rng.uniformInt(0, size.z - 1)); };
+    for (int round = 0; round < 6; ++round) {
+        if (round == 3) {
+            Material glow{"glow \"new\"", glm::vec3(0.9f, 0.2f, 0.1f), glm::vec3(1.0f, 0.5f, 0.25f), 7.5f};
+            ASSERT_TRUE(scene.palette.add(glow).has_value());
+        }
+        const int materials = int(scene.palette.size()) - 1;
+        for (int i = 0; i < 300; ++i) scene.grid.set(voxel(), MaterialId(rng.uniformInt(0, materials)));
+        glm::ivec3 a = voxel(), b = voxel();
+        fillBox(scene.grid, Box{glm::min(a, b), glm::max(a, b) + 1}, MaterialId(rng.uniformInt(1, materials)));
+        fillSphere(scene.grid, glm::vec3(voxel()), rng.uniform(2.0f, 9.0f), kEmpty);
+        paintSphere(scene.grid, glm::vec3(voxel()), rng.uniform(2.0f, 9.0f), MaterialId(rng.uniformInt(1, materials)));
+        scene.grid.writeCellUniform(glm::ivec3(round % 6, 1, 2), kEmpty);
+        scene.grid.writeCellUniform(glm::ivec3(1, round % 5, 3), MaterialId(1 + round % materials));
+        scene.grid.clearDirty();
+
+        ASSERT_TRUE(store->save(scene, file).ok()) << "round " << round;
+        EXPECT_EQ(countFiles(dir.path(), ".vdb"), 1u) << "round " << round;
+        auto loaded = store->load(file);
+        ASSERT_TRUE(loaded.ok()) << loaded.error().message;
+        expectSameWorld(scene, *loaded, fmt::format("round {}", round));
+        scene = std::move(*loaded);
+    }
 }
 
 TEST(WorldStore, FailureBetweenWriteAndRenameLeavesThePreviousSaveReadable) {
@@ -96,6 +180,8 @@ TEST(WorldStore, FailureBetweenWriteAndRenameLeavesThePreviousSaveReadable) {
     fs::path file = dir.path() / "world.toml";
     Scene first = makeScene(2);
     ASSERT_TRUE(game::makeWorldStore()->save(first, file).ok());
+
+    const std::string sceneBefore = bytesOf(file), payloadBefore = bytesOf(onlyPayload(dir.path()));
 
     Scene second = makeScene(3);
     bool called = false;
@@ -111,9 +197,41 @@ TEST(WorldStore, FailureBetweenWriteAndRenameLeavesThePreviousSaveReadable) {
 
     auto loaded = game::makeWorldStore()->load(file);
     ASSERT_TRUE(loaded.ok()) << loaded.error().message;
-    EXPECT_TRUE(loaded->grid == first.grid);
+    expectSameWorld(first, *loaded, "after the failed save");
     EXPECT_FALSE(loaded->grid == second.grid);
-    EXPECT_EQ(countFiles(dir.path(), ".bricks"), 1u);  // the aborted save's payload is gone
+    EXPECT_EQ(countFiles(dir.path(), ".vdb"), 1u);  // the aborted save's payload is gone
+    EXPECT_EQ(bytesOf(file), sceneBefore);
+    EXPECT_EQ(bytesOf(onlyPayload(dir.path())), payloadBefore);
+}
+
+TEST(WorldStore, FailedPayloadWriteLeavesThePreviousSaveIntact) {
+    TempDir dir;
+    fs::path file = dir.path() / "world.toml";
+    Scene first = makeScene(8);
+    ASSERT_TRUE(game::makeWorldStore()->save(first, file).ok());
+    const std::string sceneBefore = bytesOf(file), payloadBefore = bytesOf(dir.path() / "world.1.vdb");
+
+    // The exporter writes WORLD.2.vdb through a temporary file beside it; a folder in the way
+    // makes that write fail (as a full disk or a read-only folder would).
+    fs::path blocker = dir.path() / fmt::format("world.2.vdb.tmp-{}", ::getpid());
+    fs::create_directory(blocker);
+    Scene second = makeScene(9);
+    engine::Status s = game::makeWorldStore()->save(second, file);
+    ASSERT_FALSE(s.ok());
+    EXPECT_NE(s.error().message.find("world.2.vdb"), std::string::npos) << s.error().message;
+    EXPECT_EQ(bytesOf(file), sceneBefore);
+    EXPECT_EQ(bytesOf(dir.path() / "world.1.vdb"), payloadBefore);
+    EXPECT_FALSE(fs::exists(dir.path() / "world.2.vdb"));
+    auto loaded = game::makeWorldStore()->load(file);
+    ASSERT_TRUE(loaded.ok()) << loaded.error().message;
+    expectSameWorld(first, *loaded, "after the failed payload write");
+
+    fs::remove(blocker);
+    ASSERT_TRUE(game::makeWorldStore()->save(second, file).ok());
+    auto after = game::makeWorldStore()->load(file);
+    ASSERT_TRUE(after.ok()) << after.error().message;
+    expectSameWorld(second, *after, "the next save");
+    EXPECT_EQ(countFiles(dir.path(), ".vdb"), 1u);
 }
 
 TEST(WorldStore, ProcessDyingBetweenWriteAndRenameLeavesThePreviousSaveReadable) {
@@ -135,36 +253,40 @@ TEST(WorldStore, ProcessDyingBetweenWriteAndRenameLeavesThePreviousSaveReadable)
     EXPECT_TRUE(loaded->grid == first.grid);
     // The dead save left its new payload and temporary file behind; the next save tidies the
     // payload up and commits normally.
-    EXPECT_EQ(countFiles(dir.path(), ".bricks"), 2u);
+    EXPECT_EQ(countFiles(dir.path(), ".vdb"), 2u);
     ASSERT_TRUE(game::makeWorldStore()->save(second, file).ok());
-    EXPECT_EQ(countFiles(dir.path(), ".bricks"), 1u);
+    EXPECT_EQ(countFiles(dir.path(), ".vdb"), 1u);
     auto after = game::makeWorldStore()->load(file);
     ASSERT_TRUE(after.ok());
     EXPECT_TRUE(after->grid == second.grid);
 }
 
-TEST(WorldStore, CorruptPayloadIsAnErrorNamingTheFile) {
+TEST(WorldStore, DamagedOrMissingPayloadIsAnErrorNamingTheFiles) {
+    // OpenVDB files carry no checksum, so a flipped bit inside voxel data may go unnoticed; what
+    // is caught (cut short, not a VDB file at all, gone) is reported with the scene file's line
+    // and the payload's name, never half-loaded.
     TempDir dir;
     fs::path file = dir.path() / "world.toml";
     ASSERT_TRUE(game::makeWorldStore()->save(makeScene(6), file).ok());
-    fs::path payload;
-    for (const auto& e : fs::directory_iterator(dir.path()))
-        if (e.path().extension() == ".bricks") payload = e.path();
+    fs::path payload = onlyPayload(dir.path());
     ASSERT_FALSE(payload.empty());
-    {
-        std::fstream f(payload, std::ios::in | std::ios::out | std::ios::binary);
-        f.seekp(200);
-        f.put('\x7f');
-    }
-    auto loaded = game::makeWorldStore()->load(file);
-    ASSERT_FALSE(loaded.ok());
-    EXPECT_NE(loaded.error().message.find("world.toml:"), std::string::npos) << loaded.error().message;
-    EXPECT_NE(loaded.error().message.find("checksum"), std::string::npos) << loaded.error().message;
+    const std::string full = bytesOf(payload);
+    auto expectError = [&](const char* what, const char* message) {
+        auto loaded = game::makeWorldStore()->load(file);
+        ASSERT_FALSE(loaded.ok()) << what;
+        const std::string& e = loaded.error().message;
+        EXPECT_NE(e.find("world.toml:"), std::string::npos) << what << ": " << e;
+        EXPECT_NE(e.find(payload.filename().string()), std::string::npos) << what << ": " << e;
+        EXPECT_NE(e.find(message), std::string::npos) << what << ": " << e;
+        EXPECT_EQ(e.find('\n'), std::string::npos) << what << ": " << e;
+    };
 
-    fs::resize_file(payload, 100);
-    loaded = game::makeWorldStore()->load(file);
-    ASSERT_FALSE(loaded.ok());
-    EXPECT_NE(loaded.error().message.find("truncated"), std::string::npos) << loaded.error().message;
+    fs::resize_file(payload, full.size() / 2);
+    expectError("cut in half", "");
+    std::ofstream(payload, std::ios::binary | std::ios::trunc) << "not a vdb file at all, just some text";
+    expectError("text", "not a VDB file");
+    fs::remove(payload);
+    expectError("missing", "cannot open");
 }
 
 TEST(WorldStore, NeverOverwritesAHandWrittenSceneFile) {

@@ -78,6 +78,7 @@ TEST(VdbRoundTrip, ImportedSceneFileLoadsTheSameWorld) {
     EXPECT_TRUE(loaded->grid == scene->grid);
     EXPECT_TRUE(loaded->palette == scene->palette);
     EXPECT_EQ(loaded->cameras.size(), scene->cameras.size());
+    EXPECT_EQ(loaded->sourcePath, (dir / "sandbox.toml").string());  // the scene file, not the payload
     EXPECT_TRUE(loaded->grid.dirtyBricks().empty());
 }
 

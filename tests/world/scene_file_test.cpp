@@ -42,7 +42,11 @@ TEST(SceneFile, EveryShippedWorldLoads) {
 TEST(SceneFile, ErrorsNameTheFileAndLine) {
     std::string e = errorOf(std::string(kMinimal) + "\n[[generator]]\ntype = \"terain\"\n");
     EXPECT_EQ(e, "test.toml:7: unknown generator 'terain' (known: terrain, box, sphere, cornell, buildings, lamps, "
-                 "mountain, scattered_lights, text, menger, apartment, bridge, vdb, bricks)");
+                 "mountain, scattered_lights, text, menger, apartment, bridge, vdb)");
+    // Saves from before .vdb payloads are refused by name, not as a typo.
+    e = errorOf(std::string(kMinimal) + "\n[[generator]]\ntype = \"bricks\"\nfile = \"old.1.bricks\"\n");
+    EXPECT_EQ(e, "test.toml:7: generator 'bricks' (the .bricks payload of older vox play saves) is no longer "
+                 "supported; saves are .vdb now (docs/SANDBOX.md, Saves)");
     e = errorOf(std::string(kMinimal) + "albdo = [1, 1, 1]\n");
     EXPECT_EQ(e, "test.toml:5: unknown key 'albdo'");
     e = errorOf(std::string(kMinimal) + "[[generator]]\ntype = \"box\"\nmin = [0,0,0]\nmax = [4,4,4]\nmaterial = \"gold\"\n");

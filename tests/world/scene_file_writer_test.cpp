@@ -1,4 +1,5 @@
-// A scene written back as text loads to the same palette, cameras and sky, floats exact.
+// A scene written back as text loads to the same palette, voxel size, cameras and sky, floats
+// exact.
 #include <gtest/gtest.h>
 
 #include "world/scene_file.h"
@@ -40,9 +41,11 @@ TEST(SceneFileWriter, QuotesNamesAndKeepsFloatsExact) {
     m.emissionStrength = 3.0f;
     scene.palette.add(m);
     scene.cameras.push_back({"c", {1e-3f, 123456.7f, -0.1f}, {2.0f, 2.0f, 2.0f}, 60.0f});
+    scene.voxelSize = 0.1f;
     auto back = loadSceneText(sceneTextWithPalette(scene, ""), "t.toml");
     ASSERT_TRUE(back.ok()) << back.error().message;
     EXPECT_EQ(back->name, scene.name);
+    EXPECT_EQ(back->voxelSize, scene.voxelSize);
     EXPECT_TRUE(back->palette == scene.palette);
     EXPECT_EQ(back->cameras[0].position, scene.cameras[0].position);
     EXPECT_EQ(tomlString("x\"y"), "\"x\\\"y\"");
