@@ -50,7 +50,8 @@ std::uint64_t threadGroups(std::uint64_t threads, std::uint32_t& groupsY) {
 IrradianceCache::IrradianceCache(gpu::Context& ctx)
     : mCtx(ctx),
       mTraceStatic(ctx, "cache/trace_static", shared::LIT_PASS_BINDING_FIRST + kOwnBindings),
-      mVisibility(ctx, "cache/update_visibility", shared::LIT_PASS_BINDING_FIRST + kOwnBindings),
+      mVisibilityStatic(ctx, "cache/visibility_static", shared::LIT_PASS_BINDING_FIRST + kOwnBindings),
+      mVisibilityDynamic(ctx, "cache/visibility_dynamic", shared::LIT_PASS_BINDING_FIRST + kOwnBindings),
       mBounce(ctx, "cache/light_bounce", shared::LIT_PASS_BINDING_FIRST + kOwnBindings),
       mFilter(ctx, "cache/filter", shared::LIT_PASS_BINDING_FIRST + kOwnBindings),
       mGather(ctx, "cache/gather", shared::LIT_PASS_BINDING_FIRST + kOwnBindings) {
@@ -155,8 +156,13 @@ void IrradianceCache::prepare(const lighting::IrradianceCacheSettings& settings,
     mStats.invalidated = mDirectory.invalidateStatic(editedCellMins, settings.maxRayLength);
     lighting::CacheFrameLists lists = mDirectory.beginFrame(visible, timeSeconds, settings.fadeSeconds);
     mUpdate = std::move(lists.update);
+    auto dynamicFirst = std::stable_partition(mUpdate.begin(), mUpdate.end(), [&](std::uint32_t slot) {
+        return mDirectory.entry(slot).voxel.w == static_cast<int>(shared::CACHE_SET_STATIC);
+    });
+    mStaticUpdates = static_cast<std::uint32_t>(dynamicFirst - mUpdate.begin());
     mTrace = std::move(lists.trace);
     mStats.updated = static_cast<std::uint32_t>(mUpdate.size());
+    mStats.dynamicEntries = static_cast<std::uint32_t>(mUpdate.size()) - mStaticUpdates;
     mStats.traced = static_cast<std::uint32_t>(mTrace.size());
     mStats.entries = mDirectory.liveEntries();
     mStats.dropped = lists.dropped;
@@ -190,7 +196,7 @@ void IrradianceCache::prepare(const lighting::IrradianceCacheSettings& settings,
                               (settings.filter ? 0u : shared::CACHE_FLAG_NO_FILTER) |
                                   (settings.fullRetrace ? shared::CACHE_FLAG_FULL_RETRACE : 0u),
                               0u);
-    params.image = glm::uvec4(size, 0u, 0u);
+    params.image = glm::uvec4(size, mStaticUpdates, 0u);
     uploader.write(mParams, 0, &params, sizeof(params));
 
     mStats.bytes = mParams.size() + mDirectionBuffer.size() + mEntries.size() + mTable.size() + mLists.size() +
@@ -218,7 +224,9 @@ void IrradianceCache::record(gpu::CommandList& cmd, const SceneBindings& scene, 
         &mIrradiance, &mFiltered, &io.gbuffer, &io.radiance, &io.indirect};
     const std::uint64_t faces = shared::CACHE_FACES;
     dispatch(cmd, mTraceStatic, "cache.trace_static", mTrace.size() * faces * mSettings.directions, buffers);
-    dispatch(cmd, mVisibility, "cache.visibility", mUpdate.size() * faces * mSettings.raysPerUpdate, buffers);
+    dispatch(cmd, mVisibilityStatic, "cache.visibility_static", mStaticUpdates * faces * mSettings.raysPerUpdate, buffers);
+    dispatch(cmd, mVisibilityDynamic, "cache.visibility_dynamic",
+             (mUpdate.size() - mStaticUpdates) * faces * mSettings.raysPerUpdate, buffers);
     dispatch(cmd, mBounce, "cache.bounce", mUpdate.size() * faces, buffers);
     dispatch(cmd, mFilter, "cache.filter", mUpdate.size() * faces, buffers);
     cmd.beginPass("cache.gather");

@@ -5,7 +5,8 @@
 // an N^3 neighbourhood around visible dynamic voxels), updates the directory and queues the
 // uploads; record() then runs the stages, each a timed pass:
 //   cache.trace_static  new or invalidated static entries trace their K rays per face once
-//   cache.visibility    static entries re-trace only the dynamic grid; dynamic entries trace all
+//   cache.visibility_static   static entries re-trace only the dynamic grid (divide and win)
+//   cache.visibility_dynamic  dynamic entries trace both worlds
 //   cache.bounce        light leaving each ray's hit -> E_new, blended into the entry
 //   cache.filter        3^3 filter over neighbouring entries of the same set
 //   cache.gather        per pixel: albedo/pi * E from the pixel's set, added to the radiance
@@ -34,6 +35,7 @@ struct IrradianceCacheStats {
     std::uint32_t visibleStatic = 0;   // distinct static voxels seen by the camera
     std::uint32_t visibleDynamic = 0;  // distinct dynamic voxels seen by the camera
     std::uint32_t updated = 0;         // entries updated this frame (with the neighbourhoods)
+    std::uint32_t dynamicEntries = 0;  // of them, dynamic-set entries
     std::uint32_t traced = 0;          // static entries that traced their rays this frame
     std::uint32_t entries = 0;         // live entries
     std::uint32_t dropped = 0, evicted = 0, invalidated = 0;
@@ -77,12 +79,13 @@ private:
                   std::span<const gpu::Buffer* const> buffers);
 
     gpu::Context& mCtx;
-    gpu::ComputePipeline mTraceStatic, mVisibility, mBounce, mFilter, mGather;
+    gpu::ComputePipeline mTraceStatic, mVisibilityStatic, mVisibilityDynamic, mBounce, mFilter, mGather;
     lighting::IrradianceCacheSettings mSettings;
     bool mConfigured = false;
     lighting::IrradianceCacheDirectory mDirectory{1};
     std::vector<glm::vec4> mDirections;
-    std::vector<std::uint32_t> mUpdate, mTrace;
+    std::vector<std::uint32_t> mUpdate, mTrace;  // mUpdate: static entries first
+    std::uint32_t mStaticUpdates = 0;
     std::uint32_t mCapacity = 0;  // slots the GPU buffers hold
     std::uint32_t mFrameIndex = 0;
     std::uint32_t mRotation = 0;

@@ -32,7 +32,7 @@ struct CacheParams {
     uvec4 frame;   // x: frame index, y: direction rotation of this update, z: bounces, w: seed
     vec4 blend;    // x: alpha, y: max ray length, z: scene time (s), w: dynamic fade (s)
     uvec4 table;   // x: hash table buckets - 1 (a power of two minus one), y: slot capacity, z: flags
-    uvec4 image;   // x width, y height
+    uvec4 image;   // x width, y height, z: static entries (they come first in the update list)
 };
 SHARED_ASSERT_SIZE(CacheParams, 80);
 

@@ -1,9 +1,8 @@
-#version 460
 // Irradiance cache, visibility update (the paper's divide-and-win, §4.5): a static entry's ray
 // keeps its cached static hit unless the dynamic grid, traced alone up to that hit, is nearer
-// (the selection bit); a dynamic entry's ray traces static and dynamic worlds.
-#extension GL_GOOGLE_include_directive : require
-
+// (the selection bit); a dynamic entry's ray traces static and dynamic worlds. The update list
+// holds the static entries first; visibility_static.comp and visibility_dynamic.comp each run
+// this over their part (VISIBILITY_SET), so each is timed on its own.
 #include "common/irradiance_cache.glsl"
 
 layout(local_size_x = CACHE_GROUP_SIZE) in;
@@ -11,8 +10,10 @@ layout(local_size_x = CACHE_GROUP_SIZE) in;
 void main() {
     uint K = gCache.counts.z, S = gCache.counts.w;
     uint thread = cacheThread();
+    uint staticEntries = gCache.image.z;
     uint item = thread / (CACHE_FACES * S);
-    if (item >= gCache.counts.x) return;
+    if (VISIBILITY_SET == CACHE_SET_DYNAMIC) item += staticEntries;
+    if (item >= (VISIBILITY_SET == CACHE_SET_STATIC ? staticEntries : gCache.counts.x)) return;
     uint face = (thread / S) % CACHE_FACES;
     uint j = thread % S;
     uint slot = gLists[item];

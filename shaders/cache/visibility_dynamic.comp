@@ -1,0 +1,6 @@
+#version 460
+// Visibility update of the cache's dynamic entries: see update_visibility.glsl.
+#extension GL_GOOGLE_include_directive : require
+
+#define VISIBILITY_SET CACHE_SET_DYNAMIC
+#include "cache/update_visibility.glsl"
