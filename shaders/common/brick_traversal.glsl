@@ -32,6 +32,7 @@ ivec3 refineVoxel(ivec3 v, int exact, vec3 o, vec3 d, float t, ivec3 size) {
 }
 
 TraceResult traceGrid(vec3 o, vec3 d, float tMax, bool hierarchical, bool dyn) {
+    if (dyn) loadDynamicGrid();
     const ivec3 size = gridSizeInVoxels(dyn);
 
     if (d == vec3(0.0)) return traceMiss(0u);

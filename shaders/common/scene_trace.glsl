@@ -58,7 +58,8 @@ uint staticVoxelMaterial(ivec3 v) { return gridVoxelMaterial(false, v); }
 // World coordinates; 0 = empty, outside or no dynamic grid.
 uint dynamicVoxelMaterial(ivec3 v) {
     if (!dynamicGridPresent()) return 0u;
-    return gridVoxelMaterial(true, v - dynamicGrid().header.origin.xyz);
+    loadDynamicGrid();
+    return gridVoxelMaterial(true, v - gDynHeader.origin.xyz);
 }
 
 // The object whose bounds hold world voxel v (the first, where bounds overlap); -1 if none.

@@ -64,42 +64,47 @@ DynamicObjectTable dynamicObjects() {
     return DynamicObjectTable(dynamicGridAddress() + 96ul + 4ul * uint64_t(g.header.objects.x));
 }
 
+// The dynamic grid's buffer and header, read once per traversal rather than at every step
+// (private to the invocation; set by loadDynamicGrid before any dyn accessor below).
+DynamicGridBuffer gDyn;
+DynamicGridHeader gDynHeader;
+void loadDynamicGrid() {
+    gDyn = dynamicGrid();
+    gDynHeader = gDyn.header;
+}
+
 // The same accessors over either grid (grid-local coordinates).
 ivec3 gridSizeInVoxels(bool dyn) {
-    if (dyn) return dynamicGrid().header.sizeInVoxels.xyz;
+    if (dyn) return gDynHeader.sizeInVoxels.xyz;
     return gWorld.sizeInVoxels.xyz;
 }
 
 uint gridSuperCell(bool dyn, ivec3 s) {
     if (dyn) {
-        DynamicGridBuffer g = dynamicGrid();
-        ivec3 n = g.header.sizeInSuperCells.xyz;
-        return g.words[g.header.offsets.x + uint(s.x) + uint(n.x) * (uint(s.y) + uint(n.y) * uint(s.z))];
+        ivec3 n = gDynHeader.sizeInSuperCells.xyz;
+        return gDyn.words[gDynHeader.offsets.x + uint(s.x) + uint(n.x) * (uint(s.y) + uint(n.y) * uint(s.z))];
     }
     return worldSuperCell(s);
 }
 
 uint gridCell(bool dyn, ivec3 cell) {
     if (dyn) {
-        DynamicGridBuffer g = dynamicGrid();
-        ivec3 n = g.header.sizeInCells.xyz;
-        return g.words[g.header.offsets.y + uint(cell.x) + uint(n.x) * (uint(cell.y) + uint(n.y) * uint(cell.z))];
+        ivec3 n = gDynHeader.sizeInCells.xyz;
+        return gDyn.words[gDynHeader.offsets.y + uint(cell.x) + uint(n.x) * (uint(cell.y) + uint(n.y) * uint(cell.z))];
     }
     return worldCell(cell);
 }
 
 uint gridMaskWord(bool dyn, uint brick, uint word) {
     if (dyn) {
-        DynamicGridBuffer g = dynamicGrid();
-        return g.words[g.header.offsets.z + brick * BRICK_MASK_WORDS + word];
+        return gDyn.words[gDynHeader.offsets.z + brick * BRICK_MASK_WORDS + word];
     }
     return brickMaskWord(brick, word);
 }
 
 uint gridBrickMaterial(bool dyn, uint brick, uint voxelIndex) {
     if (dyn) {
-        DynamicGridBuffer g = dynamicGrid();
-        uint w = g.words[g.header.offsets.w + brick * BRICK_MATERIAL_WORDS + (voxelIndex >> 1u)];
+        uint w = gDyn.words[gDynHeader.offsets.w + brick * BRICK_MATERIAL_WORDS + (voxelIndex >> 1u)];
         return (w >> ((voxelIndex & 1u) * 16u)) & 0xFFFFu;
     }
     return brickMaterial(brick, voxelIndex);

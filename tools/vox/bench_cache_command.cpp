@@ -20,7 +20,7 @@ namespace vox {
 namespace {
 
 struct CacheBenchOptions {
-    std::string world = "dragon_city";
+    std::string worlds = "dragon_city,factory,thin_wall";
     std::string size = "128x96";
     std::uint32_t frames = 12;
     std::string output = "out/bench_cache.json";
@@ -75,9 +75,14 @@ int runCacheBench(const CacheBenchOptions& o) {
     std::string json = "{\n";
     engine::render::FrameSettings frame;
 
-    // 1. Divide-and-win on a world with dynamic objects, the two modes in alternate frames.
-    {
-        auto scene = loadWorld(o.world);
+    // 1. Divide-and-win on worlds with dynamic objects, the two modes in alternate frames.
+    std::printf("| static entries' visibility update | dynamic-only re-trace | full re-trace | speed-up |\n|---|---|---|---|\n");
+    json += "  \"divide_and_win\": [";
+    std::string worlds = o.worlds + ",";
+    for (std::size_t at = 0, comma; (comma = worlds.find(',', at)) != std::string::npos; at = comma + 1) {
+        const std::string name = worlds.substr(at, comma - at);
+        if (name.empty()) continue;
+        auto scene = loadWorld(name);
         if (!scene) return fail(scene.error());
         frame.width = size->x;
         frame.height = size->y;
@@ -86,8 +91,6 @@ int runCacheBench(const CacheBenchOptions& o) {
         lFull.cache.fullRetrace = true;
         std::vector<double> tDivide, tFull;
         engine::render::FrameResult last;
-        std::printf("divide-and-win on %s at %ux%u, %u frames each ...\n", scene->name.c_str(), frame.width, frame.height,
-                    o.frames);
         for (std::uint32_t i = 0; i < o.frames + 2; ++i) {
             frame.timeSeconds = i / 30.0;
             frame.frameIndex = i;
@@ -98,14 +101,14 @@ int runCacheBench(const CacheBenchOptions& o) {
             tFull.push_back(f.passMsOf("cache.visibility_static"));
         }
         const double a = median(tDivide), b = median(tFull);
-        std::printf("| static entries' visibility update | dynamic-only re-trace | full re-trace | speed-up |\n|---|---|---|---|\n");
         std::printf("| %s: %u static entries (%u visible static, %u visible dynamic voxels) | %.2f ms | %.2f ms | %.2fx |\n",
                     scene->name.c_str(), last.cache.updated - last.cache.dynamicEntries, last.cache.visibleStatic,
                     last.cache.visibleDynamic, a, b, b / a);
-        json += fmt::format("  \"divide_and_win\": {{\"world\": \"{}\", \"entries\": {}, \"dynamic_ms\": {:.3f}, "
-                            "\"full_ms\": {:.3f}, \"speedup\": {:.3f}}},\n",
-                            scene->name, last.cache.updated, a, b, b / a);
+        json += fmt::format("{}{{\"world\": \"{}\", \"static_entries\": {}, \"dynamic_ms\": {:.3f}, "
+                            "\"full_ms\": {:.3f}, \"speedup\": {:.3f}}}",
+                            at ? ", " : "", scene->name, last.cache.updated - last.cache.dynamicEntries, a, b, b / a);
     }
+    json += "],\n";
 
     // 2. Cost against the number of visible voxels: one view at growing image sizes.
     {
@@ -170,7 +173,8 @@ int runCacheBench(const CacheBenchOptions& o) {
 void addBenchCacheCommand(CLI::App& bench, int& exitCode) {
     auto* cmd = bench.add_subcommand("cache", "Irradiance cache: divide-and-win speed-up, cost vs visible voxels, memory vs world size");
     auto o = std::make_shared<CacheBenchOptions>();
-    cmd->add_option("--world", o->world, "World with dynamic objects for the divide-and-win figure")->capture_default_str();
+    cmd->add_option("--worlds", o->worlds, "Worlds with dynamic objects for the divide-and-win figure (comma-separated)")
+        ->capture_default_str();
     cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
     cmd->add_option("--frames", o->frames, "Frames per measurement (medians; the first two are skipped)")->capture_default_str();
     cmd->add_option("-o,--output", o->output, "JSON results")->capture_default_str();
