@@ -46,6 +46,21 @@ engine::lighting::LightingSettings cacheLighting() {
     return l;
 }
 
+// Renders `frames` frames of a still view with the cache; returns the last frame and the median
+// of the cache's per-frame milliseconds, leaving out the first two frames and the one-off static trace.
+std::pair<engine::render::FrameResult, double> steadyCacheMs(engine::gpu::Context& ctx, engine::world::Scene& scene,
+                                                             engine::render::FrameSettings frame, std::uint32_t frames) {
+    engine::render::Renderer r(ctx);
+    std::vector<double> ms;
+    engine::render::FrameResult last;
+    for (std::uint32_t i = 0; i < frames; ++i) {
+        frame.frameIndex = i;
+        last = r.render(scene, scene.camera(), frame, cacheLighting());
+        if (i >= 2) ms.push_back(cacheMs(last) - last.passMsOf("cache.trace_static"));
+    }
+    return {last, median(ms)};
+}
+
 // A street of buildings along x in a world of `size`, closed by a wall at x = 100: the camera
 // sees the same voxels whatever the size; the rest of the world holds more of the same, out of view.
 engine::world::Scene streetWorld(glm::ivec3 size) {
@@ -117,17 +132,9 @@ int runCacheBench(const CacheBenchOptions& o) {
         json += "  \"visible\": [";
         bool first = true;
         for (std::uint32_t w : {32u, 64u, 96u, 128u}) {
-            engine::render::Renderer r(**ctx);
             frame.width = w;
             frame.height = w * 3 / 4;
-            std::vector<double> ms;
-            engine::render::FrameResult last;
-            for (std::uint32_t i = 0; i < o.frames; ++i) {
-                frame.frameIndex = i;
-                last = r.render(scene, scene.camera(), frame, cacheLighting());
-                if (i >= 2) ms.push_back(cacheMs(last) - last.passMsOf("cache.trace_static"));
-            }
-            const double m = median(ms);
+            auto [last, m] = steadyCacheMs(**ctx, scene, frame, o.frames);
             std::printf("| %ux%u | %u | %u | %.2f | %.2f |\n", frame.width, frame.height, last.cache.visibleStatic,
                         last.cache.updated, m, 1000.0 * m / std::max(1u, last.cache.updated));
             json += fmt::format("{}{{\"width\": {}, \"visible\": {}, \"ms\": {:.3f}}}", first ? "" : ", ", frame.width,
@@ -146,18 +153,11 @@ int runCacheBench(const CacheBenchOptions& o) {
         frame.height = size->y;
         for (int length : {128, 256, 512, 1024}) {
             engine::world::Scene scene = streetWorld({length, 64, 64});
-            engine::render::Renderer r(**ctx);
-            std::vector<double> ms;
-            engine::render::FrameResult last;
-            for (std::uint32_t i = 0; i < o.frames; ++i) {
-                frame.frameIndex = i;
-                last = r.render(scene, scene.camera(), frame, cacheLighting());
-                if (i >= 2) ms.push_back(cacheMs(last) - last.passMsOf("cache.trace_static"));
-            }
+            auto [last, m] = steadyCacheMs(**ctx, scene, frame, o.frames);
             std::printf("| %s | %u | %u | %.2f | %.2f |\n", scene.name.c_str(), scene.grid.liveBricks(), last.cache.entries,
-                        double(last.cache.bytes) / 1048576.0, median(ms));
+                        double(last.cache.bytes) / 1048576.0, m);
             json += fmt::format("{}{{\"length\": {}, \"entries\": {}, \"bytes\": {}, \"ms\": {:.3f}}}", first ? "" : ", ",
-                                length, last.cache.entries, last.cache.bytes, median(ms));
+                                length, last.cache.entries, last.cache.bytes, m);
             first = false;
         }
         json += "]\n}\n";
