@@ -200,6 +200,10 @@ engine::Status Sandbox::init() {
     mRenderer = std::make_unique<engine::render::Renderer>(*mCtx);
     mHud.visible = mOptions.hud;
     mLighting = mOptions.lighting;
+    if (mOptions.indirectFromScene) {
+        mLighting.indirect = mScene.indirect;
+        mLighting.cache = mScene.cache;
+    }
 
     const auto& dev = mCtx->info();
     glm::ivec3 size = mScene.grid.sizeInVoxels();

@@ -30,6 +30,7 @@ struct PlayOptions {
     double autosaveMinutes = 3.0;  // 0: off
     std::size_t undoMegabytes = 256;
     engine::lighting::LightingSettings lighting;  // switchable live in the HUD
+    bool indirectFromScene = true;  // no --indirect given: the world's [indirect] table decides
     bool hud = true;
     bool captureCommand = false;  // `vox capture` exists: the no-display message points to it too
 };

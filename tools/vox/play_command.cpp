@@ -32,6 +32,7 @@ void addPlayCommand(CLI::App& app, int& exitCode) {
             return;
         }
         o->lighting = *settings;
+        o->indirectFromScene = !lighting->indirect.has_value();
         o->captureCommand = !cmd->get_parent()->get_subcommands([](const CLI::App* a) { return a->get_name() == "capture"; }).empty();
         auto parsed = parseSize(*size, "--size");
         if (!parsed) {
