@@ -51,6 +51,7 @@ IrradianceCache::IrradianceCache(gpu::Context& ctx)
     : mCtx(ctx),
       mTraceStatic(ctx, "cache/trace_static", shared::LIT_PASS_BINDING_FIRST + kOwnBindings),
       mVisibilityStatic(ctx, "cache/visibility_static", shared::LIT_PASS_BINDING_FIRST + kOwnBindings),
+      mVisibilityStaticFull(ctx, "cache/visibility_static_full", shared::LIT_PASS_BINDING_FIRST + kOwnBindings),
       mVisibilityDynamic(ctx, "cache/visibility_dynamic", shared::LIT_PASS_BINDING_FIRST + kOwnBindings),
       mBounce(ctx, "cache/light_bounce", shared::LIT_PASS_BINDING_FIRST + kOwnBindings),
       mFilter(ctx, "cache/filter", shared::LIT_PASS_BINDING_FIRST + kOwnBindings),
@@ -224,9 +225,9 @@ void IrradianceCache::record(gpu::CommandList& cmd, const SceneBindings& scene, 
         &mIrradiance, &mFiltered, &io.gbuffer, &io.radiance, &io.indirect};
     const std::uint64_t faces = shared::CACHE_FACES;
     dispatch(cmd, mTraceStatic, "cache.trace_static", mTrace.size() * faces * mSettings.directions, buffers);
-    dispatch(cmd, mVisibilityStatic, "cache.visibility_static", mStaticUpdates * faces * mSettings.raysPerUpdate, buffers);
-    dispatch(cmd, mVisibilityDynamic, "cache.visibility_dynamic",
-             (mUpdate.size() - mStaticUpdates) * faces * mSettings.raysPerUpdate, buffers);
+    dispatch(cmd, mSettings.fullRetrace ? mVisibilityStaticFull : mVisibilityStatic, "cache.visibility_static",
+             mStaticUpdates * faces, buffers);
+    dispatch(cmd, mVisibilityDynamic, "cache.visibility_dynamic", (mUpdate.size() - mStaticUpdates) * faces, buffers);
     dispatch(cmd, mBounce, "cache.bounce", mUpdate.size() * faces, buffers);
     dispatch(cmd, mFilter, "cache.filter", mUpdate.size() * faces, buffers);
     cmd.beginPass("cache.gather");

@@ -79,7 +79,7 @@ private:
                   std::span<const gpu::Buffer* const> buffers);
 
     gpu::Context& mCtx;
-    gpu::ComputePipeline mTraceStatic, mVisibilityStatic, mVisibilityDynamic, mBounce, mFilter, mGather;
+    gpu::ComputePipeline mTraceStatic, mVisibilityStatic, mVisibilityStaticFull, mVisibilityDynamic, mBounce, mFilter, mGather;
     lighting::IrradianceCacheSettings mSettings;
     bool mConfigured = false;
     lighting::IrradianceCacheDirectory mDirectory{1};

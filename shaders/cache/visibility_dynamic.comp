@@ -3,4 +3,5 @@
 #extension GL_GOOGLE_include_directive : require
 
 #define VISIBILITY_SET CACHE_SET_DYNAMIC
+#define VISIBILITY_MODE VISIBILITY_FULL
 #include "cache/update_visibility.glsl"

@@ -37,7 +37,7 @@ struct CacheParams {
 SHARED_ASSERT_SIZE(CacheParams, 80);
 
 SHARED_CONST uint CACHE_FLAG_NO_FILTER = 1u;
-SHARED_CONST uint CACHE_FLAG_FULL_RETRACE = 2u;  // debugging/tests: static set re-traces everything
+SHARED_CONST uint CACHE_FLAG_FULL_RETRACE = 2u;  // tests and benchmarks: the static set re-traces everything (visibility_static_full.comp)
 
 struct CacheEntry {
     ivec4 voxel;  // xyz world voxel, w set (CACHE_SET_*)
