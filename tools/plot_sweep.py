@@ -2,7 +2,11 @@
 """Charts a `vox bench sweep` CSV: per scene, error (MAE and MSE, log) against GPU milliseconds
 per frame, one marker style per method, the Pareto front (no other point is both faster and
 more accurate) joined. MAE shows bias best, MSE punishes fireflies: both are drawn.
-Usage: plot_sweep.py sweep.csv OUTDIR  ->  OUTDIR/sweep_<scene>.png"""
+
+Rows measured against the multi-bounce reference (reference_bounces > 0: the indirect-light
+series none / cache-K / path tracer) get their own chart per scene: their errors are against
+another image than the direct-light points', so one axis would compare unlike things.
+Usage: plot_sweep.py sweep.csv OUTDIR  ->  OUTDIR/sweep_<scene>.png, OUTDIR/sweep_indirect_<scene>.png"""
 import csv
 import sys
 from collections import defaultdict
@@ -13,6 +17,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 MARKERS = {"restir": "o", "restir-unbiased": "s", "ris": "^", "uniform": "v", "bruteforce": "D", "reference": "*"}
+# The indirect series: one marker family per kind of indirect light (the direct light is ReSTIR's).
+INDIRECT_MARKERS = {"none": "o", "cache": "s", "reference": "*"}
 
 
 def pareto(points, key):
@@ -24,34 +30,56 @@ def pareto(points, key):
     return front
 
 
-def main(path, outdir):
-    scenes = defaultdict(list)
+def series(row):
+    """('direct', method) or ('indirect', kind) with the reference's bounce count."""
+    bounces = int(row.get("reference_bounces") or 0)
+    if bounces > 0:
+        return "indirect", row.get("indirect") or "none", bounces
+    return "direct", row["method"], 0
+
+
+def read(path):
+    """scene -> {'direct': [points], 'indirect': [points]}"""
+    scenes = defaultdict(lambda: defaultdict(list))
     with open(path, newline="") as f:
         for row in csv.DictReader(f):
-            scenes[row["scene"]].append({"method": row["method"], "setting": row["setting"],
-                                         "ms": float(row["total_ms"]), "mae": float(row["mae"]),
-                                         "mse": float(row["mse"])})
-    for scene, points in scenes.items():
-        fig, axes = plt.subplots(1, 2, figsize=(13, 5))
-        for ax, key in zip(axes, ("mae", "mse")):
-            for method in sorted({p["method"] for p in points}):
-                mine = [p for p in points if p["method"] == method]
-                ax.scatter([p["ms"] for p in mine], [p[key] for p in mine], marker=MARKERS.get(method, "x"),
-                           label=method)
-            front = pareto(points, key)
-            ax.plot([p["ms"] for p in front], [p[key] for p in front], "k--", linewidth=1, label="Pareto front")
-            for p in front:
-                ax.annotate(p["setting"], (p["ms"], p[key]), fontsize=6, xytext=(3, 3), textcoords="offset points")
-            ax.set_yscale("log")
-            ax.set_xlabel("GPU ms per frame (lavapipe)")
-            ax.set_ylabel(f"{key.upper()} vs reference (log)")
-            ax.set_title(f"{scene}: {key.upper()} against time")
-            ax.grid(True, which="both", linewidth=0.3)
-            ax.legend(fontsize=7)
-        fig.tight_layout()
-        out = f"{outdir}/sweep_{scene}.png"
-        fig.savefig(out, dpi=110)
-        print(f"wrote    {out}")
+            kind, group, bounces = series(row)
+            scenes[row["scene"]][kind].append({"group": group, "setting": row["setting"], "bounces": bounces,
+                                               "ms": float(row["total_ms"]), "mae": float(row["mae"]),
+                                               "mse": float(row["mse"])})
+    return scenes
+
+
+def chart(scene, points, markers, title, out):
+    fig, axes = plt.subplots(1, 2, figsize=(13, 5))
+    for ax, key in zip(axes, ("mae", "mse")):
+        for group in sorted({p["group"] for p in points}):
+            mine = [p for p in points if p["group"] == group]
+            ax.scatter([p["ms"] for p in mine], [p[key] for p in mine], marker=markers.get(group, "x"), label=group)
+        front = pareto(points, key)
+        ax.plot([p["ms"] for p in front], [p[key] for p in front], "k--", linewidth=1, label="Pareto front")
+        for p in front:
+            ax.annotate(p["setting"], (p["ms"], p[key]), fontsize=6, xytext=(3, 3), textcoords="offset points")
+        ax.set_yscale("log")
+        ax.set_xlabel("GPU ms per frame (lavapipe)")
+        ax.set_ylabel(f"{key.upper()} vs {title} (log)")
+        ax.set_title(f"{scene}: {key.upper()} against time")
+        ax.grid(True, which="both", linewidth=0.3)
+        ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(out, dpi=110)
+    plt.close(fig)
+    print(f"wrote    {out}")
+
+
+def main(path, outdir):
+    for scene, kinds in read(path).items():
+        if kinds["direct"]:
+            chart(scene, kinds["direct"], MARKERS, "direct-light reference", f"{outdir}/sweep_{scene}.png")
+        if kinds["indirect"]:
+            bounces = kinds["indirect"][0]["bounces"]
+            chart(scene, kinds["indirect"], INDIRECT_MARKERS, f"{bounces}-bounce reference",
+                  f"{outdir}/sweep_indirect_{scene}.png")
 
 
 if __name__ == "__main__":

@@ -98,6 +98,12 @@ run a && run b && {
     # Events show in the counts: the lamp brick goes dark on frame 3, the new block lights on frame 6.
     emitters=$(awk -F, 'NR > 1 { printf "%s ", $11 }' "$tmp/a/capture.csv")
     [[ "$emitters" == "1 1 1 0 0 0 "* ]] || fail "emitters per frame: $emitters"
+    # Every method reports its rays (ReSTIR: a bound from its per-pixel counts) and, without the
+    # cache, no visible cache voxels.
+    counts=$(awk -F, 'NR == 2 { print $12, $15, $16, $17 }' "$tmp/a/capture.csv")
+    read -r primary rays visible how <<<"$counts"
+    [ "$how" = bound ] && [ "$rays" -gt "$primary" ] && [ "$visible" = 0 ] ||
+        fail "ReSTIR rays / visible_cache_voxels / rays_how: '$counts'"
     echo "ok: two ReSTIR captures are identical (12 PNGs, CSV without *_ms); emitters per frame: $emitters"
 }
 
@@ -117,7 +123,17 @@ run p --method preview && run s --method preview --frames 5:8 --warmup 0 && {
         fail "the slice's CSV rows differ from the whole capture's"
     rays=$(awk -F, 'NR == 2 { print $15 }' "$tmp/p/capture.csv")
     [ -n "$rays" ] && [ "$rays" -ge 3072 ] || fail "preview rays column: '$rays'"
+    [ "$(awk -F, 'NR == 2 { print $17 }' "$tmp/p/capture.csv")" = counted ] || fail "preview rays are not marked counted"
     echo "ok: preview slice 5:8 equals the whole capture's frames 5..8"
+}
+# With the irradiance cache: the visible cache voxels, and the cache's rays on top of ReSTIR's.
+run c --indirect cache --frames 0:2 --warmup 0 && {
+    counts=$(awk -F, 'NR == 2 { print $15, $16, $17 }' "$tmp/c/capture_00000-00002.csv")
+    read -r rays visible how <<<"$counts"
+    arays=$(awk -F, 'NR == 2 { print $15 }' "$tmp/a/capture.csv")
+    [ "$how" = bound ] && [ "$visible" -gt 0 ] && [ "$rays" -gt "$arays" ] ||
+        fail "cache rays / visible_cache_voxels / rays_how: '$counts' (ReSTIR alone: $arays rays)"
+    echo "ok: with the cache, frame 0: $rays rays, $visible visible cache voxels"
 }
 # A slice with warm-up renders the warm-up frames without writing them.
 run w --frames 9: --warmup 4 && {

@@ -34,6 +34,11 @@ struct SweepOptions {
     std::string size = "128x72";
     std::uint32_t frames = 12;
     std::uint32_t referenceSpp = 1024;
+    // Indirect-light series (docs/ACCURACY.md): ReSTIR's defaults for the direct light plus
+    // none | cache-K | reference, measured against a multi-bounce reference.
+    std::string indirect = "none,cache-32,cache-128,reference";
+    std::uint32_t indirectBounces = 3;
+    std::uint32_t indirectReferenceSpp = 512;
     std::string output = "out/sweep";
 };
 
@@ -99,12 +104,54 @@ engine::Result<std::vector<std::pair<std::string, LightingSettings>>> settingsOf
     return out;
 }
 
+// The indirect-light series, labelled: ReSTIR (biased, area, M = 32: the defaults) for the
+// direct light and, for the indirect light, nothing, the irradiance cache with K directions per
+// face, or the path tracer with the same bounces as the reference it is measured against (one
+// sample per pixel, restarted every frame). The cache reads its own irradiance at each ray's hit
+// for the same number of bounces, so all three aim at the same converged image.
+engine::Result<std::vector<std::pair<std::string, LightingSettings>>> indirectSettingsOf(const SweepOptions& o) {
+    using engine::lighting::Indirect;
+    std::vector<std::pair<std::string, LightingSettings>> out;
+    if (o.indirectBounces < 1 || o.indirectBounces > 16) return engine::makeError("--indirect-bounces must be in 1..16");
+    for (const std::string& item : splitList(o.indirect)) {
+        LightingSettings l;
+        if (item == "none") {
+            out.push_back({"indirect none (restir)", l});
+        } else if (item == "reference") {
+            l.method = Method::Reference;
+            l.indirect = Indirect::Reference;
+            l.bounces = o.indirectBounces;
+            l.samplesPerFrame = 1;
+            out.push_back({fmt::format("indirect reference {} bounces 1 spp", o.indirectBounces), l});
+        } else if (item.rfind("cache-", 0) == 0) {
+            auto k = numbers(item.substr(6), "--indirect cache-K");
+            if (!k) return k.error();
+            l.indirect = Indirect::Cache;
+            l.cache.directions = k->front();
+            l.cache.raysPerUpdate = std::min(l.cache.raysPerUpdate, l.cache.directions);
+            l.cache.bounces = o.indirectBounces;
+            if (engine::Status valid = engine::lighting::validate(l.cache); !valid)
+                return engine::makeError("--indirect {}: {}", item, valid.error().message);
+            out.push_back({fmt::format("indirect cache K={}", k->front()), l});
+        } else {
+            return engine::makeError("--indirect: '{}' is not none, cache-K or reference", item);
+        }
+    }
+    return out;
+}
+
+const char* indirectColumn(const LightingSettings& l) {
+    return engine::lighting::indirectName(l.method == Method::Reference ? engine::lighting::Indirect::Reference : l.indirect);
+}
+
 int runSweep(const SweepOptions& o) {
     auto size = parseSize(o.size, "--size");
     if (!size) return fail(size.error());
     if (o.frames < 2 || o.frames > 1000) return fail(engine::makeError("--frames must be in 2..1000"));
     auto settings = settingsOf(o);
     if (!settings) return fail(settings.error());
+    auto indirect = indirectSettingsOf(o);
+    if (!indirect) return fail(indirect.error());
     auto ctx = engine::gpu::Context::create({});
     if (!ctx) return fail(ctx.error());
     engine::render::FrameSettings fs;
@@ -113,13 +160,24 @@ int runSweep(const SweepOptions& o) {
     std::filesystem::path out(o.output);
     std::filesystem::create_directories(out);
     std::ofstream csv(out / "sweep.csv");
-    csv << "scene,method,setting,emitters,total_ms,primary_ms,lighting_ms,mae,mse,rmae\n";
-    std::size_t total = o.worlds.size() * settings->size(), done = 0;
+    // reference_bounces 0: the point's error is against the direct-light reference; more: against
+    // the path tracer with that many bounces (the indirect series, charted apart).
+    csv << "scene,method,setting,emitters,total_ms,primary_ms,lighting_ms,mae,mse,rmae,indirect,reference_bounces\n";
+    std::size_t total = o.worlds.size() * (settings->size() + indirect->size()), done = 0;
+    auto write = [&](const SweepPoint& p, const LightingSettings& l, std::uint32_t referenceBounces) {
+        double primary = p.passMs.count("primary_rays") ? p.passMs.at("primary_rays") : 0.0;
+        double tonemap = p.passMs.count("tonemap") ? p.passMs.at("tonemap") : 0.0;
+        csv << fmt::format("{},{},\"{}\",{},{},{},{},{},{},{},{},{}\n", p.scene, p.method, p.label, p.emitters, p.totalMs,
+                           primary, p.totalMs - primary - tonemap, p.mae, p.mse, p.rmae, indirectColumn(l),
+                           referenceBounces);
+        csv.flush();
+    };
     for (const std::string& name : o.worlds) {
         auto scene = loadWorld(name);
         if (!scene) return fail(scene.error());
         engine::world::CameraPreset camera = scene->camera();
-        auto reference = cachedReference(**ctx, *scene, camera, fs, o.referenceSpp, 0, out / "cache");
+        engine::Result<std::vector<glm::vec4>> reference = std::vector<glm::vec4>{};
+        if (!settings->empty()) reference = cachedReference(**ctx, *scene, camera, fs, o.referenceSpp, 0, out / "cache");
         if (!reference) return fail(reference.error());
         // Brick lights on and off are the same lights in a scene without uniform emissive bricks.
         engine::lighting::EmitterList lights;
@@ -130,12 +188,15 @@ int runSweep(const SweepOptions& o) {
             ++done;
             if (!l.brickLights && !hasBrickLights) continue;
             std::fprintf(stderr, "\r  [%zu/%zu] %s: %-40s", done, total, scene->name.c_str(), label.c_str());
-            SweepPoint p = measureSetting(**ctx, *scene, camera, fs, l, o.frames, *reference, label);
-            double primary = p.passMs.count("primary_rays") ? p.passMs.at("primary_rays") : 0.0;
-            double tonemap = p.passMs.count("tonemap") ? p.passMs.at("tonemap") : 0.0;
-            csv << fmt::format("{},{},\"{}\",{},{},{},{},{},{},{}\n", p.scene, p.method, p.label, p.emitters, p.totalMs,
-                               primary, p.totalMs - primary - tonemap, p.mae, p.mse, p.rmae);
-            csv.flush();
+            write(measureSetting(**ctx, *scene, camera, fs, l, o.frames, *reference, label), l, 0);
+        }
+        if (indirect->empty()) continue;
+        auto withBounces = cachedReference(**ctx, *scene, camera, fs, o.indirectReferenceSpp, o.indirectBounces, out / "cache");
+        if (!withBounces) return fail(withBounces.error());
+        for (const auto& [label, l] : *indirect) {
+            ++done;
+            std::fprintf(stderr, "\r  [%zu/%zu] %s: %-40s", done, total, scene->name.c_str(), label.c_str());
+            write(measureSetting(**ctx, *scene, camera, fs, l, o.frames, *withBounces, label), l, o.indirectBounces);
         }
     }
     std::fprintf(stderr, "\n");
@@ -152,6 +213,7 @@ struct RecommendOptions {
     std::string world;
     double targetMae = 0.0;
     std::string sweep = "out/sweep/sweep.csv";
+    bool indirect = false;  // choose among the indirect-light series (else the direct-light points)
 };
 
 int runRecommend(const RecommendOptions& o) {
@@ -168,15 +230,20 @@ int runRecommend(const RecommendOptions& o) {
     };
     std::vector<Candidate> rows;
     while (std::getline(in, line)) {
-        // scene,method,"setting",emitters,total_ms,primary_ms,lighting_ms,mae,mse,rmae
+        // scene,method,"setting",emitters,total_ms,primary_ms,lighting_ms,mae,mse,rmae[,indirect,reference_bounces]
+        // (sweeps from before the indirect series have no last two columns: all direct)
         std::size_t q1 = line.find('"'), q2 = line.find('"', q1 + 1);
         if (q1 == std::string::npos || q2 == std::string::npos) continue;
         if (line.substr(0, line.find(',')) != scene->name) continue;
         std::vector<std::string> rest = splitList(line.substr(q2 + 2));
         if (rest.size() < 5) continue;
+        const bool againstIndirect = rest.size() >= 9 && std::atoi(rest[8].c_str()) > 0;
+        if (againstIndirect != o.indirect) continue;
         rows.push_back({line.substr(q1 + 1, q2 - q1 - 1), std::atof(rest[1].c_str()), std::atof(rest[4].c_str())});
     }
-    if (rows.empty()) return fail(engine::makeError("{}: no rows for scene '{}'; run `vox bench sweep {}`", o.sweep, scene->name, o.world));
+    if (rows.empty())
+        return fail(engine::makeError("{}: no {}rows for scene '{}'; run `vox bench sweep {}`", o.sweep,
+                                      o.indirect ? "indirect-light " : "", scene->name, o.world));
     const Candidate* best = nullptr;
     for (const Candidate& c : rows) {
         if (c.mae <= o.targetMae && (!best || c.ms < best->ms)) best = &c;
@@ -206,6 +273,14 @@ void addBenchSweepCommand(CLI::App& bench, int& exitCode) {
     cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
     cmd->add_option("--frames", o->frames, "Frames per setting (the last half are measured)")->capture_default_str();
     cmd->add_option("--ref-spp", o->referenceSpp, "Reference samples per pixel (cached on disk)")->capture_default_str();
+    cmd->add_option("--indirect", o->indirect,
+                    "Indirect-light series: none, cache-K (K directions), reference; empty = no series")
+        ->capture_default_str();
+    cmd->add_option("--indirect-bounces", o->indirectBounces,
+                    "Bounces of the indirect reference (and of the cache and path-tracer points)")
+        ->capture_default_str();
+    cmd->add_option("--indirect-ref-spp", o->indirectReferenceSpp, "Samples per pixel of the indirect reference (cached)")
+        ->capture_default_str();
     cmd->add_option("-o,--output", o->output, "Output folder")->capture_default_str();
     cmd->callback([o, &exitCode] { exitCode = runSweep(*o); });
 
@@ -214,6 +289,8 @@ void addBenchSweepCommand(CLI::App& bench, int& exitCode) {
     rec->add_option("world", r->world, "World name or scene file")->required();
     rec->add_option("--target-mae", r->targetMae, "Target MAE against the reference")->required();
     rec->add_option("--sweep", r->sweep, "Sweep results (CSV from vox bench sweep)")->capture_default_str();
+    rec->add_flag("--indirect", r->indirect,
+                  "Choose among the indirect-light series (error against the multi-bounce reference)");
     rec->callback([r, &exitCode] { exitCode = runRecommend(*r); });
 }
 

@@ -50,9 +50,40 @@ struct CaptureOptions {
 struct FrameRow {
     engine::render::FlythroughPlayer::Frame frame;
     std::uint64_t primaryRays = 0, surfacePixels = 0, primarySteps = 0;
-    std::optional<std::uint64_t> rays;
+    std::uint64_t rays = 0;
+    bool raysCounted = false;  // counted on the GPU (preview), else the per-pixel bound below
+    std::uint64_t visibleCacheVoxels = 0;
     double wallMs = 0.0;
 };
+
+// Rays of a frame that the method does not count on the GPU: the primary rays plus, per pixel
+// whose primary ray hit a surface, the rays its shaders trace at most (docs/CAPTURE.md) — a shadow
+// ray is skipped where its light cannot contribute (behind the surface, zero target), so this is
+// an upper bound — plus the irradiance cache's own rays, which it counts exactly.
+std::uint64_t rayBound(const engine::lighting::LightingSettings& l, const engine::world::Scene& scene,
+                       const engine::render::FrameResult& r, std::uint64_t pixels, std::uint64_t surface) {
+    using engine::lighting::Method;
+    const std::uint64_t sun = glm::any(glm::greaterThan(scene.sky.sunRadiance, glm::vec3(0.0f))) ? 1 : 0;
+    std::uint64_t perSurface = 0;
+    switch (l.method) {
+        case Method::Preview: perSurface = sun; break;  // counted on the GPU instead; for completeness
+        case Method::Restir:
+            // initial candidates (the chosen one's visibility), the unbiased mode's visibility
+            // test of the temporal input and of each spatial tap, shading: sun + chosen light.
+            perSurface = (l.candidateVisibility ? 1 : 0) + (l.unbiased && l.temporal ? 1 : 0) +
+                         (l.unbiased && l.spatial ? l.spatialTaps : 0) + sun + 1;
+            break;
+        case Method::Ris: perSurface = sun + 1; break;
+        case Method::Uniform: perSurface = sun + l.shadowRays; break;
+        case Method::BruteForce: perSurface = sun + r.emitters; break;
+        case Method::Reference:
+            // per sample: at each of up to bounces + 1 vertices the sun and one emitter shadow
+            // ray, and a continuation ray per bounce (Russian roulette and escapes end paths early)
+            perSurface = std::uint64_t(std::max(l.samplesPerFrame, 1u)) * ((l.bounces + 1) * (sun + 1) + l.bounces);
+            break;
+    }
+    return pixels + surface * perSurface + (r.cacheUsed ? r.cache.rays : 0);
+}
 
 // A path argument: a file, or a name in worlds/paths/ ("sandbox_orbit" ->
 // worlds/paths/sandbox_orbit.toml).
@@ -102,17 +133,17 @@ engine::Status writeCsv(const fs::path& file, const std::vector<FrameRow>& rows)
     std::ostringstream csv;
     csv << "frame,time_s,events,cam_x,cam_y,cam_z,target_x,target_y,target_z,fov_deg,emitters,"
            "primary_rays,"
-           "surface_pixels,primary_steps,rays,visible_cache_voxels,upload_bricks,upload_cells";
+           "surface_pixels,primary_steps,rays,visible_cache_voxels,rays_how,upload_bricks,upload_cells";
     for (const std::string& p : passes) csv << ",gpu_" << p << "_ms";
     csv << ",gpu_total_ms,cpu_emitter_update_ms,wall_ms\n";
     for (const FrameRow& r : rows) {
         const auto& f = r.frame;
         const auto& c = f.camera;
-        csv << fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},,{},{}", f.index, f.time,
-                           f.events, c.position.x, c.position.y, c.position.z, c.target.x,
+        csv << fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}", f.index,
+                           f.time, f.events, c.position.x, c.position.y, c.position.z, c.target.x,
                            c.target.y, c.target.z, c.fovYDegrees, f.result.emitters, r.primaryRays,
-                           r.surfacePixels, r.primarySteps,
-                           r.rays ? std::to_string(*r.rays) : std::string(), f.result.upload.bricks,
+                           r.surfacePixels, r.primarySteps, r.rays, r.visibleCacheVoxels,
+                           r.raysCounted ? "counted" : "bound", f.result.upload.bricks,
                            f.result.upload.cells);
         for (const std::string& p : passes) {
             bool ran = false;
@@ -227,12 +258,18 @@ int runCapture(const CaptureOptions& o) {
                 row.surfacePixels += std::uint32_t(g.voxel.w) != shared::FACE_NONE;
                 row.primarySteps += g.data.z;
             }
-            // Only the preview shading counts its rays (primary + sun shadow) on the GPU so far.
+            // The preview shading counts its rays (primary + sun shadow) on the GPU; the other
+            // methods' rays are bounded from their per-pixel counts (rayBound).
+            const auto& result = row.frame.result;
             if (l.method == engine::lighting::Method::Preview) {
-                std::uint64_t rays = 0;
-                for (const auto& s : images.rayStats) rays += s.z;
-                row.rays = rays;
+                for (const auto& s : images.rayStats) row.rays += s.z;
+                if (result.cacheUsed) row.rays += result.cache.rays;
+                row.raysCounted = true;
+            } else {
+                row.rays = rayBound(l, *scene, result, row.primaryRays, row.surfacePixels);
             }
+            if (result.cacheUsed)
+                row.visibleCacheVoxels = result.cache.visibleStatic + result.cache.visibleDynamic;
             engine::Status s =
                 engine::io::writePng(dir / framePng(i), images.width, images.height, images.rgba8);
             if (s && o.exr)

@@ -45,6 +45,9 @@ SweepPoint measureSetting(engine::gpu::Context& gpu, engine::world::Scene& scene
     if (lighting.method == Method::Restir && lighting.unbiased) p.method = "restir-unbiased";
     int counted = 0;
     for (std::uint32_t i = 0; i < frames; ++i) {
+        // The path tracer as a method: each frame is its own estimate (samplesPerFrame samples),
+        // not the accumulation of all frames so far, so its time and error belong together.
+        if (lighting.method == Method::Reference) renderer.resetHistory();
         engine::render::FrameResult r = renderer.render(scene, camera, frame, lighting);
         p.emitters = r.emitters;
         if (i < frames / 2) continue;

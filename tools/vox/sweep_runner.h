@@ -32,6 +32,7 @@ struct SweepPoint {
 };
 
 // Renders `frames` frames of a still camera; measures the second half (temporal history first).
+// The reference method restarts every frame: its point is one frame's worth of samples.
 SweepPoint measureSetting(engine::gpu::Context& gpu, engine::world::Scene& scene,
                           const engine::world::CameraPreset& camera, const engine::render::FrameSettings& frame,
                           engine::lighting::LightingSettings lighting, std::uint32_t frames,
