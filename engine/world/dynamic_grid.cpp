@@ -96,7 +96,7 @@ DynamicGrid voxelizeObjects(std::span<const DynamicObject> objects) {
 bool updateDynamicObjects(std::vector<DynamicObject>& objects, DynamicGrid& grid, double time, double prevTime) {
     bool changed = grid.instances.size() != objects.size();
     for (DynamicObject& o : objects) {
-        RigidTransform current = o.path.at(time), previous = o.path.at(prevTime);
+        RigidTransform current = o.poseAt(time), previous = o.poseAt(prevTime);
         changed |= !(current == o.current) || !(previous == o.previous);
         o.current = current;
         o.previous = previous;

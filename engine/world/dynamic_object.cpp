@@ -91,4 +91,10 @@ Box DynamicObject::worldBounds(const RigidTransform& t) const {
     return Box{glm::ivec3(glm::floor(lo)), glm::ivec3(glm::ceil(hi))};
 }
 
+RigidTransform DynamicObject::poseAt(double t) const {
+    if (!startTime) return path.at(t);
+    const double first = path.keys().front().time;
+    return path.at(t < *startTime ? first : first + (t - *startTime));
+}
+
 }  // namespace engine::world

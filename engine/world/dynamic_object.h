@@ -8,6 +8,7 @@
 // Each frame the objects are re-voxelised into one world-aligned grid (world/dynamic_grid.h).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -57,8 +58,14 @@ struct DynamicObject {
     BrickGrid model{glm::ivec3(8)};
     glm::ivec3 modelSize{8};  // the model's extent in voxels (the grid rounds it up to bricks)
     ObjectPath path;
+    // Set when a flythrough's timeline has a `dynamic` start event for this object (Timeline::bind):
+    // the object holds its first pose until then and runs its path from that moment.
+    std::optional<double> startTime;
     // Set by updateDynamicObjects (world/dynamic_grid.h): the poses of this frame and the last.
     RigidTransform current, previous;
+
+    // Where the object is at scene time t: its path, shifted to start at startTime if set.
+    RigidTransform poseAt(double t) const;
 
     glm::dvec3 pivot() const { return glm::dvec3(modelSize) * 0.5; }
     // world = position + rotation * (model - pivot)

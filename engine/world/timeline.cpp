@@ -80,8 +80,21 @@ Status Timeline::bind(Scene& scene) {
                 e.to = e.on ? *m : *twin;
                 break;
             }
-            case TimelineEvent::Kind::DynamicStart:
+            case TimelineEvent::Kind::DynamicStart: {
+                // The start is part of the object's pose function from now on, so any frame —
+                // also one of a slice rendered elsewhere — poses it the same way.
+                DynamicObject* object = nullptr;
+                std::string names;
+                for (DynamicObject& o : scene.objects) {
+                    if (o.name == e.object) object = &o;
+                    names += (names.empty() ? "" : ", ") + o.name;
+                }
+                if (!object)
+                    return makeError("{}: no dynamic object named '{}' (the scene has: {})", e.where, e.object,
+                                     names.empty() ? "none" : names);
+                object->startTime = std::min(object->startTime.value_or(e.time), e.time);
                 break;
+            }
         }
     }
     mBound = true;
@@ -113,9 +126,7 @@ void Timeline::apply(const TimelineEvent& e, Scene& scene) {
             replaceMaterial(scene.grid, e.box.intersect(scene.grid.bounds()), e.from, e.to);
             break;
         case TimelineEvent::Kind::DynamicStart:
-            // No dynamic objects yet: the hook is where they will start; without one, a no-op.
-            if (mDynamicHook) mDynamicHook(e);
-            break;
+            break;  // bound into the object's pose (DynamicObject::startTime)
     }
 }
 

@@ -5,8 +5,9 @@
 // Emitters are just emissive voxels, so switching a light off edits its voxels to a dark twin
 // material ("<name>.off": same albedo, no emission) and switching it on edits them back; the
 // renderer's emitter list and GPU world pick the edits up incrementally like any other edit.
-// Dynamic objects do not exist yet: their start event is parsed, checked and handed to a hook,
-// and with no hook installed it does nothing (see worlds/README.md).
+// A dynamic object named by a start event holds its first pose until the event's time and then
+// runs its path (bind sets DynamicObject::startTime; the pose is a function of time, so slices
+// of a capture agree).
 //
 // Frame timing: an event at time t takes effect from the first frame whose time i / fps >= t
 // (firstFrame), applied before that frame renders, in file order among events of one frame. So
@@ -62,9 +63,6 @@ public:
     // many it applied. Frames must not go backwards (a fresh scene and timeline replay a slice).
     std::uint32_t applyThrough(std::uint32_t frame, double fps, Scene& scene);
 
-    // Called for each DynamicStart event as it applies; nothing happens without one.
-    using DynamicObjectHook = std::function<void(const TimelineEvent&)>;
-    void setDynamicObjectHook(DynamicObjectHook hook) { mDynamicHook = std::move(hook); }
 
     const std::vector<TimelineEvent>& events() const { return mEvents; }
     std::size_t applied() const { return mNext; }
@@ -75,7 +73,6 @@ private:
     std::vector<TimelineEvent> mEvents;
     std::size_t mNext = 0;
     bool mBound = false;
-    DynamicObjectHook mDynamicHook;
 };
 
 }  // namespace engine::world

@@ -241,12 +241,6 @@ int runCapture(const CaptureOptions& o) {
 
     std::vector<FrameRow> rows;
     ProgressLine progress("capture", last - start + 1);
-    // Dynamic objects do not exist yet: say so for each start event instead of pretending.
-    fly->timeline.setDynamicObjectHook([&progress](const engine::world::TimelineEvent& e) {
-        progress.note(fmt::format(
-            "note: {}: dynamic object '{}' not started (dynamic objects are not implemented yet)",
-            e.where, e.object));
-    });
     for (std::uint32_t i = start; i <= last; ++i) {
         auto t0 = std::chrono::steady_clock::now();
         FrameRow row;
