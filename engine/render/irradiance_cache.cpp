@@ -68,7 +68,7 @@ std::uint64_t IrradianceCache::bytesPerSlot(const lighting::IrradianceCacheSetti
 
 std::uint32_t IrradianceCache::directionIndex(std::uint32_t j) const {
     std::uint32_t stride = mSettings.directions / mSettings.raysPerUpdate;
-    return j * stride + mRotation % stride;
+    return j * stride + mFrameIndex % stride;  // the rotation advances with the frame
 }
 
 void IrradianceCache::clear() {
@@ -172,7 +172,6 @@ void IrradianceCache::prepare(const lighting::IrradianceCacheSettings& settings,
                   shared::CACHE_FACES;
     mFrameIndex = frameIndex;
     mImage = size;
-    mRotation = frameIndex;
 
     ensureCapacity(std::max(mDirectory.usedSlots(), 1u), cmd);
     if (lists.tableChanged || !mTable.valid()) {
@@ -190,7 +189,7 @@ void IrradianceCache::prepare(const lighting::IrradianceCacheSettings& settings,
 
     shared::CacheParams params{};
     params.counts = glm::uvec4(mUpdate.size(), mTrace.size(), settings.directions, settings.raysPerUpdate);
-    params.frame = glm::uvec4(frameIndex, mRotation, settings.bounces, seed);
+    params.frame = glm::uvec4(frameIndex, 0u, settings.bounces, seed);
     params.blend = glm::vec4(settings.alpha, std::min(settings.maxRayLength, shared::CACHE_MAX_RAY_LENGTH),
                              static_cast<float>(timeSeconds), settings.fadeSeconds);
     params.table = glm::uvec4(static_cast<std::uint32_t>(mTable.size() / sizeof(shared::CacheBucket)) - 1u, mCapacity,

@@ -87,8 +87,7 @@ private:
     std::vector<std::uint32_t> mUpdate, mTrace;  // mUpdate: static entries first
     std::uint32_t mStaticUpdates = 0;
     std::uint32_t mCapacity = 0;  // slots the GPU buffers hold
-    std::uint32_t mFrameIndex = 0;
-    std::uint32_t mRotation = 0;
+    std::uint32_t mFrameIndex = 0;  // also the rotation through the K directions
     glm::uvec2 mImage{0};
     IrradianceCacheStats mStats;
     gpu::Buffer mParams, mDirectionBuffer, mEntries, mTable, mLists, mStaticHits, mSelectedHits, mIrradiance, mFiltered;

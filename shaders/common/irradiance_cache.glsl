@@ -48,7 +48,7 @@ vec3 cacheRayOrigin(ivec3 voxel, uint face) {
 // The direction index the j-th ray of this update uses: all K are covered every K/S updates.
 uint cacheDirectionIndex(uint j) {
     uint stride = gCache.counts.z / gCache.counts.w;
-    return j * stride + gCache.frame.y % stride;
+    return j * stride + gCache.frame.x % stride;  // the rotation advances with the frame
 }
 
 uint packCacheHit(ivec3 origin, ivec3 voxel, uint face, bool dynamicSet) {

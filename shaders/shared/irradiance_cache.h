@@ -29,7 +29,7 @@ SHARED_CONST uint CACHE_DISPATCH_ROW = 65535u * CACHE_GROUP_SIZE;  // threads pe
 
 struct CacheParams {
     uvec4 counts;  // x: entries to update, y: entries to trace statically, z: K directions, w: rays per face per update
-    uvec4 frame;   // x: frame index, y: direction rotation of this update, z: bounces, w: seed
+    uvec4 frame;   // x: frame index (also the rotation through the K directions), y: unused, z: bounces, w: seed
     vec4 blend;    // x: alpha, y: max ray length, z: scene time (s), w: dynamic fade (s)
     uvec4 table;   // x: hash table buckets - 1 (a power of two minus one), y: slot capacity, z: flags
     uvec4 image;   // x width, y height, z: static entries (they come first in the update list)
