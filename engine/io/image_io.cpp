@@ -25,10 +25,13 @@ namespace engine::io {
 namespace fs = std::filesystem;
 
 Status writeAtomically(const fs::path& path, const std::function<Status(const fs::path&)>& write) {
+    std::error_code ec;
+    const fs::path folder = path.parent_path().empty() ? fs::path(".") : path.parent_path();
+    if (!fs::is_directory(folder, ec))
+        return makeError("{}: cannot write: '{}' is not a folder", path.string(), folder.string());
     fs::path temp = path;
     temp += ".tmp-" + std::to_string(::getpid());
     Status s = write(temp);
-    std::error_code ec;
     if (!s) {
         fs::remove(temp, ec);
         return s;

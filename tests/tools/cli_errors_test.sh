@@ -27,6 +27,7 @@ printf '[world]\nsize = [16, 16, 16]\n[[material]]\nname = "a"\n[[generator]]\nt
 printf '[world]\nsize = [16, 16\n' > "$tmp/syntax.toml"
 printf '[world]\nsize = [100000, 100000, 100000]\n' > "$tmp/huge.toml"
 head -c 3000 /dev/urandom > "$tmp/random.toml"
+echo "a file, not a folder" > "$tmp/afile"
 
 expect_error "typo.toml:6: unknown generator 'terain'" -- "$vox" render "$tmp/typo.toml" -o "$tmp/a.png"
 expect_error "syntax.toml:2:" -- "$vox" info "$tmp/syntax.toml"
@@ -39,6 +40,8 @@ expect_error "must end in .png or .exr" -- "$vox" render -o "$tmp/out.jpg"
 expect_error "no camera named 'nope'" -- "$vox" render --camera nope -o "$tmp/a.png"
 expect_error "--pos: expected x,y,z" -- "$vox" render --pos 1,2 --target 3,4,5 -o "$tmp/a.png"
 expect_error "unknown|not expected|Extraction" -- "$vox" render --bogus
+expect_error "afile/a.png: cannot write: '.*afile' is not a folder" -- "$vox" render --size 8x8 -o "$tmp/afile/a.png"
+expect_error "afile/w.vdb: cannot write: '.*afile' is not a folder" -- "$vox" export cornell -o "$tmp/afile/w.vdb"
 
 out=$("$vox" render --size 64x40 -o "$tmp/ok.png" 2>&1); rc=$?
 if [ $rc -ne 0 ] || ! grep -q "wrote    $tmp/ok.png" <<<"$out" || [ "$(head -c 4 "$tmp/ok.png" | tail -c 3)" != "PNG" ]; then
@@ -46,5 +49,13 @@ if [ $rc -ne 0 ] || ! grep -q "wrote    $tmp/ok.png" <<<"$out" || [ "$(head -c 4
 else
     echo "ok: good render wrote a PNG"
 fi
+
+# Outputs go into folders that are made as needed; a path through a file is one clear line.
+if "$vox" export cornell -o "$tmp/made/here/ok.vdb" >/dev/null && [ -s "$tmp/made/here/ok.vdb" ]; then
+    echo "ok: export made its folder"
+else
+    echo "FAIL: export -o into a new folder"; failures=$((failures + 1))
+fi
+expect_error "afile/w.vdb: cannot write: '.*afile' is not a folder" -- "$vox" import "$tmp/made/here/ok.vdb" -o "$tmp/afile/w.toml"
 
 [ $failures -eq 0 ] || { echo "$failures failure(s)"; exit 1; }

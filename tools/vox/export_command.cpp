@@ -27,7 +27,10 @@ void addExportCommand(CLI::App& app, int& exitCode) {
         engine::io::VdbExportOptions options;
         options.colourGrids = !*idsOnly;
         engine::io::VdbExportReport report;
-        engine::Status s = engine::io::exportVdb(*scene, *output, options, &report);
+        std::error_code ec;
+        const std::filesystem::path out(*output);
+        if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path(), ec);  // like every output of vox
+        engine::Status s = engine::io::exportVdb(*scene, out, options, &report);
         if (!s) {
             exitCode = fail(s.error());
             return;

@@ -47,6 +47,7 @@ int runImport(const std::string& input, const std::string& output, bool dryRun, 
     engine::io::VdbImportReport report;
     auto scene = engine::io::importVdb(input, *options, &report);
     if (!scene) return fail(scene.error());
+    if (out.has_parent_path()) fs::create_directories(out.parent_path(), ec);  // like every output of vox
     engine::Status s = engine::io::exportVdb(*scene, payload);
     if (!s) return fail(s.error());
     if (ext == ".toml") {
