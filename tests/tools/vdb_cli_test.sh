@@ -4,6 +4,8 @@
 #                                          voxel counts as expected (exit 77 = skipped, no vdb_print)
 #   vdb_cli_test.sh errors VOX SAMPLES     bad files give one line naming the file and exit 1..127;
 #                                          a good import writes a scene file that loads and renders
+#   vdb_cli_test.sh memory VOX SAMPLES     importing a 10^7-voxel level set peaks (RSS, /usr/bin/time)
+#                                          below 2x the world it builds (exit 77 = no /usr/bin/time)
 set -u
 mode="$1"; vox="$2"; samples="$3"
 tmp=$(mktemp -d)
@@ -41,6 +43,20 @@ if [ "$mode" = vdb_print ]; then
     grep -q "vox:material.00001.name: grass" <<<"$meta" && grep -q "vox:format: voxengine.world" <<<"$meta" \
         && echo "ok: vdb_print shows the palette metadata" || fail "palette metadata missing from vdb_print -m"
     [ $failures -eq 0 ] || { echo "$failures failure(s)"; exit 1; }
+    exit 0
+fi
+
+if [ "$mode" = memory ]; then
+    [ -x /usr/bin/time ] || { echo "SKIP: /usr/bin/time not found (Debian package time; tools/setup.sh installs it)"; exit 77; }
+    "$samples" sphere "$tmp/sphere.vdb" 364 >/dev/null || { echo "FAIL: make_vdb_samples"; exit 1; }
+    out=$(/usr/bin/time -f "peak_rss_kib %M" "$vox" import "$tmp/sphere.vdb" --dry-run 2>&1) || { echo "FAIL: import: $out"; exit 1; }
+    solid=$(grep -oE "imported +[0-9]+ solid" <<<"$out" | grep -oE "[0-9]+")
+    world=$(grep -oE "in memory \([0-9]+ bytes" <<<"$out" | grep -oE "[0-9]+")
+    peak=$(grep -oE "peak_rss_kib [0-9]+" <<<"$out" | grep -oE "[0-9]+$")
+    echo "world $world bytes, $solid solid voxels; peak RSS $peak KiB = $(awk -v p="$peak" -v w="$world" 'BEGIN{printf "%.3f", p * 1024 / w}') x the world"
+    [ -n "$world" ] && [ -n "$peak" ] && [ "$solid" -gt 200000000 ] || { echo "FAIL: could not read the figures from:"; echo "$out"; exit 1; }
+    [ $((peak * 1024)) -lt $((2 * world)) ] || { echo "FAIL: peak RSS is not below 2x the world"; exit 1; }
+    echo "ok: below 2x"
     exit 0
 fi
 
