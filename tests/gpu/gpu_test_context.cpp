@@ -64,7 +64,7 @@ std::vector<shared::TraceRayOutput> traceOnGpu(engine::world::Scene& scene, cons
     uploader.write(paramsBuf, 0, &params, sizeof(params));
     uploader.write(raysBuf, 0, inputs.data(), raysBuf.size());
     uploader.record(cmd);
-    pass.record(cmd, {world, paramsBuf, raysBuf, hitsBuf}, std::uint32_t(inputs.size()));
+    pass.record(cmd, {world, paramsBuf, raysBuf, hitsBuf}, std::uint32_t(inputs.size()), mode);
     cmd.copyBuffer(hitsBuf, readback, {{0, 0, hitsBuf.size()}});
     cmd.barrier();
     cmd.submitAndWait();

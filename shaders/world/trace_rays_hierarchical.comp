@@ -1,0 +1,6 @@
+#version 460
+// Batch ray queries, hierarchical traversal (TRACE_MODE_HIERARCHICAL); the body is trace_rays.glsl.
+#extension GL_GOOGLE_include_directive : require
+#include "shared/trace_rays.h"
+#define TRACE_MODE TRACE_MODE_HIERARCHICAL
+#include "world/trace_rays.glsl"
