@@ -75,7 +75,16 @@ TraceResult traceGrid(vec3 o, vec3 d, float tMax, bool hierarchical, bool dyn) {
     precise vec3 tDelta = vec3(0.0);
     int level = 0;
     int exact = 1;
-    for (uint steps = 1u; steps <= TRAVERSAL_MAX_STEPS; ++steps) {
+    // One exit, at the loop's head: llvmpipe runs a SIMD batch's lanes in lockstep, and every
+    // `return` inside the loop would add masked bookkeeping to every step of every lane.
+    bool hit = false;
+    bool done = false;
+    uint material = 0u;
+    uint hitBrick = 0u;  // a brick voxel's material is read once, after the loop
+    int hitBit = -1;
+    uint steps = 0u;
+    while (!done && steps < TRAVERSAL_MAX_STEPS) {
+        ++steps;
         int s = 1;
         if (hierarchical && gridSuperCell(dyn, v >> SUPER_SHIFT) == 0u) {
             s = 32;
@@ -90,7 +99,8 @@ TraceResult traceGrid(vec3 o, vec3 d, float tMax, bool hierarchical, bool dyn) {
             if (cell == CELL_EMPTY) {
                 s = 8;
             } else if ((cell & CELL_HOMOGENEOUS) != 0u) {
-                return TraceResult(true, v, face, t, cell & CELL_MATERIAL_MASK, steps);
+                hit = true;
+                material = cell & CELL_MATERIAL_MASK;
             } else {
                 uint brick = cell - 1u;
                 ivec3 local = v & 7;
@@ -104,29 +114,36 @@ TraceResult traceGrid(vec3 o, vec3 d, float tMax, bool hierarchical, bool dyn) {
                            ((gridMaskWord(dyn, brick, MASK_COARSE_WORD + uint(bit2 >> 5)) >> uint(bit2 & 31)) & 1u) == 0u) {
                     s = 2;
                 } else if (((gridMaskWord(dyn, brick, uint(bit >> 5)) >> uint(bit & 31)) & 1u) != 0u) {
-                    return TraceResult(true, v, face, t, gridBrickMaterial(dyn, brick, uint(bit)), steps);
+                    hit = true;
+                    hitBrick = brick;
+                    hitBit = bit;
                 }
             }
         }
-
-        // Leave the empty block of size s around v (see ray_traversal.cpp).
-        ivec3 lo = v & ~(s - 1);
-        if (s != level) {
-            tNext = (vec3(lo + ivec3(positive) * s) - o) * inv;
-            tDelta = float(s) * absInv;
-            level = s;
+        if (hit) {
+            done = true;
+        } else {
+            // Leave the empty block of size s around v (see ray_traversal.cpp).
+            ivec3 lo = v & ~(s - 1);
+            if (s != level) {
+                tNext = (vec3(lo + ivec3(positive) * s) - o) * inv;
+                tDelta = float(s) * absInv;
+                level = s;
+            }
+            int axis = tNext.x <= tNext.y ? (tNext.x <= tNext.z ? 0 : 2) : (tNext.y <= tNext.z ? 1 : 2);
+            float best = tNext[axis];
+            v[axis] = positive[axis] ? lo[axis] + s : lo[axis] - 1;
+            // Past tMax or out of the world: a miss (see ray_traversal.cpp).
+            done = best > tExit || v[axis] < 0 || v[axis] >= size[axis];
+            tNext[axis] += tDelta[axis];
+            face = uint(axis * 2 + (positive[axis] ? 0 : 1));
+            t = best;
+            exact = s;
         }
-        int axis = tNext.x <= tNext.y ? (tNext.x <= tNext.z ? 0 : 2) : (tNext.y <= tNext.z ? 1 : 2);
-        float best = tNext[axis];
-        if (best > tExit) return traceMiss(steps);  // see ray_traversal.cpp
-        v[axis] = positive[axis] ? lo[axis] + s : lo[axis] - 1;
-        if (v[axis] < 0 || v[axis] >= size[axis]) return traceMiss(steps);
-        tNext[axis] += tDelta[axis];
-        face = uint(axis * 2 + (positive[axis] ? 0 : 1));
-        t = best;
-        exact = s;
     }
-    return traceMiss(TRAVERSAL_MAX_STEPS);
+    if (!hit) return traceMiss(steps);
+    if (hitBit >= 0) material = gridBrickMaterial(dyn, hitBrick, uint(hitBit));
+    return TraceResult(true, v, face, t, material, steps);
 }
 
 // The static world (the traversal tests call this directly; rays use traceScene).
