@@ -41,9 +41,14 @@ struct MethodResult {
     double ms = 0.0;  // median wall (CPU) or GPU timestamp time for all rays
     std::uint64_t rays = 0;
     std::uint64_t steps = 0;
+    // GPU only: steps as the SIMD hardware pays for them. llvmpipe runs 8 lanes in lockstep, so a
+    // batch of 8 consecutive rays costs 8 x its longest ray's steps.
+    std::uint64_t laneSteps = 0;
     double raysPerSecond() const { return double(rays) / (ms * 1e-3); }
     double stepsPerRay() const { return double(steps) / double(std::max<std::uint64_t>(rays, 1)); }
 };
+
+constexpr std::size_t kSimdLanes = 8;  // llvmpipe with 256-bit vectors: 8 invocations per batch
 
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
@@ -159,7 +164,7 @@ int runBench(const BenchOptions& o) {
             shared::TraceRaysParams p{glm::uvec4(std::uint32_t(inputs.size()), mode, 0u, 0u)};
             uploader.write(paramsBuf, 0, &p, sizeof(p));
             uploader.record(cmd);
-            pass.record(cmd, {world, paramsBuf, raysBuf, hitsBuf}, std::uint32_t(inputs.size()));
+            pass.record(cmd, {world, paramsBuf, raysBuf, hitsBuf}, std::uint32_t(inputs.size()), mode);
             cmd.copyBuffer(hitsBuf, readback, {{0, 0, hitsBuf.size()}});
             cmd.barrier();
             cmd.submitAndWait();
@@ -168,6 +173,12 @@ int runBench(const BenchOptions& o) {
         r.ms = median(times);
         r.rays = inputs.size();
         auto out = readback.view<shared::TraceRayOutput>();
+        for (std::size_t batch = 0; batch < inputs.size(); batch += kSimdLanes) {
+            std::uint32_t longest = 0;
+            for (std::size_t i = batch; i < std::min(inputs.size(), batch + kSimdLanes); ++i)
+                longest = std::max(longest, out[i].data.w);
+            r.laneSteps += std::uint64_t(longest) * kSimdLanes;
+        }
         for (std::size_t i = 0; i < inputs.size(); ++i) {
             r.steps += out[i].data.w;
             if (mode == shared::TRACE_MODE_HIERARCHICAL && i < primary.size()) {
@@ -203,6 +214,11 @@ int runBench(const BenchOptions& o) {
         std::printf("%-28s %10.2f %12.3f %12.2f %12.3f\n", r.name.c_str(), r.ms, r.raysPerSecond() * 1e-6,
                     r.stepsPerRay(), r.ms * 1e6 / double(std::max<std::uint64_t>(r.steps, 1)));
     }
+    for (const MethodResult& r : results) {
+        if (r.laneSteps == 0) continue;
+        std::printf("%-28s SIMD-%zu lanes busy %.0f%% of the steps they pay for\n", r.name.c_str(), kSimdLanes,
+                    100.0 * double(r.steps) / double(r.laneSteps));
+    }
     const MethodResult& gpuH = results[0];
     const MethodResult& classic = results[4];
     std::printf("\ngpu hierarchical vs cpu classic two-level DDA: %.2fx rays/s, %.2fx fewer steps per ray\n",
@@ -223,7 +239,7 @@ int runBench(const BenchOptions& o) {
         const MethodResult& r = results[i];
         json << "    {\"name\": \"" << r.name << "\", \"ms\": " << r.ms << ", \"rays\": " << r.rays
              << ", \"steps\": " << r.steps << ", \"rays_per_second\": " << r.raysPerSecond()
-             << ", \"steps_per_ray\": " << r.stepsPerRay() << "}" << (i + 1 < results.size() ? "," : "") << "\n";
+             << ", \"steps_per_ray\": " << r.stepsPerRay() << ", \"lane_steps\": " << r.laneSteps << "}" << (i + 1 < results.size() ? "," : "") << "\n";
     }
     json << "  ]\n}\n";
     if (!json) return fail(engine::makeError("{}: cannot write results", out.string()));
