@@ -22,7 +22,7 @@ enum class Method {
 
 struct LightingSettings {
     Method method = Method::Restir;
-    bool area = true;            // area lights (else point lights at emitter centres)
+    bool area = true;            // area lights (else point lights at the centres of their exposed surfaces)
     bool byPower = true;         // candidates from the alias table over power (else uniform)
     std::uint32_t candidates = 32;
     bool brickLights = true;

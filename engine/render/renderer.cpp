@@ -84,6 +84,7 @@ void Renderer::resize(std::uint32_t width, std::uint32_t height) {
                                           i ? "restir.reservoirs1" : "restir.reservoirs0");
     }
     mCandidates = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(shared::Reservoir), "restir.candidates");
+    mOwnReservoirs = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(shared::Reservoir), "restir.own");
     mAccumulation = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(glm::vec4), "reference.accumulation");
     mRadiance = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(glm::vec4), "frame.radiance");
     mLdr = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(std::uint32_t), "frame.ldr");
@@ -224,16 +225,18 @@ void Renderer::recordLighting(gpu::CommandList& cmd, const lighting::LightingSet
         case Method::Ris: {
             gpu::Buffer& final = mFinalReservoirs[mCurrent];
             mRestirInitial.record(cmd, scene, {mFrameParams, mRestirParams, gbuffer, mCandidates}, mSize);
+            gpu::Buffer* own = &mCandidates;
             if (lighting.method == Method::Restir && lighting.temporal && historyValid) {
                 mRestirTemporal.record(cmd, scene,
                                        {mFrameParams, mRestirParams, gbuffer, mGBuffers[mCurrent ^ 1u], mCandidates,
-                                        mFinalReservoirs[mCurrent ^ 1u]},
+                                        mFinalReservoirs[mCurrent ^ 1u], mOwnReservoirs},
                                        mSize);
+                own = &mOwnReservoirs;
             }
             if (lighting.method == Method::Restir && lighting.spatial) {
-                mRestirSpatial.record(cmd, scene, {mFrameParams, mRestirParams, gbuffer, mCandidates, final}, mSize);
+                mRestirSpatial.record(cmd, scene, {mFrameParams, mRestirParams, gbuffer, *own, mCandidates, final}, mSize);
             } else {
-                cmd.copyBuffer(mCandidates, final, {{0, 0, mCandidates.size()}});
+                cmd.copyBuffer(*own, final, {{0, 0, own->size()}});
                 cmd.barrier();
             }
             mRestirShade.record(cmd, scene, {mFrameParams, mRestirParams, gbuffer, final, mRadiance}, mSize);

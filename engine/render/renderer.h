@@ -111,7 +111,7 @@ private:
     IrradianceCache mCache;
 
     glm::uvec2 mSize{0};
-    gpu::Buffer mFrameParams, mRestirParams, mRadiance, mLdr, mRayStats, mCandidates, mAccumulation, mIndirect;
+    gpu::Buffer mFrameParams, mRestirParams, mRadiance, mLdr, mRayStats, mCandidates, mOwnReservoirs, mAccumulation, mIndirect;
     gpu::Buffer mGBufferHost;  // this frame's G-buffer on the host, for the cache's visible voxels
     gpu::Buffer mGBuffers[2], mFinalReservoirs[2];
     std::uint32_t mCurrent = 0;  // which of the ping-pong pair is this frame's

@@ -111,19 +111,58 @@ float facePdf(GpuEmitter e, vec3 x, uint face) {
     return total > 0.0 ? faceSolidAngle(e, face, x) / total : 0.0;
 }
 
+// Point mode's light: a point at the centre of the emitter's exposed surface (the mean of its
+// exposed faces' centres). For the usual lamp set into a wall or ceiling, one face is exposed and
+// the point lies on it, where the area light's own centre is; a free-standing cube's is its centre.
+vec3 emitterPointLight(GpuEmitter e) {
+    vec3 sum = vec3(0.0);
+    float faces = 0.0;
+    for (uint f = 0u; f < 6u; ++f) {
+        if ((e.info.x & (1u << f)) == 0u) continue;
+        sum += emitterFacePoint(e, f, vec2(0.5));
+        faces += 1.0;
+    }
+    return faces > 0.0 ? sum / faces : emitterCentre(e);
+}
+
+// Where point mode's shadow ray aims: the centre of the exposed face turned most towards x. A ray
+// to the cube's centre (or to a point behind a face x cannot see) would cross the solid voxels
+// around a flush lamp from more than about 45 degrees off its face and find it shadowed by its
+// own wall; a ray to a face x is in front of reaches the emitter through that face.
+vec3 emitterShadowTarget(GpuEmitter e, vec3 x) {
+    vec3 best = emitterPointLight(e);
+    float bestCosine = 0.0;
+    for (uint f = 0u; f < 6u; ++f) {
+        if ((e.info.x & (1u << f)) == 0u) continue;
+        vec3 c = emitterFacePoint(e, f, vec2(0.5));
+        float cosine = dot(faceNormalF(f), normalize(x - c));
+        if (cosine > bestCosine) {
+            bestCosine = cosine;
+            best = c;
+        }
+    }
+    return best;
+}
+
 // Unshadowed contribution (linear RGB radiance towards the camera) of a light sample at a
 // diffuse surface. Area mode (face < 6): f = albedo/pi * Le * cos_x * cos_y / d^2, per unit
-// light area. Point mode (face == LIGHT_FACE_CENTRE): the cube as a point light at its centre
-// with intensity Le x projected area of its exposed faces towards x.
-vec3 lightContribution(Surface s, GpuEmitter e, uint face, vec2 uv, out vec3 toLight, out float dist) {
-    vec3 y = face == LIGHT_FACE_CENTRE ? emitterCentre(e) : emitterFacePoint(e, face, uv);
+// light area. Point mode (face == LIGHT_FACE_CENTRE): the cube as a point light at the centre of
+// its exposed surface with intensity Le x projected area of its exposed faces towards x.
+// shadowDir and shadowDist give the ray lightVisible must trace: to the sample point in area mode,
+// to emitterShadowTarget in point mode.
+vec3 lightContribution(Surface s, GpuEmitter e, uint face, vec2 uv, out vec3 shadowDir, out float shadowDist) {
+    bool point = face == LIGHT_FACE_CENTRE;
+    vec3 y = point ? emitterPointLight(e) : emitterFacePoint(e, face, uv);
     vec3 d = y - s.position;
-    dist = length(d);
-    toLight = d / max(dist, 1e-12);
+    float dist = length(d);
+    vec3 toLight = d / max(dist, 1e-12);
+    vec3 target = point ? emitterShadowTarget(e, s.position) : y;
+    shadowDist = length(target - s.position);
+    shadowDir = (target - s.position) / max(shadowDist, 1e-12);
     float cosX = dot(s.normal, toLight);
     if (!(dist > 1e-6) || cosX <= 0.0) return vec3(0.0);
     float geometry;
-    if (face == LIGHT_FACE_CENTRE) {
+    if (point) {
         float side = float(e.minCorner.w);
         float projected = 0.0;
         for (uint f = 0u; f < 6u; ++f) {
@@ -151,8 +190,8 @@ float lightSamplePdf(vec3 x, uint slot, uint face, bool byPower) {
 // Is the light sample visible from the surface? The first thing the shadow ray hits must be the
 // emitter itself (or nothing before the sample point); emitters are static, so an object's voxel
 // in the way occludes even inside the emitter's box.
-bool lightVisible(Surface s, GpuEmitter e, vec3 toLight, float dist) {
-    SceneHit hit = traceScene(s.position + s.normal * kRayOffset, toLight, dist + kRayOffset);
+bool lightVisible(Surface s, GpuEmitter e, vec3 shadowDir, float shadowDist) {
+    SceneHit hit = traceScene(s.position + s.normal * kRayOffset, shadowDir, shadowDist + kRayOffset);
     if (!hit.hit) return true;
     if (hit.dynamicSet) return false;
     ivec3 lo = e.minCorner.xyz;

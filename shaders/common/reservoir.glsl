@@ -8,6 +8,14 @@ Reservoir emptyReservoir() { return Reservoir(uvec4(RESERVOIR_EMPTY, 0u, 0u, 0u)
 
 bool reservoirHasLight(Reservoir r) { return r.light.x != RESERVOIR_EMPTY; }
 
+// The reservoir as its own pixel reuses it: a sample the candidate pass found occluded here loses
+// its weight (weights.w is that test's answer; 1 once applied or when untested).
+Reservoir withOwnVisibility(Reservoir r) {
+    r.weights.x *= r.weights.w;
+    r.weights.w = 1.0;
+    return r;
+}
+
 // A reservoir whose light was removed or replaced since it was chosen: its weight means nothing
 // any more. (An empty reservoir is not stale: its M still records candidates that found no light,
 // and dropping that would brighten the pixels where light is mostly occluded.)
@@ -58,7 +66,7 @@ bool combinerAdd(inout Combiner c, Reservoir r, float target, float u) {
 Reservoir combinerFinish(Combiner c, float normaliser) {
     Reservoir r = c.chosen;
     float W = (c.chosenTarget > 0.0 && normaliser > 0.0) ? c.wSum / (normaliser * c.chosenTarget) : 0.0;
-    r.weights = vec4(W, c.M, c.chosenTarget, 0.0);
+    r.weights = vec4(W, c.M, c.chosenTarget, 1.0);
     return r;
 }
 

@@ -2,6 +2,8 @@
 // ReSTIR initial candidates (thesis §4.4-4.5, Bitterli et al. 2020 Alg. 3): M light samples per
 // pixel, drawn uniformly or by power, resampled by weighted reservoir sampling with the
 // unshadowed contribution's luminance as target pdf; optionally the chosen one is shadow-tested.
+// The weight W stays the unshadowed one (spatial neighbours reuse it as is); the shadow test's
+// answer goes to weights.w, which only this pixel's own reuse applies.
 #extension GL_GOOGLE_include_directive : require
 
 #include "common/surface.glsl"
@@ -57,13 +59,13 @@ void main() {
         }
     }
     r.weights = vec4(chosenTarget > 0.0 ? wSum / (float(candidates) * chosenTarget) : 0.0, float(candidates),
-                     chosenTarget, 0.0);
+                     chosenTarget, 1.0);
     if ((flags & RESTIR_CANDIDATE_VISIBILITY) != 0u && r.light.x != RESERVOIR_EMPTY) {
         GpuEmitter e = gEmitters[r.light.x];
         vec3 toLight;
         float dist;
         lightContribution(s, e, r.light.z, unpackUnorm2x16(r.light.w), toLight, dist);
-        if (!lightVisible(s, e, toLight, dist)) r.weights.x = 0.0;
+        if (!lightVisible(s, e, toLight, dist)) r.weights.w = 0.0;
     }
     gOut[index] = r;
 }

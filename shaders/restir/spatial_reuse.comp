@@ -1,6 +1,17 @@
 #version 460
-// ReSTIR spatial reuse (thesis §4.6): merge this pixel's reservoir with those of k random pixels
-// in an r-pixel disc that see a similar surface (depth within the tolerance, same face normal).
+// ReSTIR spatial reuse (thesis §4.6): merge this pixel's own reservoir (after temporal reuse) with
+// the fresh candidate reservoirs of k random pixels in an r-pixel disc that see a similar surface
+// (depth within the tolerance, same face normal).
+//
+// Why fresh candidates and not the neighbours' reuse results: a reservoir that went through a
+// shadow test (the candidate test, or last frame's shading) targets the light *visible at its own
+// pixel*. Reused at another pixel, its occluded samples count in M but can never be chosen, so
+// light visible here but not there is lost; fed back through temporal reuse, that loss compounds
+// frame after frame towards the M cap (it cost 12-47 % of the light). A neighbour's candidates are
+// drawn from the unshadowed target, whose support each neighbour knows exactly, so counting the M
+// of the inputs whose target is positive for the chosen sample (Bitterli et al. 2020, Alg. 6)
+// gives an unbiased weight for every sample visible here, without a shadow ray per neighbour.
+// Samples occluded here contribute nothing when shaded, whatever their weight.
 #extension GL_GOOGLE_include_directive : require
 
 #include "common/reservoir.glsl"
@@ -10,8 +21,9 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 0, std430) readonly buffer Params { FrameParams gFrame; };
 layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 1, std430) readonly buffer Restir { RestirParams gRestir; };
 layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 2, std430) readonly buffer GBuffer { GBufferTexel gGBuffer[]; };
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 3, std430) readonly buffer In { Reservoir gIn[]; };
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 4, std430) writeonly buffer Out { Reservoir gOut[]; };
+layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 3, std430) readonly buffer Own { Reservoir gOwn[]; };
+layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 4, std430) readonly buffer Candidates { Reservoir gCandidates[]; };
+layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 5, std430) writeonly buffer Out { Reservoir gOut[]; };
 
 const uint kMaxTaps = 16u;
 
@@ -19,7 +31,8 @@ void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;
     if (any(greaterThanEqual(pixel, gFrame.imageSize.xy))) return;
     uint index = pixel.x + pixel.y * gFrame.imageSize.x;
-    Reservoir own = gIn[index];
+    // Without temporal reuse the own reservoir is the candidates' one: apply its shadow test.
+    Reservoir own = withOwnVisibility(gOwn[index]);
     GBufferTexel g = gGBuffer[index];
     Surface s = surfaceFrom(g);
     if (!s.valid || (gRestir.config.y & RESTIR_SPATIAL) == 0u) {
@@ -45,21 +58,20 @@ void main() {
         uint qi = uint(q.x) + uint(q.y) * gFrame.imageSize.x;
         GBufferTexel ng = gGBuffer[qi];
         if (uint(ng.voxel.w) != s.face || abs(gbufferDistance(ng) - depth) > tolerance * depth) continue;
-        Reservoir r = gIn[qi];
-        if (reservoirStale(r)) continue;
+        Reservoir r = gCandidates[qi];
         combinerAdd(c, r, targetAt(s, r), u);
         neighbours[accepted++] = qi;
     }
 
-    float normaliser = c.M;
-    if ((gRestir.config.y & RESTIR_UNBIASED) != 0u && reservoirHasLight(c.chosen)) {
-        // Bitterli Alg. 6 with visibility: count each input whose pixel could have produced the
-        // chosen sample (positive target and visible there); this pixel always could.
-        normaliser = own.weights.y;
+    // This pixel could have produced any sample with a positive target here (every chosen one);
+    // a neighbour only those with a positive target at its own surface.
+    float normaliser = own.weights.y;
+    if (reservoirHasLight(c.chosen)) {
         for (uint i = 0u; i < accepted; ++i) {
-            Surface ns = surfaceFrom(gGBuffer[neighbours[i]]);
-            if (targetAt(ns, c.chosen) > 0.0 && visibleAt(ns, c.chosen)) normaliser += gIn[neighbours[i]].weights.y;
+            if (targetAt(surfaceFrom(gGBuffer[neighbours[i]]), c.chosen) > 0.0) normaliser += gCandidates[neighbours[i]].weights.y;
         }
+    } else {
+        normaliser = c.M;
     }
     gOut[index] = combinerFinish(c, normaliser);
 }

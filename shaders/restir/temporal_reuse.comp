@@ -2,6 +2,8 @@
 // ReSTIR temporal reuse (thesis §4.4 and §4.9): merge this pixel's candidate reservoir with last
 // frame's final reservoir at the motion-vector pixel, if that pixel saw the same surface (depth
 // within the tolerance, same face normal); last frame's M is capped at `cap` x this frame's.
+// The result is this pixel's own reservoir for spatial reuse; the candidates stay untouched, since
+// neighbours reuse them as they were drawn (see spatial_reuse.comp).
 #extension GL_GOOGLE_include_directive : require
 
 #include "common/reservoir.glsl"
@@ -12,8 +14,23 @@ layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 0, std430) readonly buffer Pa
 layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 1, std430) readonly buffer Restir { RestirParams gRestir; };
 layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 2, std430) readonly buffer GBuffer { GBufferTexel gGBuffer[]; };
 layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 3, std430) readonly buffer PrevGBuffer { GBufferTexel gPrevGBuffer[]; };
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 4, std430) buffer Current { Reservoir gCurrent[]; };
+layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 4, std430) readonly buffer Candidates { Reservoir gCandidates[]; };
 layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 5, std430) readonly buffer Previous { Reservoir gPrevious[]; };
+layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 6, std430) writeonly buffer Own { Reservoir gOwn[]; };
+
+// Last frame's reservoir for this pixel, or an empty one when there is none to reuse.
+bool previousReservoir(uvec2 pixel, GBufferTexel g, Surface s, out Reservoir previous, out GBufferTexel pg) {
+    previous = emptyReservoir();
+    pg = g;
+    if (!s.valid || g.motion.w == 0.0) return false;
+    ivec2 prevPixel = ivec2(floor(g.motion.xy));
+    if (any(lessThan(prevPixel, ivec2(0))) || any(greaterThanEqual(prevPixel, ivec2(gFrame.imageSize.xy)))) return false;
+    uint prevIndex = uint(prevPixel.x) + uint(prevPixel.y) * gFrame.imageSize.x;
+    pg = gPrevGBuffer[prevIndex];
+    if (uint(pg.voxel.w) != s.face || abs(gbufferDistance(pg) - g.motion.z) > gRestir.reuse.z * g.motion.z) return false;
+    previous = gPrevious[prevIndex];
+    return !reservoirStale(previous);  // a light that is gone: drop it
+}
 
 void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;
@@ -21,18 +38,15 @@ void main() {
     uint index = pixel.x + pixel.y * gFrame.imageSize.x;
     GBufferTexel g = gGBuffer[index];
     Surface s = surfaceFrom(g);
-    if (!s.valid || g.motion.w == 0.0) return;
-
-    ivec2 prevPixel = ivec2(floor(g.motion.xy));
-    if (any(lessThan(prevPixel, ivec2(0))) || any(greaterThanEqual(prevPixel, ivec2(gFrame.imageSize.xy)))) return;
-    uint prevIndex = uint(prevPixel.x) + uint(prevPixel.y) * gFrame.imageSize.x;
-    GBufferTexel pg = gPrevGBuffer[prevIndex];
-    float tolerance = gRestir.reuse.z;
-    if (uint(pg.voxel.w) != s.face || abs(gbufferDistance(pg) - g.motion.z) > tolerance * g.motion.z) return;
-
-    Reservoir current = gCurrent[index];
-    Reservoir previous = gPrevious[prevIndex];
-    if (reservoirStale(previous)) return;  // its light is gone: drop it
+    // This pixel's candidates with their shadow test applied: like last frame's final reservoir
+    // (whose occluded sample lost its weight in shade.comp), they now target the visible light here.
+    Reservoir current = withOwnVisibility(gCandidates[index]);
+    Reservoir previous;
+    GBufferTexel pg;
+    if (!previousReservoir(pixel, g, s, previous, pg)) {
+        gOwn[index] = current;
+        return;
+    }
     previous.weights.y = min(previous.weights.y, gRestir.reuse.y * float(gRestir.config.x));
 
     uint rng = rngInit(pixel, gRestir.config.w, 2u, gRestir.seeds.x);
@@ -51,5 +65,5 @@ void main() {
         if (reservoirHasLight(c.chosen) && targetAt(prevSurface, c.chosen) > 0.0 && visibleAt(prevSurface, c.chosen))
             normaliser += previous.weights.y;
     }
-    gCurrent[index] = combinerFinish(c, normaliser);
+    gOwn[index] = combinerFinish(c, normaliser);
 }

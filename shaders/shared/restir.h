@@ -20,7 +20,9 @@ SHARED_CONST uint RESTIR_CANDIDATE_VISIBILITY = 32u;  // shadow-test the chosen 
 
 struct Reservoir {
     uvec4 light;    // x: emitter slot (RESERVOIR_EMPTY: none), y: generation, z: face, w: packUnorm2x16(uv)
-    vec4 weights;   // x: W (contribution weight), y: M (confidence), z: target pdf at its pixel, w: unused
+    vec4 weights;   // x: W (contribution weight), y: M (confidence), z: target pdf at its pixel,
+                    // w: visibility of the sample at its pixel (0: the candidate pass found it
+                    // occluded; 1: visible, untested or already applied to W)
 };
 SHARED_ASSERT_SIZE(Reservoir, 32);
 

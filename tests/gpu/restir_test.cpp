@@ -149,8 +149,8 @@ TEST_F(Restir, UnbiasedModeConvergesToReference) {
     EXPECT_GT(maeFew / maeAll, 1.5) << "the error of the mean should fall roughly as 1/sqrt(N)";
 }
 
-// Point mode with one voxel light equals an analytic point light, pixel for pixel (one emitter,
-// one candidate: the sample is deterministic and W = 1).
+// Point mode with one free-standing voxel light equals an analytic point light at its centre,
+// pixel for pixel (one emitter, one candidate: the sample is deterministic and W = 1).
 TEST_F(Restir, PointModeMatchesAnalyticPointLight) {
     Scene scene = makeScene({48, 32, 48});
     fillBox(scene.grid, Box{{0, 0, 0}, {48, 2, 48}}, kWhite);
@@ -186,7 +186,16 @@ TEST_F(Restir, PointModeMatchesAnalyticPointLight) {
         if (cosX > 0.0f && glm::ivec3(g.voxel) != lamp) {
             // Intensity towards p: radiance x projected area of the cube's exposed faces.
             float projected = std::abs(w.x) + std::abs(w.y) + std::abs(w.z);
-            RayHit h = traceRay(scene.grid, Ray{p + n * 1e-3f, w, dist + 1e-3f});
+            // The shadow ray aims at the centre of the face turned most towards p.
+            glm::vec3 target = centre;
+            float best = 0.0f;
+            for (std::uint32_t f = 0; f < 6; ++f) {
+                glm::vec3 c = centre + 0.5f * glm::vec3(faceNormal(f));
+                float cosine = glm::dot(glm::vec3(faceNormal(f)), glm::normalize(p - c));
+                if (cosine > best) best = cosine, target = c;
+            }
+            float shadowDist = glm::length(target - p);
+            RayHit h = traceRay(scene.grid, Ray{p + n * 1e-3f, (target - p) / shadowDist, shadowDist + 1e-3f});
             bool visible = !h.hit || h.voxel == lamp;
             shadowed += !visible;
             if (visible) expected += albedo / float(M_PI) * le * projected * cosX / (dist * dist);
@@ -200,6 +209,71 @@ TEST_F(Restir, PointModeMatchesAnalyticPointLight) {
     EXPECT_GT(checked, 2000);
     EXPECT_GT(shadowed, 20);
     EXPECT_LE(bad, checked / 500) << "only grazing shadow-boundary pixels may differ";
+}
+
+// Point mode beside a lamp set flush into the ceiling: the walls of the room are lit as the area
+// light lights them, also where they see the lamp from more than 45 degrees off its face (where a
+// shadow ray aimed at the emitter's centre crosses the ceiling voxel next to it and finds it dark).
+TEST_F(Restir, PointModeLightsWallsBesideAFlushLamp) {
+    Scene scene = makeScene({32, 24, 32});
+    fillBox(scene.grid, Box{{0, 0, 0}, {32, 2, 32}}, kWhite);    // floor
+    fillBox(scene.grid, Box{{0, 20, 0}, {32, 24, 32}}, kWhite);  // ceiling
+    fillBox(scene.grid, Box{{0, 2, 0}, {2, 20, 32}}, kRed);      // walls
+    fillBox(scene.grid, Box{{30, 2, 0}, {32, 20, 32}}, kRed);
+    fillBox(scene.grid, Box{{0, 2, 30}, {32, 20, 32}}, kWhite);
+    const glm::ivec3 lamp{16, 20, 16};
+    scene.grid.set(lamp, kLamp);  // only its lower face is exposed
+    scene.cameras.push_back(CameraPreset{"inside", {16.0f, 11.0f, 1.5f}, {16.0f, 11.0f, 30.0f}, 90.0f});
+    scene.grid.clearDirty();
+    LightingSettings l;
+    l.method = Method::Ris;
+    l.area = false;
+    l.candidates = 1;
+    l.temporal = l.spatial = l.candidateVisibility = false;
+    Renderer r(gpu_testing::context());
+    r.render(scene, scene.camera(), frame(64), l);
+    FrameImages img = r.readback();
+
+    // The area light by quadrature of its lower face (no occluder but the room itself, which the
+    // lower face's cosine already excludes): the light each wall pixel should get.
+    const glm::vec3 le = scene.palette[kLamp].emittedRadiance();
+    int walls = 0, steep = 0, dark = 0, off = 0;
+    double worst = 0.0;
+    for (std::size_t i = 0; i < img.gbuffer.size(); ++i) {
+        const shared::GBufferTexel& g = img.gbuffer[i];
+        std::uint32_t face = std::uint32_t(g.voxel.w);
+        if (face >= 6 || (face >> 1) == 1u) continue;  // walls only (not floor or ceiling)
+        glm::vec3 n(faceNormal(face));
+        glm::vec3 p(g.position);
+        glm::vec3 albedo = scene.palette[MaterialId(g.data.x)].albedo;
+        glm::vec3 quad(0.0f);
+        const int k = 16;
+        for (int a = 0; a < k; ++a) {
+            for (int b = 0; b < k; ++b) {
+                glm::vec3 y(lamp.x + (a + 0.5f) / k, float(lamp.y), lamp.z + (b + 0.5f) / k);
+                glm::vec3 d = y - p;
+                float dist = glm::length(d);
+                glm::vec3 w = d / dist;
+                float cx = glm::dot(n, w), cy = w.y;  // the lamp's lit face looks down
+                if (cx > 0.0f && cy > 0.0f) quad += albedo / float(M_PI) * le * cx * cy / (dist * dist) / float(k * k);
+            }
+        }
+        if (glm::length(quad) < 1e-4f) continue;
+        ++walls;
+        glm::vec3 toLamp = glm::vec3(lamp) + glm::vec3(0.5f, 0.0f, 0.5f) - p;
+        steep += -glm::normalize(toLamp).y < std::cos(float(M_PI) / 4.0f);
+        glm::vec3 got = glm::vec3(img.radiance[i]);
+        dark += glm::length(got) == 0.0f;
+        double err = glm::length(got - quad) / glm::length(quad);
+        worst = std::max(worst, err);
+        off += err > 0.05;
+    }
+    std::printf("point mode beside a flush lamp: %d lit wall pixels (%d seeing the lamp more than 45 degrees off its "
+                "face), %d dark, %d off the area light by more than 5 %%, worst %.1f %%\n",
+                walls, steep, dark, off, 100.0 * worst);
+    EXPECT_GT(steep, 500);
+    EXPECT_EQ(dark, 0);
+    EXPECT_EQ(off, 0);
 }
 
 // A brick light and its 8^3 voxels as separate emitters light the scene identically.
