@@ -82,7 +82,10 @@ std::uint64_t rayBound(const engine::lighting::LightingSettings& l, const engine
             perSurface = std::uint64_t(std::max(l.samplesPerFrame, 1u)) * ((l.bounces + 1) * (sun + 1) + l.bounces);
             break;
     }
-    return pixels + surface * perSurface + (r.cacheUsed ? r.cache.rays : 0);
+    // The reference traces its own camera ray per sample (its box filter), besides the G-buffer's.
+    const std::uint64_t referenceCameraRays =
+        l.method == Method::Reference ? pixels * std::uint64_t(std::max(l.samplesPerFrame, 1u)) : 0;
+    return pixels + referenceCameraRays + surface * perSurface + (r.cacheUsed ? r.cache.rays : 0);
 }
 
 // A path argument: a file, or a name in worlds/paths/ ("sandbox_orbit" ->
