@@ -27,9 +27,8 @@ vec3 directLight(Surface s, FrameParams frame, inout uint rng) {
 // `chosen` when `other` could also have produced it.
 float powerHeuristic(float chosen, float other) {
     if (!(chosen > 0.0)) return 0.0;
-    if (isinf(chosen)) return 1.0;
-    float a = chosen * chosen, b = other * other;
-    return a / (a + b);
+    float ratio = other / chosen;  // as a ratio: a grazing light sample's huge density cannot overflow
+    return 1.0 / (1.0 + ratio * ratio);
 }
 
 // directLight with the emitter sample weighted against cosine-weighted BSDF sampling, for a
