@@ -20,6 +20,15 @@ enum class Method {
     Reference,   // progressive path tracer: the ground truth
 };
 
+// The reference's pixel filter. PixelCentre: one ray through each pixel centre, the pixel every
+// other method shades (from the G-buffer) — for measuring their estimators, where the box
+// filter's edge coverage would count as their error.
+enum class ReferenceFilter { Box, PixelCentre };
+
+// Reference test hooks: write, per pixel, the emitter the GPU derives for the voxel seen through
+// the pixel centre instead of radiance (shared/reference.h describes the layout).
+enum class ReferenceProbe { None, EmitterShape, EmitterPower };
+
 struct LightingSettings {
     Method method = Method::Restir;
     bool area = true;            // area lights (else point lights at the centres of their exposed surfaces)
@@ -37,6 +46,9 @@ struct LightingSettings {
     std::uint32_t shadowRays = 1;        // Uniform: samples (and shadow rays) per pixel
     std::uint32_t samplesPerFrame = 1;   // Reference: samples per pixel added per frame
     std::uint32_t bounces = 0;           // Reference: 0 = direct light only
+    ReferenceFilter referenceFilter = ReferenceFilter::Box;
+    bool referenceMis = true;            // Reference: MIS of light and cosine sampling (false: light sampling only)
+    ReferenceProbe referenceProbe = ReferenceProbe::None;
     std::uint32_t seed = 1;
     Indirect indirect = Indirect::None;  // Cache adds the irradiance cache's term to any method but Reference
     IrradianceCacheSettings cache;

@@ -28,7 +28,11 @@ shared::FrameParams makeFrameParams(const world::CameraPreset& camera, const wor
 }
 
 glm::vec3 cameraRayDirection(const shared::FrameParams& f, glm::uvec2 pixel) {
-    glm::vec2 ndc = (glm::vec2(pixel) + 0.5f) / glm::vec2(f.imageSize.x, f.imageSize.y) * 2.0f - 1.0f;
+    return cameraRayDirectionAt(f, glm::vec2(pixel) + 0.5f);
+}
+
+glm::vec3 cameraRayDirectionAt(const shared::FrameParams& f, glm::vec2 imagePosition) {
+    glm::vec2 ndc = imagePosition / glm::vec2(f.imageSize.x, f.imageSize.y) * 2.0f - 1.0f;
     float tanHalf = f.cameraPosition.w;
     glm::vec3 d = glm::vec3(f.cameraForward) + glm::vec3(f.cameraRight) * (ndc.x * tanHalf * f.cameraForward.w) -
                   glm::vec3(f.cameraUp) * (ndc.y * tanHalf);

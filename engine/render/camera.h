@@ -24,6 +24,9 @@ struct FrameSettings {
 shared::FrameParams makeFrameParams(const world::CameraPreset& camera, const world::SkyLight& sky,
                                     const FrameSettings& settings);
 
+// Unit direction through the centre of `pixel`.
 glm::vec3 cameraRayDirection(const shared::FrameParams& f, glm::uvec2 pixel);
+// Unit direction through a point of the image in pixel units (pixel i spans [i, i + 1)).
+glm::vec3 cameraRayDirectionAt(const shared::FrameParams& f, glm::vec2 imagePosition);
 
 }  // namespace engine::render

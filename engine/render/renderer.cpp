@@ -5,6 +5,7 @@
 
 #include "gpu/command_list.h"
 #include "gpu/presenter.h"
+#include "shared/reference.h"
 #include "shared/restir.h"
 
 namespace engine::render {
@@ -28,7 +29,14 @@ shared::RestirParams makeRestirParams(const lighting::LightingSettings& l, std::
     p.config = glm::uvec4(l.candidates, flags, l.spatialTaps, frame);
     p.reuse = glm::vec4(l.spatialRadius, l.temporalCap, l.depthTolerance, 0.0f);
     std::uint32_t perPixel = l.method == Method::Reference ? l.samplesPerFrame : l.shadowRays;
-    p.seeds = glm::uvec4(l.seed, perPixel, l.method == Method::Reference ? l.bounces : (l.method == Method::BruteForce ? 1u : 0u), 0u);
+    std::uint32_t referenceFlags = 0;
+    if (l.brickLights) referenceFlags |= shared::REFERENCE_BRICK_LIGHTS;
+    if (l.referenceFilter == lighting::ReferenceFilter::PixelCentre) referenceFlags |= shared::REFERENCE_PIXEL_CENTRE;
+    if (!l.referenceMis) referenceFlags |= shared::REFERENCE_LIGHT_SAMPLING_ONLY;
+    if (l.referenceProbe == lighting::ReferenceProbe::EmitterShape) referenceFlags |= shared::REFERENCE_PROBE_EMITTER_SHAPE;
+    if (l.referenceProbe == lighting::ReferenceProbe::EmitterPower) referenceFlags |= shared::REFERENCE_PROBE_EMITTER_POWER;
+    p.seeds = glm::uvec4(l.seed, perPixel, l.method == Method::Reference ? l.bounces : (l.method == Method::BruteForce ? 1u : 0u),
+                         l.method == Method::Reference ? referenceFlags : 0u);
     return p;
 }
 
@@ -247,7 +255,7 @@ void Renderer::recordLighting(gpu::CommandList& cmd, const lighting::LightingSet
             mLightSampling.record(cmd, scene, {mFrameParams, mRestirParams, gbuffer, mRadiance}, mSize);
             break;
         case Method::Reference:
-            mReference.record(cmd, scene, {mFrameParams, mRestirParams, gbuffer, mAccumulation, mRadiance}, mSize);
+            mReference.record(cmd, scene, {mFrameParams, mRestirParams, mAccumulation, mRadiance}, mSize);
             break;
     }
 }

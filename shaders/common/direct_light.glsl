@@ -23,4 +23,38 @@ vec3 directLight(Surface s, FrameParams frame, inout uint rng) {
     return direct;
 }
 
+// Power heuristic (Veach & Guibas 1995, beta = 2): the weight of a sample drawn with density
+// `chosen` when `other` could also have produced it.
+float powerHeuristic(float chosen, float other) {
+    if (!(chosen > 0.0)) return 0.0;
+    float ratio = other / chosen;  // as a ratio: a grazing light sample's huge density cannot overflow
+    return 1.0 / (1.0 + ratio * ratio);
+}
+
+// directLight with the emitter sample weighted against cosine-weighted BSDF sampling, for a
+// vertex that also traces a cosine-sampled ray counting the emission it hits (the reference path
+// tracer with MIS). The sun stays light-sampled only: a direction has zero
+// chance of hitting it. The same random numbers as directLight.
+vec3 directLightMis(Surface s, FrameParams frame, inout uint rng) {
+    vec3 direct = sunLight(s, frame);
+    uint slot;
+    if (!pickEmitter(rng, true, slot)) return direct;
+    GpuEmitter e = gEmitters[slot];
+    uint face;
+    float side = float(e.minCorner.w);
+    float pdf = emitterPdf(slot, true) * pickFace(e, s.position, rngNext(rng), face) / (side * side);
+    vec2 uv = vec2(rngNext(rng), rngNext(rng));
+    if (!(pdf > 0.0)) return direct;
+    vec3 toLight;
+    float dist;
+    vec3 f = lightContribution(s, e, face, uv, toLight, dist);
+    if (any(greaterThan(f, vec3(0.0))) && lightVisible(s, e, toLight, dist)) {
+        float cosLight = dot(faceNormalF(face), -toLight);
+        float lightPdf = pdf * dist * dist / cosLight;  // area -> solid angle at s
+        float bsdfPdf = max(dot(s.normal, toLight), 0.0) / PI;
+        direct += f / pdf * powerHeuristic(lightPdf, bsdfPdf);
+    }
+    return direct;
+}
+
 #endif

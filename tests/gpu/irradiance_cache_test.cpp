@@ -103,6 +103,7 @@ std::vector<glm::vec4> referenceIndirect(Scene& scene, std::uint32_t size, std::
         Renderer r(gpu_testing::context());
         LightingSettings l;
         l.method = Method::Reference;
+        l.referenceFilter = engine::lighting::ReferenceFilter::PixelCentre;  // the cache is gathered at pixel centres
         l.bounces = b;
         l.samplesPerFrame = 32;
         for (std::uint32_t i = 0; i < spp / 32; ++i) r.render(scene, scene.camera(), frameAt(size, time, i), l);

@@ -222,6 +222,7 @@ TEST_P(RestirBias, ModesAgreeWithThePathTracer) {
     // The reference: independent 1024-sample runs; their spread gives its own error.
     LightingSettings ref;
     ref.method = Method::Reference;
+    ref.referenceFilter = engine::lighting::ReferenceFilter::PixelCentre;  // the G-buffer's hits, as ReSTIR shades them
     ref.samplesPerFrame = 32;
     std::vector<glm::vec4> reference(kSize * kSize, glm::vec4(0.0f));
     std::vector<double> refMeans;

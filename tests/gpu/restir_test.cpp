@@ -65,6 +65,7 @@ std::vector<glm::vec4> reference(Scene& scene, std::uint32_t size, std::uint32_t
     Renderer r(gpu_testing::context());
     LightingSettings l;
     l.method = Method::Reference;
+    l.referenceFilter = engine::lighting::ReferenceFilter::PixelCentre;  // ReSTIR and the quadrature are at pixel centres
     l.samplesPerFrame = 16;
     l.brickLights = brickLights;
     l.seed = seed;

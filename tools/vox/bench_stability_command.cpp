@@ -236,6 +236,7 @@ int runStability(const StabilityOptions& o) {
         if (!scene) return fail(scene.error());
         LightingSettings ref;
         ref.method = Method::Reference;
+        ref.referenceFilter = engine::lighting::ReferenceFilter::PixelCentre;  // the pixel the other methods shade
         ref.samplesPerFrame = 16;
         double base = flicker(c, *scene, ref, 1, 6, true);
         std::string line = fmt::format("| flicker: {} | reference 16 spp | {:.3f} (the yardstick) |", world, base);

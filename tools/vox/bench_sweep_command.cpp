@@ -119,6 +119,7 @@ engine::Result<std::vector<std::pair<std::string, LightingSettings>>> indirectSe
             out.push_back({"indirect none (restir)", l});
         } else if (item == "reference") {
             l.method = Method::Reference;
+            l.referenceFilter = engine::lighting::ReferenceFilter::PixelCentre;  // as the reference it is measured against
             l.indirect = Indirect::Reference;
             l.bounces = o.indirectBounces;
             l.samplesPerFrame = 1;

@@ -78,11 +78,16 @@ std::uint64_t rayBound(const engine::lighting::LightingSettings& l, const engine
         case Method::BruteForce: perSurface = sun + r.emitters; break;
         case Method::Reference:
             // per sample: at each of up to bounces + 1 vertices the sun and one emitter shadow
-            // ray, and a continuation ray per bounce (Russian roulette and escapes end paths early)
-            perSurface = std::uint64_t(std::max(l.samplesPerFrame, 1u)) * ((l.bounces + 1) * (sun + 1) + l.bounces);
+            // ray, and a cosine ray per bounce, plus one from the last vertex with MIS (Russian
+            // roulette and escapes end paths early)
+            perSurface = std::uint64_t(std::max(l.samplesPerFrame, 1u)) *
+                         ((l.bounces + 1) * (sun + 1) + l.bounces + (l.bounces > 0 && l.referenceMis ? 1 : 0));
             break;
     }
-    return pixels + surface * perSurface + (r.cacheUsed ? r.cache.rays : 0);
+    // The reference traces its own camera ray per sample (its box filter), besides the G-buffer's.
+    const std::uint64_t referenceCameraRays =
+        l.method == Method::Reference ? pixels * std::uint64_t(std::max(l.samplesPerFrame, 1u)) : 0;
+    return pixels + referenceCameraRays + surface * perSurface + (r.cacheUsed ? r.cache.rays : 0);
 }
 
 // A path argument: a file, or a name in worlds/paths/ ("sandbox_orbit" ->

@@ -20,6 +20,10 @@ void addLightingOptions(CLI::App& cmd, LightingOptions& o) {
     cmd.add_option("--temporal", o.temporal, "Temporal reuse: on|off")->capture_default_str();
     cmd.add_option("--shadow-rays", o.shadowRays, "uniform: light samples (and shadow rays) per pixel")->capture_default_str();
     cmd.add_option("--bounces", o.bounces, "reference: indirect bounces (0 = direct light only)")->capture_default_str();
+    cmd.add_option("--pixel-filter", o.pixelFilter,
+                   "reference: box (jittered over the pixel) | centre (one ray through the pixel centre, the pixel "
+                   "the other methods shade)")
+        ->capture_default_str();
     cmd.add_option("--seed", o.seed, "Random seed")->capture_default_str();
     cmd.add_option("--indirect", o.indirect,
                    "Indirect light: none | cache (voxel-face irradiance cache) | reference (path-traced bounces); "
@@ -84,6 +88,10 @@ engine::Result<LightingSettings> lightingSettings(const LightingOptions& o, cons
     s.shadowRays = o.shadowRays;
     if (o.bounces > 64) return engine::makeError("--bounces must be in 0..64");
     s.bounces = o.bounces;
+    if (o.pixelFilter != "box" && o.pixelFilter != "centre")
+        return engine::makeError("--pixel-filter: expected box or centre, got '{}'", o.pixelFilter);
+    s.referenceFilter = o.pixelFilter == "box" ? engine::lighting::ReferenceFilter::Box
+                                               : engine::lighting::ReferenceFilter::PixelCentre;
     s.seed = o.seed;
 
     s.indirect = scene ? scene->indirect : engine::lighting::Indirect::None;

@@ -22,6 +22,7 @@ struct LightingOptions {
     std::string temporal = "on";
     std::uint32_t shadowRays = 1;
     std::uint32_t bounces = 0;
+    std::string pixelFilter = "box";
     std::uint32_t seed = 1;
     // Unset: the scene file's [indirect] table decides, else the defaults of IrradianceCacheSettings.
     std::optional<std::string> indirect;

@@ -83,6 +83,8 @@ engine::Result<std::vector<glm::vec4>> cachedReference(engine::gpu::Context& gpu
     key << fmt::format("|{} {} {}|{} {} {}|{}|{}x{}|{}|{}", camera.position.x, camera.position.y, camera.position.z,
                        camera.target.x, camera.target.y, camera.target.z, camera.fovYDegrees, frame.width,
                        frame.height, spp, bounces) + "|" + variant;
+    // The estimator's version: images cached by an older reference (no MIS) are not reused.
+    key << "|reference 2: pixel centre, MIS";
     std::uint32_t h = hashBytes(key.str(), 0x5eed);
     std::filesystem::path file = cacheDir / fmt::format("reference-{}-{:08x}.exr", scene.name, h);
     std::error_code ec;
@@ -94,6 +96,9 @@ engine::Result<std::vector<glm::vec4>> cachedReference(engine::gpu::Context& gpu
     engine::render::Renderer renderer(gpu);
     LightingSettings ref;
     ref.method = Method::Reference;
+    // The methods measured against it shade pixel centres: a box-filtered reference would count
+    // its edge coverage as their error.
+    ref.referenceFilter = engine::lighting::ReferenceFilter::PixelCentre;
     ref.samplesPerFrame = 16;
     ref.bounces = bounces;
     for (std::uint32_t s = 0; s < spp; s += ref.samplesPerFrame) renderer.render(scene, camera, frame, ref);
