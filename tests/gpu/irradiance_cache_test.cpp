@@ -331,14 +331,6 @@ glm::vec3 rayOrigin(glm::ivec3 voxel, std::uint32_t face) {
     o[face >> 1] += (face & 1u) ? shared::CACHE_RAY_OFFSET : -shared::CACHE_RAY_OFFSET;
     return o;
 }
-glm::vec3 rayDirection(glm::vec4 local, std::uint32_t face) {
-    std::uint32_t axis = face >> 1;
-    glm::vec3 d;
-    d[(axis + 1) % 3] = local.x;
-    d[(axis + 2) % 3] = local.y;
-    d[axis] = (face & 1u) ? local.z : -local.z;
-    return d;
-}
 std::uint32_t packHit(glm::ivec3 origin, const SceneHit& h) {
     if (!h.hit) return shared::CACHE_HIT_MISS;
     glm::uvec3 rel(h.voxel - origin + 256);
@@ -387,7 +379,7 @@ TEST_F(IrradianceCache, DivideAndWinSelectsTheSameHitAsAFullRetrace) {
                 std::uint32_t expected = shared::CACHE_HIT_MISS;
                 if (exposed) {
                     glm::vec3 o = rayOrigin(v, face);
-                    glm::vec3 d = rayDirection(cd.directions()[cd.directionIndex(j)], face);
+                    glm::vec3 d = cd.rayDirection(v, std::uint32_t(e.voxel.w), face, cd.directionIndex(j));
                     SceneHit h = traceScene(a.grid, &a.dynamic, o, d, shared::CACHE_MAX_RAY_LENGTH);
                     expected = packHit(v, h);
                     ++traced;
@@ -575,7 +567,8 @@ TEST_F(IrradianceCache, DirectionErrorAveragesOutAcrossSeeds) {
                 "(%.2fx); MAE/mean %.4f %.4f -> %.4f; mean ratio %.4f %.4f\n",
                 frames, size, size, e1.rmae, e2.rmae, eAvg.rmae, eAvg.rmae / (0.5 * (e1.rmae + e2.rmae)), e1.relativeMae,
                 e2.relativeMae, eAvg.relativeMae, e1.meanRatio, e2.meanRatio);
-    EXPECT_LT(eAvg.rmae, 0.85 * 0.5 * (e1.rmae + e2.rmae));
+    EXPECT_LT(eAvg.rmae, 0.85 * 0.5 * (e1.rmae + e2.rmae));  // shared set: 0.0283 for both and their average (1.00x)
+    EXPECT_LT(e1.rmae, 0.022);  // one seed, the filter averaging independent neighbours (shared set: 0.0283)
     EXPECT_NEAR(e1.meanRatio, 1.0, 0.05);
 }
 
