@@ -19,23 +19,36 @@ namespace {
 
 constexpr std::uint32_t kOwnBindings = 13;
 
-// K cosine-distributed directions in a face's frame (z along the normal): a Fibonacci lattice,
-// jittered by a seeded generator, so every face of every voxel sees the same fixed set.
+// CACHE_DIRECTION_SETS sets of K cosine-distributed directions in a face's frame (z along the
+// normal). The base set is a jittered Fibonacci lattice in (u1, u2) = (r^2, phi / 2pi); set r is
+// the base shifted by its own uniform (a, b) modulo 1 (a Cranley-Patterson rotation), which keeps
+// the lattice's stratification and makes every direction of the set cosine-distributed on its
+// own: E = pi * mean(L) stays unbiased per entry over rotations. Shifting u2 turns the set about
+// the normal, shifting u1 moves it across the strata of cos(theta).
 std::vector<glm::vec4> makeDirections(std::uint32_t count) {
-    std::vector<glm::vec4> dirs(count);
+    std::vector<glm::vec2> base(count);
     Rng rng(0x1C0FFEEu + count);
     const float golden = 0.6180339887f;
     for (std::uint32_t k = 0; k < count; ++k) {
         float u1 = (static_cast<float>(k) + rng.nextFloat()) / static_cast<float>(count);
         float u2 = std::fmod(static_cast<float>(k) * golden + rng.nextFloat() * 0.25f, 1.0f);
-        float r = std::sqrt(u1), phi = 2.0f * 3.14159265f * u2;
-        dirs[k] = glm::vec4(r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0f, 1.0f - u1)), 0.0f);
+        base[k] = {u1, u2};
     }
     // Interleave so the S rays of one update spread over the hemisphere (index j * K/S + r).
-    std::vector<glm::vec4> out(count);
     std::uint32_t step = 7;
     while (std::gcd(step, count) != 1) step += 2;
-    for (std::uint32_t k = 0; k < count; ++k) out[k] = dirs[(k * step) % count];
+    auto wrap = [](float u) { return u >= 1.0f ? u - 1.0f : u; };
+    std::vector<glm::vec4> out(std::size_t(count) * shared::CACHE_DIRECTION_SETS);
+    for (std::uint32_t set = 0; set < shared::CACHE_DIRECTION_SETS; ++set) {
+        const float a = rng.nextFloat(), b = rng.nextFloat();
+        for (std::uint32_t k = 0; k < count; ++k) {
+            glm::vec2 u = base[(k * step) % count];
+            float u1 = wrap(u.x + a), u2 = wrap(u.y + b);
+            float r = std::sqrt(u1), phi = 2.0f * 3.14159265f * u2;
+            out[std::size_t(set) * count + k] =
+                glm::vec4(r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0f, 1.0f - u1)), 0.0f);
+        }
+    }
     return out;
 }
 
@@ -66,6 +79,27 @@ std::uint64_t IrradianceCache::bytesPerSlot(const lighting::IrradianceCacheSetti
            + shared::CACHE_FACES * s.raysPerUpdate * 4ull;                           // selected hits
 }
 
+std::uint32_t IrradianceCache::directionRotation(glm::ivec3 voxel, std::uint32_t set, std::uint32_t seed) {
+    const std::uint32_t x = static_cast<std::uint32_t>(voxel.x) | (static_cast<std::uint32_t>(voxel.y) << 16);
+    const std::uint32_t y = static_cast<std::uint32_t>(voxel.z) | (set << 31);
+    return pcgHash(x ^ pcgHash(y ^ pcgHash(seed ^ 0x9E3779B9u)));
+}
+
+glm::vec3 IrradianceCache::rayDirection(glm::ivec3 voxel, std::uint32_t set, std::uint32_t face, std::uint32_t k) const {
+    const std::uint32_t rotation = directionRotation(voxel, set, mSeed);
+    glm::vec3 local(mDirections[std::size_t(rotation % shared::CACHE_DIRECTION_SETS) * mSettings.directions + k]);
+    const std::uint32_t mirror = rotation >> 29;
+    if (mirror & 1u) std::swap(local.x, local.y);
+    if (mirror & 2u) local.x = -local.x;
+    if (mirror & 4u) local.y = -local.y;
+    const std::uint32_t axis = face >> 1;
+    glm::vec3 d;
+    d[(axis + 1) % 3] = local.x;
+    d[(axis + 2) % 3] = local.y;
+    d[axis] = (face & 1u) ? local.z : -local.z;
+    return d;
+}
+
 std::uint32_t IrradianceCache::directionIndex(std::uint32_t j) const {
     std::uint32_t stride = mSettings.directions / mSettings.raysPerUpdate;
     return j * stride + mFrameIndex % stride;  // the rotation advances with the frame
@@ -75,9 +109,11 @@ void IrradianceCache::clear() {
     mConfigured = false;
 }
 
-void IrradianceCache::reset(const lighting::IrradianceCacheSettings& settings) {
+void IrradianceCache::reset(const lighting::IrradianceCacheSettings& settings, std::uint32_t seed) {
     mSettings = settings;
+    mSeed = seed;
     mConfigured = true;
+    mDirectionsUploaded = false;
     auto slots = static_cast<std::uint32_t>(
         std::clamp<std::uint64_t>(settings.budgetBytes / bytesPerSlot(settings), 1, 1u << 24));
     mDirectory = lighting::IrradianceCacheDirectory(slots);
@@ -120,7 +156,8 @@ void IrradianceCache::prepare(const lighting::IrradianceCacheSettings& settings,
                               std::uint32_t frameIndex, std::uint32_t seed, std::span<const glm::ivec3> editedCellMins,
                               gpu::Uploader& uploader, gpu::CommandList& cmd) {
     mRetired.clear();  // the previous frame has completed
-    if (!mConfigured || !(settings == mSettings)) reset(settings);
+    // The seed picks every entry's directions: a new seed invalidates every cached hit.
+    if (!mConfigured || !(settings == mSettings) || seed != mSeed) reset(settings, seed);
     mStats = {};
 
     // Visible voxels, from this frame's G-buffer; an N^3 neighbourhood around the dynamic ones so
@@ -185,7 +222,10 @@ void IrradianceCache::prepare(const lighting::IrradianceCacheSettings& settings,
     uploader.write(mEntries, 0, entries.data(), entries.size_bytes());
     uploader.write(mLists, 0, mUpdate.data(), mUpdate.size() * 4);
     uploader.write(mLists, std::uint64_t(mCapacity) * 4, mTrace.data(), mTrace.size() * 4);
-    uploader.write(mDirectionBuffer, 0, mDirections.data(), mDirections.size() * sizeof(glm::vec4));
+    if (!mDirectionsUploaded) {  // fixed until the next reset
+        uploader.write(mDirectionBuffer, 0, mDirections.data(), mDirections.size() * sizeof(glm::vec4));
+        mDirectionsUploaded = true;
+    }
 
     shared::CacheParams params{};
     params.counts = glm::uvec4(mUpdate.size(), mTrace.size(), settings.directions, settings.raysPerUpdate);

@@ -69,11 +69,17 @@ public:
     const gpu::Buffer& filtered() const { return mFiltered; }
     std::uint32_t raysPerUpdate() const { return mSettings.raysPerUpdate; }
     std::uint32_t directionIndex(std::uint32_t j) const;
+    // All CACHE_DIRECTION_SETS direction sets, K each, in the face frame.
     std::span<const glm::vec4> directions() const { return mDirections; }
+    // The host's copy of the shaders' per-entry directions (common/irradiance_cache.glsl), bit for
+    // bit: which set and mirror entry (voxel, set) uses under a lighting seed, and its direction k
+    // on `face` in world space under the current seed.
+    static std::uint32_t directionRotation(glm::ivec3 voxel, std::uint32_t set, std::uint32_t seed);
+    glm::vec3 rayDirection(glm::ivec3 voxel, std::uint32_t set, std::uint32_t face, std::uint32_t k) const;
     static std::uint64_t bytesPerSlot(const lighting::IrradianceCacheSettings& settings);
 
 private:
-    void reset(const lighting::IrradianceCacheSettings& settings);
+    void reset(const lighting::IrradianceCacheSettings& settings, std::uint32_t seed);
     void ensureCapacity(std::uint32_t slots, gpu::CommandList& cmd);
     void dispatch(gpu::CommandList& cmd, gpu::ComputePipeline& pipeline, const char* name, std::uint64_t threads,
                   std::span<const gpu::Buffer* const> buffers);
@@ -82,6 +88,8 @@ private:
     gpu::ComputePipeline mTraceStatic, mVisibilityStatic, mVisibilityStaticFull, mVisibilityDynamic, mBounce, mFilter, mGather;
     lighting::IrradianceCacheSettings mSettings;
     bool mConfigured = false;
+    bool mDirectionsUploaded = false;
+    std::uint32_t mSeed = 0;  // the lighting seed the cached hits were traced with
     lighting::IrradianceCacheDirectory mDirectory{1};
     std::vector<glm::vec4> mDirections;
     std::vector<std::uint32_t> mUpdate, mTrace;  // mUpdate: static entries first

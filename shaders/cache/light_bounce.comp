@@ -50,8 +50,9 @@ void main() {
     uint rng = rngInit(uvec2(slot, face), gCache.frame.x, 11u, gCache.frame.w);
     vec3 o = cacheRayOrigin(voxel, face);
     vec3 sum = vec3(0.0);
+    uint rotation = cacheRotation(voxel, uint(entry.voxel.w));  // the directions its hits were traced along
     for (uint j = 0u; j < S; ++j) {
-        vec3 d = cacheDirection(face, cacheDirectionIndex(j));
+        vec3 d = cacheDirection(rotation, face, cacheDirectionIndex(j));
         sum += lightLeaving(voxel, face, o, d, gSelectedHits[(item * CACHE_FACES + face) * S + j], rng);
     }
     vec3 fresh = PI * sum / float(S);

@@ -18,7 +18,8 @@ void main() {
     ivec3 voxel = gEntries[slot].voxel.xyz;
     uint packed = CACHE_HIT_MISS;
     if (cacheFaceExposed(voxel, face, CACHE_SET_STATIC)) {
-        TraceResult hit = traceRay(cacheRayOrigin(voxel, face), cacheDirection(face, k), gCache.blend.y, true);
+        vec3 d = cacheDirection(cacheRotation(voxel, CACHE_SET_STATIC), face, k);
+        TraceResult hit = traceRay(cacheRayOrigin(voxel, face), d, gCache.blend.y, true);
         if (hit.hit) packed = packCacheHit(voxel, hit.voxel, hit.face, false);
     }
     gStaticHits[(slot * CACHE_FACES + face) * K + k] = packed;

@@ -15,11 +15,11 @@
 layout(local_size_x = CACHE_GROUP_SIZE) in;
 
 // The selected hit of ray j of `face` of a static entry, or of a dynamic entry.
-uint selectHit(uint slot, ivec3 voxel, uint set, uint face, uint j) {
+uint selectHit(uint slot, ivec3 voxel, uint set, uint rotation, uint face, uint j) {
     uint K = gCache.counts.z;
     uint k = cacheDirectionIndex(j);
     vec3 o = cacheRayOrigin(voxel, face);
-    vec3 d = cacheDirection(face, k);
+    vec3 d = cacheDirection(rotation, face, k);
     float maxLength = gCache.blend.y;
 #if !defined(VISIBILITY_MODE)
 #error "define VISIBILITY_MODE"
@@ -53,7 +53,8 @@ void main() {
     ivec3 voxel = entry.voxel.xyz;
     uint set = uint(entry.voxel.w);
     bool exposed = cacheFaceExposed(voxel, face, set);
+    uint rotation = cacheRotation(voxel, set);
     for (uint j = 0u; j < S; ++j) {
-        gSelectedHits[(item * CACHE_FACES + face) * S + j] = exposed ? selectHit(slot, voxel, set, face, j) : CACHE_HIT_MISS;
+        gSelectedHits[(item * CACHE_FACES + face) * S + j] = exposed ? selectHit(slot, voxel, set, rotation, face, j) : CACHE_HIT_MISS;
     }
 }

@@ -26,10 +26,23 @@ layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 12, std430) writeonly buffer 
 
 uint cacheThread() { return gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * CACHE_DISPATCH_ROW; }
 
-// Direction k of face `face` in world space. The face frame only permutes and negates axes, so
-// host and GPU get the same bits.
-vec3 cacheDirection(uint face, uint k) {
-    vec3 local = gDirections[k].xyz;
+// Which of the rotated direction sets entry (voxel, set) uses, and how it is mirrored: a hash of
+// the key and the lighting seed, so neighbours' finite sets err independently and a run repeats
+// exactly. IrradianceCache::directionRotation is the host's copy.
+uint cacheRotation(ivec3 voxel, uint set) {
+    uvec2 key = uvec2(uint(voxel.x) | (uint(voxel.y) << 16u), uint(voxel.z) | (set << 31u));
+    return pcgHash(key.x ^ pcgHash(key.y ^ pcgHash(gCache.frame.w ^ 0x9E3779B9u)));
+}
+
+// Direction k of face `face` of an entry with rotation `rotation`, in world space. The set comes
+// from the host's table; the mirror (swap, negations) and the face frame only permute and negate
+// components, so host and GPU get the same bits and the cosine distribution is kept.
+vec3 cacheDirection(uint rotation, uint face, uint k) {
+    vec3 local = gDirections[(rotation % CACHE_DIRECTION_SETS) * gCache.counts.z + k].xyz;
+    uint mirror = rotation >> 29u;
+    if ((mirror & 1u) != 0u) local.xy = local.yx;
+    if ((mirror & 2u) != 0u) local.x = -local.x;
+    if ((mirror & 4u) != 0u) local.y = -local.y;
     uint axis = face >> 1u;
     vec3 d;
     d[(axis + 1u) % 3u] = local.x;

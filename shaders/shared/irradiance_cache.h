@@ -16,6 +16,9 @@ SHARED_BEGIN
 
 SHARED_CONST uint CACHE_FACES = 6u;
 SHARED_CONST uint CACHE_MAX_DIRECTIONS = 256u;
+// Rotated copies of the K-direction set in the directions buffer (set r at [r*K, (r+1)*K)); each
+// entry picks one, and one of 8 mirrors of it, by a hash of its key and the lighting seed.
+SHARED_CONST uint CACHE_DIRECTION_SETS = 64u;
 SHARED_CONST float CACHE_MAX_RAY_LENGTH = 250.0f;
 SHARED_CONST uint CACHE_HIT_MISS = 0xFFFFFFFFu;
 SHARED_CONST uint CACHE_HIT_DYNAMIC = 0x80000000u;
@@ -29,7 +32,7 @@ SHARED_CONST uint CACHE_DISPATCH_ROW = 65535u * CACHE_GROUP_SIZE;  // threads pe
 
 struct CacheParams {
     uvec4 counts;  // x: entries to update, y: entries to trace statically, z: K directions, w: rays per face per update
-    uvec4 frame;   // x: frame index (also the rotation through the K directions), y: unused, z: bounces, w: seed
+    uvec4 frame;   // x: frame index (also the rotation through the K directions), y: unused, z: bounces, w: lighting seed (also picks each entry's direction set)
     vec4 blend;    // x: alpha, y: max ray length, z: scene time (s), w: dynamic fade (s)
     uvec4 table;   // x: hash table buckets - 1 (a power of two minus one), y: slot capacity, z: flags
     uvec4 image;   // x width, y height, z: static entries (they come first in the update list)
