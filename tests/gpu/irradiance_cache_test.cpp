@@ -168,6 +168,7 @@ std::vector<glm::vec4> referenceIndirectAt(Scene& scene, const engine::world::Ca
         Renderer r(gpu_testing::context());
         LightingSettings l;
         l.method = Method::Reference;
+        l.referenceFilter = engine::lighting::ReferenceFilter::PixelCentre;  // the cache is gathered at pixel centres
         l.bounces = b;
         l.seed = seed;
         l.samplesPerFrame = 32;
