@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Charts a `vox bench sweep` CSV: per scene, error (MAE and MSE, log) against GPU milliseconds
 per frame, one marker style per method, the Pareto front (no other point is both faster and
-more accurate) joined. MAE shows bias best, MSE punishes fireflies: both are drawn.
+more accurate) joined. MAE shows bias best, MSE punishes fireflies: both are drawn, and the mean
+ratio (mean of non-emitting pixels over the reference's) shows bias at a glance.
 
 Rows measured against the multi-bounce reference (reference_bounces > 0: the indirect-light
 series none / cache-K / path tracer) get their own chart per scene: their errors are against
@@ -46,12 +47,13 @@ def read(path):
             kind, group, bounces = series(row)
             scenes[row["scene"]][kind].append({"group": group, "setting": row["setting"], "bounces": bounces,
                                                "ms": float(row["total_ms"]), "mae": float(row["mae"]),
-                                               "mse": float(row["mse"])})
+                                               "mse": float(row["mse"]),
+                                               "ratio": float(row.get("mean_ratio") or "nan")})
     return scenes
 
 
 def chart(scene, points, markers, title, out):
-    fig, axes = plt.subplots(1, 2, figsize=(13, 5))
+    fig, axes = plt.subplots(1, 3, figsize=(19, 5))
     for ax, key in zip(axes, ("mae", "mse")):
         for group in sorted({p["group"] for p in points}):
             mine = [p for p in points if p["group"] == group]
@@ -66,6 +68,16 @@ def chart(scene, points, markers, title, out):
         ax.set_title(f"{scene}: {key.upper()} against time")
         ax.grid(True, which="both", linewidth=0.3)
         ax.legend(fontsize=7)
+    # Bias at a glance: mean of the non-emitting pixels over the reference's (1 = no bias).
+    ax = axes[2]
+    for group in sorted({p["group"] for p in points}):
+        mine = [p for p in points if p["group"] == group]
+        ax.scatter([p["ms"] for p in mine], [p["ratio"] for p in mine], marker=markers.get(group, "x"), label=group)
+    ax.axhline(1.0, color="k", linewidth=0.8)
+    ax.set_xlabel("GPU ms per frame (lavapipe)")
+    ax.set_ylabel(f"mean / {title}")
+    ax.set_title(f"{scene}: mean ratio (bias) against time")
+    ax.grid(True, linewidth=0.3)
     fig.tight_layout()
     fig.savefig(out, dpi=110)
     plt.close(fig)

@@ -124,6 +124,12 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
     result.emitterUpdate = mEmitters.update(scene);
     result.emitterUpdateMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     result.emitters = mEmitters.aliveCount();
+    // A light added, removed or changed: last frame's reservoirs were resampled from the old set
+    // of lights, so their weights are wrong for the new one — too bright for the lights that
+    // remain after a removal, blind to a new light for as long as their M outweighs the fresh
+    // candidates. One frame without temporal reuse starts the history from the current lights.
+    const lighting::EmitterUpdateStats& lightEdit = result.emitterUpdate;
+    if (!lightEdit.full && (lightEdit.added || lightEdit.removed || lightEdit.changed)) mHistoryValid = false;
     // Objects at this frame's time; their previous pose is at the last frame's (this one's on a
     // first frame, like the camera), so motion vectors follow them.
     start = std::chrono::steady_clock::now();

@@ -343,6 +343,46 @@ TEST_F(Restir, EditedEmittersTakeEffectImmediately) {
     EXPECT_LE(frames + 1, 5) << "temporal history (M capped at 20x) may delay a new light by a few frames, no more";
 }
 
+// Switching a light off: the lights that remain are not brightened while history decays. (Last
+// frame's reservoirs that held the removed light were dropped, so only those that happened to
+// hold a surviving light were reused, their weights still counting the removed one.)
+TEST_F(Restir, SwitchingALightOffDoesNotBrightenTheOthers) {
+    Scene scene = roomScene();
+    const std::uint32_t size = 40;
+    const Box brickLight{{32, 24, 32}, {40, 32, 40}};
+    Scene edited = roomScene();
+    fillBox(edited.grid, brickLight, kEmpty);
+    edited.grid.clearDirty();
+    std::vector<glm::vec4> ref = reference(edited, size, 2048);
+    auto meanOf = [](const std::vector<glm::vec4>& img) {
+        double sum = 0.0;
+        for (const glm::vec4& p : img) sum += 0.2126 * p.x + 0.7152 * p.y + 0.0722 * p.z;
+        return sum / double(img.size());
+    };
+    const double refMean = meanOf(ref);
+    for (bool unbiased : {false, true}) {
+        LightingSettings l;
+        l.unbiased = unbiased;
+        std::vector<double> after1, after4;
+        for (std::uint32_t seed = 0; seed < 6; ++seed) {
+            Scene s = roomScene();
+            l.seed = 40 + seed;
+            Renderer r(gpu_testing::context());
+            renderFrames(r, s, l, size, 20);
+            fillBox(s.grid, brickLight, kEmpty);
+            after1.push_back(meanOf(renderFrames(r, s, l, size, 1)));
+            after4.push_back(meanOf(renderFrames(r, s, l, size, 3)));
+        }
+        const MeanAndError a1 = meanOfMeans(after1), a4 = meanOfMeans(after4);
+        std::printf("%s: after the brick light went off, mean / converged mean 1 frame later %.3f (+- %.3f), 4 frames "
+                    "later %.3f (+- %.3f)\n",
+                    unbiased ? "unbiased" : "biased", a1.mean / refMean, a1.standardError / refMean, a4.mean / refMean,
+                    a4.standardError / refMean);
+        EXPECT_NEAR(a1.mean / refMean, 1.0, 0.05 + 3.0 * a1.standardError / refMean);
+        EXPECT_NEAR(a4.mean / refMean, 1.0, 0.05 + 3.0 * a4.standardError / refMean);
+    }
+}
+
 // The reference path tracer's direct light against an independent CPU quadrature of the area
 // light integral (each exposed emitter face cut into 24 x 24 patches, CPU shadow rays), at
 // sampled pixels: agreement within 4 standard errors of the reference's own noise.

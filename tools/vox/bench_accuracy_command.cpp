@@ -86,7 +86,7 @@ int runAccuracy(const AccuracyOptions& o) {
     std::filesystem::create_directories(o.output);
     std::ofstream md(std::filesystem::path(o.output) / "accuracy_tables.md");
     std::ofstream csv(std::filesystem::path(o.output) / "accuracy.csv");
-    csv << "scene,emitters,configuration,primary_ms,initial_ms,temporal_ms,spatial_ms,shade_ms,total_ms,mae,mse\n";
+    csv << "scene,emitters,configuration,primary_ms,initial_ms,temporal_ms,spatial_ms,shade_ms,total_ms,mae,mse,mean_ratio\n";
     md << fmt::format("Measured on {} ({}) at {}x{}, {} frames per setting (the last {} measured), reference {} spp.\n\n",
                       gpu.info().name, gpu.info().driver, fs.width, fs.height, o.frames, o.frames - o.frames / 2,
                       o.referenceSpp);
@@ -106,20 +106,20 @@ int runAccuracy(const AccuracyOptions& o) {
 
         md << fmt::format("### {} — {} emissive voxels, {} emitters with brick lights on\n\n", scene->name,
                           scene->emissiveVoxels(), emitters);
-        md << "| setting | primary | candidates | temporal | spatial | shading | total ms | MAE | MSE |\n";
-        md << "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+        md << "| setting | primary | candidates | temporal | spatial | shading | total ms | MAE | MSE | mean ratio |\n";
+        md << "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
         for (std::size_t i = 0; i < configs.size(); ++i) {
             std::fprintf(stderr, "\r  %zu/%zu %-60s", i + 1, configs.size(), configs[i].first.c_str());
             SweepPoint r = measureSetting(gpu, *scene, camera, fs, configs[i].second, o.frames, reference, configs[i].first);
             auto ms = [&](const char* pass) { return r.passMs.count(pass) ? r.passMs[pass] : 0.0; };
             double shading = ms("restir_shade") + ms("light_sampling");
             auto cell = [](double v) { return v > 0.0 ? fmt::format("{:.2f}", v) : std::string("–"); };
-            md << fmt::format("| {} | {} | {} | {} | {} | {} | {:.2f} | {:.4e} | {:.4e} |\n", r.label,
+            md << fmt::format("| {} | {} | {} | {} | {} | {} | {:.2f} | {:.4e} | {:.4e} | {:.3f} |\n", r.label,
                               cell(ms("primary_rays")), cell(ms("restir_initial")), cell(ms("restir_temporal")),
-                              cell(ms("restir_spatial")), cell(shading), r.totalMs, r.mae, r.mse);
-            csv << fmt::format("{},{},\"{}\",{},{},{},{},{},{},{},{}\n", scene->name, r.emitters, r.label,
+                              cell(ms("restir_spatial")), cell(shading), r.totalMs, r.mae, r.mse, r.meanRatio);
+            csv << fmt::format("{},{},\"{}\",{},{},{},{},{},{},{},{},{}\n", scene->name, r.emitters, r.label,
                                ms("primary_rays"), ms("restir_initial"), ms("restir_temporal"), ms("restir_spatial"),
-                               shading, r.totalMs, r.mae, r.mse);
+                               shading, r.totalMs, r.mae, r.mse, r.meanRatio);
         }
         std::fprintf(stderr, "\n");
         md << "\n";

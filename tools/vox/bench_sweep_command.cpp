@@ -163,14 +163,14 @@ int runSweep(const SweepOptions& o) {
     std::ofstream csv(out / "sweep.csv");
     // reference_bounces 0: the point's error is against the direct-light reference; more: against
     // the path tracer with that many bounces (the indirect series, charted apart).
-    csv << "scene,method,setting,emitters,total_ms,primary_ms,lighting_ms,mae,mse,rmae,indirect,reference_bounces\n";
+    csv << "scene,method,setting,emitters,total_ms,primary_ms,lighting_ms,mae,mse,rmae,indirect,reference_bounces,mean_ratio\n";
     std::size_t total = o.worlds.size() * (settings->size() + indirect->size()), done = 0;
     auto write = [&](const SweepPoint& p, const LightingSettings& l, std::uint32_t referenceBounces) {
         double primary = p.passMs.count("primary_rays") ? p.passMs.at("primary_rays") : 0.0;
         double tonemap = p.passMs.count("tonemap") ? p.passMs.at("tonemap") : 0.0;
-        csv << fmt::format("{},{},\"{}\",{},{},{},{},{},{},{},{},{}\n", p.scene, p.method, p.label, p.emitters, p.totalMs,
-                           primary, p.totalMs - primary - tonemap, p.mae, p.mse, p.rmae, indirectColumn(l),
-                           referenceBounces);
+        csv << fmt::format("{},{},\"{}\",{},{},{},{},{},{},{},{},{},{}\n", p.scene, p.method, p.label, p.emitters,
+                           p.totalMs, primary, p.totalMs - primary - tonemap, p.mae, p.mse, p.rmae, indirectColumn(l),
+                           referenceBounces, p.meanRatio);
         csv.flush();
     };
     for (const std::string& name : o.worlds) {
@@ -231,7 +231,7 @@ int runRecommend(const RecommendOptions& o) {
     };
     std::vector<Candidate> rows;
     while (std::getline(in, line)) {
-        // scene,method,"setting",emitters,total_ms,primary_ms,lighting_ms,mae,mse,rmae[,indirect,reference_bounces]
+        // scene,method,"setting",emitters,total_ms,primary_ms,lighting_ms,mae,mse,rmae[,indirect,reference_bounces[,mean_ratio]]
         // (sweeps from before the indirect series have no last two columns: all direct)
         std::size_t q1 = line.find('"'), q2 = line.find('"', q1 + 1);
         if (q1 == std::string::npos || q2 == std::string::npos) continue;

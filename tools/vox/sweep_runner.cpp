@@ -24,6 +24,21 @@ double median(std::vector<double> v) {
     return v.empty() ? 0.0 : v[v.size() / 2];
 }
 
+// Mean luminance over the surface pixels that do not emit, image and reference alike: the light
+// the methods are responsible for (emitters and sky are exact in every method and would hide it).
+double nonEmitterMeanRatio(const engine::render::FrameImages& img, const std::vector<glm::vec4>& reference,
+                           const engine::world::Scene& scene) {
+    auto luminance = [](const glm::vec4& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; };
+    double a = 0.0, b = 0.0;
+    for (std::size_t i = 0; i < img.gbuffer.size() && i < reference.size(); ++i) {
+        const shared::GBufferTexel& g = img.gbuffer[i];
+        if (std::uint32_t(g.voxel.w) >= 6 || scene.palette[engine::world::MaterialId(g.data.x)].emissive()) continue;
+        a += luminance(img.radiance[i]);
+        b += luminance(reference[i]);
+    }
+    return b > 0.0 ? a / b : 0.0;
+}
+
 std::uint32_t hashBytes(const std::string& s, std::uint32_t h) {
     for (unsigned char c : s) h = engine::hashCombine(h, c);
     return h;
@@ -61,6 +76,7 @@ SweepPoint measureSetting(engine::gpu::Context& gpu, engine::world::Scene& scene
             p.mse += e->mse;
             p.rmae += e->rmae;
         }
+        p.meanRatio += nonEmitterMeanRatio(img, reference, scene);
         ++counted;
         if (lighting.method != Method::Restir) lighting.seed += 7919;  // memoryless methods: independent frames
     }
@@ -69,6 +85,7 @@ SweepPoint measureSetting(engine::gpu::Context& gpu, engine::world::Scene& scene
     p.mae /= std::max(counted, 1);
     p.mse /= std::max(counted, 1);
     p.rmae /= std::max(counted, 1);
+    p.meanRatio /= std::max(counted, 1);
     return p;
 }
 
