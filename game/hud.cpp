@@ -208,8 +208,9 @@ void Hud::drawStats(const HudStats& stats, HudControls& controls, HudActions& ac
         bool indirect = l.bounces > 0;
         if (ImGui::Checkbox("indirect", &indirect)) l.bounces = indirect ? std::max(l.bounces, 2u) : 0u;
     } else {
-        // The irradiance cache (indirect light for the real-time methods) is not built yet.
-        ImGui::TextDisabled("indirect: reference only (no irradiance cache yet)");
+        bool cache = l.indirect == engine::lighting::Indirect::Cache;
+        if (ImGui::Checkbox("irradiance cache", &cache))
+            l.indirect = cache ? engine::lighting::Indirect::Cache : engine::lighting::Indirect::None;
     }
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
     ImGui::SliderFloat("exposure", &controls.exposure, 0.05f, 8.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
