@@ -6,23 +6,6 @@
 
 #include "common/surface.glsl"
 
-vec3 directLight(Surface s, FrameParams frame, inout uint rng) {
-    vec3 direct = sunLight(s, frame);
-    uint slot;
-    if (!pickEmitter(rng, true, slot)) return direct;
-    GpuEmitter e = gEmitters[slot];
-    uint face;
-    float side = float(e.minCorner.w);
-    float pdf = emitterPdf(slot, true) * pickFace(e, s.position, rngNext(rng), face) / (side * side);
-    vec2 uv = vec2(rngNext(rng), rngNext(rng));
-    if (!(pdf > 0.0)) return direct;
-    vec3 toLight;
-    float dist;
-    vec3 f = lightContribution(s, e, face, uv, toLight, dist);
-    if (any(greaterThan(f, vec3(0.0))) && lightVisible(s, e, toLight, dist)) direct += f / pdf;
-    return direct;
-}
-
 // Power heuristic (Veach & Guibas 1995, beta = 2): the weight of a sample drawn with density
 // `chosen` when `other` could also have produced it.
 float powerHeuristic(float chosen, float other) {
@@ -31,11 +14,11 @@ float powerHeuristic(float chosen, float other) {
     return 1.0 / (1.0 + ratio * ratio);
 }
 
-// directLight with the emitter sample weighted against cosine-weighted BSDF sampling, for a
-// vertex that also traces a cosine-sampled ray counting the emission it hits (the reference path
-// tracer with MIS). The sun stays light-sampled only: a direction has zero
-// chance of hitting it. The same random numbers as directLight.
-vec3 directLightMis(Surface s, FrameParams frame, inout uint rng) {
+// With `misWithCosine`, the emitter sample is weighted against cosine-weighted BSDF sampling, for
+// a vertex that also traces a cosine-sampled ray counting the emission it hits (the reference
+// path tracer with MIS). The sun stays light-sampled only: a direction has zero chance of hitting
+// it. Either way the same random numbers are drawn.
+vec3 directLightSampled(Surface s, FrameParams frame, inout uint rng, bool misWithCosine) {
     vec3 direct = sunLight(s, frame);
     uint slot;
     if (!pickEmitter(rng, true, slot)) return direct;
@@ -48,13 +31,19 @@ vec3 directLightMis(Surface s, FrameParams frame, inout uint rng) {
     vec3 toLight;
     float dist;
     vec3 f = lightContribution(s, e, face, uv, toLight, dist);
-    if (any(greaterThan(f, vec3(0.0))) && lightVisible(s, e, toLight, dist)) {
+    if (!any(greaterThan(f, vec3(0.0))) || !lightVisible(s, e, toLight, dist)) return direct;
+    float weight = 1.0;
+    if (misWithCosine) {
         float cosLight = dot(faceNormalF(face), -toLight);
         float lightPdf = pdf * dist * dist / cosLight;  // area -> solid angle at s
         float bsdfPdf = max(dot(s.normal, toLight), 0.0) / PI;
-        direct += f / pdf * powerHeuristic(lightPdf, bsdfPdf);
+        weight = powerHeuristic(lightPdf, bsdfPdf);
     }
-    return direct;
+    return direct + f / pdf * weight;
 }
+
+vec3 directLight(Surface s, FrameParams frame, inout uint rng) { return directLightSampled(s, frame, rng, false); }
+
+vec3 directLightMis(Surface s, FrameParams frame, inout uint rng) { return directLightSampled(s, frame, rng, true); }
 
 #endif

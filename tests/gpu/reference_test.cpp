@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "gpu/gpu_test_context.h"
+#include "gpu/sample_stats.h"
 #include "lighting/emitter_list.h"
 #include "render/camera.h"
 #include "render/renderer.h"
@@ -22,6 +23,9 @@ using engine::render::FrameImages;
 using engine::render::FrameSettings;
 using engine::render::Renderer;
 using gpu_testing::GpuTest;
+
+using gpu_testing::MeanAndError;
+using gpu_testing::meanOfMeans;
 
 namespace {
 
@@ -67,19 +71,6 @@ double maxAbsLuminanceError(const std::vector<glm::vec4>& a, const std::vector<g
     double worst = 0.0;
     for (std::size_t i = 0; i < a.size(); ++i) worst = std::max(worst, std::abs(luminance(a[i]) - luminance(truth[i])));
     return worst;
-}
-
-struct MeanAndError {
-    double mean = 0.0, standardError = 0.0;
-};
-
-MeanAndError meanOfMeans(const std::vector<double>& values) {
-    MeanAndError m;
-    for (double v : values) m.mean += v / double(values.size());
-    double var = 0.0;
-    for (double v : values) var += (v - m.mean) * (v - m.mean);
-    m.standardError = std::sqrt(var / double(values.size() - 1) / double(values.size()));
-    return m;
 }
 
 // Many thin, high-contrast edges: one-voxel posts and beams that glow (seen directly) in front of

@@ -10,6 +10,7 @@
 #include <functional>
 
 #include "gpu/gpu_test_context.h"
+#include "gpu/sample_stats.h"
 #include "render/renderer.h"
 #include "world/scene_file.h"
 #include "world/world_edits.h"
@@ -20,6 +21,9 @@ using engine::lighting::Method;
 using engine::render::FrameImages;
 using engine::render::FrameSettings;
 using engine::render::Renderer;
+
+using gpu_testing::MeanAndError;
+using gpu_testing::meanOfMeans;
 
 namespace {
 
@@ -119,21 +123,8 @@ double maskedMean(const std::vector<glm::vec4>& img, const std::vector<bool>& ma
     return n ? sum / n : 0.0;
 }
 
-struct Stats {
-    double mean = 0.0, standardError = 0.0;
-};
-
-Stats statsOf(const std::vector<double>& v) {
-    Stats s;
-    for (double x : v) s.mean += x / double(v.size());
-    double var = 0.0;
-    for (double x : v) var += (x - s.mean) * (x - s.mean);
-    s.standardError = std::sqrt(var / double(v.size() - 1) / double(v.size()));
-    return s;
-}
-
 struct ModeRun {
-    Stats at16, at64;
+    MeanAndError at16, at64;
     std::vector<std::vector<glm::vec4>> images16, images64;  // one per seed
 };
 
@@ -152,8 +143,8 @@ ModeRun runMode(Renderer& r, Scene& scene, LightingSettings l, const std::vector
             (f == 16 ? run.images16 : run.images64).push_back(std::move(img));
         }
     }
-    run.at16 = statsOf(means16);
-    run.at64 = statsOf(means64);
+    run.at16 = meanOfMeans(means16);
+    run.at64 = meanOfMeans(means64);
     return run;
 }
 
@@ -189,7 +180,7 @@ TileCheck checkTiles(const std::vector<std::vector<glm::vec4>>& images, const st
             ++check.tiles;
             std::vector<double> ratios;
             for (const auto& img : images) ratios.push_back(tileSum(img, n) / reference);
-            const Stats s = statsOf(ratios);
+            const MeanAndError s = meanOfMeans(ratios);
             if (std::abs(s.mean - 1.0) > check.worst) {
                 check.worst = std::abs(s.mean - 1.0);
                 check.worstSigma = s.standardError;
@@ -236,7 +227,7 @@ TEST_P(RestirBias, ModesAgreeWithThePathTracer) {
         refMeans.push_back(maskedMean(img.radiance, mask));
         for (std::size_t i = 0; i < reference.size(); ++i) reference[i] += img.radiance[i] / float(kReferenceRuns);
     }
-    const Stats refStats = statsOf(refMeans);
+    const MeanAndError refStats = meanOfMeans(refMeans);
     const double refMean = refStats.mean;
     const double refError = refStats.standardError;
     ASSERT_GT(refMean, 1e-3) << "the scene is lit";
@@ -269,7 +260,7 @@ TEST_P(RestirBias, ModesAgreeWithThePathTracer) {
     EXPECT_LE(tiles16.worstExcess, 2.0) << "biased area, 16 frames: a lit tile is off by more than 10 %";
     EXPECT_LE(tiles64.worstExcess, 2.0) << "biased area, 64 frames: a lit tile is off by more than 10 %";
     EXPECT_GT(tiles64.tiles, 0);
-    for (const Stats* s : {&u.at16, &u.at64}) {
+    for (const MeanAndError* s : {&u.at16, &u.at64}) {
         const double sigma = std::sqrt(s->standardError * s->standardError + refError * refError);
         EXPECT_LT(std::abs(s->mean - refMean), 4.0 * sigma + 1e-3 * refMean) << "unbiased area";
     }

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "gpu/gpu_test_context.h"
+#include "gpu/sample_stats.h"
 #include "render/renderer.h"
 #include "world/ray_traversal.h"
 #include "lighting/emitter_list.h"
@@ -16,6 +17,9 @@ using engine::render::FrameImages;
 using engine::render::FrameSettings;
 using engine::render::Renderer;
 using gpu_testing::GpuTest;
+
+using gpu_testing::MeanAndError;
+using gpu_testing::meanOfMeans;
 
 namespace {
 
@@ -70,19 +74,6 @@ std::vector<glm::vec4> reference(Scene& scene, std::uint32_t size, std::uint32_t
     l.brickLights = brickLights;
     l.seed = seed;
     return renderFrames(r, scene, l, size, int(spp / 16));
-}
-
-struct MeanAndError {
-    double mean = 0.0, standardError = 0.0;
-};
-
-MeanAndError meanOfMeans(const std::vector<double>& values) {
-    MeanAndError m;
-    for (double v : values) m.mean += v / double(values.size());
-    double var = 0.0;
-    for (double v : values) var += (v - m.mean) * (v - m.mean);
-    m.standardError = std::sqrt(var / double(values.size() - 1) / double(values.size()));
-    return m;
 }
 
 double meanLuminance(const std::vector<glm::vec4>& img) {
