@@ -28,8 +28,8 @@ Status validate(const IrradianceCacheSettings& s) {
     if (!(s.alpha > 0.0f && s.alpha <= 1.0f)) return makeError("alpha must be in (0, 1], not {}", s.alpha);
     if (s.neighbourhood != 0 && s.neighbourhood != 3 && s.neighbourhood != 5)
         return makeError("neighbourhood must be 0, 3 or 5, not {}", s.neighbourhood);
-    if (!(s.maxRayLength >= 1.0f && s.maxRayLength <= 250.0f))
-        return makeError("max_ray must be in 1..250 voxels, not {}", s.maxRayLength);
+    if (!(s.maxRayLength >= 1.0f && s.maxRayLength <= 500.0f))
+        return makeError("max_ray must be in 1..500 voxels, not {}", s.maxRayLength);
     if (!(s.fadeSeconds > 0.0f)) return makeError("fade must be positive");
     if (s.budgetBytes < (1ull << 20) || s.budgetBytes > (16ull << 30)) return makeError("budget_mb must be in 1..16384");
     return {};

@@ -23,7 +23,9 @@ struct IrradianceCacheSettings {
     float alpha = 0.03f;               // temporal blend E = a E_new + (1 - a) E_old
     float fadeSeconds = 0.3f;          // dynamic entries fade to zero this long after their last update
     std::uint32_t neighbourhood = 5;   // N^3 around each visible dynamic voxel (0, 3 or 5)
-    float maxRayLength = 250.0f;       // voxels; also the reach of an edit's invalidation
+    // Voxels (at most 500, shared::CACHE_MAX_RAY_LENGTH); also the reach of an edit's invalidation.
+    // A ray cut short sees the sky, so it must cross the largest room: cornell needs 443.
+    float maxRayLength = 500.0f;
     bool filter = true;                // 3^3 Gaussian over neighbouring voxels' faces
     std::uint64_t budgetBytes = 64ull << 20;
     bool fullRetrace = false;          // tests: the static set traces the whole world every update

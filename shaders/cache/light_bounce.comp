@@ -12,7 +12,7 @@ layout(local_size_x = CACHE_GROUP_SIZE) in;
 
 vec3 lightLeaving(ivec3 voxel, uint face, vec3 o, vec3 d, uint packed, inout uint rng) {
     if (packed == CACHE_HIT_MISS) return skyBackground(gFrame, d);
-    ivec3 hv = cacheHitVoxel(voxel, packed);
+    ivec3 hv = cacheHitVoxel(voxel, packed, d);
     uint hf = cacheHitFace(packed);
     bool dynamicHit = (packed & CACHE_HIT_DYNAMIC) != 0u;
     if (hf >= 6u) return vec3(0.0);  // the ray started inside a voxel: no light

@@ -20,7 +20,7 @@ void main() {
     if (cacheFaceExposed(voxel, face, CACHE_SET_STATIC)) {
         vec3 d = cacheDirection(cacheRotation(voxel, CACHE_SET_STATIC), face, k);
         TraceResult hit = traceRay(cacheRayOrigin(voxel, face), d, gCache.blend.y, true);
-        if (hit.hit) packed = packCacheHit(voxel, hit.voxel, hit.face, false);
+        if (hit.hit) packed = packCacheHit(voxel, hit.voxel, hit.face, false, d);
     }
     gStaticHits[(slot * CACHE_FACES + face) * K + k] = packed;
 }

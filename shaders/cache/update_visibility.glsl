@@ -27,14 +27,14 @@ uint selectHit(uint slot, ivec3 voxel, uint set, uint rotation, uint face, uint 
     // Only static entries come here.
         uint cached = gStaticHits[(slot * CACHE_FACES + face) * K + k];
         if (!dynamicGridPresent()) return cached;
-        float ts = cached == CACHE_HIT_MISS ? maxLength : faceHitT(o, d, cacheHitVoxel(voxel, cached), cacheHitFace(cached));
+        float ts = cached == CACHE_HIT_MISS ? maxLength : faceHitT(o, d, cacheHitVoxel(voxel, cached, d), cacheHitFace(cached));
         SceneHit dyn = traceDynamic(o, d, ts);
-        if (dyn.hit && faceHitT(o, d, dyn.voxel, dyn.face) < ts) return packCacheHit(voxel, dyn.voxel, dyn.face, true);
+        if (dyn.hit && faceHitT(o, d, dyn.voxel, dyn.face) < ts) return packCacheHit(voxel, dyn.voxel, dyn.face, true, d);
         return cached;
 #else
     // Dynamic entries, and what the divide-and-win must equal: both worlds traced from scratch.
     SceneHit hit = traceScene(o, d, maxLength);
-    return hit.hit ? packCacheHit(voxel, hit.voxel, hit.face, hit.dynamicSet) : CACHE_HIT_MISS;
+    return hit.hit ? packCacheHit(voxel, hit.voxel, hit.face, hit.dynamicSet, d) : CACHE_HIT_MISS;
 #endif
 }
 

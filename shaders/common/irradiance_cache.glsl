@@ -64,12 +64,17 @@ uint cacheDirectionIndex(uint j) {
     return j * stride + gCache.frame.x % stride;  // the rotation advances with the frame
 }
 
-uint packCacheHit(ivec3 origin, ivec3 voxel, uint face, bool dynamicSet) {
-    uvec3 rel = uvec3(voxel - origin + 256);
+// The hit voxel's offset from the ray's voxel, counted along the ray's direction on each axis
+// (a ray only moves forward): 9 bits then reach CACHE_MAX_RAY_LENGTH voxels, enough to cross a
+// 256-voxel room. A ray cut short is taken for the sky, so it must reach the far wall.
+uint packCacheHit(ivec3 origin, ivec3 voxel, uint face, bool dynamicSet, vec3 d) {
+    ivec3 sgn = ivec3(lessThan(d, vec3(0.0))) * -2 + 1;
+    uvec3 rel = uvec3(clamp((voxel - origin) * sgn + 2, 0, 511));
     return rel.x | (rel.y << 9u) | (rel.z << 18u) | (face << 27u) | (dynamicSet ? CACHE_HIT_DYNAMIC : 0u);
 }
-ivec3 cacheHitVoxel(ivec3 origin, uint packed) {
-    return origin + ivec3(int(packed & 511u), int((packed >> 9u) & 511u), int((packed >> 18u) & 511u)) - 256;
+ivec3 cacheHitVoxel(ivec3 origin, uint packed, vec3 d) {
+    ivec3 sgn = ivec3(lessThan(d, vec3(0.0))) * -2 + 1;
+    return origin + (ivec3(int(packed & 511u), int((packed >> 9u) & 511u), int((packed >> 18u) & 511u)) - 2) * sgn;
 }
 uint cacheHitFace(uint packed) { return (packed >> 27u) & CACHE_HIT_FACE_MASK; }
 

@@ -5,9 +5,9 @@
 // CACHE_FACES irradiance values, accumulated and filtered. Per entry in this frame's update list
 // and per traced ray: the selected hit (static or dynamic, bit CACHE_HIT_DYNAMIC).
 //
-// A packed hit stores the hit voxel relative to the ray's voxel (9 bits per axis, +256) and the
-// hit face — compact, and independent of the world's size. Rays are limited to
-// CACHE_MAX_RAY_LENGTH voxels so the offsets fit.
+// A packed hit stores the hit voxel relative to the ray's voxel, counted along the ray's
+// direction (9 bits per axis, +2), and the hit face — compact, and independent of the world's
+// size. Rays are limited to CACHE_MAX_RAY_LENGTH voxels so the offsets fit.
 #ifndef SHARED_IRRADIANCE_CACHE_H
 #define SHARED_IRRADIANCE_CACHE_H
 #include "interop.h"
@@ -19,7 +19,7 @@ SHARED_CONST uint CACHE_MAX_DIRECTIONS = 256u;
 // Rotated copies of the K-direction set in the directions buffer (set r at [r*K, (r+1)*K)); each
 // entry picks one, and one of 8 mirrors of it, by a hash of its key and the lighting seed.
 SHARED_CONST uint CACHE_DIRECTION_SETS = 64u;
-SHARED_CONST float CACHE_MAX_RAY_LENGTH = 250.0f;
+SHARED_CONST float CACHE_MAX_RAY_LENGTH = 500.0f;
 SHARED_CONST uint CACHE_HIT_MISS = 0xFFFFFFFFu;
 SHARED_CONST uint CACHE_HIT_DYNAMIC = 0x80000000u;
 SHARED_CONST uint CACHE_HIT_FACE_MASK = 7u;

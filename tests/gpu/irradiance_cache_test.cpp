@@ -153,9 +153,10 @@ std::vector<glm::vec4> average(const std::vector<glm::vec4>& a, const std::vecto
 
 // The converged cache (one bounce, defaults but K) with the lighting seed `seed`.
 std::vector<glm::vec4> cacheIndirectSeeded(Scene& scene, const engine::world::CameraPreset& camera, std::uint32_t size,
-                                           int frames, std::uint32_t directions, std::uint32_t seed) {
+                                           int frames, std::uint32_t directions, std::uint32_t seed, float maxRay = 0.0f) {
     LightingSettings l = cacheLighting(1);
     l.cache.directions = directions;
+    if (maxRay > 0.0f) l.cache.maxRayLength = maxRay;
     l.seed = seed;
     Renderer r(gpu_testing::context());
     for (int i = 0; i < frames; ++i) r.render(scene, camera, frameAt(size, 0.0, std::uint32_t(i)), l);
@@ -255,6 +256,29 @@ TEST_F(IrradianceCache, ThinWallDoesNotLeak) {
     EXPECT_EQ(insideMax, 0.0f);        // and nothing crosses the wall
 }
 
+// A sealed, unlit room wider than 250 voxels (cornell's interior is 256): every ray of the cache
+// must find the far wall. A ray cut short at its length limit counts as sky and lights the room.
+TEST_F(IrradianceCache, LongRaysInALargeSealedRoomSeeNoSky) {
+    Scene scene = makeScene({272, 272, 272});
+    fillBox(scene.grid, Box{{0, 0, 0}, {272, 272, 272}}, kWhite);
+    fillBox(scene.grid, Box{{4, 4, 4}, {268, 268, 268}}, 0);  // interior 264^3, walls 4 thick
+    scene.sky.skyRadiance = glm::vec3(1.0f);
+    scene.cameras.push_back(CameraPreset{"inside", {136.0f, 200.0f, 40.0f}, {136.0f, 4.0f, 200.0f}, 80.0f});
+    scene.grid.clearDirty();
+    LightingSettings l = cacheLighting(1);
+    l.cache.directions = 32;
+    std::vector<glm::vec4> inside = cacheIndirect(scene, l, 32, 4);
+    float insideMax = 0.0f;
+    for (const glm::vec4& p : inside) insideMax = std::max({insideMax, p.x, p.y, p.z});
+    // The old limit (250 voxels, then the most a packed hit could hold) shows what the test catches.
+    l.cache.maxRayLength = 250.0f;
+    const double cutShort = meanOf(cacheIndirect(scene, l, 32, 4));
+    std::printf("large sealed room: indirect max %.3g (rays of up to %.0f voxels); mean %.4f with rays cut at 250\n",
+                insideMax, shared::CACHE_MAX_RAY_LENGTH, cutShort);
+    EXPECT_EQ(insideMax, 0.0f);
+    EXPECT_GT(cutShort, 0.01);
+}
+
 // Cache memory follows what the camera sees: the same view in a world four times larger (more
 // content out of view) allocates the same entries and the same bytes.
 TEST_F(IrradianceCache, MemoryDoesNotGrowWithTheWorld) {
@@ -334,9 +358,10 @@ glm::vec3 rayOrigin(glm::ivec3 voxel, std::uint32_t face) {
     o[face >> 1] += (face & 1u) ? shared::CACHE_RAY_OFFSET : -shared::CACHE_RAY_OFFSET;
     return o;
 }
-std::uint32_t packHit(glm::ivec3 origin, const SceneHit& h) {
+std::uint32_t packHit(glm::ivec3 origin, glm::vec3 d, const SceneHit& h) {
     if (!h.hit) return shared::CACHE_HIT_MISS;
-    glm::uvec3 rel(h.voxel - origin + 256);
+    const glm::ivec3 sign(d.x < 0.0f ? -1 : 1, d.y < 0.0f ? -1 : 1, d.z < 0.0f ? -1 : 1);
+    glm::uvec3 rel(glm::clamp((h.voxel - origin) * sign + 2, 0, 511));
     return rel.x | (rel.y << 9) | (rel.z << 18) | (h.face << 27) | (h.dynamicSet ? shared::CACHE_HIT_DYNAMIC : 0u);
 }
 
@@ -384,7 +409,7 @@ TEST_F(IrradianceCache, DivideAndWinSelectsTheSameHitAsAFullRetrace) {
                     glm::vec3 o = rayOrigin(v, face);
                     glm::vec3 d = cd.rayDirection(v, std::uint32_t(e.voxel.w), face, cd.directionIndex(j));
                     SceneHit h = traceScene(a.grid, &a.dynamic, o, d, shared::CACHE_MAX_RAY_LENGTH);
-                    expected = packHit(v, h);
+                    expected = packHit(v, d, h);
                     ++traced;
                     dynamicHits += h.hit && h.dynamicSet;
                 }
@@ -619,11 +644,12 @@ TEST_F(IrradianceCache, DirectionSetsAreCosineDistributedAndDifferPerEntry) {
 // Not a test: the per-scene figures of docs/IRRADIANCE_CACHE.md — the converged cache's indirect
 // term (one bounce) against the path tracer's (one bounce minus direct, two seeds averaged), on
 // the thesis scenes and thin_wall. Run with --gtest_also_run_disabled_tests; VOX_MEASURE_SIZE,
-// _FRAMES, _SPP (per reference seed), _K, _WORLD (one world) and _CACHE (a folder keeping the
-// references) change it.
+// _FRAMES, _SPP (per reference seed), _K, _WORLD (one world), _MAX_RAY (the cache's ray length)
+// and _CACHE (a folder keeping the references) change it.
 TEST_F(IrradianceCache, DISABLED_MeasureScenes) {
     const std::uint32_t size = envOr("VOX_MEASURE_SIZE", 64), frames = envOr("VOX_MEASURE_FRAMES", 64);
     const std::uint32_t spp = envOr("VOX_MEASURE_SPP", 1024), k = envOr("VOX_MEASURE_K", 128);
+    const float maxRay = float(envOr("VOX_MEASURE_MAX_RAY", 0));
     std::vector<std::string> worlds{"cornell", "mountain", "letters", "apartments", "thin_wall"};
     if (const char* w = std::getenv("VOX_MEASURE_WORLD")) worlds = {w};
     for (const std::string& name : worlds) {
@@ -657,8 +683,8 @@ TEST_F(IrradianceCache, DISABLED_MeasureScenes) {
         // The reference's own noise: seed 2 against seed 1, halved for the average of both (1/sqrt 2
         // per seed, 1/sqrt 2 again for the average).
         IndirectError noise = indirectError(r2, r1, size, size);
-        std::vector<glm::vec4> c1 = cacheIndirectSeeded(scene, camera, size, int(frames), k, 1);
-        std::vector<glm::vec4> c2 = cacheIndirectSeeded(scene, camera, size, int(frames), k, 2);
+        std::vector<glm::vec4> c1 = cacheIndirectSeeded(scene, camera, size, int(frames), k, 1, maxRay);
+        std::vector<glm::vec4> c2 = cacheIndirectSeeded(scene, camera, size, int(frames), k, 2, maxRay);
         IndirectError e1 = indirectError(c1, ref, size, size), e2 = indirectError(c2, ref, size, size);
         IndirectError ea = indirectError(average(c1, c2), ref, size, size);
         // With the mean's error taken out: what is left is the per-pixel structure.
@@ -677,6 +703,14 @@ TEST_F(IrradianceCache, DISABLED_MeasureScenes) {
             };
             png(ref, "reference");
             png(c1, "cache");
+            auto raw = [&](const std::vector<glm::vec4>& img, const char* what) {  // for per-region analysis
+                if (std::FILE* f = std::fopen((std::string(dir) + "/" + name + "_" + what + ".bin").c_str(), "wb")) {
+                    std::fwrite(img.data(), sizeof(glm::vec4), img.size(), f);
+                    std::fclose(f);
+                }
+            };
+            raw(ref, "reference");
+            raw(c1, "cache");
         }
         std::printf("MEASURE %s mean-corrected seed1 rmae %.4f mae/mean %.4f\n", name.c_str(), es.rmae, es.relativeMae);
         std::printf("MEASURE %s K=%u frames=%u size=%u spp=2x%u ref-mean=%.5f | ref noise (seed 2 vs 1) rmae %.4f mae/mean %.4f | "

@@ -33,7 +33,7 @@ void addLightingOptions(CLI::App& cmd, LightingOptions& o) {
     cmd.add_option("--cache-bounces", o.cacheBounces, "cache: 1 = one bounce (the paper); more reads the cache at each hit (1)");
     cmd.add_option("--cache-alpha", o.cacheAlpha, "cache: temporal blend factor (0.03)");
     cmd.add_option("--cache-neighbourhood", o.cacheNeighbourhood, "cache: N^3 around visible dynamic voxels: 0, 3, 5 (5)");
-    cmd.add_option("--cache-max-ray", o.cacheMaxRay, "cache: ray length in voxels, also an edit's reach, up to 250 (250)");
+    cmd.add_option("--cache-max-ray", o.cacheMaxRay, "cache: ray length in voxels, also an edit's reach, up to 500 (500)");
     cmd.add_option("--cache-filter", o.cacheFilter, "cache: 3^3 filter on|off (on)");
     cmd.add_option("--cache-budget-mb", o.cacheBudgetMb, "cache: memory budget in MiB; least recently seen evicted (64)");
 }
