@@ -100,8 +100,10 @@ DynamicObject movingBall(double seconds) {
     return ball;
 }
 
-std::vector<glm::vec4> referenceIndirect(Scene& scene, std::uint32_t size, std::uint32_t bounces, std::uint32_t spp,
-                                         double time = 0.0, std::uint32_t seed = 1) {
+// The path tracer's indirect light (with `bounces` minus without) from `camera`, at pixel centres
+// like the cache's gather.
+std::vector<glm::vec4> referenceIndirectAt(Scene& scene, const engine::world::CameraPreset& camera, std::uint32_t size,
+                                           std::uint32_t bounces, std::uint32_t spp, double time, std::uint32_t seed) {
     auto run = [&](std::uint32_t b) {
         Renderer r(gpu_testing::context());
         LightingSettings l;
@@ -110,12 +112,17 @@ std::vector<glm::vec4> referenceIndirect(Scene& scene, std::uint32_t size, std::
         l.bounces = b;
         l.seed = seed;
         l.samplesPerFrame = 32;
-        for (std::uint32_t i = 0; i < spp / 32; ++i) r.render(scene, scene.camera(), frameAt(size, time, i), l);
+        for (std::uint32_t i = 0; i < spp / 32; ++i) r.render(scene, camera, frameAt(size, time, i), l);
         return r.readback().radiance;
     };
     std::vector<glm::vec4> with = run(bounces), without = run(0);
     for (std::size_t i = 0; i < with.size(); ++i) with[i] -= without[i];
     return with;
+}
+
+std::vector<glm::vec4> referenceIndirect(Scene& scene, std::uint32_t size, std::uint32_t bounces, std::uint32_t spp,
+                                         double time = 0.0, std::uint32_t seed = 1) {
+    return referenceIndirectAt(scene, scene.camera(), size, bounces, spp, time, seed);
 }
 
 double meanOf(const std::vector<glm::vec4>& img) {
@@ -161,24 +168,6 @@ std::vector<glm::vec4> cacheIndirectSeeded(Scene& scene, const engine::world::Ca
     Renderer r(gpu_testing::context());
     for (int i = 0; i < frames; ++i) r.render(scene, camera, frameAt(size, 0.0, std::uint32_t(i)), l);
     return r.readback().indirect;
-}
-
-std::vector<glm::vec4> referenceIndirectAt(Scene& scene, const engine::world::CameraPreset& camera, std::uint32_t size,
-                                           std::uint32_t spp, std::uint32_t seed) {
-    auto run = [&](std::uint32_t b) {
-        Renderer r(gpu_testing::context());
-        LightingSettings l;
-        l.method = Method::Reference;
-        l.referenceFilter = engine::lighting::ReferenceFilter::PixelCentre;  // the cache is gathered at pixel centres
-        l.bounces = b;
-        l.seed = seed;
-        l.samplesPerFrame = 32;
-        for (std::uint32_t i = 0; i < spp / 32; ++i) r.render(scene, camera, frameAt(size, 0.0, i), l);
-        return r.readback().radiance;
-    };
-    std::vector<glm::vec4> with = run(1), without = run(0);
-    for (std::size_t i = 0; i < with.size(); ++i) with[i] -= without[i];
-    return with;
 }
 
 std::uint32_t envOr(const char* name, std::uint32_t fallback) {
@@ -586,7 +575,7 @@ TEST_F(IrradianceCache, DirectionErrorAveragesOutAcrossSeeds) {
     const std::uint32_t size = 48;
     const int frames = 48;
     const engine::world::CameraPreset camera = scene.camera();
-    std::vector<glm::vec4> ref = referenceIndirectAt(scene, camera, size, 1024, 1);
+    std::vector<glm::vec4> ref = referenceIndirectAt(scene, camera, size, 1, 1024, 0.0, 1);
     std::vector<glm::vec4> one = cacheIndirectSeeded(scene, camera, size, frames, 32, 1);
     std::vector<glm::vec4> two = cacheIndirectSeeded(scene, camera, size, frames, 32, 2);
     IndirectError e1 = indirectError(one, ref, size, size), e2 = indirectError(two, ref, size, size);
@@ -669,7 +658,7 @@ TEST_F(IrradianceCache, DISABLED_MeasureScenes) {
                     if (ok) return img;
                 }
             }
-            img = referenceIndirectAt(scene, camera, size, spp, seed);
+            img = referenceIndirectAt(scene, camera, size, 1, spp, 0.0, seed);
             if (!file.empty()) {
                 if (std::FILE* f = std::fopen(file.c_str(), "wb")) {
                     std::fwrite(img.data(), sizeof(glm::vec4), img.size(), f);

@@ -59,6 +59,19 @@ FrameSettings frame(std::uint32_t size) {
     return f;
 }
 
+// Point mode with one candidate and no reuse: with a single emitter the sample is deterministic
+// and W = 1, so the image is exactly the point light's (one shadow ray per pixel).
+FrameImages renderOnePointLightSample(Scene& scene) {
+    LightingSettings l;
+    l.method = Method::Ris;
+    l.area = false;
+    l.candidates = 1;
+    l.temporal = l.spatial = l.candidateVisibility = false;
+    Renderer r(gpu_testing::context());
+    r.render(scene, scene.camera(), frame(64), l);
+    return r.readback();
+}
+
 std::vector<glm::vec4> renderFrames(Renderer& r, Scene& scene, const LightingSettings& l, std::uint32_t size, int frames) {
     for (int i = 0; i < frames; ++i) r.render(scene, scene.camera(), frame(size), l);
     return r.readback().radiance;
@@ -151,14 +164,7 @@ TEST_F(Restir, PointModeMatchesAnalyticPointLight) {
     scene.grid.set(lamp, kLamp);
     scene.cameras.push_back(CameraPreset{"top", {24.0f, 40.0f, -6.0f}, {24.0f, 2.0f, 26.0f}, 60.0f});
     scene.grid.clearDirty();
-    LightingSettings l;
-    l.method = Method::Ris;
-    l.area = false;
-    l.candidates = 1;
-    l.temporal = l.spatial = l.candidateVisibility = false;
-    Renderer r(gpu_testing::context());
-    r.render(scene, scene.camera(), frame(64), l);
-    FrameImages img = r.readback();
+    FrameImages img = renderOnePointLightSample(scene);
 
     const glm::vec3 centre = glm::vec3(lamp) + 0.5f;
     const glm::vec3 le = scene.palette[kLamp].emittedRadiance();
@@ -217,14 +223,7 @@ TEST_F(Restir, PointModeLightsWallsBesideAFlushLamp) {
     scene.grid.set(lamp, kLamp);  // only its lower face is exposed
     scene.cameras.push_back(CameraPreset{"inside", {16.0f, 11.0f, 1.5f}, {16.0f, 11.0f, 30.0f}, 90.0f});
     scene.grid.clearDirty();
-    LightingSettings l;
-    l.method = Method::Ris;
-    l.area = false;
-    l.candidates = 1;
-    l.temporal = l.spatial = l.candidateVisibility = false;
-    Renderer r(gpu_testing::context());
-    r.render(scene, scene.camera(), frame(64), l);
-    FrameImages img = r.readback();
+    FrameImages img = renderOnePointLightSample(scene);
 
     // The area light by quadrature of its lower face (no occluder but the room itself, which the
     // lower face's cosine already excludes): the light each wall pixel should get.
