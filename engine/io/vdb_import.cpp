@@ -22,7 +22,7 @@
 #include "io/vdb_layout.h"
 #include "io/vdb_reader.h"
 #include "io/vdb_tree_stream.h"
-#include "world/scene_file.h"
+#include "world/world_limits.h"
 
 namespace engine::io {
 

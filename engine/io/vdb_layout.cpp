@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "world/scene_file.h"
+#include "world/world_limits.h"
 
 namespace engine::io::vdb_layout {
 

@@ -8,14 +8,9 @@
 
 #include "core/error.h"
 #include "world/scene.h"
+#include "world/world_limits.h"
 
 namespace engine::world {
-
-// Largest world a scene file may ask for: 2^25 top-grid cells (a 128 MiB top grid, the largest storage buffer lavapipe binds).
-inline constexpr std::uint64_t kMaxTopGridCells = 1ull << 25;
-inline constexpr int kMaxWorldExtent = 1 << 15;
-// Largest dynamic object model per axis: it is re-voxelised every frame it moves.
-inline constexpr int kMaxObjectExtent = 256;
 
 Result<Scene> loadSceneFile(const std::filesystem::path& path);
 // sourceName names the text in messages and is the folder that relative paths in it (a vdb

@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Prints one line per render of a fixed set: the world, the method and the MD5 of the linear EXR.
+# A refactor that must not change images runs this before and after and diffs the two lists:
+#   tools/render_fingerprints.sh build/release/tools/vox/vox > before.txt
+set -euo pipefail
+vox=${1:?usage: render_fingerprints.sh PATH/TO/vox}
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+worlds=(cornell letters apartments mountain dragon_city factory thin_wall sandbox)
+methods=(
+  "restir:--method restir --frames 3"
+  "restir-unbiased:--method restir-unbiased --frames 3"
+  "restir-point:--method restir --mode point --frames 2"
+  "ris:--method ris"
+  "uniform:--method uniform --shadow-rays 2"
+  "preview:--method preview"
+  "reference:--method reference --spp 2 --bounces 1"
+  "cache:--method restir --indirect cache --frames 3"
+)
+for world in "${worlds[@]}"; do
+  for entry in "${methods[@]}"; do
+    name=${entry%%:*}
+    read -r -a flags <<< "${entry#*:}"
+    "$vox" render "$world" --size 48x32 "${flags[@]}" -o "$out/$world-$name.png" --exr "$out/$world-$name.exr" > /dev/null 2>&1 \
+      || { echo "$world $name FAILED"; continue; }
+    echo "$world $name $(md5sum < "$out/$world-$name.exr" | cut -d' ' -f1)"
+  done
+done
