@@ -171,47 +171,7 @@ void Hud::drawStats(const HudStats& stats, HudControls& controls, HudActions& ac
         ImGui::End();
         return;
     }
-    const engine::lighting::Method methods[] = {engine::lighting::Method::Restir, engine::lighting::Method::Ris,
-                                                engine::lighting::Method::Uniform, engine::lighting::Method::BruteForce,
-                                                engine::lighting::Method::Reference, engine::lighting::Method::Preview};
-    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
-    if (ImGui::BeginCombo("method", engine::lighting::methodName(l.method))) {
-        for (engine::lighting::Method m : methods) {
-            if (ImGui::Selectable(engine::lighting::methodName(m), m == l.method)) l.method = m;
-        }
-        ImGui::EndCombo();
-    }
-    using engine::lighting::Method;
-    bool emitters = l.method != Method::Preview;
-    if (emitters) {
-        int mode = l.area ? 1 : 0;
-        ImGui::RadioButton("point", &mode, 0);
-        ImGui::SameLine();
-        ImGui::RadioButton("area", &mode, 1);
-        l.area = mode == 1;
-        ImGui::SameLine();
-        ImGui::Checkbox("brick lights", &l.brickLights);
-    }
-    if (l.method == Method::Restir || l.method == Method::Ris) {
-        int m = static_cast<int>(l.candidates);
-        ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
-        if (ImGui::SliderInt("M (candidates)", &m, 1, 64)) l.candidates = static_cast<std::uint32_t>(m);
-    }
-    if (l.method == Method::Restir) {
-        ImGui::Checkbox("temporal", &l.temporal);
-        ImGui::SameLine();
-        ImGui::Checkbox("spatial", &l.spatial);
-        ImGui::SameLine();
-        ImGui::Checkbox("unbiased", &l.unbiased);
-    }
-    if (l.method == Method::Reference) {
-        bool indirect = l.bounces > 0;
-        if (ImGui::Checkbox("indirect", &indirect)) l.bounces = indirect ? std::max(l.bounces, 2u) : 0u;
-    } else {
-        bool cache = l.indirect == engine::lighting::Indirect::Cache;
-        if (ImGui::Checkbox("irradiance cache", &cache))
-            l.indirect = cache ? engine::lighting::Indirect::Cache : engine::lighting::Indirect::None;
-    }
+    mLightingPanel.draw(l);
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
     ImGui::SliderFloat("exposure", &controls.exposure, 0.05f, 8.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
     glm::vec3 d = controls.sky.sunDirection;

@@ -12,6 +12,7 @@
 
 #include "game/camera_controller.h"
 #include "game/edit_tools.h"
+#include "game/lighting_panel.h"
 #include "game/undo_history.h"
 #include "lighting/lighting_settings.h"
 #include "render/gpu_world.h"
@@ -76,6 +77,8 @@ private:
     void drawStats(const HudStats& stats, HudControls& controls, HudActions& actions);
     void drawTools(const HudStats& stats, HudControls& controls);
     void drawKeys();
+
+    LightingPanel mLightingPanel;
 };
 
 }  // namespace game

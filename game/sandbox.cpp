@@ -29,6 +29,7 @@
 #include "io/image_io.h"
 #include "render/camera.h"
 #include "render/renderer.h"
+#include "scene/scene_lighting.h"
 #include "world/scene_file.h"
 
 namespace game {
@@ -199,11 +200,9 @@ engine::Status Sandbox::init() {
     mPresenter = std::make_unique<engine::gpu::Presenter>(*mCtx, mWindow->framebufferSize(), true);
     mRenderer = std::make_unique<engine::render::Renderer>(*mCtx);
     mHud.visible = mOptions.hud;
-    mLighting = mOptions.lighting;
-    if (mOptions.indirectFromScene) {
-        mLighting.indirect = mScene.indirect;
-        mLighting.cache = mScene.cache;
-    }
+    auto lighting = engine::scene::lightingFor(&mScene, mOptions.lighting);
+    if (!lighting) return lighting.error();
+    mLighting = *lighting;
 
     const auto& dev = mCtx->info();
     glm::ivec3 size = mScene.grid.sizeInVoxels();
@@ -317,7 +316,6 @@ void Sandbox::frame() {
         glm::uvec2 size = renderSize(framebuffer);
         settings.width = size.x;
         settings.height = size.y;
-        settings.frameIndex = static_cast<std::uint32_t>(mFrame);
         settings.exposure = mExposure;
         settings.timeSeconds = mTime;  // dynamic objects: the script clock when scripted, else wall clock
         mPresenter->setOverlay(ImGui::GetDrawData());

@@ -12,7 +12,7 @@
 
 #include <glm/glm.hpp>
 
-#include "lighting/lighting_settings.h"
+#include "lighting/lighting_knobs.h"
 
 namespace game {
 
@@ -29,8 +29,9 @@ struct PlayOptions {
     std::string editLogPath;    // write every edit, undo, redo, save and screenshot view here
     double autosaveMinutes = 3.0;  // 0: off
     std::size_t undoMegabytes = 256;
-    engine::lighting::LightingSettings lighting;  // switchable live in the HUD
-    bool indirectFromScene = true;  // no --indirect given: the world's [indirect] table decides
+    // The command line's lighting knobs, merged over the world's own settings
+    // (scene/scene_lighting.h: the same merge as vox render); switchable live in the HUD.
+    std::vector<engine::lighting::KnobValue> lighting;
     bool hud = true;
     bool captureCommand = false;  // `vox capture` exists: the no-display message points to it too
 };

@@ -36,7 +36,8 @@ struct IrradianceCacheSettings {
 
 const char* indirectName(Indirect i);
 Result<Indirect> parseIndirect(std::string_view name);
-// Checks the ranges the shaders rely on; the message names the knob as scene files spell it.
+// Checks the ranges the shaders rely on (the knob table's, lighting/lighting_knobs.h); the message
+// names the knob as scene files spell it.
 Status validate(const IrradianceCacheSettings& s);
 
 }  // namespace engine::lighting

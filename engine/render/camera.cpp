@@ -22,7 +22,7 @@ shared::FrameParams makeFrameParams(const world::CameraPreset& camera, const wor
     f.sunDirection = glm::vec4(glm::normalize(sky.sunDirection), 0.0f);
     f.sunRadiance = glm::vec4(sky.sunRadiance, 0.0f);
     f.skyRadiance = glm::vec4(sky.skyRadiance, 0.0f);
-    f.imageSize = glm::uvec4(settings.width, settings.height, settings.frameIndex, settings.seed);
+    f.imageSize = glm::uvec4(settings.width, settings.height, 0u, 0u);
     f.exposure = glm::vec4(settings.exposure, 0.0f, 0.0f, 0.0f);
     return f;
 }

@@ -12,8 +12,6 @@ namespace engine::render {
 struct FrameSettings {
     std::uint32_t width = 320;
     std::uint32_t height = 180;
-    std::uint32_t frameIndex = 0;
-    std::uint32_t seed = 1;
     float exposure = 1.0f;
     // Scene time in seconds: poses the dynamic objects (world/dynamic_grid.h) and times the
     // irradiance cache's fade. The renderer

@@ -21,7 +21,6 @@ FlythroughPlayer::Frame FlythroughPlayer::render(std::uint32_t frame, const Fram
     out.events = mFlythrough.timeline.applyThrough(frame, mFps, mScene);
     out.camera = mFlythrough.camera.at(out.time, "path");
     FrameSettings s = settings;
-    s.frameIndex = frame;
     s.timeSeconds = out.time;  // dynamic objects follow the same clock as the camera and events
     mRenderer.setFrameIndex(frame);
     out.result = mRenderer.render(mScene, out.camera, s, lighting);

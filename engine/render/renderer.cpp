@@ -155,10 +155,8 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
     const bool worldChanged = result.upload.bricks || result.upload.cells || result.upload.dynamicBytes ||
                               lightUpload.slots || lightUpload.aliveAndAlias;
 
-    FrameSettings frame = settings;
-    frame.frameIndex = mFrameIndex;
-    shared::FrameParams params = makeFrameParams(camera, scene.sky, frame);
-    shared::FrameParams prev = makeFrameParams(mPrevCamera.value_or(camera), scene.sky, frame);
+    shared::FrameParams params = makeFrameParams(camera, scene.sky, settings);
+    shared::FrameParams prev = makeFrameParams(mPrevCamera.value_or(camera), scene.sky, settings);
     params.prevCameraPosition = prev.cameraPosition;
     params.prevCameraForward = prev.cameraForward;
     params.prevCameraRight = prev.cameraRight;

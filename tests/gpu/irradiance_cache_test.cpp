@@ -76,10 +76,9 @@ std::vector<glm::vec4> cacheIndirect(Scene& scene, const LightingSettings& l, st
 }
 
 // The path tracer's indirect light: (bounces) minus (direct only), both converged.
-FrameSettings frameAt(std::uint32_t size, double time, std::uint32_t index) {
+FrameSettings frameAt(std::uint32_t size, double time) {
     FrameSettings f = frame(size);
     f.timeSeconds = time;
-    f.frameIndex = index;
     return f;
 }
 
@@ -112,7 +111,7 @@ std::vector<glm::vec4> referenceIndirectAt(Scene& scene, const engine::world::Ca
         l.bounces = b;
         l.seed = seed;
         l.samplesPerFrame = 32;
-        for (std::uint32_t i = 0; i < spp / 32; ++i) r.render(scene, camera, frameAt(size, time, i), l);
+        for (std::uint32_t i = 0; i < spp / 32; ++i) r.render(scene, camera, frameAt(size, time), l);
         return r.readback().radiance;
     };
     std::vector<glm::vec4> with = run(bounces), without = run(0);
@@ -166,7 +165,7 @@ std::vector<glm::vec4> cacheIndirectSeeded(Scene& scene, const engine::world::Ca
     if (maxRay > 0.0f) l.cache.maxRayLength = maxRay;
     l.seed = seed;
     Renderer r(gpu_testing::context());
-    for (int i = 0; i < frames; ++i) r.render(scene, camera, frameAt(size, 0.0, std::uint32_t(i)), l);
+    for (int i = 0; i < frames; ++i) r.render(scene, camera, frameAt(size, 0.0), l);
     return r.readback().indirect;
 }
 
@@ -188,7 +187,7 @@ TEST_F(IrradianceCache, OneBounceMatchesReference) {
     scene.objects.push_back(movingBall(0.5));
     const std::uint32_t size = 48;
     Renderer r(gpu_testing::context());
-    for (std::uint32_t i = 0; i < 96; ++i) r.render(scene, scene.camera(), frameAt(size, i / 60.0, i), cacheLighting(1));
+    for (std::uint32_t i = 0; i < 96; ++i) r.render(scene, scene.camera(), frameAt(size, i / 60.0), cacheLighting(1));
     std::vector<glm::vec4> cache = r.readback().indirect;
     std::vector<glm::vec4> ref = referenceIndirect(scene, size, 1, 2048, 95 / 60.0);
     const double refMean = meanOf(ref), cacheMean = meanOf(cache), err = mae(cache, ref);
@@ -367,8 +366,8 @@ TEST_F(IrradianceCache, DivideAndWinSelectsTheSameHitAsAFullRetrace) {
     // The crate slides to the wall over these frames: static rays cached early see it arrive.
     const double times[] = {0.0, 0.6, 1.2, 1.8, 2.4};
     for (std::uint32_t i = 0; i < 5; ++i) {
-        divide.render(a, a.camera("outside"), frameAt(64, times[i], i), ld);
-        full.render(b, b.camera("outside"), frameAt(64, times[i], i), lf);
+        divide.render(a, a.camera("outside"), frameAt(64, times[i]), ld);
+        full.render(b, b.camera("outside"), frameAt(64, times[i]), lf);
     }
     const auto& cd = divide.irradianceCache();
     const auto& cf = full.irradianceCache();
@@ -450,7 +449,7 @@ TEST_F(IrradianceCache, ObjectAgainstAWallDoesNotChangeTheFarSide) {
         Renderer r(gpu_testing::context());
         // The east view first, so east entries get the same slots (and random numbers) in both runs.
         for (std::uint32_t i = 0; i < 16; ++i) {
-            r.render(scene, scene.camera(i % 2 ? "west" : "east"), frameAt(48, 0.0, i), cacheLighting(1));
+            r.render(scene, scene.camera(i % 2 ? "west" : "east"), frameAt(48, 0.0), cacheLighting(1));
         }
         std::vector<std::uint32_t> filtered = readUints(r.irradianceCache().filtered());
         std::map<std::uint64_t, glm::uvec4> byKey;  // static face values by (voxel, face)
@@ -516,7 +515,7 @@ TEST_F(IrradianceCache, StableAwayFromAMovingObjectAndFadesAfterItLeaves) {
     double changeSum = 0.0, meanSum = 0.0;
     int measured = 0;
     for (std::uint32_t i = 0; i <= 60; ++i) {  // one second with the object moving
-        r.render(scene, scene.camera(), frameAt(48, i * dt, i), cacheLighting(1));
+        r.render(scene, scene.camera(), frameAt(48, i * dt), cacheLighting(1));
         if (i < 40) continue;  // let the static entries converge first
         auto images = r.readback();
         if (!prev.empty()) {
@@ -551,7 +550,7 @@ TEST_F(IrradianceCache, StableAwayFromAMovingObjectAndFadesAfterItLeaves) {
     std::uint32_t frames = 0;
     std::uint32_t before = 0;
     for (std::uint32_t i = 61; i < 120; ++i) {
-        r.render(scene, scene.camera(), frameAt(48, i * dt, i), cacheLighting(1));
+        r.render(scene, scene.camera(), frameAt(48, i * dt), cacheLighting(1));
         if (i == 61) before = dynamicEntries();
         if (dynamicEntries() == 0) break;
         ++frames;

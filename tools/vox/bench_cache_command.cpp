@@ -54,7 +54,6 @@ std::pair<engine::render::FrameResult, double> steadyCacheMs(engine::gpu::Contex
     std::vector<double> ms;
     engine::render::FrameResult last;
     for (std::uint32_t i = 0; i < frames; ++i) {
-        frame.frameIndex = i;
         last = r.render(scene, scene.camera(), frame, cacheLighting());
         if (i >= 2) ms.push_back(cacheMs(last) - last.passMsOf("cache.trace_static"));
     }
@@ -108,7 +107,6 @@ int runCacheBench(const CacheBenchOptions& o) {
         engine::render::FrameResult last;
         for (std::uint32_t i = 0; i < o.frames + 2; ++i) {
             frame.timeSeconds = i / 30.0;
-            frame.frameIndex = i;
             last = divide.render(*scene, scene->camera(), frame, lDivide);
             auto f = full.render(*scene, scene->camera(), frame, lFull);
             if (i < 2) continue;  // the first frames trace the static rays

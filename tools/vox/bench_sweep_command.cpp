@@ -76,11 +76,11 @@ engine::Result<std::vector<std::pair<std::string, LightingSettings>>> settingsOf
             if (mode != "point" && mode != "area") return engine::makeError("--modes: '{}' is not point or area", mode);
             for (const std::string& bricks : splitList(o.brickLights)) {
                 if (bricks != "on" && bricks != "off") return engine::makeError("--brick-lights: '{}' is not on or off", bricks);
-                LightingOptions lo;
-                lo.method = method;
-                lo.mode = mode;
-                lo.brickLights = bricks;
-                auto base = lightingSettings(lo);
+                const std::vector<engine::lighting::KnobValue> values{
+                    {engine::lighting::knobForOption("method"), method, "--methods"},
+                    {engine::lighting::knobForOption("mode"), mode, "--modes"},
+                    {engine::lighting::knobForOption("brick-lights"), bricks, "--brick-lights"}};
+                auto base = engine::lighting::mergeLighting(LightingSettings{}, values);
                 if (!base) return base.error();
                 std::string tag = fmt::format("{} {}{}", method, mode, bricks == "off" ? " voxels" : "");
                 if (base->method == Method::Uniform) {
@@ -100,6 +100,9 @@ engine::Result<std::vector<std::pair<std::string, LightingSettings>>> settingsOf
                 }
             }
         }
+    }
+    for (const auto& [tag, l] : out) {  // --candidates and --rays may leave the knobs' ranges
+        if (engine::Status valid = engine::lighting::validate(l); !valid) return engine::makeError("{}: {}", tag, valid.error().message);
     }
     return out;
 }
@@ -131,7 +134,7 @@ engine::Result<std::vector<std::pair<std::string, LightingSettings>>> indirectSe
             l.cache.directions = k->front();
             l.cache.raysPerUpdate = std::min(l.cache.raysPerUpdate, l.cache.directions);
             l.cache.bounces = o.indirectBounces;
-            if (engine::Status valid = engine::lighting::validate(l.cache); !valid)
+            if (engine::Status valid = engine::lighting::validate(l); !valid)
                 return engine::makeError("--indirect {}: {}", item, valid.error().message);
             out.push_back({fmt::format("indirect cache K={}", k->front()), l});
         } else {

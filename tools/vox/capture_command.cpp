@@ -180,6 +180,10 @@ int runCapture(const CaptureOptions& o) {
     if (!scene) return fail(scene.error());
     auto lighting = lightingSettings(o.lighting, &*scene);
     if (!lighting) return fail(lighting.error());
+    if (o.lighting.showSettings) {
+        std::fputs(settingsText(*lighting).c_str(), stdout);
+        return 0;
+    }
     fs::path pathFile = scene->sourcePath;
     if (!o.path.empty()) {
         auto p = resolvePathFile(o.path);

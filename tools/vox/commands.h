@@ -53,6 +53,8 @@ engine::Result<engine::world::Scene> loadWorld(const std::string& nameOrPath);
 // "640x360" -> {640, 360}; an error names the option.
 engine::Result<glm::uvec2> parseSize(const std::string& text, const char* option);
 engine::Result<glm::vec3> parseVec3(const std::string& text, const char* option);
+// --show-settings: loads the world, merges its lighting with the options and prints the result.
+int showSettings(const std::string& world, const LightingOptions& options);
 // One line on stderr, exit code 1.
 int fail(const engine::Error& error);
 

@@ -26,13 +26,11 @@ void addPlayCommand(CLI::App& app, int& exitCode) {
     cmd->add_flag("!--no-hud", o->hud, "Start with the HUD hidden (Tab shows it)");
     addLightingOptions(*cmd, *lighting);
     cmd->callback([o, size, lighting, cmd, &exitCode] {
-        auto settings = lightingSettings(*lighting);
-        if (!settings) {
-            exitCode = fail(settings.error());
+        if (lighting->showSettings) {
+            exitCode = showSettings(o->world, *lighting);
             return;
         }
-        o->lighting = *settings;
-        o->indirectFromScene = !lighting->indirect.has_value();
+        o->lighting = lightingOverrides(*lighting);
         o->captureCommand = !cmd->get_parent()->get_subcommands([](const CLI::App* a) { return a->get_name() == "capture"; }).empty();
         auto parsed = parseSize(*size, "--size");
         if (!parsed) {

@@ -27,6 +27,10 @@ int runRender(const RenderOptions& o) {
     if (!scene) return fail(scene.error());
     auto lighting = lightingSettings(o.lighting, &*scene);
     if (!lighting) return fail(lighting.error());
+    if (o.lighting.showSettings) {
+        std::fputs(settingsText(*lighting).c_str(), stdout);
+        return 0;
+    }
     engine::world::CameraPreset camera;
     if (!o.pos.empty()) {
         auto pos = parseVec3(o.pos, "--pos");
@@ -84,7 +88,6 @@ int runRender(const RenderOptions& o) {
     engine::render::FrameResult frame;
     std::vector<engine::render::FrameResult> results;
     for (std::uint32_t i = 0; i < frames; ++i) {
-        settings.frameIndex = i;
         frame = renderer.render(*scene, camera, settings, l);
         results.push_back(frame);
         if (frames > 4 && (i + 1) % std::max<std::uint32_t>(1, frames / 10) == 0)

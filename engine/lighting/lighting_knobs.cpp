@@ -1,0 +1,276 @@
+#include "lighting/lighting_knobs.h"
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <type_traits>
+
+#include <fmt/format.h>
+
+namespace engine::lighting {
+namespace {
+
+// Accessors for knobs stored in a field of LightingSettings or of its `cache` member.
+template <typename T>
+double knobValue(T v) {
+    if constexpr (std::is_enum_v<T>) return static_cast<double>(static_cast<std::underlying_type_t<T>>(v));
+    else return static_cast<double>(v);
+}
+template <typename T>
+T fromKnobValue(double v) {
+    if constexpr (std::is_enum_v<T>) return static_cast<T>(static_cast<std::underlying_type_t<T>>(v));
+    else if constexpr (std::is_same_v<T, bool>) return v != 0.0;
+    else return static_cast<T>(v);
+}
+template <auto Field>
+double getField(const LightingSettings& s) {
+    return knobValue(s.*Field);
+}
+template <auto Field>
+void setField(LightingSettings& s, double v) {
+    s.*Field = fromKnobValue<std::remove_cvref_t<decltype(s.*Field)>>(v);
+}
+template <auto Field>
+double getCacheField(const LightingSettings& s) {
+    return knobValue(s.cache.*Field);
+}
+template <auto Field>
+void setCacheField(LightingSettings& s, double v) {
+    s.cache.*Field = fromKnobValue<std::remove_cvref_t<decltype(s.cache.*Field)>>(v);
+}
+
+
+bool isRestir(const LightingSettings& s) { return s.method == Method::Restir; }
+bool resamples(const LightingSettings& s) { return s.method == Method::Restir || s.method == Method::Ris; }
+bool samplesEmitters(const LightingSettings& s) { return s.method != Method::Preview; }
+bool isUniform(const LightingSettings& s) { return s.method == Method::Uniform; }
+bool isReference(const LightingSettings& s) { return s.method == Method::Reference; }
+bool usesCache(const LightingSettings& s) { return s.indirect == Indirect::Cache && s.method != Method::Reference; }
+
+// --method: the methods by name, and restir-unbiased for ReSTIR with the unbiased normalisation.
+Status parseMethodKnob(LightingSettings& s, std::string_view text) {
+    bool unbiased = text == "restir-unbiased";
+    auto m = parseMethod(unbiased ? "restir" : text);
+    if (!m) return m.error();
+    s.method = *m;
+    if (unbiased) s.unbiased = true;
+    return {};
+}
+std::string formatMethodKnob(const LightingSettings& s) { return methodName(s.method); }
+
+// --spatial TAPS,RADIUS, or 0 / off.
+Status parseSpatialKnob(LightingSettings& s, std::string_view text) {
+    if (text == "0" || text == "off") {
+        s.spatial = false;
+        return {};
+    }
+    unsigned taps = 0;
+    float radius = 0.0f;
+    char extra = 0;
+    std::string t(text);
+    if (std::sscanf(t.c_str(), "%u,%f%c", &taps, &radius, &extra) != 2 || taps > 16 || !(radius > 0.0f && radius <= 256.0f))
+        return makeError("spatial: expected TAPS,RADIUS with taps in 0..16 and radius in (0, 256], or 0; got '{}'", text);
+    s.spatial = taps > 0;
+    s.spatialTaps = taps;
+    s.spatialRadius = radius;
+    return {};
+}
+std::string formatSpatialKnob(const LightingSettings& s) {
+    return s.spatial ? fmt::format("{},{}", s.spatialTaps, s.spatialRadius) : "0";
+}
+Status checkSpatialKnob(const LightingSettings& s) {
+    if (s.spatial && (s.spatialTaps < 1 || s.spatialTaps > 16 || !(s.spatialRadius > 0.0f && s.spatialRadius <= 256.0f)))
+        return makeError("spatial: taps must be in 1..16 and radius in (0, 256], not {},{}", s.spatialTaps, s.spatialRadius);
+    return {};
+}
+
+double getBudgetMb(const LightingSettings& s) { return static_cast<double>(s.cache.budgetBytes) / 1048576.0; }
+void setBudgetMb(LightingSettings& s, double mb) { s.cache.budgetBytes = static_cast<std::uint64_t>(mb * 1048576.0); }
+
+constexpr std::array<std::string_view, 6> kMethods{"preview", "restir", "ris", "uniform", "bruteforce", "reference"};
+constexpr std::array<std::string_view, 3> kIndirect{"none", "cache", "reference"};
+constexpr std::array<std::string_view, 2> kModes{"point", "area"};
+constexpr std::array<std::string_view, 2> kSampling{"uniform", "power"};
+constexpr std::array<std::string_view, 2> kPixelFilters{"box", "centre"};
+
+using S = LightingSettings;
+using C = IrradianceCacheSettings;
+
+const Knob kLighting[] = {
+    {.name = "method",
+     .help = "Lighting: restir | restir-unbiased | ris | uniform | bruteforce | reference | preview",
+     .kind = KnobKind::Custom,
+     .choices = kMethods,
+     .parse = parseMethodKnob,
+     .format = formatMethodKnob},
+    {.name = "seed", .help = "Random seed", .kind = KnobKind::Count, .min = 0, .max = 4294967295.0,
+     .get = getField<&S::seed>, .set = setField<&S::seed>},
+    {.name = "indirect",
+     .help = "Indirect light: none | cache (voxel-face irradiance cache) | reference (path-traced bounces); a scene's "
+             "[indirect] mode, else none",
+     .kind = KnobKind::Choice, .choices = kIndirect, .get = getField<&S::indirect>, .set = setField<&S::indirect>},
+};
+
+const Knob kEmitters[] = {
+    {.name = "mode", .help = "Emitters as point or area lights", .kind = KnobKind::Choice, .choices = kModes,
+     .get = getField<&S::area>, .set = setField<&S::area>, .relevant = samplesEmitters},
+    {.name = "sampling", .help = "Candidate emitters: uniform or by power (alias table)", .kind = KnobKind::Choice,
+     .choices = kSampling, .get = getField<&S::byPower>, .set = setField<&S::byPower>, .relevant = samplesEmitters},
+    {.name = "brick_lights", .help = "Uniform emissive bricks as one light", .kind = KnobKind::Switch,
+     .get = getField<&S::brickLights>, .set = setField<&S::brickLights>, .relevant = samplesEmitters},
+};
+
+// Voxel ReSTIR (Bitterli et al.; candidates also drive RIS).
+const Knob kRestir[] = {
+    {.name = "candidates", .help = "ReSTIR/RIS candidates per pixel (M)", .kind = KnobKind::Count, .min = 1, .max = 1024,
+     .get = getField<&S::candidates>, .set = setField<&S::candidates>, .relevant = resamples},
+    {.name = "temporal", .help = "Temporal reuse", .kind = KnobKind::Switch, .get = getField<&S::temporal>,
+     .set = setField<&S::temporal>, .relevant = isRestir},
+    {.name = "spatial", .help = "Spatial reuse taps,radius in pixels (0 = off)", .kind = KnobKind::Custom,
+     .relevant = isRestir, .parse = parseSpatialKnob, .format = formatSpatialKnob, .check = checkSpatialKnob},
+    {.name = "unbiased", .help = "Visibility-aware 1/Z normalisation (restir-unbiased)", .kind = KnobKind::Switch,
+     .get = getField<&S::unbiased>, .set = setField<&S::unbiased>, .relevant = isRestir},
+    {.name = "temporal_cap", .help = "Last frame's M is capped at this times M", .kind = KnobKind::Real, .min = 1, .max = 1000,
+     .get = getField<&S::temporalCap>, .set = setField<&S::temporalCap>, .relevant = isRestir},
+    {.name = "depth_tolerance", .help = "Reuse between pixels whose depths agree within this fraction", .kind = KnobKind::Real,
+     .min = 0, .max = 10, .get = getField<&S::depthTolerance>, .set = setField<&S::depthTolerance>, .relevant = isRestir},
+    {.name = "candidate_visibility", .help = "Shadow-test the chosen candidate before reuse", .kind = KnobKind::Switch,
+     .get = getField<&S::candidateVisibility>, .set = setField<&S::candidateVisibility>, .relevant = isRestir},
+};
+
+const Knob kBaselines[] = {
+    {.name = "shadow_rays", .help = "uniform: light samples (and shadow rays) per pixel", .kind = KnobKind::Count, .min = 1,
+     .max = 4096, .get = getField<&S::shadowRays>, .set = setField<&S::shadowRays>, .relevant = isUniform},
+};
+
+const Knob kReference[] = {
+    {.name = "bounces", .help = "reference: indirect bounces (0 = direct light only)", .kind = KnobKind::Count, .min = 0,
+     .max = 64, .get = getField<&S::bounces>, .set = setField<&S::bounces>, .relevant = isReference},
+    {.name = "pixel_filter",
+     .help = "reference: box (jittered over the pixel) | centre (one ray through the pixel centre, the pixel the other "
+             "methods shade)",
+     .kind = KnobKind::Choice, .choices = kPixelFilters, .get = getField<&S::referenceFilter>,
+     .set = setField<&S::referenceFilter>, .relevant = isReference},
+};
+
+// The voxel-face irradiance cache (Cosin Ayerbe et al.).
+const Knob kCache[] = {
+    {.name = "directions", .help = "cache: K directions per voxel face", .kind = KnobKind::Count, .min = 16, .max = 256,
+     .get = getCacheField<&C::directions>, .set = setCacheField<&C::directions>, .relevant = usesCache},
+    {.name = "rays", .help = "cache: of the K, rays per face per frame, a divisor of K", .kind = KnobKind::Count, .min = 1,
+     .max = 256, .get = getCacheField<&C::raysPerUpdate>, .set = setCacheField<&C::raysPerUpdate>, .relevant = usesCache},
+    {.name = "bounces", .help = "cache: 1 = one bounce (the paper); more reads the cache at each hit", .kind = KnobKind::Count,
+     .min = 1, .max = 8, .get = getCacheField<&C::bounces>, .set = setCacheField<&C::bounces>, .relevant = usesCache},
+    {.name = "alpha", .help = "cache: temporal blend factor", .kind = KnobKind::Real, .min = 0.001, .max = 1,
+     .get = getCacheField<&C::alpha>, .set = setCacheField<&C::alpha>, .relevant = usesCache},
+    {.name = "neighbourhood", .help = "cache: N^3 around visible dynamic voxels: 0, 3 or 5", .kind = KnobKind::Count,
+     .min = 0, .max = 5, .get = getCacheField<&C::neighbourhood>, .set = setCacheField<&C::neighbourhood>,
+     .relevant = usesCache},
+    {.name = "max_ray", .help = "cache: ray length in voxels, also an edit's reach", .kind = KnobKind::Real, .min = 1,
+     .max = 500, .get = getCacheField<&C::maxRayLength>, .set = setCacheField<&C::maxRayLength>, .relevant = usesCache},
+    {.name = "filter", .help = "cache: 3^3 filter over neighbouring faces", .kind = KnobKind::Switch,
+     .get = getCacheField<&C::filter>, .set = setCacheField<&C::filter>, .relevant = usesCache},
+    {.name = "fade", .help = "cache: seconds a dynamic entry takes to fade after its last update", .kind = KnobKind::Real,
+     .min = 0.001, .max = 60, .get = getCacheField<&C::fadeSeconds>, .set = setCacheField<&C::fadeSeconds>,
+     .relevant = usesCache},
+    {.name = "budget_mb", .help = "cache: memory budget in MiB; least recently seen evicted", .kind = KnobKind::Real,
+     .min = 1, .max = 16384, .get = getBudgetMb, .set = setBudgetMb, .relevant = usesCache},
+};
+
+const KnobGroup kGroups[] = {
+    {"lighting", "", kLighting}, {"emitters", "", kEmitters},   {"restir", "", kRestir},
+    {"baselines", "", kBaselines}, {"reference", "", kReference}, {"cache", "cache-", kCache},
+};
+
+// Rules between knobs that no single range expresses.
+Status checkCombinations(const LightingSettings& s) {
+    if (s.cache.directions % std::max(s.cache.raysPerUpdate, 1u) != 0)
+        return makeError("cache rays ({}) must divide cache directions ({})", s.cache.raysPerUpdate, s.cache.directions);
+    if (s.cache.neighbourhood != 0 && s.cache.neighbourhood != 3 && s.cache.neighbourhood != 5)
+        return makeError("cache neighbourhood must be 0, 3 or 5, not {}", s.cache.neighbourhood);
+    return {};
+}
+
+void normalise(LightingSettings& s) {
+    if (s.method == Method::Ris) {  // RIS is ReSTIR's first pass alone
+        s.temporal = false;
+        s.spatial = false;
+        s.candidateVisibility = false;
+    }
+    if (s.indirect == Indirect::Reference) {
+        // The path tracer with bounces is the indirect reference; it replaces the direct method.
+        s.method = Method::Reference;
+        s.bounces = std::max(s.bounces, 1u);
+    }
+}
+
+Status applyValues(LightingSettings& s, std::span<const KnobValue> values) {
+    for (const KnobValue& v : values) {
+        if (Status ok = setKnob(*v.knob, s, v.text); !ok) return makeError("{}: {}", v.where, ok.error().message);
+    }
+    return {};
+}
+
+}  // namespace
+
+std::span<const KnobGroup> knobGroups() { return kGroups; }
+
+const KnobGroup& knobGroup(std::string_view name) {
+    for (const KnobGroup& g : kGroups) {
+        if (g.name == name) return g;
+    }
+    return kGroups[0];
+}
+
+std::string knobOption(const KnobGroup& group, const Knob& knob) {
+    std::string option = fmt::format("--{}{}", group.cliPrefix, knob.name);
+    std::replace(option.begin(), option.end(), '_', '-');
+    return option;
+}
+
+const Knob* knobForOption(std::string_view option) {
+    for (const KnobGroup& g : kGroups) {
+        for (const Knob& k : g.knobs) {
+            if (knobOption(g, k) == fmt::format("--{}", option)) return &k;
+        }
+    }
+    return nullptr;
+}
+
+Status validate(const LightingSettings& s) {
+    for (const KnobGroup& g : kGroups) {
+        for (const Knob& k : g.knobs) {
+            if (Status ok = checkKnob(k, s); !ok) return ok;
+        }
+    }
+    return checkCombinations(s);
+}
+
+Status validate(const IrradianceCacheSettings& c) {
+    LightingSettings s;
+    s.cache = c;
+    return validate(s);
+}
+
+Result<LightingSettings> mergeLighting(LightingSettings base, std::span<const KnobValue> values) {
+    if (Status ok = applyValues(base, values); !ok) return ok.error();
+    normalise(base);
+    if (Status ok = validate(base); !ok) return ok.error();
+    return base;
+}
+
+Result<LightingSettings> mergeLighting(std::span<const std::vector<KnobValue>> layers) {
+    LightingSettings s;
+    for (const std::vector<KnobValue>& layer : layers) {
+        if (Status ok = applyValues(s, layer); !ok) return ok.error();
+    }
+    return mergeLighting(s, {});
+}
+
+std::vector<KnobValue> knobValues(const KnobGroup& group, const LightingSettings& s, std::string_view where) {
+    std::vector<KnobValue> out;
+    for (const Knob& k : group.knobs) out.push_back({&k, knobText(k, s), std::string(where)});
+    return out;
+}
+
+}  // namespace engine::lighting

@@ -1,0 +1,20 @@
+// The lighting a scene asks for (its [indirect] table) merged with the overrides of an entry
+// point: the one path from a scene file and a command line to LightingSettings, taken by
+// `vox render`, `vox capture` and `vox play` alike.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "core/error.h"
+#include "lighting/lighting_knobs.h"
+#include "world/scene.h"
+
+namespace engine::scene {
+
+// The scene's settings as knob values (its [indirect] mode and cache knobs).
+std::vector<lighting::KnobValue> sceneLightingValues(const world::Scene& scene);
+// Defaults, then the scene's values (when given), then `overrides`; normalised and validated.
+Result<lighting::LightingSettings> lightingFor(const world::Scene* scene, std::span<const lighting::KnobValue> overrides);
+
+}  // namespace engine::scene

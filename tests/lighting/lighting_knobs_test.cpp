@@ -1,0 +1,100 @@
+// The one settings path: knob tables, the merge of a scene's settings with overrides, and the
+// validation every entry point shares.
+#include <gtest/gtest.h>
+
+#include "lighting/lighting_knobs.h"
+#include "scene/scene_lighting.h"
+#include "world/scene.h"
+
+using namespace engine::lighting;
+using engine::Status;
+
+namespace {
+
+KnobValue option(std::string_view name, std::string text) {
+    const Knob* k = knobForOption(name);
+    EXPECT_NE(k, nullptr) << name;
+    return {k, std::move(text), std::string("--") + std::string(name)};
+}
+
+}  // namespace
+
+TEST(LightingKnobs, MergingNothingGivesTheDefaults) {
+    auto merged = mergeLighting(std::span<const std::vector<KnobValue>>{});
+    ASSERT_TRUE(merged.ok()) << merged.error().message;
+    EXPECT_EQ(*merged, LightingSettings{});
+    EXPECT_TRUE(validate(LightingSettings{}).ok());
+}
+
+TEST(LightingKnobs, EveryKnobReadsBackWhatItWrites) {
+    LightingSettings s;
+    s.method = Method::Uniform;
+    s.cache.alpha = 0.07f;
+    s.cache.budgetBytes = 96ull << 20;
+    s.spatialRadius = 12.5f;
+    for (const KnobGroup& g : knobGroups()) {
+        for (const Knob& k : g.knobs) {
+            LightingSettings copy = s;
+            ASSERT_TRUE(setKnob(k, copy, knobText(k, s)).ok()) << k.name;
+            EXPECT_EQ(copy, s) << k.name << " = " << knobText(k, s);
+        }
+    }
+}
+
+TEST(LightingKnobs, OutOfRangeIsRefusedTheSameWayFromTextAndFromCode) {
+    LightingSettings s;
+    Status fromText = setKnob(*knobForOption("candidates"), s, "0");
+    ASSERT_FALSE(fromText.ok());
+    s.candidates = 0;  // as a bench or the HUD would set it
+    Status fromCode = validate(s);
+    ASSERT_FALSE(fromCode.ok());
+    EXPECT_EQ(fromText.error().message, fromCode.error().message);
+    EXPECT_NE(fromText.error().message.find("candidates must be in 1..1024"), std::string::npos);
+
+    LightingSettings c;
+    c.cache.raysPerUpdate = 7;  // not a divisor of 128
+    EXPECT_FALSE(validate(c).ok());
+    EXPECT_FALSE(mergeLighting(c, {}).ok());
+    EXPECT_FALSE(setKnob(*knobForOption("cache-alpha"), c, "nan").ok());
+    EXPECT_FALSE(setKnob(*knobForOption("mode"), c, "spot").ok());
+}
+
+// `vox play --cache-rays 8` without --indirect lost --cache-rays: the sandbox replaced the cache
+// settings with the scene's after the command line had been read.
+TEST(LightingKnobs, CommandLineOverridesTheSceneKnobByKnob) {
+    engine::world::Scene scene;
+    scene.indirect = Indirect::Cache;
+    scene.cache.alpha = 0.1f;
+    std::vector<KnobValue> cli{option("cache-rays", "8")};
+    auto s = engine::scene::lightingFor(&scene, cli);
+    ASSERT_TRUE(s.ok()) << s.error().message;
+    EXPECT_EQ(s->indirect, Indirect::Cache);  // the scene's
+    EXPECT_EQ(s->cache.alpha, 0.1f);          // the scene's
+    EXPECT_EQ(s->cache.raysPerUpdate, 8u);    // the command line's
+
+    cli.push_back(option("indirect", "none"));
+    auto none = engine::scene::lightingFor(&scene, cli);
+    ASSERT_TRUE(none.ok());
+    EXPECT_EQ(none->indirect, Indirect::None);
+}
+
+TEST(LightingKnobs, MethodsImplyTheirSettings) {
+    auto ris = mergeLighting(LightingSettings{}, std::vector<KnobValue>{option("method", "ris")});
+    ASSERT_TRUE(ris.ok());
+    EXPECT_FALSE(ris->temporal);
+    EXPECT_FALSE(ris->spatial);
+    auto unbiased = mergeLighting(LightingSettings{}, std::vector<KnobValue>{option("method", "restir-unbiased")});
+    ASSERT_TRUE(unbiased.ok());
+    EXPECT_EQ(unbiased->method, Method::Restir);
+    EXPECT_TRUE(unbiased->unbiased);
+    auto reference = mergeLighting(LightingSettings{}, std::vector<KnobValue>{option("indirect", "reference")});
+    ASSERT_TRUE(reference.ok());
+    EXPECT_EQ(reference->method, Method::Reference);
+    EXPECT_GE(reference->bounces, 1u);
+}
+
+TEST(LightingKnobs, ErrorsNameWhereTheValueCameFrom) {
+    auto bad = mergeLighting(LightingSettings{}, std::vector<KnobValue>{option("spatial", "5")});
+    ASSERT_FALSE(bad.ok());
+    EXPECT_EQ(bad.error().message.rfind("--spatial: ", 0), 0u) << bad.error().message;
+}
