@@ -13,7 +13,7 @@ struct FrameParams {
     vec4 sunDirection;    // xyz unit vector towards the sun
     vec4 sunRadiance;     // rgb
     vec4 skyRadiance;     // rgb, ambient and background
-    uvec4 imageSize;      // x width, y height, z frame index, w seed
+    uvec4 imageSize;      // x width, y height, zw unused (randomness is seeded from RestirParams)
     vec4 exposure;        // x exposure multiplier
     // The previous frame's camera, for motion vectors (equal to the current one on frame 0).
     vec4 prevCameraPosition;
