@@ -2,12 +2,7 @@
 # vox capture through the command line: the same command twice writes byte-identical frames and
 # the same CSV apart from its timing columns (*_ms); a preview slice equals the whole capture's
 # frames exactly; every output is there; bad path files give one line naming file and line.
-set -u
-vox="$1"
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+source "$(dirname "$0")/test_setup.sh"
 
 cat > "$tmp/yard.toml" <<'TOML'
 [world]

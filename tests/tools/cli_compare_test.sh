@@ -1,12 +1,7 @@
 #!/usr/bin/env bash
 # `vox compare A B`: one clear line on stderr and a non-zero exit for bad input; for good input
 # the metrics it prints (zero against itself, MAE/MSE symmetric), a heat map and a JSON record.
-set -u
-vox="$1"
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+source "$(dirname "$0")/test_setup.sh"
 
 expect_error() {  # expect_error PATTERN -- command...
     local pattern="$1"; shift 2

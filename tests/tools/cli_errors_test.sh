@@ -1,11 +1,7 @@
 #!/usr/bin/env bash
 # Bad input to `vox` gives one line on stderr that names the file (and line), a non-zero exit,
 # and no crash; a good render writes a PNG.
-set -u
-vox="$1"
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-failures=0
+source "$(dirname "$0")/test_setup.sh"
 
 expect_error() {  # expect_error PATTERN -- command...
     local pattern="$1"; shift 2

@@ -1,12 +1,7 @@
 #!/usr/bin/env bash
 # One settings path: `vox render`, `vox capture` and `vox play` merge a world's lighting with the
 # same flags into the same settings, and refuse out-of-range values with the same message.
-set -u
-vox="$1"
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+source "$(dirname "$0")/test_setup.sh"
 
 # A world whose [indirect] table asks for the cache with its own alpha.
 cp "$(dirname "$0")/../../worlds/cornell.toml" "$tmp/lit.toml"
