@@ -29,7 +29,7 @@
 #include "io/image_io.h"
 #include "render/camera.h"
 #include "render/renderer.h"
-#include "world/scene_file.h"
+#include "scene/scene_file.h"
 
 namespace game {
 
@@ -151,7 +151,7 @@ engine::Status Sandbox::init() {
         if (!script) return script.error();
         mScript = std::move(*script);
     }
-    auto path = world::resolveWorldPath(mOptions.world.empty() ? "sandbox" : mOptions.world);
+    auto path = engine::scene::resolveWorldPath(mOptions.world.empty() ? "sandbox" : mOptions.world);
     if (!path) return path.error();
     mWorldPath = *path;
     auto scene = mStore->load(mWorldPath);

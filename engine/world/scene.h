@@ -2,6 +2,7 @@
 // lighting it (camera presets, sun and sky), and the dynamic objects moving through it.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -12,9 +13,12 @@
 #include "world/brick_grid.h"
 #include "world/dynamic_grid.h"
 #include "world/dynamic_object.h"
+#include "world/generator_record.h"
 #include "world/material.h"
 
 namespace engine::world {
+
+struct Flythrough;
 
 struct CameraPreset {
     std::string name;
@@ -44,6 +48,11 @@ struct Scene {
     // updateDynamicObjects from the frame's scene time.
     std::vector<DynamicObject> objects;
     DynamicGrid dynamic;
+    // What the scene file said, kept so it can be written back (engine/scene/scene_file.h): the
+    // generators that built `grid`, in order, and the file's [path] (camera keys and events), if
+    // any. An edited grid no longer matches its generators; a save writes a payload instead.
+    std::vector<GeneratorRecord> generators;
+    std::shared_ptr<const Flythrough> path;
 
     // The named preset, the first one for an empty name, or a view of the whole world.
     CameraPreset camera(std::string_view name = {}) const;

@@ -15,10 +15,11 @@
 #include "game/world_store.h"
 #include "io/vdb_import.h"
 #include "world/random_worlds.h"
-#include "world/scene_file.h"
+#include "scene/scene_file.h"
 #include "world/world_edits.h"
 
 using namespace engine::world;
+using namespace engine::scene;
 namespace fs = std::filesystem;
 
 namespace {
