@@ -29,8 +29,8 @@
 #include "io/image_io.h"
 #include "render/camera.h"
 #include "render/renderer.h"
+#include "scene/scene_file.h"
 #include "scene/scene_lighting.h"
-#include "world/scene_file.h"
 
 namespace game {
 
@@ -152,7 +152,7 @@ engine::Status Sandbox::init() {
         if (!script) return script.error();
         mScript = std::move(*script);
     }
-    auto path = world::resolveWorldPath(mOptions.world.empty() ? "sandbox" : mOptions.world);
+    auto path = engine::scene::resolveWorldPath(mOptions.world.empty() ? "sandbox" : mOptions.world);
     if (!path) return path.error();
     mWorldPath = *path;
     auto scene = mStore->load(mWorldPath);

@@ -10,8 +10,8 @@
 
 #include "io/image_io.h"
 #include "io/vdb_export.h"
-#include "world/scene_file.h"
-#include "world/scene_file_writer.h"
+#include "scene/generators/vdb_keys.h"
+#include "scene/scene_file.h"
 
 namespace game {
 
@@ -68,9 +68,10 @@ public:
 
         // rule "ids": our own file's material grid, mapped by name onto the palette listed above
         // it, which is the same palette in the same order; so every id comes back unchanged.
-        std::string generator = fmt::format("[[generator]]\ntype = \"vdb\"\nsource = {}\nrule = \"ids\"\n",
-                                            engine::world::tomlString(payload.filename().string()));
-        std::string text = engine::world::sceneTextWithPalette(scene, generator, kSaveMarker);
+        // Everything else (objects with their generators, [indirect], [path]) is written as loaded.
+        std::vector<engine::world::GeneratorRecord> generators{
+            engine::scene::vdbPayloadGenerator(payload.filename().string(), /*ids=*/true)};
+        std::string text = engine::scene::sceneText(scene, {.headerComment = kSaveMarker, .generators = &generators});
         s = engine::io::writeAtomically(sceneFile, [&](const fs::path& temp) -> engine::Status {
             {
                 std::ofstream out(temp, std::ios::binary);
@@ -93,7 +94,7 @@ public:
     }
 
     engine::Result<engine::world::Scene> load(const fs::path& sceneFile) override {
-        return engine::world::loadSceneFile(sceneFile);
+        return engine::scene::loadSceneFile(sceneFile);
     }
 
     bool isSave(const fs::path& sceneFile) const override {

@@ -1,5 +1,6 @@
-// Saving and loading the sandbox's worlds. A save is a scene file (palette, camera presets,
-// sky; world/scene_file_writer.h) plus the world's voxels as an OpenVDB file beside it
+// Saving and loading the sandbox's worlds. A save is a scene file (palette, dynamic objects,
+// camera presets, sky, [indirect], [path]; scene/scene_file.h) plus the world's voxels as an
+// OpenVDB file beside it
 // (io/vdb_export.h, layout in docs/VDB.md) that the scene file names in a `vdb` generator with
 // rule "ids", so `vox render SAVE.toml` and `vox play SAVE.toml` both open it and other tools
 // read the .vdb directly. Loading a save gives back the saved world voxel for voxel (cell

@@ -2,16 +2,17 @@
 
 #include <string>
 
+#include <fmt/format.h>
+
+#include "scene/indirect_keys.h"
+
 namespace engine::scene {
 
 std::vector<lighting::KnobValue> sceneLightingValues(const world::Scene& scene) {
-    lighting::LightingSettings s;
-    s.indirect = scene.indirect;
-    s.cache = scene.cache;
-    const std::string where = scene.sourcePath.empty() ? scene.name : scene.sourcePath;
-    std::vector<lighting::KnobValue> values = lighting::knobValues(lighting::knobGroup("cache"), s, where);
-    for (const lighting::Knob& k : lighting::knobGroup("lighting").knobs) {
-        if (k.name == "indirect") values.push_back({&k, knobText(k, s), where});
+    const std::string where = fmt::format("{} [indirect]", scene.sourcePath.empty() ? scene.name : scene.sourcePath);
+    std::vector<lighting::KnobValue> values;
+    for (const auto& [key, text] : scene.indirect) {
+        if (const lighting::Knob* k = indirectKnob(key)) values.push_back({k, text, where});
     }
     return values;
 }

@@ -16,6 +16,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "world/brick_grid.h"
+#include "world/generator_record.h"
 
 namespace engine::world {
 
@@ -23,6 +24,12 @@ struct ObjectKey {
     double time = 0.0;             // seconds
     glm::dvec3 position{0.0};      // world position of the model centre, voxel units
     glm::dquat rotation{1.0, 0.0, 0.0, 0.0};
+    // The rotation as the scene file gave it, so a writer gives back the very same quaternion:
+    // none, yaw/pitch/roll degrees in `angles`, or an axis in `angles` and `angle` degrees.
+    enum class Given { None, YawPitchRoll, AxisAngle };
+    Given given = Given::None;
+    glm::dvec3 angles{0.0};
+    double angle = 0.0;
 };
 
 // Yaw about +Y, then pitch about +X, then roll about +Z (applied roll first), in degrees.
@@ -56,6 +63,7 @@ private:
 struct DynamicObject {
     std::string name;
     BrickGrid model{glm::ivec3(8)};
+    std::vector<GeneratorRecord> generators;  // what built `model`, for writing the scene back
     glm::ivec3 modelSize{8};  // the model's extent in voxels (the grid rounds it up to bricks)
     ObjectPath path;
     // Set when a flythrough's timeline has a `dynamic` start event for this object (Timeline::bind):

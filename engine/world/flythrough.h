@@ -1,5 +1,5 @@
 // Flythrough: a camera path plus a timeline of world events, read from the [path] table of a
-// scene file or a path file (world/flythrough_file.h, format in worlds/README.md). Played at a
+// scene file or a path file (scene/path_file.h, format in worlds/README.md). Played at a
 // frame rate, frame i shows time i / fps: its camera and world state are pure functions of the
 // file, the frame rate and i.
 #pragma once

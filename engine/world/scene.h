@@ -2,19 +2,23 @@
 // lighting it (camera presets, sun and sky), and the dynamic objects moving through it.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
 
-#include "lighting/irradiance_cache_settings.h"
 #include "world/brick_grid.h"
 #include "world/dynamic_grid.h"
 #include "world/dynamic_object.h"
+#include "world/generator_record.h"
 #include "world/material.h"
 
 namespace engine::world {
+
+struct Flythrough;
 
 struct CameraPreset {
     std::string name;
@@ -37,13 +41,19 @@ struct Scene {
     BrickGrid grid{glm::ivec3(8)};
     std::vector<CameraPreset> cameras;
     SkyLight sky;
-    // [indirect]: how the world wants its indirect light; the command line overrides it.
-    lighting::Indirect indirect = lighting::Indirect::None;
-    lighting::IrradianceCacheSettings cache;
+    // [indirect]: how the world wants its indirect light, as key = value text in the form the
+    // lighting knobs read (scene/indirect_keys.h checks them on load; the command line
+    // overrides them, scene/scene_lighting.h). The world layer does not interpret them.
+    std::vector<std::pair<std::string, std::string>> indirect;
     // Moving objects and this frame's voxelisation of them (world/dynamic_grid.h), posed by
     // updateDynamicObjects from the frame's scene time.
     std::vector<DynamicObject> objects;
     DynamicGrid dynamic;
+    // What the scene file said, kept so it can be written back (engine/scene/scene_file.h): the
+    // generators that built `grid`, in order, and the file's [path] (camera keys and events), if
+    // any. An edited grid no longer matches its generators; a save writes a payload instead.
+    std::vector<GeneratorRecord> generators;
+    std::shared_ptr<const Flythrough> path;
 
     // The named preset, the first one for an empty name, or a view of the whole world.
     CameraPreset camera(std::string_view name = {}) const;

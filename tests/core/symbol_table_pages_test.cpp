@@ -15,7 +15,7 @@
 #include "io/vdb_export.h"
 #include "io/vdb_import.h"
 #include "io/vdb_test_util.h"
-#include "world/scene_file.h"
+#include "scene/scene_file.h"
 
 using namespace engine;
 
@@ -56,7 +56,7 @@ TEST(SymbolTablePages, ReleasesLibopenvdbSymbolTablesAndOpenVdbStillWorks) {
     // Everything the linker resolved still resolves: export, import, and OpenVDB's own reader.
     vox_test::ScratchDir dir("pages");
     auto scene =
-        world::loadSceneFile(std::filesystem::path(VOX_SOURCE_DIR) / "worlds" / "cornell.toml");
+        engine::scene::loadSceneFile(std::filesystem::path(VOX_SOURCE_DIR) / "worlds" / "cornell.toml");
     ASSERT_TRUE(scene.ok()) << scene.error().message;
     const auto file = dir / "cornell.vdb";
     Status s = io::exportVdb(*scene, file, {});

@@ -19,9 +19,10 @@
 #include "io/image_io.h"
 #include "render/renderer.h"
 #include "world/ray_traversal.h"
-#include "world/scene_file.h"
+#include "scene/scene_file.h"
 
 using namespace engine::world;
+using namespace engine::scene;
 
 namespace {
 

@@ -15,10 +15,14 @@
 #include "game/world_store.h"
 #include "io/vdb_import.h"
 #include "world/random_worlds.h"
-#include "world/scene_file.h"
+#include "scene/scene_equality.h"
+#include "scene/scene_file.h"
+#include "scene/scene_lighting.h"
+#include "world/flythrough.h"
 #include "world/world_edits.h"
 
 using namespace engine::world;
+using namespace engine::scene;
 namespace fs = std::filesystem;
 
 namespace {
@@ -300,6 +304,69 @@ TEST(WorldStore, NeverOverwritesAHandWrittenSceneFile) {
     std::string first;
     std::getline(in, first);
     EXPECT_EQ(first, "[world]");
+}
+
+TEST(WorldStore, SavedDragonCityKeepsItsDragonPathAndIndirectSettings) {
+    // dragon_city as shipped, plus the lighting settings and flythrough a user may give it.
+    fs::path original = fs::path(VOX_SOURCE_DIR) / "worlds" / "dragon_city.toml";
+    std::string text = bytesOf(original);
+    ASSERT_EQ(text.find("[indirect]"), std::string::npos) << "dragon_city has its own [indirect] now: drop this one";
+    ASSERT_EQ(text.find("[path]"), std::string::npos) << "dragon_city has its own [path] now: drop this one";
+    text += R"(
+[indirect]
+mode = "cache"
+rays = 8
+alpha = 0.05
+filter = false
+
+[path]
+fps = 24
+
+[[path.key]]
+time = 0.0
+position = [96, 14, -20]
+target = [96, 26, 90]
+
+[[path.key]]
+time = 4.0
+position = [150, 60, -30]
+target = [104, 20, 96]
+fov = 50
+
+[[path.event]]
+time = 1.0
+type = "light"
+material = "shop"
+on = false
+)";
+    TempDir dir;
+    fs::path handWritten = dir.path() / "dragon_city.toml";
+    std::ofstream(handWritten) << text;
+    auto store = game::makeWorldStore();
+    auto scene = store->load(handWritten);
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    ASSERT_EQ(scene->objects.size(), 1u);
+
+    fs::path file = dir.path() / "saves" / "dragon_city.toml";
+    ASSERT_TRUE(store->save(*scene, file).ok());
+    auto saved = store->load(file);
+    ASSERT_TRUE(saved.ok()) << saved.error().message << "\n" << bytesOf(file);
+    EXPECT_EQ(engine::scene::test::sceneDifference(*scene, *saved), "") << bytesOf(file);
+    ASSERT_EQ(saved->objects.size(), 1u);
+    EXPECT_EQ(saved->objects[0].name, "dragon");
+    EXPECT_GT(saved->objects[0].model.solidVoxels(), 0u);
+    EXPECT_EQ(saved->objects[0].path.keys().size(), 5u);
+    ASSERT_TRUE(saved->path);
+    EXPECT_EQ(saved->path->camera.keys().size(), 2u);
+    EXPECT_EQ(saved->path->timeline.events().size(), 1u);
+    auto lighting = engine::scene::lightingFor(&*saved, {});
+    ASSERT_TRUE(lighting.ok()) << lighting.error().message;
+    EXPECT_EQ(lighting->indirect, engine::lighting::Indirect::Cache);
+    EXPECT_EQ(lighting->cache.raysPerUpdate, 8u);
+    EXPECT_FALSE(lighting->cache.filter);
+    // Its voxels come from the payload now, not from the city's generators.
+    EXPECT_EQ(saved->generators.size(), 1u);
+    EXPECT_EQ(saved->generators[0].type, "vdb");
 }
 
 TEST(Autosave, DueAfterTheIntervalOnlyWhenTheWorldChanged) {

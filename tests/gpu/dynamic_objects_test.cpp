@@ -9,10 +9,11 @@
 #include "gpu/gpu_test_context.h"
 #include "render/renderer.h"
 #include "world/random_worlds.h"
-#include "world/scene_file.h"
+#include "scene/scene_file.h"
 #include "world/scene_trace.h"
 
 using namespace engine::world;
+using namespace engine::scene;
 using engine::render::FrameImages;
 using engine::render::FrameSettings;
 using engine::render::Renderer;

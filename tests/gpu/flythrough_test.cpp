@@ -7,10 +7,11 @@
 
 #include "gpu/gpu_test_context.h"
 #include "render/flythrough_player.h"
-#include "world/flythrough_file.h"
-#include "world/scene_file.h"
+#include "scene/path_file.h"
+#include "scene/scene_file.h"
 
 using namespace engine::world;
+using namespace engine::scene;
 using engine::lighting::LightingSettings;
 using engine::lighting::Method;
 using engine::render::FlythroughPlayer;

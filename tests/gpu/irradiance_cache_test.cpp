@@ -13,11 +13,12 @@
 #include "io/image_io.h"
 #include "metrics/image_metrics.h"
 #include "render/renderer.h"
-#include "world/scene_file.h"
+#include "scene/scene_file.h"
 #include "world/scene_trace.h"
 #include "world/world_edits.h"
 
 using namespace engine::world;
+using namespace engine::scene;
 using engine::lighting::Indirect;
 using engine::lighting::LightingSettings;
 using engine::lighting::Method;

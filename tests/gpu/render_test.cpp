@@ -8,9 +8,10 @@
 #include "io/image_io.h"
 #include "render/renderer.h"
 #include "world/random_worlds.h"
-#include "world/scene_file.h"
+#include "scene/scene_file.h"
 
 using namespace engine::world;
+using namespace engine::scene;
 using engine::render::FrameImages;
 using engine::render::FrameSettings;
 using engine::render::Renderer;

@@ -12,10 +12,11 @@
 #include "gpu/gpu_test_context.h"
 #include "gpu/sample_stats.h"
 #include "render/renderer.h"
-#include "world/scene_file.h"
+#include "scene/scene_file.h"
 #include "world/world_edits.h"
 
 using namespace engine::world;
+using namespace engine::scene;
 using engine::lighting::LightingSettings;
 using engine::lighting::Method;
 using engine::render::FrameImages;

@@ -11,7 +11,7 @@
 #include "io/vdb_info.h"
 #include "vdb_samples.h"
 #include "vdb_test_util.h"
-#include "world/scene_file.h"
+#include "scene/scene_file.h"
 
 using namespace engine;
 using vox_test::ScratchDir;
@@ -289,14 +289,14 @@ name = "c"
 position = [0, 0, -40]
 target = [16, 16, 16]
 )";
-    auto scene = world::loadSceneFile(dir / "scene.toml");
+    auto scene = engine::scene::loadSceneFile(dir / "scene.toml");
     ASSERT_TRUE(scene.ok()) << scene.error().message;
     EXPECT_EQ(scene->palette.size(), 2u) << "the scene's stone is reused, not duplicated";
     EXPECT_EQ(scene->grid.get({16, 16, 16}), *scene->palette.find("stone"));
     EXPECT_NEAR(double(scene->grid.solidVoxels()) / (4.0 / 3.0 * std::numbers::pi * 216.0), 1.0, 0.05);
 
     std::ofstream(dir / "bad.toml") << "[world]\nsize = [8, 8, 8]\n[[generator]]\ntype = \"vdb\"\nsource = \"nope.vdb\"\n";
-    auto bad = world::loadSceneFile(dir / "bad.toml");
+    auto bad = engine::scene::loadSceneFile(dir / "bad.toml");
     ASSERT_FALSE(bad.ok());
     EXPECT_NE(bad.error().message.find("bad.toml:3: "), std::string::npos) << bad.error().message;
     EXPECT_NE(bad.error().message.find("nope.vdb: cannot open"), std::string::npos) << bad.error().message;

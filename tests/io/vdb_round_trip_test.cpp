@@ -9,7 +9,8 @@
 #include "io/vdb_export.h"
 #include "io/vdb_import.h"
 #include "vdb_test_util.h"
-#include "world/scene_file.h"
+#include "scene/generators/vdb_keys.h"
+#include "scene/scene_file.h"
 #include "world/world_edits.h"
 #include "world/world_info.h"
 
@@ -44,7 +45,7 @@ TEST(VdbRoundTrip, EveryShippedWorldComesBackExactly) {
     int worlds = 0;
     for (const auto& entry : fs::directory_iterator(fs::path(VOX_SOURCE_DIR) / "worlds")) {
         if (entry.path().extension() != ".toml") continue;
-        auto scene = world::loadSceneFile(entry.path());
+        auto scene = engine::scene::loadSceneFile(entry.path());
         ASSERT_TRUE(scene.ok()) << scene.error().message;
         const fs::path file = dir / (entry.path().stem().string() + ".vdb");
         io::VdbExportReport exported;
@@ -68,12 +69,13 @@ TEST(VdbRoundTrip, EveryShippedWorldComesBackExactly) {
 TEST(VdbRoundTrip, ImportedSceneFileLoadsTheSameWorld) {
     // What `vox import -o WORLD.toml` writes: a scene file naming the .vdb payload.
     ScratchDir dir("toml");
-    auto scene = world::loadSceneFile(fs::path(VOX_SOURCE_DIR) / "worlds" / "sandbox.toml");
+    auto scene = engine::scene::loadSceneFile(fs::path(VOX_SOURCE_DIR) / "worlds" / "sandbox.toml");
     ASSERT_TRUE(scene.ok());
     ASSERT_TRUE(io::exportVdb(*scene, dir / "sandbox.vdb").ok());
-    std::string text = world::sceneFileText(*scene, "test", "[[generator]]\ntype = \"vdb\"\nsource = \"sandbox.vdb\"\n");
+    std::vector<world::GeneratorRecord> payload{engine::scene::vdbPayloadGenerator("sandbox.vdb", false)};
+    std::string text = engine::scene::sceneText(*scene, {.headerComment = "test", .generators = &payload});
     std::ofstream(dir / "sandbox.toml") << text;
-    auto loaded = world::loadSceneFile(dir / "sandbox.toml");
+    auto loaded = engine::scene::loadSceneFile(dir / "sandbox.toml");
     ASSERT_TRUE(loaded.ok()) << loaded.error().message;
     EXPECT_TRUE(loaded->grid == scene->grid);
     EXPECT_TRUE(loaded->palette == scene->palette);
@@ -84,7 +86,7 @@ TEST(VdbRoundTrip, ImportedSceneFileLoadsTheSameWorld) {
 
 TEST(VdbRoundTrip, HomogeneousCellsAreTilesAndBricksAreLeaves) {
     ScratchDir dir("tiles");
-    auto scene = world::loadSceneFile(fs::path(VOX_SOURCE_DIR) / "worlds" / "cornell.toml");
+    auto scene = engine::scene::loadSceneFile(fs::path(VOX_SOURCE_DIR) / "worlds" / "cornell.toml");
     ASSERT_TRUE(scene.ok());
     io::VdbExportReport report;
     ASSERT_TRUE(io::exportVdb(*scene, dir / "c.vdb", {}, &report).ok());
@@ -140,7 +142,7 @@ TEST(VdbRoundTrip, EmptyAndOddSizedWorldsComeBack) {
 
 TEST(VdbRoundTrip, FailedExportLeavesThePreviousFileIntact) {
     ScratchDir dir("atomic");
-    auto scene = world::loadSceneFile(fs::path(VOX_SOURCE_DIR) / "worlds" / "cornell.toml");
+    auto scene = engine::scene::loadSceneFile(fs::path(VOX_SOURCE_DIR) / "worlds" / "cornell.toml");
     ASSERT_TRUE(scene.ok());
     const fs::path file = dir / "keep.vdb";
     std::ofstream(file) << "previous contents";

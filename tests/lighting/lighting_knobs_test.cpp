@@ -63,8 +63,7 @@ TEST(LightingKnobs, OutOfRangeIsRefusedTheSameWayFromTextAndFromCode) {
 // settings with the scene's after the command line had been read.
 TEST(LightingKnobs, CommandLineOverridesTheSceneKnobByKnob) {
     engine::world::Scene scene;
-    scene.indirect = Indirect::Cache;
-    scene.cache.alpha = 0.1f;
+    scene.indirect = {{"mode", "cache"}, {"alpha", "0.1"}};
     std::vector<KnobValue> cli{option("cache-rays", "8")};
     auto s = engine::scene::lightingFor(&scene, cli);
     ASSERT_TRUE(s.ok()) << s.error().message;

@@ -10,11 +10,12 @@
 #include "world/menger_generator.h"
 #include "world/mountain_generator.h"
 #include "world/scattered_lights_generator.h"
-#include "world/scene_file.h"
+#include "scene/scene_file.h"
 #include "world/text_generator.h"
 #include "world/world_edits.h"
 
 using namespace engine::world;
+using namespace engine::scene;
 
 namespace {
 

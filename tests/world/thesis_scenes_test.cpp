@@ -8,9 +8,10 @@
 #include <string>
 
 #include "lighting/emitter_list.h"
-#include "world/scene_file.h"
+#include "scene/scene_file.h"
 
 using namespace engine::world;
+using namespace engine::scene;
 
 namespace {
 

@@ -23,7 +23,7 @@
 #include "progress_line.h"
 #include "render/flythrough_player.h"
 #include "shared/brick_grid.h"
-#include "world/flythrough_file.h"
+#include "scene/path_file.h"
 
 namespace vox {
 
@@ -190,7 +190,7 @@ int runCapture(const CaptureOptions& o) {
         if (!p) return fail(p.error());
         pathFile = *p;
     }
-    auto fly = engine::world::loadFlythroughFile(pathFile);
+    auto fly = engine::scene::loadFlythroughFile(pathFile);
     if (!fly) return fail(fly.error());
     const double fps = o.fps > 0.0 ? o.fps : fly->fps;
     const std::uint32_t count = fly->frameCount(fps);

@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "commands.h"
+#include "core/quoted_string.h"
 #include "io/image_io.h"
 #include "metrics/heat_map.h"
 #include "metrics/image_metrics.h"
@@ -35,19 +36,6 @@ engine::Result<engine::io::ExrImage> loadExr(const std::string& path) {
         return engine::Error{message};
     }
     return image;
-}
-
-std::string jsonString(const std::string& s) {
-    std::string out = "\"";
-    for (char c : s) {
-        if (c == '"' || c == '\\') out += '\\';
-        if (static_cast<unsigned char>(c) < 0x20) {
-            out += fmt::format("\\u{:04x}", int(c));
-            continue;
-        }
-        out += c;
-    }
-    return out + "\"";
 }
 
 // JSON has no NaN or infinity; null says "not a number" without breaking parsers.
@@ -111,12 +99,12 @@ int runCompare(const CompareOptions& o) {
             "{{\n  \"image\": {},\n  \"reference\": {},\n  \"width\": {},\n  \"height\": {},\n  "
             "\"mae\": {},\n"
             "  \"mse\": {},\n  \"rmae\": {},\n  \"rmae_epsilon\": {},\n  \"non_finite_pixels\": {}",
-            jsonString(o.image), jsonString(o.reference), a.width, a.height,
+            engine::quotedString(o.image), engine::quotedString(o.reference), a.width, a.height,
             jsonNumber(errors->mae), jsonNumber(errors->mse), jsonNumber(errors->rmae),
             kRmaeEpsilon, errors->nonFinitePixels);
         if (!o.heatmap.empty())
             text += fmt::format(",\n  \"heatmap\": {{\"path\": {}, \"error\": {}, \"max\": {}}}",
-                                jsonString(o.heatmap), jsonString(o.heatmapError),
+                                engine::quotedString(o.heatmap), engine::quotedString(o.heatmapError),
                                 jsonNumber(map.maxValue));
         text += "\n}\n";
         std::error_code ec;

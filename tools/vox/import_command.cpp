@@ -6,7 +6,8 @@
 #include "io/vdb_import.h"
 #include "io/image_io.h"
 #include "vdb_options.h"
-#include "world/scene_file.h"
+#include "scene/generators/vdb_keys.h"
+#include "scene/scene_file.h"
 #include "world/world_info.h"
 
 namespace vox {
@@ -51,12 +52,13 @@ int runImport(const std::string& input, const std::string& output, bool dryRun, 
     engine::Status s = engine::io::exportVdb(*scene, payload);
     if (!s) return fail(s.error());
     if (ext == ".toml") {
-        std::string generator = fmt::format("[[generator]]\ntype = \"vdb\"\nsource = \"{}\"\n", payload.filename().string());
-        std::string text = engine::world::sceneFileText(
-            *scene, fmt::format("Imported by `vox import` from {}.\nVoxels and palette live in {} (voxengine's VDB layout, docs/VDB.md);\n"
-                                "a [[material]] defined here with the same name overrides the payload's.",
-                                fs::path(input).filename().string(), payload.filename().string()),
-            generator);
+        std::vector<engine::world::GeneratorRecord> generators{
+            engine::scene::vdbPayloadGenerator(payload.filename().string(), /*ids=*/false)};
+        std::string comment = fmt::format(
+            "Imported by `vox import` from {}.\nVoxels and palette live in {} (voxengine's VDB layout, docs/VDB.md);\n"
+            "a [[material]] defined here with the same name overrides the payload's.",
+            fs::path(input).filename().string(), payload.filename().string());
+        std::string text = engine::scene::sceneText(*scene, {.headerComment = comment, .generators = &generators});
         s = engine::io::writeAtomically(out, [&](const fs::path& temp) -> engine::Status {
             std::FILE* f = std::fopen(temp.c_str(), "wb");
             if (!f) return engine::makeError("{}: cannot create file", output);

@@ -2,6 +2,7 @@
 #include <filesystem>
 
 #include "commands.h"
+#include "scene/scene_lighting.h"
 #include "render/irradiance_cache.h"
 #include "io/vdb_info.h"
 #include "shared/brick_grid.h"
@@ -50,10 +51,15 @@ void addInfoCommand(CLI::App& app, int& exitCode) {
                     static_cast<unsigned long long>(std::max<std::uint64_t>(pages, 1)), shared::BRICK_PAGE_BRICKS,
                     double(shared::BRICK_PAGE_WORDS) * 4.0 / (1 << 20));
         // The cache's memory follows what the camera sees, not the world: state its rate and bound.
-        const engine::lighting::IrradianceCacheSettings& cache = scene->cache;
+        auto lighting = engine::scene::lightingFor(&*scene, {});
+        if (!lighting) {
+            exitCode = fail(lighting.error());
+            return;
+        }
+        const engine::lighting::IrradianceCacheSettings& cache = lighting->cache;
         const std::uint64_t perVoxel = engine::render::IrradianceCache::bytesPerSlot(cache);
         std::printf("indirect     %s; irradiance cache %.2f KiB per visible surface voxel (K=%u), budget %.0f MiB = %llu voxels\n",
-                    engine::lighting::indirectName(scene->indirect), double(perVoxel) / 1024.0, cache.directions,
+                    engine::lighting::indirectName(lighting->indirect), double(perVoxel) / 1024.0, cache.directions,
                     double(cache.budgetBytes) / 1048576.0, static_cast<unsigned long long>(cache.budgetBytes / perVoxel));
     });
 }

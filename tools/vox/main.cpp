@@ -7,16 +7,16 @@
 #include "core/log.h"
 #include "core/symbol_table_pages.h"
 #include "io/vdb_import.h"
-#include "world/scene_file.h"
+#include "scene/scene_file.h"
 
 namespace vox {
 
 engine::Result<engine::world::Scene> loadWorld(const std::string& nameOrPath) {
     // A .vdb stands for itself: imported with the default options.
     if (std::filesystem::path(nameOrPath).extension() == ".vdb") return engine::io::importVdb(nameOrPath);
-    auto path = engine::world::resolveWorldPath(nameOrPath.empty() ? "sandbox" : nameOrPath);
+    auto path = engine::scene::resolveWorldPath(nameOrPath.empty() ? "sandbox" : nameOrPath);
     if (!path) return path.error();
-    return engine::world::loadSceneFile(*path);
+    return engine::scene::loadSceneFile(*path);
 }
 
 engine::Result<glm::uvec2> parseSize(const std::string& text, const char* option) {

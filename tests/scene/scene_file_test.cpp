@@ -4,10 +4,11 @@
 #include <string>
 
 #include "world/generators.h"
-#include "world/scene_file.h"
+#include "scene/scene_file.h"
 #include "world/world_info.h"
 
 using namespace engine::world;
+using namespace engine::scene;
 
 namespace {
 

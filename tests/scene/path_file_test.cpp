@@ -1,13 +1,14 @@
-#include "world/flythrough_file.h"
+#include "scene/path_file.h"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <string>
 
-#include "world/scene_file.h"
+#include "scene/scene_file.h"
 
 using namespace engine::world;
+using namespace engine::scene;
 using engine::Status;
 
 namespace {

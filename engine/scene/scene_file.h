@@ -1,0 +1,40 @@
+// Scene files (worlds/*.toml): [world], palette, generators (or a payload), dynamic objects,
+// camera presets, [sky], [indirect] and [path]. The format is documented in worlds/README.md.
+//
+// This layer sits above world/, io/ and lighting/: it reads files into a world::Scene, running
+// the generators of scene/generator_registry.h, and writes a Scene back with the same registry.
+// Errors name the file and line: "worlds/city.toml:12: unknown generator 'terain'".
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/error.h"
+#include "world/scene.h"
+#include "world/world_limits.h"
+
+namespace engine::scene {
+
+Result<world::Scene> loadSceneFile(const std::filesystem::path& path);
+// sourceName names the text in messages and is the folder that relative paths in it (a vdb
+// generator's source) are resolved against.
+Result<world::Scene> loadSceneText(std::string_view text, std::string_view sourceName);
+
+struct SceneWriteOptions {
+    std::string_view headerComment;  // "# " before each line, above everything
+    // Write these instead of scene.generators (a save whose grid was edited names a payload).
+    const std::vector<world::GeneratorRecord>* generators = nullptr;
+};
+
+// The one writer: every table, so that loading the text gives back the same scene (palette,
+// voxels, objects, cameras, sky, indirect settings, path). Floats in their shortest exact form.
+std::string sceneText(const world::Scene& scene, const SceneWriteOptions& options = {});
+
+// Resolves a world argument: an existing path, or a name in the worlds/ folder
+// ("sandbox" -> worlds/sandbox.toml), looked up next to the working directory and the source
+// tree the binary was built from.
+Result<std::filesystem::path> resolveWorldPath(std::string_view nameOrPath);
+
+}  // namespace engine::scene

@@ -1,0 +1,272 @@
+// The scene file reader of scene/scene_file.h: the tables in file order, generators through the
+// registry (scene/generator_registry.h), [indirect] through scene/indirect_keys.h and [path]
+// through scene/path_file.h.
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "scene/generator_registry.h"
+#include "scene/indirect_keys.h"
+#include "scene/path_table.h"
+#include "scene/scene_file.h"
+#include "scene/toml_reader.h"
+#include "world/dynamic_grid.h"
+
+namespace engine::scene {
+
+namespace {
+
+using world::Scene;
+
+class SceneReader {
+public:
+    explicit SceneReader(std::string source) : mSource(std::move(source)) {}
+
+    template <typename... Args>
+    [[noreturn]] void fail(const toml::node* at, fmt::format_string<Args...> f,
+                           Args&&... args) const {
+        scene::fail(mSource, at, f, std::forward<Args>(args)...);
+    }
+
+    Scene read(const toml::table& root) {
+        Scene scene;
+        scene.sourcePath = mSource;
+        KeyReader top(mSource, root);
+        readWorld(top, scene);
+        for (const toml::node& m : arrayOfTables(top, "material")) readMaterial(m, scene);
+        for (const toml::node& g : arrayOfTables(top, "generator"))
+            readGenerator(g, scene, scene.generators);
+        for (const toml::node& o : arrayOfTables(top, "object")) readObject(o, scene);
+        for (const toml::node& c : arrayOfTables(top, "camera")) readCamera(c, scene);
+        if (const toml::node* n = top.node("sky")) readSky(*n, scene);
+        if (const toml::node* n = top.node("indirect")) {
+            const toml::table* t = n->as_table();
+            if (!t) fail(n, "'indirect' must be a table");
+            KeyReader keys(mSource, *t);
+            readIndirect(keys, *n, scene);
+        }
+        if (const toml::node* n = top.node("path")) {
+            const toml::table* t = n->as_table();
+            if (!t) fail(n, "'path' must be a table ([path])");
+            scene.path = std::make_shared<const world::Flythrough>(readPath(*t, mSource));
+        }
+        scene.grid.clearDirty();
+        world::updateDynamicObjects(scene.objects, scene.dynamic, 0.0, 0.0);
+        return scene;
+    }
+
+private:
+    // [[name]] tables; none when the key is absent.
+    const toml::array& arrayOfTables(KeyReader& top, std::string_view name) {
+        static const toml::array kNone;
+        const toml::node* n = top.node(name);
+        if (!n) return kNone;
+        const toml::array* a = n->as_array();
+        if (!a) fail(n, "'{}' must be an array of tables ([[{}]])", name, name);
+        return *a;
+    }
+
+    void readWorld(KeyReader& top, Scene& scene) {
+        const toml::node* n = top.node("world");
+        if (!n || !n->as_table()) fail(&top.raw(), "missing [world] table");
+        KeyReader keys(mSource, *n->as_table());
+        scene.name = keys.string("name", "untitled");
+        scene.voxelSize = static_cast<float>(keys.number("voxel_size", 1.0));
+        if (!(scene.voxelSize > 0.0f && scene.voxelSize <= 1e6f))
+            fail(keys.node("voxel_size"), "'voxel_size' must be in (0, 1e6]");
+        glm::ivec3 size = keys.ivec3("size", {}, true);
+        if (glm::any(glm::lessThan(size, glm::ivec3(1))) ||
+            glm::any(glm::greaterThan(size, glm::ivec3(world::kMaxWorldExtent))))
+            fail(keys.node("size"), "world size {}x{}x{} is outside 1..{} voxels per axis", size.x,
+                 size.y, size.z, world::kMaxWorldExtent);
+        glm::u64vec3 cells = glm::u64vec3((size + 7) / 8);
+        if (cells.x * cells.y * cells.z > world::kMaxTopGridCells)
+            fail(keys.node("size"),
+                 "world size {}x{}x{} needs {} top-grid cells, more than the limit of {}", size.x,
+                 size.y, size.z, cells.x * cells.y * cells.z, world::kMaxTopGridCells);
+        scene.grid = world::BrickGrid(size);
+    }
+
+    void readMaterial(const toml::node& node, Scene& scene) {
+        const toml::table* t = node.as_table();
+        if (!t) fail(&node, "each [[material]] must be a table");
+        KeyReader m(mSource, *t);
+        world::Material mat;
+        mat.name = m.string("name");
+        if (scene.palette.find(mat.name)) fail(&node, "material '{}' is defined twice", mat.name);
+        mat.albedo = m.vec3("albedo", mat.albedo);
+        mat.emissionColor = m.vec3("emission", glm::vec3(1.0f));
+        mat.emissionStrength = static_cast<float>(m.number("strength", 0.0));
+        if (glm::any(glm::lessThan(mat.albedo, glm::vec3(0.0f))) ||
+            glm::any(glm::greaterThan(mat.albedo, glm::vec3(1.0f))))
+            fail(&node, "material '{}': albedo must lie in [0, 1]", mat.name);
+        if (mat.emissionStrength < 0.0f ||
+            glm::any(glm::lessThan(mat.emissionColor, glm::vec3(0.0f))))
+            fail(&node, "material '{}': emission must not be negative", mat.name);
+        if (!mat.emissive()) {
+            mat.emissionColor = glm::vec3(0.0f);
+            mat.emissionStrength = 0.0f;
+        }
+        if (!scene.palette.add(mat))
+            fail(&node, "too many materials (at most {})", world::kMaxMaterials - 1);
+    }
+
+    // Parses one generator table through the registry, runs it on scene.grid and records it.
+    void readGenerator(const toml::node& node, Scene& scene,
+                       std::vector<world::GeneratorRecord>& records) {
+        const toml::table* t = node.as_table();
+        if (!t) fail(&node, "each [[generator]] must be a table");
+        GeneratorKeys g(mSource, *t, scene);
+        std::string type = g.string("type");
+        if (type == "bricks") {
+            // Saves by vox play before it wrote .vdb; the reader is gone (docs/SANDBOX.md says
+            // how to convert one).
+            fail(g.node("type"),
+                 "generator 'bricks' (the .bricks payload of older vox play saves) is no longer "
+                 "supported; "
+                 "saves are .vdb now (docs/SANDBOX.md, Saves)");
+        }
+        const GeneratorEntry* entry = findGenerator(type);
+        if (!entry)
+            fail(g.node("type"), "unknown generator '{}' (known: {})", type, knownGeneratorTypes());
+        world::GeneratorRecord record{type, entry->parse(g)};
+        if (Status s = entry->run(record.params, scene); !s) fail(&node, "{}", s.error().message);
+        records.push_back(std::move(record));
+    }
+
+    // A dynamic object (world/dynamic_object.h): its model is built by [[object.generator]]
+    // tables, the same generators as the world's, run on the model's own grid in model
+    // coordinates; [[object.key]] tables are its path.
+    void readObject(const toml::node& node, Scene& scene) {
+        const toml::table* t = node.as_table();
+        if (!t) fail(&node, "each [[object]] must be a table");
+        KeyReader o(mSource, *t);
+        world::DynamicObject object;
+        object.name = o.string("name", "object");
+        object.modelSize = o.ivec3("size", {}, true);
+        if (glm::any(glm::lessThan(object.modelSize, glm::ivec3(1))) ||
+            glm::any(glm::greaterThan(object.modelSize, glm::ivec3(world::kMaxObjectExtent))))
+            fail(o.node("size"), "object '{}': size must be 1..{} voxels per axis", object.name,
+                 world::kMaxObjectExtent);
+        object.model = world::BrickGrid(object.modelSize);
+
+        const toml::node* gens = o.node("generator");
+        const toml::array* ga = gens ? gens->as_array() : nullptr;
+        if (!ga || ga->empty())
+            fail(gens ? gens : &node,
+                 "object '{}' needs at least one [[object.generator]] for its model", object.name);
+        // The generators write scene.grid: lend them the model's grid for the while.
+        std::swap(scene.grid, object.model);
+        try {
+            for (const toml::node& g : *ga) readGenerator(g, scene, object.generators);
+        } catch (...) {
+            std::swap(scene.grid, object.model);
+            throw;
+        }
+        std::swap(scene.grid, object.model);
+        object.model.clearDirty();
+        if (object.model.solidVoxels() == 0)
+            fail(gens, "object '{}': its generators leave the model empty", object.name);
+
+        bool loop = o.boolean("loop", true);
+        const toml::node* keys = o.node("key");
+        const toml::array* ka = keys ? keys->as_array() : nullptr;
+        if (!ka || ka->empty())
+            fail(keys ? keys : &node, "object '{}' needs at least one [[object.key]]", object.name);
+        std::vector<world::ObjectKey> path;
+        for (const toml::node& kn : *ka) path.push_back(readObjectKey(kn, path));
+        if (loop && path.size() < 2) fail(keys, "a looping path needs at least two keys");
+        object.path = world::ObjectPath(std::move(path), loop);
+        scene.objects.push_back(std::move(object));
+    }
+
+    world::ObjectKey readObjectKey(const toml::node& kn,
+                                   const std::vector<world::ObjectKey>& previous) {
+        using Given = world::ObjectKey::Given;
+        const toml::table* kt = kn.as_table();
+        if (!kt) fail(&kn, "each [[object.key]] must be a table");
+        KeyReader k(mSource, *kt);
+        world::ObjectKey key;
+        if (!k.has("time")) fail(&kn, "key: missing 'time'");
+        key.time = k.number("time", 0.0);
+        if (!previous.empty() && !(key.time > previous.back().time))
+            fail(k.node("time"), "key times must increase ({} follows {})", key.time,
+                 previous.back().time);
+        key.position = glm::dvec3(k.vec3("position", {}, true));
+        if (k.has("rotation") && (k.has("axis") || k.has("angle")))
+            fail(&kn, "key: give 'rotation' or 'axis' and 'angle', not both");
+        if (k.has("rotation")) {
+            key.given = Given::YawPitchRoll;
+            key.angles = glm::dvec3(k.vec3("rotation", {}));
+            key.rotation = world::rotationFromYawPitchRoll(key.angles);
+        } else if (k.has("axis") || k.has("angle")) {
+            key.given = Given::AxisAngle;
+            key.angles = glm::dvec3(k.vec3("axis", {0.0f, 1.0f, 0.0f}));
+            if (glm::length(key.angles) < 1e-9) fail(k.node("axis"), "'axis' must not be zero");
+            key.angle = k.number("angle", 0.0);
+            key.rotation = world::rotationFromAxisAngle(key.angles, key.angle);
+        }
+        return key;
+    }
+
+    void readCamera(const toml::node& node, Scene& scene) {
+        const toml::table* t = node.as_table();
+        if (!t) fail(&node, "each [[camera]] must be a table");
+        KeyReader c(mSource, *t);
+        world::CameraPreset cam;
+        cam.name = c.string("name");
+        cam.position = c.vec3("position", {}, true);
+        cam.target = c.vec3("target", {}, true);
+        cam.fovYDegrees = static_cast<float>(c.number("fov", 60.0));
+        if (cam.fovYDegrees <= 1.0f || cam.fovYDegrees >= 179.0f)
+            fail(c.node("fov"), "'fov' must be in (1, 179) degrees");
+        if (glm::length(cam.target - cam.position) < 1e-4f)
+            fail(&node, "camera '{}': target equals position", cam.name);
+        scene.cameras.push_back(cam);
+    }
+
+    void readSky(const toml::node& n, Scene& scene) {
+        const toml::table* t = n.as_table();
+        if (!t) fail(&n, "'sky' must be a table");
+        KeyReader sky(mSource, *t);
+        glm::vec3 dir = sky.vec3("sun_direction", scene.sky.sunDirection);
+        if (glm::length(dir) < 1e-6f) fail(&n, "'sun_direction' must not be zero");
+        // A unit vector (as a written-back scene holds) is kept as is: normalising it again can
+        // move its last bits, and load -> write -> load would drift.
+        scene.sky.sunDirection =
+            std::abs(glm::length(dir) - 1.0f) > 1e-6f ? glm::normalize(dir) : dir;
+        scene.sky.sunRadiance = sky.vec3("sun_radiance", scene.sky.sunRadiance);
+        scene.sky.skyRadiance = sky.vec3("sky_radiance", scene.sky.skyRadiance);
+    }
+
+    std::string mSource;
+};
+
+}  // namespace
+
+Result<Scene> loadSceneText(std::string_view text, std::string_view sourceName) {
+    return parseToml<Scene>(text, sourceName, [&](const toml::table& root) {
+        return SceneReader(std::string(sourceName)).read(root);
+    });
+}
+
+Result<Scene> loadSceneFile(const std::filesystem::path& path) {
+    auto text = readTextFile(path, "scene file");
+    if (!text) return text.error();
+    return loadSceneText(*text, path.string());
+}
+
+Result<std::filesystem::path> resolveWorldPath(std::string_view nameOrPath) {
+    namespace fs = std::filesystem;
+    fs::path direct(nameOrPath);
+    std::error_code ec;
+    if (fs::is_regular_file(direct, ec)) return direct;
+    std::string file = std::string(nameOrPath) + (direct.extension() == ".toml" ? "" : ".toml");
+    for (fs::path dir : {fs::path("worlds"), fs::path(VOX_SOURCE_DIR) / "worlds"}) {
+        if (fs::is_regular_file(dir / file, ec)) return dir / file;
+    }
+    return makeError("{}: no such world (not a file, and not found in worlds/)", nameOrPath);
+}
+
+}  // namespace engine::scene
