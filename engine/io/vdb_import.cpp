@@ -39,7 +39,8 @@ Status buildWorld(ImportState& im, world::Scene& scene, bool intoExisting) {
     {
         AllocationBudget::LargeAllocations large;  // checked by the estimate
         if (!intoExisting) grid = world::BrickGrid(place.worldSize);
-        grid.reserveBricks(std::uint32_t(std::min<std::uint64_t>(grid.liveBricks() + im.plan.sampledCells, 0x7FFFFFF0u)));
+        const std::uint64_t bricks = grid.liveBricks() + im.plan.sampledCells;
+        grid.reserveBricks(std::uint32_t(std::min<std::uint64_t>(bricks, 0x7FFFFFF0u)));
         if (!im.streaming) marks.assign(std::size_t(volume(Box{glm::ivec3(0), (place.worldSize + 7) / 8})), kCellNone);
     }
     if (im.streaming) {
@@ -159,7 +160,8 @@ std::string formatVdbImportReport(const VdbImportReport& r) {
     std::string s = formatVdbImportPlan(r.plan);
     s += fmt::format("  imported     {} solid voxels, {} material(s)\n", r.solidVoxels, r.materials);
     if (r.colours > 0)
-        s += fmt::format("  colour error {} voxels mapped to {} colours: mean {:.4f}, max {:.4f} (linear RGB distance)\n",
+        s += fmt::format("  colour error {} voxels mapped to {} colours: mean {:.4f}, max {:.4f} (linear RGB "
+                         "distance)\n",
                          r.colouredVoxels, r.colours, r.meanColourError, r.maxColourError);
     return s;
 }

@@ -26,8 +26,8 @@ Status checkTransform(const ImportState& im, const vdb::GridBase& g) {
     const vdb::math::Transform& xf = g.transform();
     const std::string name = g.getName();
     if (!xf.isLinear())
-        return makeError("{}: grid '{}' has a non-linear ({}) transform; only axis-aligned scale and translation can be "
-                         "imported",
+        return makeError("{}: grid '{}' has a non-linear ({}) transform; only axis-aligned scale and translation "
+                         "can be imported",
                          im.file, name, xf.mapType());
     vdb::Mat4d m = xf.baseMap()->getAffineMap()->getMat4();
     double largest = 0.0;
@@ -35,15 +35,16 @@ Status checkTransform(const ImportState& im, const vdb::GridBase& g) {
         for (int c = 0; c < 3; ++c) largest = std::max(largest, std::abs(m(r, c)));
     for (int r = 0; r < 3; ++r) {
         for (int c = 0; c < 3; ++c) {
-            if (!std::isfinite(m(r, c))) return makeError("{}: grid '{}' has a transform that is not finite", im.file, name);
+            if (!std::isfinite(m(r, c)))
+                return makeError("{}: grid '{}' has a transform that is not finite", im.file, name);
             if (r != c && std::abs(m(r, c)) > 1e-6 * largest)
                 return makeError("{}: grid '{}' has a rotated or sheared transform; only axis-aligned scale and "
                                  "translation can be imported",
                                  im.file, name);
         }
         if (!(m(r, r) > 0.0))
-            return makeError("{}: grid '{}' has a mirrored or degenerate transform (scale {} on axis {})", im.file, name,
-                             m(r, r), "xyz"[r]);
+            return makeError("{}: grid '{}' has a mirrored or degenerate transform (scale {} on axis {})", im.file,
+                             name, m(r, r), "xyz"[r]);
     }
     return {};
 }
@@ -141,8 +142,8 @@ Status selectShapeGrid(ImportState& im) {
     ChosenGrids& g = im.grids;
     const auto& entries = im.reader.grids();
     g.kind = *kindOf(*g.shapeHeader);
-    if (g.voxengine && entries[g.shapeIndex].name == vdb_layout::kMaterialGrid && g.shapeHeader->isType<vdb::Int32Grid>())
-        g.kind = Kind::VoxIds;
+    const bool ownMaterials = entries[g.shapeIndex].name == vdb_layout::kMaterialGrid;
+    if (g.voxengine && ownMaterials && g.shapeHeader->isType<vdb::Int32Grid>()) g.kind = Kind::VoxIds;
     if (Status s = checkTransform(im, *g.shapeHeader); !s) return s;
     g.shapeXform = g.shapeHeader->transformPtr();
     im.plan.grid = entries[g.shapeIndex].name;
@@ -211,11 +212,12 @@ Status selectMaterialRule(ImportState& im) {
         case MaterialRule::Ids:
             im.plan.rule = g.kind == Kind::VoxIds ? "the file's palette (exact)" : "one material per distinct value";
             break;
-        case MaterialRule::Colour:
-            im.plan.rule = fmt::format("colours of '{}' quantised to at most {} materials",
-                                       g.colourIndex >= 0 ? im.reader.grids()[std::size_t(g.colourIndex)].name : im.plan.grid,
-                                       o.maxColours);
+        case MaterialRule::Colour: {
+            const std::string& colours =
+                g.colourIndex >= 0 ? im.reader.grids()[std::size_t(g.colourIndex)].name : im.plan.grid;
+            im.plan.rule = fmt::format("colours of '{}' quantised to at most {} materials", colours, o.maxColours);
             break;
+        }
         case MaterialRule::Height: im.plan.rule = fmt::format("{} bands by height", g.heightBands); break;
         default: im.plan.rule = fmt::format("constant '{}'", o.material.name);
     }

@@ -93,7 +93,8 @@ Result<int> materialFor(ImportState& im, glm::ivec3 t, const Sample& s) {
                 return int(v);
             }
             auto it = im.palette.idLut.find(v);
-            if (it == im.palette.idLut.end()) return makeError("{}: id {} was not seen while scanning the grid", im.file, v);
+            if (it == im.palette.idLut.end())
+                return makeError("{}: id {} was not seen while scanning the grid", im.file, v);
             return it->second;
         }
         default: return 1;

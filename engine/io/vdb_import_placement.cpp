@@ -60,7 +60,8 @@ Status orientAndScale(ImportState& im) {
         // Z-up to Y-up, a rotation about x: (x, y, z) -> (x, z, -y).
         map.perm[0] = 0, map.perm[1] = 2, map.perm[2] = 1;
         map.sign[0] = 1, map.sign[1] = 1, map.sign[2] = -1;
-        if (o.up == UpAxis::Auto) im.plan.notes.push_back("Z-up (the file was written by Blender); --up y to keep its axes");
+        if (o.up == UpAxis::Auto)
+            im.plan.notes.push_back("Z-up (the file was written by Blender); --up y to keep its axes");
     }
 
     vdb::Vec3d vs = g.shapeXform->voxelSize();

@@ -11,10 +11,6 @@ namespace engine::io::vdb_import {
 
 namespace {
 
-std::size_t cellIndex(glm::ivec3 cells, glm::ivec3 c) {
-    return std::size_t(c.x) + std::size_t(cells.x) * (std::size_t(c.y) + std::size_t(cells.y) * std::size_t(c.z));
-}
-
 // A streamed import has no topology in memory: its leaves give the cells that need voxels, and
 // its tiles were counted while walking the file.
 void countStreamedCells(ImportState& im) {
@@ -50,10 +46,11 @@ Status estimate(ImportState& im, const world::Scene* target) {
     // values; malloc adds a header to every node, hence the 1.25.
     std::uint64_t source = (topology.shapeTopologyBytes * 5) / 4 + im.slabLeavesMax * topology.shapeLeafBytes +
                            topology.leaves.capacity() * sizeof(Box);
-    if (im.colour)
-        source += (topology.colourTopologyBytes * 5) / 4 +
-                  topology.colourLeafBytes * std::min<std::uint64_t>(topology.colourLeaves.size(), 2 * im.slabLeavesMax) +
+    if (im.colour) {
+        const std::uint64_t colourLeaves = std::min<std::uint64_t>(topology.colourLeaves.size(), 2 * im.slabLeavesMax);
+        source += (topology.colourTopologyBytes * 5) / 4 + topology.colourLeafBytes * colourLeaves +
                   topology.colourLeaves.capacity() * sizeof(Box);
+    }
     if (im.grids.rule == MaterialRule::Colour) source += 65536 * 96;  // histogram and mapper memo
     source += 1 << 20;  // the reader: stream buffer, descriptors, file metadata
     if (im.streaming) {
@@ -136,8 +133,9 @@ Status markCells(ImportState& im, const SourceGrid& topology, std::vector<std::u
                     if (m == kCellSample) continue;
                     Box cellBox{c * 8, c * 8 + 8};
                     // Whole cell inside the tile and inside the world box: no voxel to read.
-                    bool whole = glm::all(glm::greaterThanEqual(cellBox.min, glm::max(inside.min, place.worldBox.min))) &&
-                                 glm::all(glm::lessThanEqual(cellBox.max, glm::min(inside.max, place.worldBox.max)));
+                    const Box& worldBox = place.worldBox;
+                    bool whole = glm::all(glm::greaterThanEqual(cellBox.min, glm::max(inside.min, worldBox.min))) &&
+                                 glm::all(glm::lessThanEqual(cellBox.max, glm::min(inside.max, worldBox.max)));
                     int material = kVariesInCell;
                     if (whole) {
                         Result<int> uniform = uniformMaterial(im, tileValue, cellBox);

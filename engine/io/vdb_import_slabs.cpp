@@ -60,9 +60,7 @@ Status fillSlabs(ImportState& im, world::BrickGrid& grid, const std::vector<std:
             for (int cy = lo.y; cy <= hi.y; ++cy) {
                 for (int cx = lo.x; cx <= hi.x; ++cx) {
                     const glm::ivec3 c(cx, cy, cz);
-                    const std::size_t ci =
-                        std::size_t(cx) + std::size_t(cells.x) * (std::size_t(cy) + std::size_t(cells.y) * std::size_t(cz));
-                    if (marks[ci] != kCellSample) continue;
+                    if (marks[cellIndex(cells, c)] != kCellSample) continue;
                     world::BrickVoxels voxels;
                     if (intoExisting) voxels = grid.readCell(c);
                     else voxels.fill(world::kEmpty);

@@ -3,7 +3,8 @@
 //   grids      vdb_import_grids.cpp      the shape grid, the colour grid and the material rule
 //   place      vdb_import_placement.cpp  axes, scale and offset: where source voxels land
 //   topology   vdb_import_topology.cpp   source leaves and extents, read without voxel values
-//   slabs      vdb_import_plan.cpp       cells to sample, slabs to read, the memory estimate
+//   (plan)     vdb_import_plan.cpp       cells to sample, slabs to read, the memory estimate
+//   slabs      vdb_import_slabs.cpp      the slabs, planned with the cells
 //   palette    vdb_import_palette.cpp    the import's materials and their ids in the scene
 // then the world is written: slab by slab (vdb_import_slabs.cpp) or, for voxel-for-voxel copies,
 // leaf by leaf straight from the file (vdb_import_stream.cpp). vdb_import_mapping.cpp turns
@@ -62,7 +63,12 @@ struct Slab {
     std::uint64_t leaves;
 };
 
+// What the import does with each world cell (8^3 voxels), indexed by cellIndex().
 enum CellMark : std::uint8_t { kCellNone = 0, kCellUniform = 1, kCellSample = 2 };
+
+inline std::size_t cellIndex(glm::ivec3 cells, glm::ivec3 c) {
+    return std::size_t(c.x) + std::size_t(cells.x) * (std::size_t(c.y) + std::size_t(cells.y) * std::size_t(c.z));
+}
 
 struct ImportPalette {
     std::vector<world::Material> materials;  // index 0 unused

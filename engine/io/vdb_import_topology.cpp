@@ -15,7 +15,8 @@ Status settleSourceBox(ImportState& im, const Box& content) {
     const std::optional<Box>& crop = im.options.crop;
     Box& sourceBox = im.place.sourceBox;
     sourceBox = content.intersect(cropBox(im.options));
-    if (sourceBox.empty() && im.grids.voxengine && !crop) sourceBox = Box{glm::ivec3(0), glm::ivec3(1)};  // an all-air world
+    if (sourceBox.empty() && im.grids.voxengine && !crop)
+        sourceBox = Box{glm::ivec3(0), glm::ivec3(1)};  // an all-air world of ours: keep it
     if (sourceBox.empty()) {
         if (crop) return makeError("{}: nothing of grid '{}' lies inside the crop box", im.file, im.plan.grid);
         return makeError("{}: grid '{}' is empty (no active voxels)", im.file, im.plan.grid);
