@@ -59,9 +59,10 @@ public:
 
     // The stream must be at the tree's topology with the grid's stream state set (compression,
     // half-float, class). Reports the root's tiles (stream() reports the rest); tiles equal to
-    // the background and inactive are not reported. Throws on damaged topology.
+    // the background and inactive are not reported. Throws on damaged topology. A callback that
+    // sets *stop ends the walk early (a partial Root), reading nothing more.
     static Root walk(std::istream& is, std::uint32_t version, bool fromHalf, std::uint64_t fileBytes,
-                     const openvdb::CoordBBox* clip, const TileFn& tile) {
+                     const openvdb::CoordBBox* clip, const TileFn& tile, const bool* stop = nullptr) {
         namespace vdb = openvdb;
         std::int32_t buffers = 0;  // TreeBase::readTopology(): always 1 since OpenVDB 3 (it only warns otherwise)
         is.read(reinterpret_cast<char*>(&buffers), sizeof(buffers));
@@ -91,6 +92,7 @@ public:
         TreeBytes& bytes = root.bytes;
         bytes.nodes = std::uint64_t(tiles) * 96;  // a std::map entry per root tile
         for (vdb::Index n = 0; n < tiles; ++n) {
+            if (stop && *stop) return root;
             std::int32_t origin[3];
             ValueT value;
             bool active = false;
@@ -102,6 +104,7 @@ public:
                 tile(vdb::CoordBBox::createCube(vdb::Coord(origin[0], origin[1], origin[2]), ChildT::DIM), value, active);
         }
         for (vdb::Index n = 0; n < children; ++n) {
+            if (stop && *stop) return root;
             std::int32_t origin[3];
             is.read(reinterpret_cast<char*>(origin), sizeof(origin));
             if (!aligned(origin)) throw vdb::IoError("a root child is not aligned to its node size");
@@ -123,9 +126,11 @@ public:
     // Walks the internal nodes again, in value order, reading each wanted leaf's values from
     // `values` (positioned at the grid's buffers, with the same stream state as `topology`).
     // Tiles below the root are reported here (root tiles were reported by walk()).
-    // `values` may be null when no leaf is wanted (a walk for the leaves' masks only).
+    // `values` may be null when no leaf is wanted (a walk for the leaves' masks only). A callback
+    // that sets *stop ends the walk at the next node, reading nothing more.
     static void stream(std::istream& topology, std::istream* values, std::uint32_t version, bool fromHalf,
-                       const Root& root, const TileFn& tile, const LeafFn& wanted, const ValuesFn& onValues) {
+                       const Root& root, const TileFn& tile, const LeafFn& wanted, const ValuesFn& onValues,
+                       const bool* stop = nullptr) {
         namespace vdb = openvdb;
         vdb::io::setGridBackgroundValuePtr(topology, &root.background);
         if (values) vdb::io::setGridBackgroundValuePtr(*values, &root.background);
@@ -138,9 +143,10 @@ public:
             }
         } reset{topology, values};
         std::unique_ptr<ValueT[]> buffer(new ValueT[LeafT::SIZE]);
-        LeafVisit visit{values, fromHalf, wanted, onValues, buffer.get()};
+        LeafVisit visit{values, fromHalf, wanted, onValues, buffer.get(), stop};
         TreeBytes unused;
         for (const RootChild& child : root.children) {
+            if (visit.stopped()) return;
             topology.seekg(child.topology);
             walkNode<typename RootT::ChildNodeType>(topology, version, fromHalf, child.origin, root.background, nullptr,
                                                     tile, &visit, unused);
@@ -155,6 +161,9 @@ private:
         const LeafFn& wanted;
         const ValuesFn& onValues;
         ValueT* buffer;
+        const bool* stop;
+
+        bool stopped() const { return stop && *stop; }
 
         void operator()(const openvdb::Coord& origin, const LeafMask& mask) const {
             const bool want = wanted(origin, mask);
@@ -211,8 +220,10 @@ private:
                 }
             }
             values.reset();
-            for (auto it = childMask.beginOn(); it; ++it)
+            for (auto it = childMask.beginOn(); it; ++it) {
+                if (leaves && leaves->stopped()) return;
                 walkNode<ChildT>(is, version, fromHalf, childOrigin(it.pos()), background, clip, tile, leaves, bytes);
+            }
         }
     }
 };
