@@ -4,24 +4,17 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
-#include <filesystem>
 
-#include "gpu/gpu_test_context.h"
-#include "render/renderer.h"
+#include "gpu/gpu_test_setup.h"
 #include "world/random_worlds.h"
 #include "scene/scene_file.h"
 #include "world/scene_trace.h"
 
 using namespace engine::world;
 using namespace engine::scene;
-using engine::render::FrameImages;
-using engine::render::FrameSettings;
-using engine::render::Renderer;
-using gpu_testing::GpuTest;
+using namespace gpu_testing;
 
 namespace {
-
-const engine::lighting::LightingSettings kPreview{engine::lighting::Method::Preview};
 
 DynamicObject makeObject(glm::ivec3 size, std::uint32_t seed) {
     DynamicObject o;
@@ -46,6 +39,15 @@ Scene sceneWithRotatedObjects() {
     for (DynamicObject& o : scene.objects) o.previous = o.current;
     scene.dynamic = voxelizeObjects(scene.objects);
     scene.dynamic.revision = 1;
+    return scene;
+}
+
+// A 64x32x64 world with nothing but a floor of material 1.
+Scene floorScene() {
+    Scene scene = gpu_testing::sceneWith(BrickGrid({64, 32, 64}));
+    for (int z = 0; z < 64; ++z)
+        for (int x = 0; x < 64; ++x) scene.grid.set({x, 0, z}, 1);
+    scene.grid.clearDirty();
     return scene;
 }
 
@@ -111,19 +113,14 @@ TEST_F(DynamicObjects, StaticPathIsUnchangedWithoutObjects) {
 TEST_F(DynamicObjects, MotionVectorsFollowAMovingObject) {
     // A still camera looks at a turning, moving block: each pixel on it must point to where the
     // CPU says that material point was one frame earlier.
-    Scene scene = gpu_testing::sceneWith(BrickGrid({64, 32, 64}));
-    for (int z = 0; z < 64; ++z)
-        for (int x = 0; x < 64; ++x) scene.grid.set({x, 0, z}, 1);
-    scene.grid.clearDirty();
+    Scene scene = floorScene();
     DynamicObject o = makeObject({12, 8, 10}, 4);
     o.path = ObjectPath({{0.0, {24, 10, 30}, rotationFromYawPitchRoll({0, 0, 0})},
                          {1.0, {40, 12, 34}, rotationFromYawPitchRoll({60, 10, 0})}},
                         false);
     scene.objects.push_back(std::move(o));
     CameraPreset camera{"test", {32, 24, -10}, {32, 10, 32}, 60.0f};
-    FrameSettings settings;
-    settings.width = 96;
-    settings.height = 64;
+    FrameSettings settings = frame(96, 64);
     Renderer renderer(gpu_testing::context());
     settings.timeSeconds = 0.4;
     renderer.render(scene, camera, settings, kPreview);
@@ -171,10 +168,7 @@ TEST_F(DynamicObjects, MotionVectorsFollowAMovingObject) {
 
 TEST_F(DynamicObjects, ObjectsCastShadows) {
     // Sun straight down on a floor; a slab hovering above it darkens the floor under it.
-    Scene scene = gpu_testing::sceneWith(BrickGrid({64, 32, 64}));
-    for (int z = 0; z < 64; ++z)
-        for (int x = 0; x < 64; ++x) scene.grid.set({x, 0, z}, 1);
-    scene.grid.clearDirty();
+    Scene scene = floorScene();
     scene.sky.sunDirection = glm::vec3(0, 1, 0);
     DynamicObject o = makeObject({16, 2, 16}, 0);
     for (int z = 0; z < 16; ++z)
@@ -182,14 +176,9 @@ TEST_F(DynamicObjects, ObjectsCastShadows) {
     o.path = ObjectPath({{0.0, {32, 20, 32}, {}}}, false);
     scene.objects.push_back(std::move(o));
     CameraPreset camera{"top", {32, 31, 32.01f}, {32, 0, 32}, 100.0f};
-    FrameSettings settings;
-    settings.width = 64;
-    settings.height = 64;
-    Renderer renderer(gpu_testing::context());
     // Looking from below the slab's height, at the floor under it and around it.
     CameraPreset under{"under", {32, 10, 4}, {32, 1, 32}, 70.0f};
-    renderer.render(scene, under, settings, kPreview);
-    FrameImages img = renderer.readback();
+    FrameImages img = renderOnce(scene, under, frame(64));
     int shadowed = 0, floorUnder = 0, floorOpen = 0;
     double openSum = 0.0;
     std::vector<float> underRadiance;
@@ -216,13 +205,9 @@ TEST_F(DynamicObjects, ObjectsCastShadows) {
 
 TEST_F(DynamicObjects, ShippedWorldsRenderWithTheirObjects) {
     for (const char* name : {"dragon_city.toml", "factory.toml", "thin_wall.toml"}) {
-        auto loaded = loadSceneFile(std::filesystem::path(VOX_SOURCE_DIR) / "worlds" / name);
-        ASSERT_TRUE(loaded.ok()) << loaded.error().message;
-        Scene scene = std::move(loaded).value();
+        Scene scene = loadWorld(name);
         ASSERT_FALSE(scene.objects.empty()) << name;
-        FrameSettings settings;
-        settings.width = 64;
-        settings.height = 40;
+        FrameSettings settings = frame(64, 40);
         Renderer renderer(gpu_testing::context());
         int dynamicPixels = 0;
         for (double t : {0.0, 1.0}) {

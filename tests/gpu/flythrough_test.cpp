@@ -4,21 +4,16 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 
-#include "gpu/gpu_test_context.h"
+#include "gpu/gpu_test_setup.h"
 #include "render/flythrough_player.h"
 #include "scene/path_file.h"
 #include "scene/scene_file.h"
 
 using namespace engine::world;
-using namespace engine::scene;
-using engine::lighting::LightingSettings;
-using engine::lighting::Method;
+using namespace gpu_testing;
 using engine::render::FlythroughPlayer;
-using engine::render::FrameImages;
-using engine::render::FrameSettings;
-using engine::render::Renderer;
-using gpu_testing::GpuTest;
 
 namespace {
 
@@ -70,7 +65,8 @@ sun_radiance = [0, 0, 0]
 sky_radiance = [0, 0, 0]
 )";
 
-const char* kPath = R"([path]
+// The camera's three keys, which every path here starts with.
+const std::string kKeys = R"([path]
 fps = 10
 duration = 2.3
 [[path.key]]
@@ -87,7 +83,9 @@ time = 2.3
 position = [40, 34, -20]
 target = [26, 6, 28]
 fov = 55
-[[path.event]]
+)";
+
+const std::string kPath = kKeys + R"([[path.event]]
 time = 0.4
 type = "light"
 material = "blue"
@@ -111,7 +109,7 @@ struct Capture {
     Flythrough fly;
 };
 
-Capture load(const char* path = kPath) {
+Capture load(const std::string& path = kPath) {
     auto scene = loadSceneText(kYard, "yard.toml");
     EXPECT_TRUE(scene.ok()) << scene.error().message;
     auto fly = loadFlythroughText(path, "yard_path.toml");
@@ -120,13 +118,6 @@ Capture load(const char* path = kPath) {
     engine::Status s = c.fly.timeline.bind(c.scene);
     EXPECT_TRUE(s.ok()) << s.error().message;
     return c;
-}
-
-FrameSettings settings(std::uint32_t size) {
-    FrameSettings f;
-    f.width = size;
-    f.height = size;
-    return f;
 }
 
 // Frames first..last (inclusive) after `warmup` frames of history, as `vox capture` plays them.
@@ -138,10 +129,10 @@ std::vector<FrameImages> play(std::uint32_t first, std::uint32_t last, std::uint
     FlythroughPlayer player(renderer, c.scene, c.fly, c.fly.fps);
     std::vector<FrameImages> out;
     for (std::uint32_t i = first - std::min(first, warmup); i <= last; ++i) {
-        auto frame = player.render(i, settings(size), l);
+        auto played = player.render(i, frame(size), l);
         if (i < first) continue;
         out.push_back(renderer.readback());
-        if (emitters) emitters->push_back(frame.result.emitters);
+        if (emitters) emitters->push_back(played.result.emitters);
     }
     return out;
 }
@@ -184,24 +175,7 @@ TEST_F(Flythroughs, LightSwitchedOffIsNotLightingItsFrame) {
         std::vector<std::uint32_t> emitters;
         std::vector<FrameImages> frames = play(0, 5, 0, l, 48, &emitters);
         // Without the blue lamp from the start, and the blue block's light switched off anyway.
-        const char* noBlue = R"([path]
-fps = 10
-duration = 2.3
-[[path.key]]
-time = 0
-position = [32, 36, -22]
-target = [32, 6, 30]
-fov = 60
-[[path.key]]
-time = 1.2
-position = [52, 30, -12]
-target = [30, 8, 34]
-[[path.key]]
-time = 2.3
-position = [40, 34, -20]
-target = [26, 6, 28]
-fov = 55
-[[path.event]]
+        const std::string noBlue = kKeys + R"([[path.event]]
 time = 0
 type = "light"
 material = "blue"
@@ -212,7 +186,7 @@ on = false
         FlythroughPlayer player(renderer, dark.scene, dark.fly, 10.0);
         std::vector<FrameImages> reference;
         for (std::uint32_t i = 0; i <= 5; ++i) {
-            player.render(i, settings(48), l);
+            player.render(i, frame(48), l);
             reference.push_back(renderer.readback());
         }
         const char* name = engine::lighting::methodName(method);
@@ -329,7 +303,7 @@ position = [40, 10, 40]
     ASSERT_TRUE(c.fly.timeline.bind(c.scene).ok());
     Renderer renderer(gpu_testing::context());
     FlythroughPlayer player(renderer, c.scene, c.fly, c.fly.fps);
-    for (std::uint32_t i : {3u, 4u}) player.render(i, settings(16), LightingSettings{Method::Preview});
+    for (std::uint32_t i : {3u, 4u}) player.render(i, frame(16), kPreview);
     const DynamicObject& o = c.scene.objects.at(0);
     EXPECT_EQ(o.current, o.path.at(4.0 / c.fly.fps));
     EXPECT_EQ(o.previous, o.path.at(3.0 / c.fly.fps));

@@ -1,3 +1,4 @@
+// The GPU tests' one Vulkan context and their ray-tracing helper (gpu_test_context.h).
 #include "gpu/gpu_test_context.h"
 
 #include <cstdio>

@@ -5,39 +5,31 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <filesystem>
 #include <map>
 
-#include "gpu/gpu_test_context.h"
 #include "gpu/command_list.h"
+#include "gpu/gpu_test_setup.h"
 #include "io/image_io.h"
 #include "metrics/image_metrics.h"
-#include "render/renderer.h"
 #include "scene/scene_file.h"
 #include "world/scene_trace.h"
 #include "world/world_edits.h"
 
 using namespace engine::world;
-using namespace engine::scene;
+using namespace gpu_testing;
 using engine::lighting::Indirect;
-using engine::lighting::LightingSettings;
-using engine::lighting::Method;
-using engine::render::FrameSettings;
-using engine::render::Renderer;
-using gpu_testing::GpuTest;
 
 namespace {
 
 constexpr MaterialId kWhite = 1, kRed = 2, kLamp = 3, kGreen = 4;
 
+// Under the default sun and sky.
 Scene makeScene(glm::ivec3 size) {
-    Scene scene;
-    scene.grid = BrickGrid(size);
-    (void)scene.palette.add(Material{"white", glm::vec3(0.75f)});
-    (void)scene.palette.add(Material{"red", glm::vec3(0.8f, 0.15f, 0.1f)});
-    (void)scene.palette.add(Material{"lamp", glm::vec3(0.8f), glm::vec3(1.0f, 0.85f, 0.6f), 8.0f});
-    (void)scene.palette.add(Material{"green", glm::vec3(0.1f, 0.7f, 0.2f)});
-    return scene;
+    return paletteScene(size,
+                        {Material{"white", glm::vec3(0.75f)}, Material{"red", glm::vec3(0.8f, 0.15f, 0.1f)},
+                         Material{"lamp", glm::vec3(0.8f), glm::vec3(1.0f, 0.85f, 0.6f), 8.0f},
+                         Material{"green", glm::vec3(0.1f, 0.7f, 0.2f)}},
+                        false);
 }
 
 // An open courtyard: a floor, a red wall and a green wall in a corner, a pillar, sun and sky and
@@ -55,13 +47,6 @@ Scene courtyard(glm::ivec3 size = {64, 40, 64}) {
     return scene;
 }
 
-FrameSettings frame(std::uint32_t size) {
-    FrameSettings f;
-    f.width = size;
-    f.height = size;
-    return f;
-}
-
 LightingSettings cacheLighting(std::uint32_t bounces = 1) {
     LightingSettings l;
     l.method = Method::Preview;  // the direct term does not matter here: only the cache's own output is compared
@@ -72,8 +57,7 @@ LightingSettings cacheLighting(std::uint32_t bounces = 1) {
 
 std::vector<glm::vec4> cacheIndirect(Scene& scene, const LightingSettings& l, std::uint32_t size, int frames) {
     Renderer r(gpu_testing::context());
-    for (int i = 0; i < frames; ++i) r.render(scene, scene.camera(), frame(size), l);
-    return r.readback().indirect;
+    return renderFrames(r, scene, l, frame(size), frames).indirect;
 }
 
 // The path tracer's indirect light: (bounces) minus (direct only), both converged.
@@ -129,13 +113,6 @@ double meanOf(const std::vector<glm::vec4>& img) {
     double sum = 0.0;
     for (const glm::vec4& p : img) sum += (p.x + p.y + p.z) / 3.0;
     return sum / double(img.size());
-}
-
-double mae(const std::vector<glm::vec4>& a, const std::vector<glm::vec4>& b) {
-    double sum = 0.0;
-    for (std::size_t i = 0; i < a.size(); ++i)
-        sum += std::abs(a[i].x - b[i].x) + std::abs(a[i].y - b[i].y) + std::abs(a[i].z - b[i].z);
-    return sum / (3.0 * double(a.size()));
 }
 
 // The cache's indirect term against the path tracer's, per pixel: the relative MAE of
@@ -335,12 +312,6 @@ std::vector<std::uint32_t> readUints(const engine::gpu::Buffer& buffer) {
     return {view.begin(), view.end()};
 }
 
-Scene loadWorldFile(const char* name) {
-    auto scene = loadSceneFile(std::filesystem::path(VOX_SOURCE_DIR) / "worlds" / name);
-    EXPECT_TRUE(scene) << (scene ? "" : scene.error().message);
-    return std::move(*scene);
-}
-
 // The cache's rays as the shaders build them (shaders/common/irradiance_cache.glsl).
 glm::vec3 rayOrigin(glm::ivec3 voxel, std::uint32_t face) {
     glm::vec3 o = glm::vec3(voxel) + 0.5f;
@@ -360,7 +331,7 @@ std::uint32_t packHit(glm::ivec3 origin, glm::vec3 d, const SceneHit& h) {
 // dynamic grid traced alone" selects the same hit (voxel, face, set) as tracing both worlds from
 // scratch — on the GPU in full-re-trace mode and on the CPU reference.
 TEST_F(IrradianceCache, DivideAndWinSelectsTheSameHitAsAFullRetrace) {
-    Scene a = loadWorldFile("thin_wall.toml"), b = loadWorldFile("thin_wall.toml");
+    Scene a = loadWorld("thin_wall.toml"), b = loadWorld("thin_wall.toml");
     Renderer divide(gpu_testing::context()), full(gpu_testing::context());
     LightingSettings ld = cacheLighting(1), lf = cacheLighting(1);
     lf.cache.fullRetrace = true;
@@ -642,7 +613,7 @@ TEST_F(IrradianceCache, DISABLED_MeasureScenes) {
     std::vector<std::string> worlds{"cornell", "mountain", "letters", "apartments", "thin_wall"};
     if (const char* w = std::getenv("VOX_MEASURE_WORLD")) worlds = {w};
     for (const std::string& name : worlds) {
-        Scene scene = loadWorldFile((name + ".toml").c_str());
+        Scene scene = loadWorld(name);
         const engine::world::CameraPreset camera = scene.camera();
         // References are kept in VOX_MEASURE_CACHE (a folder) when set: the same for every run.
         auto reference = [&](std::uint32_t seed) {

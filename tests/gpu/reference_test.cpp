@@ -7,34 +7,18 @@
 #include <cmath>
 #include <cstring>
 
-#include "gpu/gpu_test_context.h"
+#include "gpu/gpu_test_setup.h"
 #include "gpu/sample_stats.h"
 #include "lighting/emitter_list.h"
 #include "render/camera.h"
-#include "render/renderer.h"
 #include "world/ray_traversal.h"
 #include "world/world_edits.h"
 
 using namespace engine::world;
-using engine::lighting::LightingSettings;
-using engine::lighting::Method;
+using namespace gpu_testing;
 using engine::lighting::ReferenceProbe;
-using engine::render::FrameImages;
-using engine::render::FrameSettings;
-using engine::render::Renderer;
-using gpu_testing::GpuTest;
-
-using gpu_testing::MeanAndError;
-using gpu_testing::meanOfMeans;
 
 namespace {
-
-FrameSettings frame(std::uint32_t size) {
-    FrameSettings f;
-    f.width = size;
-    f.height = size;
-    return f;
-}
 
 LightingSettings referenceSettings(std::uint32_t bounces, std::uint32_t seed, bool mis = true) {
     LightingSettings l;
@@ -48,16 +32,7 @@ LightingSettings referenceSettings(std::uint32_t bounces, std::uint32_t seed, bo
 
 std::vector<glm::vec4> render(Scene& scene, const LightingSettings& l, std::uint32_t size, std::uint32_t spp) {
     Renderer r(gpu_testing::context());
-    for (std::uint32_t i = 0; i < spp / l.samplesPerFrame; ++i) r.render(scene, scene.camera(), frame(size), l);
-    return r.readback().radiance;
-}
-
-double luminance(const glm::vec4& p) { return 0.2126 * p.x + 0.7152 * p.y + 0.0722 * p.z; }
-
-double meanLuminance(const std::vector<glm::vec4>& img) {
-    double sum = 0.0;
-    for (const glm::vec4& p : img) sum += luminance(p);
-    return sum / double(img.size());
+    return renderFrames(r, scene, l, frame(size), int(spp / l.samplesPerFrame)).radiance;
 }
 
 // Root-mean-square luminance difference per pixel, relative to the mean of `truth`.
@@ -77,12 +52,13 @@ double maxAbsLuminanceError(const std::vector<glm::vec4>& a, const std::vector<g
 // the sky, over a black floor. Every surface is black (albedo 0), so each camera ray's radiance is
 // exact — the sky, an emission or zero — and a pixel's only error is how it covers the edges.
 Scene edgeScene() {
-    Scene scene;
-    scene.grid = BrickGrid({64, 32, 64});
-    const MaterialId black = *scene.palette.add(Material{"black", glm::vec3(0.0f)});
-    const MaterialId warm = *scene.palette.add(Material{"warm", glm::vec3(0.0f), glm::vec3(1.0f, 0.8f, 0.5f), 4.0f});
-    const MaterialId cold = *scene.palette.add(Material{"cold", glm::vec3(0.0f), glm::vec3(0.4f, 0.7f, 1.0f), 2.5f});
-    scene.sky.sunRadiance = glm::vec3(0.0f);
+    Scene scene = paletteScene({64, 32, 64},
+                               {Material{"black", glm::vec3(0.0f)},
+                                Material{"warm", glm::vec3(0.0f), glm::vec3(1.0f, 0.8f, 0.5f), 4.0f},
+                                Material{"cold", glm::vec3(0.0f), glm::vec3(0.4f, 0.7f, 1.0f), 2.5f}},
+                               true);
+    const MaterialId black = *scene.palette.find("black"), warm = *scene.palette.find("warm"),
+                     cold = *scene.palette.find("cold");
     scene.sky.skyRadiance = glm::vec3(0.5f);
     fillBox(scene.grid, Box{{0, 0, 0}, {64, 2, 64}}, black);
     for (int i = 0; i < 14; ++i) {
@@ -164,16 +140,13 @@ namespace {
 
 constexpr MaterialId kWhite = 1, kRed = 2, kLamp = 3, kBlue = 4;
 
+// Lit by its emitters alone; brighter lamps than restir_test's, for fireflies.
 Scene makeScene(glm::ivec3 size) {
-    Scene scene;
-    scene.grid = BrickGrid(size);
-    (void)scene.palette.add(Material{"white", glm::vec3(0.75f)});
-    (void)scene.palette.add(Material{"red", glm::vec3(0.7f, 0.1f, 0.1f)});
-    (void)scene.palette.add(Material{"lamp", glm::vec3(0.8f), glm::vec3(1.0f, 0.85f, 0.6f), 20.0f});
-    (void)scene.palette.add(Material{"blue", glm::vec3(0.8f), glm::vec3(0.3f, 0.5f, 1.0f), 12.0f});
-    scene.sky.sunRadiance = glm::vec3(0.0f);
-    scene.sky.skyRadiance = glm::vec3(0.0f);
-    return scene;
+    return paletteScene(size,
+                        {Material{"white", glm::vec3(0.75f)}, Material{"red", glm::vec3(0.7f, 0.1f, 0.1f)},
+                         Material{"lamp", glm::vec3(0.8f), glm::vec3(1.0f, 0.85f, 0.6f), 20.0f},
+                         Material{"blue", glm::vec3(0.8f), glm::vec3(0.3f, 0.5f, 1.0f), 12.0f}},
+                        true);
 }
 
 // A closed room split by a one-voxel wall with a doorway, small bright lamps against the walls
@@ -217,9 +190,7 @@ TEST_F(Reference, MisMatchesLightSamplingWithLessNoise) {
     std::vector<bool> nearLamp(size * size, false);
     int litPixels = 0;
     {
-        Renderer r(gpu_testing::context());
-        r.render(scene, scene.camera(), frame(size), LightingSettings{Method::Preview});
-        const FrameImages g = r.readback();
+        const FrameImages g = renderOnce(scene, scene.camera(), frame(size), kPreview);
         for (int y = 0; y < int(size); ++y)
             for (int x = 0; x < int(size); ++x) {
                 const shared::GBufferTexel& t = g.gbuffer[std::size_t(x + y * int(size))];

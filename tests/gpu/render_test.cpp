@@ -4,44 +4,22 @@
 #include <filesystem>
 #include <fstream>
 
-#include "gpu/gpu_test_context.h"
+#include "gpu/gpu_test_setup.h"
 #include "io/image_io.h"
-#include "render/renderer.h"
 #include "world/random_worlds.h"
 #include "scene/scene_file.h"
 
 using namespace engine::world;
 using namespace engine::scene;
-using engine::render::FrameImages;
-using engine::render::FrameSettings;
-using engine::render::Renderer;
-using gpu_testing::GpuTest;
-
-namespace {
-const engine::lighting::LightingSettings kPreview{engine::lighting::Method::Preview};
-}  // namespace
-
-namespace {
-
-Scene loadWorld(const char* name) {
-    auto scene = loadSceneFile(std::filesystem::path(VOX_SOURCE_DIR) / "worlds" / name);
-    EXPECT_TRUE(scene.ok()) << scene.error().message;
-    return std::move(scene).value();
-}
-
-}  // namespace
+using namespace gpu_testing;
 
 class Render : public GpuTest {};
 
 TEST_F(Render, GBufferMatchesCpuTraversalPerPixel) {
     Scene scene = loadWorld("sandbox.toml");
-    FrameSettings settings;
-    settings.width = 128;
-    settings.height = 72;
+    const FrameSettings settings = frame(128, 72);
     CameraPreset camera = scene.camera();
-    Renderer renderer(gpu_testing::context());
-    renderer.render(scene, camera, settings, kPreview);
-    FrameImages img = renderer.readback();
+    FrameImages img = renderOnce(scene, camera, settings);
     shared::FrameParams params = engine::render::makeFrameParams(camera, scene.sky, settings);
     int hits = 0, mismatches = 0;
     for (std::uint32_t y = 0; y < settings.height; ++y)
@@ -66,25 +44,14 @@ TEST_F(Render, GBufferMatchesCpuTraversalPerPixel) {
 
 TEST_F(Render, SameInputsGiveTheSameImage) {
     Scene scene = loadWorld("cornell.toml");
-    FrameSettings settings;
-    settings.width = 64;
-    settings.height = 64;
-    Renderer a(gpu_testing::context()), b(gpu_testing::context());
-    a.render(scene, scene.camera(), settings, kPreview);
-    b.render(scene, scene.camera(), settings, kPreview);
-    FrameImages ia = a.readback(), ib = b.readback();
+    FrameImages ia = renderOnce(scene, scene.camera(), frame(64)), ib = renderOnce(scene, scene.camera(), frame(64));
     EXPECT_EQ(ia.rgba8, ib.rgba8);
     EXPECT_EQ(0, std::memcmp(ia.radiance.data(), ib.radiance.data(), ia.radiance.size() * sizeof(glm::vec4)));
 }
 
 TEST_F(Render, EmissiveLightIsBrighterThanAlbedoAndSkyMatchesItsColour) {
     Scene scene = loadWorld("cornell.toml");
-    FrameSettings settings;
-    settings.width = 64;
-    settings.height = 64;
-    Renderer renderer(gpu_testing::context());
-    renderer.render(scene, scene.camera(), settings, kPreview);
-    FrameImages img = renderer.readback();
+    FrameImages img = renderOnce(scene, scene.camera(), frame(64));
     MaterialId light = *scene.palette.find("light");
     int lightPixels = 0;
     for (std::size_t i = 0; i < img.gbuffer.size(); ++i) {
@@ -101,12 +68,7 @@ TEST_F(Render, EmissiveLightIsBrighterThanAlbedoAndSkyMatchesItsColour) {
 
 TEST_F(Render, PngAndExrFilesRoundTrip) {
     Scene scene = loadWorld("sandbox.toml");
-    FrameSettings settings;
-    settings.width = 48;
-    settings.height = 32;
-    Renderer renderer(gpu_testing::context());
-    renderer.render(scene, scene.camera(), settings, kPreview);
-    FrameImages img = renderer.readback();
+    FrameImages img = renderOnce(scene, scene.camera(), frame(48, 32));
     auto dir = std::filesystem::temp_directory_path() / "vox_render_test";
     std::filesystem::create_directories(dir);
     ASSERT_TRUE(engine::io::writeExr(dir / "frame.exr", img.width, img.height, img.radiance).ok());

@@ -6,25 +6,16 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <filesystem>
 #include <functional>
 
-#include "gpu/gpu_test_context.h"
+#include "gpu/gpu_test_setup.h"
 #include "gpu/sample_stats.h"
-#include "render/renderer.h"
 #include "scene/scene_file.h"
 #include "world/world_edits.h"
 
 using namespace engine::world;
 using namespace engine::scene;
-using engine::lighting::LightingSettings;
-using engine::lighting::Method;
-using engine::render::FrameImages;
-using engine::render::FrameSettings;
-using engine::render::Renderer;
-
-using gpu_testing::MeanAndError;
-using gpu_testing::meanOfMeans;
+using namespace gpu_testing;
 
 namespace {
 
@@ -67,21 +58,6 @@ Scene lampRoom() {
     scene.grid.clearDirty();
     return scene;
 }
-
-Scene shippedWorld(const char* name) {
-    auto scene = loadSceneFile(std::filesystem::path(VOX_SOURCE_DIR) / "worlds" / (std::string(name) + ".toml"));
-    EXPECT_TRUE(scene.ok()) << (scene.ok() ? "" : scene.error().message);
-    return scene.ok() ? std::move(scene).value() : Scene{};
-}
-
-FrameSettings frame() {
-    FrameSettings f;
-    f.width = kSize;
-    f.height = kSize;
-    return f;
-}
-
-double luminance(const glm::vec4& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
 
 // Surface pixels that do not emit and are at least 3 voxels from any emitter: the light the
 // estimators under test are responsible for, where their variance is finite. (A receiver touching
@@ -137,7 +113,7 @@ ModeRun runMode(Renderer& r, Scene& scene, LightingSettings l, const std::vector
         l.seed = 7000 + std::uint32_t(seed);
         r.resetHistory();
         for (int f = 1; f <= 64; ++f) {
-            r.render(scene, scene.camera(), frame(), l);
+            r.render(scene, scene.camera(), frame(kSize), l);
             if (f != 16 && f != 64) continue;
             std::vector<glm::vec4> img = r.readback().radiance;
             (f == 16 ? means16 : means64).push_back(maskedMean(img, mask));
@@ -201,7 +177,7 @@ void PrintTo(const BiasCase& c, std::ostream* os) { *os << c.name; }
 
 }  // namespace
 
-class RestirBias : public gpu_testing::GpuTest, public ::testing::WithParamInterface<BiasCase> {};
+class RestirBias : public GpuTest, public ::testing::WithParamInterface<BiasCase> {};
 
 // Biased area (the default): mean within 3 % after 16 and 64 frames, and every lit tile within
 // 10 % (averaged over 16 seeds, up to 2 standard errors of their spread). Unbiased area: mean within 4 standard errors (seeds' spread and
@@ -222,7 +198,7 @@ TEST_P(RestirBias, ModesAgreeWithThePathTracer) {
     for (int run = 0; run < kReferenceRuns; ++run) {
         ref.seed = 300 + std::uint32_t(run);
         r.resetHistory();
-        for (int f = 0; f < 32; ++f) r.render(scene, scene.camera(), frame(), ref);
+        for (int f = 0; f < 32; ++f) r.render(scene, scene.camera(), frame(kSize), ref);
         FrameImages img = r.readback();
         if (mask.empty()) mask = measuredMask(img, scene);
         refMeans.push_back(maskedMean(img.radiance, mask));
@@ -270,9 +246,9 @@ TEST_P(RestirBias, ModesAgreeWithThePathTracer) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Worlds, RestirBias,
-                         ::testing::Values(BiasCase{"cornell", [] { return shippedWorld("cornell"); }},
-                                           BiasCase{"mountain", [] { return shippedWorld("mountain"); }},
-                                           BiasCase{"letters", [] { return shippedWorld("letters"); }},
-                                           BiasCase{"apartments", [] { return shippedWorld("apartments"); }},
+                         ::testing::Values(BiasCase{"cornell", [] { return loadWorld("cornell"); }},
+                                           BiasCase{"mountain", [] { return loadWorld("mountain"); }},
+                                           BiasCase{"letters", [] { return loadWorld("letters"); }},
+                                           BiasCase{"apartments", [] { return loadWorld("apartments"); }},
                                            BiasCase{"lamp_room", lampRoom}),
                          [](const ::testing::TestParamInfo<BiasCase>& p) { return std::string(p.param.name); });

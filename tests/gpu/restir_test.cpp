@@ -3,38 +3,26 @@
 
 #include <cmath>
 
-#include "gpu/gpu_test_context.h"
+#include "gpu/gpu_test_setup.h"
 #include "gpu/sample_stats.h"
-#include "render/renderer.h"
-#include "world/ray_traversal.h"
 #include "lighting/emitter_list.h"
+#include "world/ray_traversal.h"
 #include "world/world_edits.h"
 
 using namespace engine::world;
-using engine::lighting::LightingSettings;
-using engine::lighting::Method;
-using engine::render::FrameImages;
-using engine::render::FrameSettings;
-using engine::render::Renderer;
-using gpu_testing::GpuTest;
-
-using gpu_testing::MeanAndError;
-using gpu_testing::meanOfMeans;
+using namespace gpu_testing;
 
 namespace {
 
 constexpr MaterialId kWhite = 1, kRed = 2, kLamp = 3, kBlue = 4;
 
+// Lit by its emitters alone.
 Scene makeScene(glm::ivec3 size) {
-    Scene scene;
-    scene.grid = BrickGrid(size);
-    (void)scene.palette.add(Material{"white", glm::vec3(0.75f)});
-    (void)scene.palette.add(Material{"red", glm::vec3(0.7f, 0.1f, 0.1f)});
-    (void)scene.palette.add(Material{"lamp", glm::vec3(0.8f), glm::vec3(1.0f, 0.85f, 0.6f), 6.0f});
-    (void)scene.palette.add(Material{"blue", glm::vec3(0.8f), glm::vec3(0.3f, 0.5f, 1.0f), 3.0f});
-    scene.sky.sunRadiance = glm::vec3(0.0f);
-    scene.sky.skyRadiance = glm::vec3(0.0f);
-    return scene;
+    return paletteScene(size,
+                        {Material{"white", glm::vec3(0.75f)}, Material{"red", glm::vec3(0.7f, 0.1f, 0.1f)},
+                         Material{"lamp", glm::vec3(0.8f), glm::vec3(1.0f, 0.85f, 0.6f), 6.0f},
+                         Material{"blue", glm::vec3(0.8f), glm::vec3(0.3f, 0.5f, 1.0f), 3.0f}},
+                        true);
 }
 
 // A floor, a back wall, a pillar casting shadows, one 8^3 brick light and three voxel lights.
@@ -52,13 +40,6 @@ Scene roomScene() {
     return scene;
 }
 
-FrameSettings frame(std::uint32_t size) {
-    FrameSettings f;
-    f.width = size;
-    f.height = size;
-    return f;
-}
-
 // Point mode with one candidate and no reuse: with a single emitter the sample is deterministic
 // and W = 1, so the image is exactly the point light's (one shadow ray per pixel).
 FrameImages renderOnePointLightSample(Scene& scene) {
@@ -67,14 +48,7 @@ FrameImages renderOnePointLightSample(Scene& scene) {
     l.area = false;
     l.candidates = 1;
     l.temporal = l.spatial = l.candidateVisibility = false;
-    Renderer r(gpu_testing::context());
-    r.render(scene, scene.camera(), frame(64), l);
-    return r.readback();
-}
-
-std::vector<glm::vec4> renderFrames(Renderer& r, Scene& scene, const LightingSettings& l, std::uint32_t size, int frames) {
-    for (int i = 0; i < frames; ++i) r.render(scene, scene.camera(), frame(size), l);
-    return r.readback().radiance;
+    return renderOnce(scene, scene.camera(), frame(64), l);
 }
 
 std::vector<glm::vec4> reference(Scene& scene, std::uint32_t size, std::uint32_t spp, bool brickLights = true,
@@ -86,20 +60,7 @@ std::vector<glm::vec4> reference(Scene& scene, std::uint32_t size, std::uint32_t
     l.samplesPerFrame = 16;
     l.brickLights = brickLights;
     l.seed = seed;
-    return renderFrames(r, scene, l, size, int(spp / 16));
-}
-
-double meanLuminance(const std::vector<glm::vec4>& img) {
-    double sum = 0.0;
-    for (const glm::vec4& p : img) sum += 0.2126 * p.x + 0.7152 * p.y + 0.0722 * p.z;
-    return sum / double(img.size());
-}
-
-double mae(const std::vector<glm::vec4>& a, const std::vector<glm::vec4>& b) {
-    double sum = 0.0;
-    for (std::size_t i = 0; i < a.size(); ++i)
-        sum += std::abs(a[i].x - b[i].x) + std::abs(a[i].y - b[i].y) + std::abs(a[i].z - b[i].z);
-    return sum / (3.0 * double(a.size()));  // thesis eq. 3-4
+    return renderFrames(r, scene, l, frame(size), int(spp / 16)).radiance;
 }
 
 }  // namespace
@@ -132,7 +93,7 @@ TEST_F(Restir, UnbiasedModeConvergesToReference) {
     for (int s = 0; s < seeds; ++s) {
         l.seed = 1000 + std::uint32_t(s);
         r.resetHistory();
-        std::vector<glm::vec4> img = renderFrames(r, scene, l, size, 4);
+        std::vector<glm::vec4> img = renderFrames(r, scene, l, frame(size), 4).radiance;
         means.push_back(meanLuminance(img));
         for (std::size_t i = 0; i < img.size(); ++i) {
             if (s < seeds / 4) sumFew[i] += img[i];
@@ -344,12 +305,7 @@ TEST_F(Restir, SwitchingALightOffDoesNotBrightenTheOthers) {
     fillBox(edited.grid, brickLight, kEmpty);
     edited.grid.clearDirty();
     std::vector<glm::vec4> ref = reference(edited, size, 2048);
-    auto meanOf = [](const std::vector<glm::vec4>& img) {
-        double sum = 0.0;
-        for (const glm::vec4& p : img) sum += 0.2126 * p.x + 0.7152 * p.y + 0.0722 * p.z;
-        return sum / double(img.size());
-    };
-    const double refMean = meanOf(ref);
+    const double refMean = meanLuminance(ref);
     for (bool unbiased : {false, true}) {
         LightingSettings l;
         l.unbiased = unbiased;
@@ -358,10 +314,10 @@ TEST_F(Restir, SwitchingALightOffDoesNotBrightenTheOthers) {
             Scene s = roomScene();
             l.seed = 40 + seed;
             Renderer r(gpu_testing::context());
-            renderFrames(r, s, l, size, 20);
+            renderFrames(r, s, l, frame(size), 20);
             fillBox(s.grid, brickLight, kEmpty);
-            after1.push_back(meanOf(renderFrames(r, s, l, size, 1)));
-            after4.push_back(meanOf(renderFrames(r, s, l, size, 3)));
+            after1.push_back(meanLuminance(renderFrames(r, s, l, frame(size), 1).radiance));
+            after4.push_back(meanLuminance(renderFrames(r, s, l, frame(size), 3).radiance));
         }
         const MeanAndError a1 = meanOfMeans(after1), a4 = meanOfMeans(after4);
         std::printf("%s: after the brick light went off, mean / converged mean 1 frame later %.3f (+- %.3f), 4 frames "
@@ -388,9 +344,7 @@ TEST_F(Restir, ReferenceDirectLightMatchesQuadrature) {
     const int runs = 8;
     std::vector<std::vector<glm::vec4>> images;
     for (int run = 0; run < runs; ++run) images.push_back(reference(scene, size, 512, true, 900 + std::uint32_t(run)));
-    Renderer gbufferOnly(gpu_testing::context());
-    gbufferOnly.render(scene, scene.camera(), frame(size), LightingSettings{Method::Preview});
-    FrameImages g = gbufferOnly.readback();
+    FrameImages g = renderOnce(scene, scene.camera(), frame(size), kPreview);
 
     engine::lighting::EmitterList lights;
     lights.rebuild(scene);
@@ -433,13 +387,10 @@ TEST_F(Restir, ReferenceDirectLightMatchesQuadrature) {
         }
         // Reference mean and its standard error from the independent runs (luminance).
         double mean = 0.0, var = 0.0;
-        for (const auto& img : images) mean += (0.2126 * img[i].x + 0.7152 * img[i].y + 0.0722 * img[i].z) / runs;
-        for (const auto& img : images) {
-            double l = 0.2126 * img[i].x + 0.7152 * img[i].y + 0.0722 * img[i].z;
-            var += (l - mean) * (l - mean);
-        }
+        for (const auto& img : images) mean += luminance(img[i]) / runs;
+        for (const auto& img : images) var += (luminance(img[i]) - mean) * (luminance(img[i]) - mean);
         double stderrRef = std::sqrt(var / (runs - 1) / runs);
-        double expected = 0.2126 * quad.x + 0.7152 * quad.y + 0.0722 * quad.z;
+        double expected = luminance(glm::vec4(quad, 0.0f));
         double deviation = std::abs(mean - expected) / std::max(stderrRef + 0.005 * expected, 1e-6);
         worst = std::max(worst, deviation);
         outliers += deviation > 4.0;

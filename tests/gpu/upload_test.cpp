@@ -2,28 +2,15 @@
 // a full re-upload gives.
 #include <gtest/gtest.h>
 
-#include "gpu/gpu_test_context.h"
-#include "render/renderer.h"
+#include "gpu/gpu_test_setup.h"
 #include "world/random_worlds.h"
 
 using namespace engine::world;
-using engine::render::FrameImages;
-using engine::render::FrameSettings;
-using engine::render::Renderer;
-using gpu_testing::GpuTest;
-
-namespace {
-const engine::lighting::LightingSettings kPreview{engine::lighting::Method::Preview};
-}  // namespace
+using namespace gpu_testing;
 
 namespace {
 
-FrameSettings smallFrame() {
-    FrameSettings s;
-    s.width = 96;
-    s.height = 72;
-    return s;
-}
+FrameSettings smallFrame() { return frame(96, 72); }
 
 CameraPreset lookingAtWorld(const BrickGrid& grid) {
     CameraPreset c;
