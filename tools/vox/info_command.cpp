@@ -2,7 +2,7 @@
 #include <filesystem>
 
 #include "commands.h"
-#include "render/irradiance_cache.h"
+#include "render/irradiance_cache/irradiance_cache.h"
 #include "io/vdb_info.h"
 #include "shared/brick_grid.h"
 #include "vdb_options.h"

@@ -2,27 +2,29 @@
 // face, material, distance, DDA steps). Shader: shaders/world/primary_rays.comp
 #pragma once
 
-#include "gpu/compute_pipeline.h"
-#include "render/gpu_world.h"
-
-namespace engine::gpu {
-class CommandList;
-}
+#include "render/passes/compute_pass.h"
+#include "render/passes/scene_bindings.h"
+#include "shared/bindings.h"
 
 namespace engine::render {
 
 class PrimaryRayPass {
 public:
-    explicit PrimaryRayPass(gpu::Context& ctx);
     struct Io {
         const GpuWorld& world;          // read
         const gpu::Buffer& frameParams; // read
         gpu::Buffer& gbuffer;           // write
+        auto bindings() const {
+            return joinBindings(worldBindings(world),
+                                std::to_array<PassBinding>({{shared::PRIMARY_BINDING_FRAME, &frameParams},
+                                                            {shared::PRIMARY_BINDING_GBUFFER, &gbuffer}}));
+        }
     };
-    void record(gpu::CommandList& cmd, const Io& io, glm::uvec2 size);
+    explicit PrimaryRayPass(gpu::Context& ctx) : mPass(ctx, "primary_rays", "world/primary_rays", bindingCount<Io>()) {}
+    void record(gpu::CommandList& cmd, const Io& io, glm::uvec2 size) { mPass.record(cmd, io.bindings(), screenGroups(size)); }
 
 private:
-    gpu::ComputePipeline mPipeline;
+    ComputePass mPass;
 };
 
 }  // namespace engine::render

@@ -1,28 +1,28 @@
 // Tonemapping: linear radiance -> exposure -> ACES fit -> sRGB RGBA8. Shader: shaders/post/tonemap.comp
 #pragma once
 
-#include <glm/glm.hpp>
-
-#include "gpu/compute_pipeline.h"
-
-namespace engine::gpu {
-class CommandList;
-}
+#include "render/passes/compute_pass.h"
+#include "shared/bindings.h"
 
 namespace engine::render {
 
 class TonemapPass {
 public:
-    explicit TonemapPass(gpu::Context& ctx);
     struct Io {
         const gpu::Buffer& frameParams;  // read
         const gpu::Buffer& radiance;     // read
         gpu::Buffer& ldr;                // write: packed RGBA8 per pixel
+        auto bindings() const {
+            return std::to_array<PassBinding>({{shared::TONEMAP_BINDING_FRAME, &frameParams},
+                                               {shared::TONEMAP_BINDING_RADIANCE, &radiance},
+                                               {shared::TONEMAP_BINDING_LDR, &ldr}});
+        }
     };
-    void record(gpu::CommandList& cmd, const Io& io, glm::uvec2 size);
+    explicit TonemapPass(gpu::Context& ctx) : mPass(ctx, "tonemap", "post/tonemap", bindingCount<Io>()) {}
+    void record(gpu::CommandList& cmd, const Io& io, glm::uvec2 size) { mPass.record(cmd, io.bindings(), screenGroups(size)); }
 
 private:
-    gpu::ComputePipeline mPipeline;
+    ComputePass mPass;
 };
 
 }  // namespace engine::render

@@ -14,7 +14,7 @@
 
 #include "shared/irradiance_cache.h"
 
-namespace engine::lighting {
+namespace engine::render {
 
 struct CacheKey {
     glm::ivec3 voxel{0};
@@ -23,7 +23,7 @@ struct CacheKey {
 };
 
 std::uint64_t packCacheKey(const CacheKey& key);
-// The bucket a key starts probing at; the shaders compute the same (shaders/common/irradiance_cache.glsl).
+// The bucket a key starts probing at; the shaders compute the same (shaders/irradiance_cache/irradiance_cache.glsl).
 std::uint32_t cacheKeyHash(const CacheKey& key);
 
 struct CacheFrameLists {
@@ -79,4 +79,4 @@ private:
     std::unordered_map<std::uint64_t, std::uint32_t> mIndex;
 };
 
-}  // namespace engine::lighting
+}  // namespace engine::render

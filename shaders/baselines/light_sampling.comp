@@ -5,13 +5,14 @@
 
 #include "common/camera.glsl"
 #include "common/surface.glsl"
+#include "shared/light_sampling.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 0, std430) readonly buffer Params { FrameParams gFrame; };
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 1, std430) readonly buffer Restir { RestirParams gRestir; };
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 2, std430) readonly buffer GBuffer { GBufferTexel gGBuffer[]; };
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 3, std430) writeonly buffer Radiance { vec4 gRadiance[]; };
+layout(set = 0, binding = LIGHT_SAMPLING_BINDING_FRAME, std430) readonly buffer Params { FrameParams gFrame; };
+layout(set = 0, binding = LIGHT_SAMPLING_BINDING_PARAMS, std430) readonly buffer Sampling { LightSamplingParams gSampling; };
+layout(set = 0, binding = LIGHT_SAMPLING_BINDING_GBUFFER, std430) readonly buffer GBuffer { GBufferTexel gGBuffer[]; };
+layout(set = 0, binding = LIGHT_SAMPLING_BINDING_RADIANCE, std430) writeonly buffer Radiance { vec4 gRadiance[]; };
 
 // One sample of emitter `slot` chosen with probability `emitterProbability`: f V / p.
 vec3 sampleEmitter(Surface s, uint slot, float emitterProbability, bool area, inout uint rng) {
@@ -45,15 +46,15 @@ void main() {
     vec3 radiance = s.emission;
     if (s.valid) {
         radiance += sunLight(s, gFrame);
-        bool area = (gRestir.config.y & RESTIR_AREA) != 0u;
-        bool byPower = (gRestir.config.y & RESTIR_ALIAS) != 0u;
-        uint rng = rngInit(pixel, gRestir.config.w, 4u, gRestir.seeds.x);
+        bool area = gSampling.area != 0u;
+        bool byPower = gSampling.byPower != 0u;
+        uint rng = rngInit(pixel, gSampling.frameIndex, 4u, gSampling.seed);
         uint n = gLights.counts.x;
         vec3 direct = vec3(0.0);
-        if (gRestir.seeds.z != 0u) {
+        if (gSampling.everyLight != 0u) {
             for (uint i = 0u; i < n; ++i) direct += sampleEmitter(s, gAlive[i], 1.0, area, rng);
         } else if (n > 0u) {
-            uint samples = max(gRestir.seeds.y, 1u);
+            uint samples = max(gSampling.samples, 1u);
             for (uint i = 0u; i < samples; ++i) {
                 uint slot;
                 if (pickEmitter(rng, byPower, slot)) direct += sampleEmitter(s, slot, emitterPdf(slot, byPower), area, rng);

@@ -1,28 +1,28 @@
 // The irradiance cache's buffers and the helpers its passes share. Every cache pass binds the
 // same list (after the world and the lights), so one layout serves them all. Layouts and the
 // packing of hits: shared/irradiance_cache.h.
-#ifndef COMMON_IRRADIANCE_CACHE_GLSL
-#define COMMON_IRRADIANCE_CACHE_GLSL
+#ifndef IRRADIANCE_CACHE_IRRADIANCE_CACHE_GLSL
+#define IRRADIANCE_CACHE_IRRADIANCE_CACHE_GLSL
 
 #include "common/direct_light.glsl"
 #include "common/scene_trace.glsl"
 #include "shared/gbuffer.h"
 #include "shared/irradiance_cache.h"
 
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 0, std430) readonly buffer CacheParamsBuffer { CacheParams gCache; };
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 1, std430) readonly buffer FrameParamsBuffer { FrameParams gFrame; };
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 2, std430) readonly buffer Directions { vec4 gDirections[]; };
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 3, std430) readonly buffer Entries { CacheEntry gEntries[]; };
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 4, std430) readonly buffer Table { CacheBucket gTable[]; };
+layout(set = 0, binding = CACHE_BINDING_PARAMS, std430) readonly buffer CacheParamsBuffer { CacheParams gCache; };
+layout(set = 0, binding = CACHE_BINDING_FRAME, std430) readonly buffer FrameParamsBuffer { FrameParams gFrame; };
+layout(set = 0, binding = CACHE_BINDING_DIRECTIONS, std430) readonly buffer Directions { vec4 gDirections[]; };
+layout(set = 0, binding = CACHE_BINDING_ENTRIES, std430) readonly buffer Entries { CacheEntry gEntries[]; };
+layout(set = 0, binding = CACHE_BINDING_TABLE, std430) readonly buffer Table { CacheBucket gTable[]; };
 // [0, updates): slots to update; [capacity, capacity + traces): slots to trace statically.
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 5, std430) readonly buffer Lists { uint gLists[]; };
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 6, std430) buffer StaticHits { uint gStaticHits[]; };
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 7, std430) buffer SelectedHits { uint gSelectedHits[]; };
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 8, std430) buffer Irradiance { vec4 gIrradiance[]; };
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 9, std430) buffer Filtered { vec4 gFiltered[]; };
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 10, std430) readonly buffer GBuffer { GBufferTexel gGBuffer[]; };
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 11, std430) buffer Radiance { vec4 gRadiance[]; };
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 12, std430) writeonly buffer Indirect { vec4 gIndirect[]; };
+layout(set = 0, binding = CACHE_BINDING_LISTS, std430) readonly buffer Lists { uint gLists[]; };
+layout(set = 0, binding = CACHE_BINDING_STATIC_HITS, std430) buffer StaticHits { uint gStaticHits[]; };
+layout(set = 0, binding = CACHE_BINDING_SELECTED_HITS, std430) buffer SelectedHits { uint gSelectedHits[]; };
+layout(set = 0, binding = CACHE_BINDING_IRRADIANCE, std430) buffer Irradiance { vec4 gIrradiance[]; };
+layout(set = 0, binding = CACHE_BINDING_FILTERED, std430) buffer Filtered { vec4 gFiltered[]; };
+layout(set = 0, binding = CACHE_BINDING_GBUFFER, std430) readonly buffer GBuffer { GBufferTexel gGBuffer[]; };
+layout(set = 0, binding = CACHE_BINDING_RADIANCE, std430) buffer Radiance { vec4 gRadiance[]; };
+layout(set = 0, binding = CACHE_BINDING_INDIRECT, std430) writeonly buffer Indirect { vec4 gIndirect[]; };
 
 uint cacheThread() { return gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * CACHE_DISPATCH_ROW; }
 
@@ -31,14 +31,14 @@ uint cacheThread() { return gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * 
 // exactly. IrradianceCache::directionRotation is the host's copy.
 uint cacheRotation(ivec3 voxel, uint set) {
     uvec2 key = uvec2(uint(voxel.x) | (uint(voxel.y) << 16u), uint(voxel.z) | (set << 31u));
-    return pcgHash(key.x ^ pcgHash(key.y ^ pcgHash(gCache.frame.w ^ 0x9E3779B9u)));
+    return pcgHash(key.x ^ pcgHash(key.y ^ pcgHash(gCache.seed ^ 0x9E3779B9u)));
 }
 
 // Direction k of face `face` of an entry with rotation `rotation`, in world space. The set comes
 // from the host's table; the mirror (swap, negations) and the face frame only permute and negate
 // components, so host and GPU get the same bits and the cosine distribution is kept.
 vec3 cacheDirection(uint rotation, uint face, uint k) {
-    vec3 local = gDirections[(rotation % CACHE_DIRECTION_SETS) * gCache.counts.z + k].xyz;
+    vec3 local = gDirections[(rotation % CACHE_DIRECTION_SETS) * gCache.directions + k].xyz;
     uint mirror = rotation >> 29u;
     if ((mirror & 1u) != 0u) local.xy = local.yx;
     if ((mirror & 2u) != 0u) local.x = -local.x;
@@ -60,8 +60,8 @@ vec3 cacheRayOrigin(ivec3 voxel, uint face) {
 
 // The direction index the j-th ray of this update uses: all K are covered every K/S updates.
 uint cacheDirectionIndex(uint j) {
-    uint stride = gCache.counts.z / gCache.counts.w;
-    return j * stride + gCache.frame.x % stride;  // the rotation advances with the frame
+    uint stride = gCache.directions / gCache.raysPerUpdate;
+    return j * stride + gCache.frameIndex % stride;  // the rotation advances with the frame
 }
 
 // The hit voxel's offset from the ray's voxel, counted along the ray's direction on each axis
@@ -89,7 +89,7 @@ bool cacheFaceExposed(ivec3 voxel, uint face, uint set) {
 uint cacheLookup(ivec3 voxel, uint set) {
     if (any(lessThan(voxel, ivec3(0))) || any(greaterThan(voxel, ivec3(0xFFFF)))) return ~0u;
     uvec2 key = uvec2(uint(voxel.x) | (uint(voxel.y) << 16u), uint(voxel.z) | (set << 31u));
-    uint mask = gCache.table.x;
+    uint mask = gCache.tableMask;
     uint b = pcgHash(key.x ^ pcgHash(key.y)) & mask;
     for (uint i = 0u; i <= mask; ++i) {
         uvec4 e = gTable[b].keySlot;
@@ -104,7 +104,7 @@ uint cacheLookup(ivec3 voxel, uint set) {
 float cacheFade(uint slot) {
     CacheEntry e = gEntries[slot];
     if (uint(e.voxel.w) == CACHE_SET_STATIC) return 1.0;
-    return clamp(1.0 - (gCache.blend.z - e.time.x) / gCache.blend.w, 0.0, 1.0);
+    return clamp(1.0 - (gCache.time - e.time.x) / gCache.fadeSeconds, 0.0, 1.0);
 }
 
 #endif

@@ -4,20 +4,20 @@
 // values never cross a one-voxel wall (its two sides are different faces).
 #extension GL_GOOGLE_include_directive : require
 
-#include "common/irradiance_cache.glsl"
+#include "irradiance_cache/irradiance_cache.glsl"
 
 layout(local_size_x = CACHE_GROUP_SIZE) in;
 
 void main() {
     uint thread = cacheThread();
     uint item = thread / CACHE_FACES;
-    if (item >= gCache.counts.x) return;
+    if (item >= gCache.updates) return;
     uint face = thread % CACHE_FACES;
     uint slot = gLists[item];
     CacheEntry entry = gEntries[slot];
     uint index = slot * CACHE_FACES + face;
     vec4 own = gIrradiance[index];
-    if ((gCache.table.z & CACHE_FLAG_NO_FILTER) != 0u || own.w == 0.0) {
+    if ((gCache.flags & CACHE_FLAG_NO_FILTER) != 0u || own.w == 0.0) {
         gFiltered[index] = vec4(own.rgb, own.w > 0.0 ? 1.0 : 0.0);
         return;
     }

@@ -6,7 +6,7 @@
 // entry's running value.
 #extension GL_GOOGLE_include_directive : require
 
-#include "common/irradiance_cache.glsl"
+#include "irradiance_cache/irradiance_cache.glsl"
 
 layout(local_size_x = CACHE_GROUP_SIZE) in;
 
@@ -26,7 +26,7 @@ vec3 lightLeaving(ivec3 voxel, uint face, vec3 o, vec3 d, uint packed, inout uin
     s.albedo = gMaterials[material].albedo.rgb;
     s.emission = vec3(0.0);  // emitters are the direct-light passes' job
     vec3 L = directLight(s, gFrame, rng);
-    if (gCache.frame.z > 1u) {
+    if (gCache.bounces > 1u) {
         uint hs = cacheLookup(hv, dynamicHit ? CACHE_SET_DYNAMIC : CACHE_SET_STATIC);
         if (hs != ~0u && gEntries[hs].time.y == 0.0) L += s.albedo / PI * gFiltered[hs * CACHE_FACES + hf].rgb * cacheFade(hs);
     }
@@ -34,10 +34,10 @@ vec3 lightLeaving(ivec3 voxel, uint face, vec3 o, vec3 d, uint packed, inout uin
 }
 
 void main() {
-    uint S = gCache.counts.w;
+    uint S = gCache.raysPerUpdate;
     uint thread = cacheThread();
     uint item = thread / CACHE_FACES;
-    if (item >= gCache.counts.x) return;
+    if (item >= gCache.updates) return;
     uint face = thread % CACHE_FACES;
     uint slot = gLists[item];
     CacheEntry entry = gEntries[slot];
@@ -47,7 +47,7 @@ void main() {
         gIrradiance[index] = vec4(0.0);
         return;
     }
-    uint rng = rngInit(uvec2(slot, face), gCache.frame.x, 11u, gCache.frame.w);
+    uint rng = rngInit(uvec2(slot, face), gCache.frameIndex, 11u, gCache.seed);
     vec3 o = cacheRayOrigin(voxel, face);
     vec3 sum = vec3(0.0);
     uint rotation = cacheRotation(voxel, uint(entry.voxel.w));  // the directions its hits were traced along
@@ -60,6 +60,6 @@ void main() {
     // entry converges as fast as its samples allow and then keeps alpha's stability.
     vec4 old = entry.time.y > 0.0 ? vec4(0.0) : gIrradiance[index];
     float n = old.w + 1.0;
-    float a = max(gCache.blend.x, 1.0 / n);
+    float a = max(gCache.alpha, 1.0 / n);
     gIrradiance[index] = vec4(mix(old.rgb, fresh, a), n);
 }

@@ -4,4 +4,4 @@
 
 #define VISIBILITY_SET CACHE_SET_STATIC
 #define VISIBILITY_MODE VISIBILITY_DIVIDE
-#include "cache/update_visibility.glsl"
+#include "irradiance_cache/update_visibility.glsl"

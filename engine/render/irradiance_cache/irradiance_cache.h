@@ -1,5 +1,6 @@
 // The voxel-face irradiance cache on the GPU (Cosin Ayerbe et al. §4; layouts in
-// shaders/shared/irradiance_cache.h, host bookkeeping in lighting/irradiance_cache_directory.h).
+// shaders/shared/irradiance_cache.h, host bookkeeping in irradiance_cache_directory.h, shaders in
+// shaders/irradiance_cache/).
 //
 // Each frame, after the primary rays: prepare() reads the visible voxels off the G-buffer (plus
 // an N^3 neighbourhood around visible dynamic voxels), updates the directory and queues the
@@ -18,9 +19,8 @@
 #include <vector>
 
 #include "gpu/buffer.h"
-#include "gpu/compute_pipeline.h"
-#include "lighting/irradiance_cache_directory.h"
 #include "lighting/irradiance_cache_settings.h"
+#include "render/irradiance_cache/irradiance_cache_directory.h"
 #include "render/passes/lit_pass.h"
 #include "shared/gbuffer.h"
 
@@ -62,7 +62,7 @@ public:
     void clear();
 
     const IrradianceCacheStats& stats() const { return mStats; }
-    const lighting::IrradianceCacheDirectory& directory() const { return mDirectory; }
+    const IrradianceCacheDirectory& directory() const { return mDirectory; }
     // For tests: this frame's update list and the selected hit of each traced ray.
     std::span<const std::uint32_t> updateList() const { return mUpdate; }
     const gpu::Buffer& selectedHits() const { return mSelectedHits; }
@@ -71,9 +71,9 @@ public:
     std::uint32_t directionIndex(std::uint32_t j) const;
     // All CACHE_DIRECTION_SETS direction sets, K each, in the face frame.
     std::span<const glm::vec4> directions() const { return mDirections; }
-    // The host's copy of the shaders' per-entry directions (common/irradiance_cache.glsl), bit for
-    // bit: which set and mirror entry (voxel, set) uses under a lighting seed, and its direction k
-    // on `face` in world space under the current seed.
+    // The host's copy of the shaders' per-entry directions (irradiance_cache.glsl), bit for bit:
+    // which set and mirror entry (voxel, set) uses under a lighting seed, and its direction k on
+    // `face` in world space under the current seed.
     static std::uint32_t directionRotation(glm::ivec3 voxel, std::uint32_t set, std::uint32_t seed);
     glm::vec3 rayDirection(glm::ivec3 voxel, std::uint32_t set, std::uint32_t face, std::uint32_t k) const;
     static std::uint64_t bytesPerSlot(const lighting::IrradianceCacheSettings& settings);
@@ -81,16 +81,14 @@ public:
 private:
     void reset(const lighting::IrradianceCacheSettings& settings, std::uint32_t seed);
     void ensureCapacity(std::uint32_t slots, gpu::CommandList& cmd);
-    void dispatch(gpu::CommandList& cmd, gpu::ComputePipeline& pipeline, const char* name, std::uint64_t threads,
-                  std::span<const gpu::Buffer* const> buffers);
 
     gpu::Context& mCtx;
-    gpu::ComputePipeline mTraceStatic, mVisibilityStatic, mVisibilityStaticFull, mVisibilityDynamic, mBounce, mFilter, mGather;
+    LitPass mTraceStatic, mVisibilityStatic, mVisibilityStaticFull, mVisibilityDynamic, mBounce, mFilter, mGather;
     lighting::IrradianceCacheSettings mSettings;
     bool mConfigured = false;
     bool mDirectionsUploaded = false;
     std::uint32_t mSeed = 0;  // the lighting seed the cached hits were traced with
-    lighting::IrradianceCacheDirectory mDirectory{1};
+    IrradianceCacheDirectory mDirectory{1};
     std::vector<glm::vec4> mDirections;
     std::vector<std::uint32_t> mUpdate, mTrace;  // mUpdate: static entries first
     std::uint32_t mStaticUpdates = 0;

@@ -6,14 +6,14 @@
 // Adds albedo/pi * E to the frame's radiance.
 #extension GL_GOOGLE_include_directive : require
 
-#include "common/irradiance_cache.glsl"
+#include "irradiance_cache/irradiance_cache.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
 void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;
-    if (any(greaterThanEqual(pixel, gCache.image.xy))) return;
-    uint index = pixel.x + pixel.y * gCache.image.x;
+    if (any(greaterThanEqual(pixel, uvec2(gCache.width, gCache.height)))) return;
+    uint index = pixel.x + pixel.y * gCache.width;
     GBufferTexel g = gGBuffer[index];
     uint face = uint(g.voxel.w);
     vec3 indirect = vec3(0.0);

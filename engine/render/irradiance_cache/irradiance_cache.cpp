@@ -1,4 +1,4 @@
-#include "render/irradiance_cache.h"
+#include "render/irradiance_cache/irradiance_cache.h"
 
 #include <algorithm>
 #include <bit>
@@ -10,14 +10,45 @@
 #include "core/hash.h"
 #include "gpu/command_list.h"
 #include "gpu/uploader.h"
-#include "shared/bindings.h"
+#include "render/irradiance_cache/cache_params.h"
 #include "shared/irradiance_cache.h"
 
 namespace engine::render {
 
 namespace {
 
-constexpr std::uint32_t kOwnBindings = 13;
+// The buffers every cache pass binds (shaders/irradiance_cache/irradiance_cache.glsl).
+struct CachePassIo {
+    const gpu::Buffer& params;
+    const gpu::Buffer& frameParams;
+    const gpu::Buffer& directions;
+    const gpu::Buffer& entries;
+    const gpu::Buffer& table;
+    const gpu::Buffer& lists;
+    gpu::Buffer& staticHits;
+    gpu::Buffer& selectedHits;
+    gpu::Buffer& irradiance;
+    gpu::Buffer& filtered;
+    const gpu::Buffer& gbuffer;
+    gpu::Buffer& radiance;  // read and written: the indirect term is added
+    gpu::Buffer& indirect;  // written: the indirect term alone
+    auto bindings() const {
+        return std::to_array<PassBinding>({{shared::CACHE_BINDING_PARAMS, &params},
+                                           {shared::CACHE_BINDING_FRAME, &frameParams},
+                                           {shared::CACHE_BINDING_DIRECTIONS, &directions},
+                                           {shared::CACHE_BINDING_ENTRIES, &entries},
+                                           {shared::CACHE_BINDING_TABLE, &table},
+                                           {shared::CACHE_BINDING_LISTS, &lists},
+                                           {shared::CACHE_BINDING_STATIC_HITS, &staticHits},
+                                           {shared::CACHE_BINDING_SELECTED_HITS, &selectedHits},
+                                           {shared::CACHE_BINDING_IRRADIANCE, &irradiance},
+                                           {shared::CACHE_BINDING_FILTERED, &filtered},
+                                           {shared::CACHE_BINDING_GBUFFER, &gbuffer},
+                                           {shared::CACHE_BINDING_RADIANCE, &radiance},
+                                           {shared::CACHE_BINDING_INDIRECT, &indirect}});
+    }
+};
+constexpr std::uint32_t kOwnBindings = bindingCount<CachePassIo>();
 
 // CACHE_DIRECTION_SETS sets of K cosine-distributed directions in a face's frame (z along the
 // normal). The base set is a jittered Fibonacci lattice in (u1, u2) = (r^2, phi / 2pi); set r is
@@ -52,23 +83,25 @@ std::vector<glm::vec4> makeDirections(std::uint32_t count) {
     return out;
 }
 
-std::uint64_t threadGroups(std::uint64_t threads, std::uint32_t& groupsY) {
+// Workgroups of CACHE_GROUP_SIZE threads for a 1-D grid of `threads`, in rows of 65535 groups
+// (the shaders' cacheThread() undoes it).
+glm::uvec2 threadGroups(std::uint64_t threads) {
     std::uint64_t groups = (threads + shared::CACHE_GROUP_SIZE - 1) / shared::CACHE_GROUP_SIZE;
-    groupsY = static_cast<std::uint32_t>((groups + 65534) / 65535);
-    return std::min<std::uint64_t>(groups, 65535);
+    return {static_cast<std::uint32_t>(std::min<std::uint64_t>(groups, 65535)),
+            static_cast<std::uint32_t>((groups + 65534) / 65535)};
 }
 
 }  // namespace
 
 IrradianceCache::IrradianceCache(gpu::Context& ctx)
     : mCtx(ctx),
-      mTraceStatic(ctx, "cache/trace_static", shared::LIT_PASS_BINDING_FIRST + kOwnBindings),
-      mVisibilityStatic(ctx, "cache/visibility_static", shared::LIT_PASS_BINDING_FIRST + kOwnBindings),
-      mVisibilityStaticFull(ctx, "cache/visibility_static_full", shared::LIT_PASS_BINDING_FIRST + kOwnBindings),
-      mVisibilityDynamic(ctx, "cache/visibility_dynamic", shared::LIT_PASS_BINDING_FIRST + kOwnBindings),
-      mBounce(ctx, "cache/light_bounce", shared::LIT_PASS_BINDING_FIRST + kOwnBindings),
-      mFilter(ctx, "cache/filter", shared::LIT_PASS_BINDING_FIRST + kOwnBindings),
-      mGather(ctx, "cache/gather", shared::LIT_PASS_BINDING_FIRST + kOwnBindings) {
+      mTraceStatic(ctx, "cache.trace_static", "irradiance_cache/trace_static", kOwnBindings),
+      mVisibilityStatic(ctx, "cache.visibility_static", "irradiance_cache/visibility_static", kOwnBindings),
+      mVisibilityStaticFull(ctx, "cache.visibility_static", "irradiance_cache/visibility_static_full", kOwnBindings),
+      mVisibilityDynamic(ctx, "cache.visibility_dynamic", "irradiance_cache/visibility_dynamic", kOwnBindings),
+      mBounce(ctx, "cache.bounce", "irradiance_cache/light_bounce", kOwnBindings),
+      mFilter(ctx, "cache.filter", "irradiance_cache/filter", kOwnBindings),
+      mGather(ctx, "cache.gather", "irradiance_cache/gather", kOwnBindings) {
     mParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::CacheParams), "cache.params");
 }
 
@@ -116,7 +149,7 @@ void IrradianceCache::reset(const lighting::IrradianceCacheSettings& settings, s
     mDirectionsUploaded = false;
     auto slots = static_cast<std::uint32_t>(
         std::clamp<std::uint64_t>(settings.budgetBytes / bytesPerSlot(settings), 1, 1u << 24));
-    mDirectory = lighting::IrradianceCacheDirectory(slots);
+    mDirectory = IrradianceCacheDirectory(slots);
     mDirections = makeDirections(settings.directions);
     mDirectionBuffer = gpu::Buffer(mCtx, gpu::BufferKind::Storage, mDirections.size() * sizeof(glm::vec4), "cache.directions");
     mCapacity = 0;
@@ -163,14 +196,14 @@ void IrradianceCache::prepare(const lighting::IrradianceCacheSettings& settings,
     // Visible voxels, from this frame's G-buffer; an N^3 neighbourhood around the dynamic ones so
     // the values a moving object interpolates are ready before it gets there (§4.4).
     std::unordered_set<std::uint64_t> seenStatic, seenDynamic;
-    std::vector<lighting::CacheKey> visible;
+    std::vector<CacheKey> visible;
     std::vector<glm::ivec3> dynamicVoxels;
     for (const shared::GBufferTexel& g : gbuffer) {
         if (static_cast<std::uint32_t>(g.voxel.w) >= 6u) continue;
         glm::ivec3 v(g.voxel);
         if ((g.data.w & shared::GBUFFER_FLAG_DYNAMIC) != 0u) {
-            if (seenDynamic.insert(lighting::packCacheKey({v, shared::CACHE_SET_DYNAMIC})).second) dynamicVoxels.push_back(v);
-        } else if (seenStatic.insert(lighting::packCacheKey({v, shared::CACHE_SET_STATIC})).second) {
+            if (seenDynamic.insert(packCacheKey({v, shared::CACHE_SET_DYNAMIC})).second) dynamicVoxels.push_back(v);
+        } else if (seenStatic.insert(packCacheKey({v, shared::CACHE_SET_STATIC})).second) {
             visible.push_back({v, shared::CACHE_SET_STATIC});
         }
     }
@@ -184,15 +217,15 @@ void IrradianceCache::prepare(const lighting::IrradianceCacheSettings& settings,
                 for (int x = -half; x <= half; ++x) {
                     glm::ivec3 n = v + glm::ivec3(x, y, z);
                     if (glm::any(glm::lessThan(n, glm::ivec3(0))) || glm::any(glm::greaterThan(n, glm::ivec3(0xFFFE)))) continue;
-                    lighting::CacheKey key{n, shared::CACHE_SET_DYNAMIC};
-                    if (added.insert(lighting::packCacheKey(key)).second) visible.push_back(key);
+                    CacheKey key{n, shared::CACHE_SET_DYNAMIC};
+                    if (added.insert(packCacheKey(key)).second) visible.push_back(key);
                 }
             }
         }
     }
 
     mStats.invalidated = mDirectory.invalidateStatic(editedCellMins, settings.maxRayLength);
-    lighting::CacheFrameLists lists = mDirectory.beginFrame(visible, timeSeconds, settings.fadeSeconds);
+    CacheFrameLists lists = mDirectory.beginFrame(visible, timeSeconds, settings.fadeSeconds);
     mUpdate = std::move(lists.update);
     auto dynamicFirst = std::stable_partition(mUpdate.begin(), mUpdate.end(), [&](std::uint32_t slot) {
         return mDirectory.entry(slot).voxel.w == static_cast<int>(shared::CACHE_SET_STATIC);
@@ -227,52 +260,36 @@ void IrradianceCache::prepare(const lighting::IrradianceCacheSettings& settings,
         mDirectionsUploaded = true;
     }
 
-    shared::CacheParams params{};
-    params.counts = glm::uvec4(mUpdate.size(), mTrace.size(), settings.directions, settings.raysPerUpdate);
-    params.frame = glm::uvec4(frameIndex, 0u, settings.bounces, seed);
-    params.blend = glm::vec4(settings.alpha, std::min(settings.maxRayLength, shared::CACHE_MAX_RAY_LENGTH),
-                             static_cast<float>(timeSeconds), settings.fadeSeconds);
-    params.table = glm::uvec4(static_cast<std::uint32_t>(mTable.size() / sizeof(shared::CacheBucket)) - 1u, mCapacity,
-                              (settings.filter ? 0u : shared::CACHE_FLAG_NO_FILTER) |
-                                  (settings.fullRetrace ? shared::CACHE_FLAG_FULL_RETRACE : 0u),
-                              0u);
-    params.image = glm::uvec4(size, mStaticUpdates, 0u);
+    CacheFrame frame;
+    frame.updates = static_cast<std::uint32_t>(mUpdate.size());
+    frame.staticUpdates = mStaticUpdates;
+    frame.traces = static_cast<std::uint32_t>(mTrace.size());
+    frame.buckets = static_cast<std::uint32_t>(mTable.size() / sizeof(shared::CacheBucket));
+    frame.capacity = mCapacity;
+    frame.frameIndex = frameIndex;
+    frame.seed = seed;
+    frame.image = size;
+    frame.timeSeconds = timeSeconds;
+    const shared::CacheParams params = cacheParams(settings, frame);
     uploader.write(mParams, 0, &params, sizeof(params));
 
     mStats.bytes = mParams.size() + mDirectionBuffer.size() + mEntries.size() + mTable.size() + mLists.size() +
                    mStaticHits.size() + mSelectedHits.size() + mIrradiance.size() + mFiltered.size();
 }
 
-void IrradianceCache::dispatch(gpu::CommandList& cmd, gpu::ComputePipeline& pipeline, const char* name,
-                               std::uint64_t threads, std::span<const gpu::Buffer* const> buffers) {
-    cmd.beginPass(name);
-    if (threads > 0) {
-        std::uint32_t groupsY = 1;
-        auto groupsX = static_cast<std::uint32_t>(threadGroups(threads, groupsY));
-        pipeline.dispatch(cmd, buffers, groupsX, groupsY);
-    }
-    cmd.endPass();
-    cmd.barrier();
-}
-
 void IrradianceCache::record(gpu::CommandList& cmd, const SceneBindings& scene, const Io& io) {
     CHECK(mConfigured);
-    const std::vector<const gpu::Buffer*> buffers{
-        &scene.world.info(), &scene.world.cells(), &scene.world.pageTable(), &scene.world.palette(),
-        &scene.lights.info(), &scene.lights.emitters(), &scene.lights.alive(), &scene.lights.alias(),
-        &mParams, &io.frameParams, &mDirectionBuffer, &mEntries, &mTable, &mLists, &mStaticHits, &mSelectedHits,
-        &mIrradiance, &mFiltered, &io.gbuffer, &io.radiance, &io.indirect};
+    const CachePassIo own{mParams,     io.frameParams, mDirectionBuffer, mEntries,    mTable,      mLists,      mStaticHits,
+                          mSelectedHits, mIrradiance,  mFiltered,        io.gbuffer, io.radiance, io.indirect};
+    const auto bindings = own.bindings();
     const std::uint64_t faces = shared::CACHE_FACES;
-    dispatch(cmd, mTraceStatic, "cache.trace_static", mTrace.size() * faces * mSettings.directions, buffers);
-    dispatch(cmd, mSettings.fullRetrace ? mVisibilityStaticFull : mVisibilityStatic, "cache.visibility_static",
-             mStaticUpdates * faces, buffers);
-    dispatch(cmd, mVisibilityDynamic, "cache.visibility_dynamic", (mUpdate.size() - mStaticUpdates) * faces, buffers);
-    dispatch(cmd, mBounce, "cache.bounce", mUpdate.size() * faces, buffers);
-    dispatch(cmd, mFilter, "cache.filter", mUpdate.size() * faces, buffers);
-    cmd.beginPass("cache.gather");
-    mGather.dispatch(cmd, buffers, (mImage.x + 7) / 8, (mImage.y + 7) / 8);
-    cmd.endPass();
-    cmd.barrier();
+    mTraceStatic.record(cmd, scene, bindings, threadGroups(mTrace.size() * faces * mSettings.directions));
+    (mSettings.fullRetrace ? mVisibilityStaticFull : mVisibilityStatic)
+        .record(cmd, scene, bindings, threadGroups(mStaticUpdates * faces));
+    mVisibilityDynamic.record(cmd, scene, bindings, threadGroups((mUpdate.size() - mStaticUpdates) * faces));
+    mBounce.record(cmd, scene, bindings, threadGroups(mUpdate.size() * faces));
+    mFilter.record(cmd, scene, bindings, threadGroups(mUpdate.size() * faces));
+    mGather.record(cmd, scene, bindings, screenGroups(mImage));
 }
 
 }  // namespace engine::render

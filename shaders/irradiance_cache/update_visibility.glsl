@@ -10,17 +10,17 @@
 //                      full-re-trace comparison mode)
 #define VISIBILITY_DIVIDE 0
 #define VISIBILITY_FULL 1
-#include "common/irradiance_cache.glsl"
+#include "irradiance_cache/irradiance_cache.glsl"
 
 layout(local_size_x = CACHE_GROUP_SIZE) in;
 
 // The selected hit of ray j of `face` of a static entry, or of a dynamic entry.
 uint selectHit(uint slot, ivec3 voxel, uint set, uint rotation, uint face, uint j) {
-    uint K = gCache.counts.z;
+    uint K = gCache.directions;
     uint k = cacheDirectionIndex(j);
     vec3 o = cacheRayOrigin(voxel, face);
     vec3 d = cacheDirection(rotation, face, k);
-    float maxLength = gCache.blend.y;
+    float maxLength = gCache.maxRayLength;
 #if !defined(VISIBILITY_MODE)
 #error "define VISIBILITY_MODE"
 #elif VISIBILITY_MODE == VISIBILITY_DIVIDE
@@ -41,12 +41,12 @@ uint selectHit(uint slot, ivec3 voxel, uint set, uint rotation, uint face, uint 
 // One invocation per face of an entry, looping over its S rays: the entry and the face's
 // exposure are read once, not per ray.
 void main() {
-    uint S = gCache.counts.w;
+    uint S = gCache.raysPerUpdate;
     uint thread = cacheThread();
-    uint staticEntries = gCache.image.z;
+    uint staticEntries = gCache.staticUpdates;
     uint item = thread / CACHE_FACES;
     if (VISIBILITY_SET == CACHE_SET_DYNAMIC) item += staticEntries;
-    if (item >= (VISIBILITY_SET == CACHE_SET_STATIC ? staticEntries : gCache.counts.x)) return;
+    if (item >= (VISIBILITY_SET == CACHE_SET_STATIC ? staticEntries : gCache.updates)) return;
     uint face = thread % CACHE_FACES;
     uint slot = gLists[item];
     CacheEntry entry = gEntries[slot];

@@ -1,11 +1,11 @@
-#include "lighting/irradiance_cache_directory.h"
+#include "render/irradiance_cache/irradiance_cache_directory.h"
 
 #include <algorithm>
 #include <bit>
 
 #include "core/hash.h"
 
-namespace engine::lighting {
+namespace engine::render {
 
 namespace {
 
@@ -171,4 +171,4 @@ std::vector<shared::CacheBucket> IrradianceCacheDirectory::buildTable() const {
     return table;
 }
 
-}  // namespace engine::lighting
+}  // namespace engine::render

@@ -1,0 +1,34 @@
+// Reference path tracer: adds samples to a running sum per pixel and writes the mean. It traces
+// its own camera rays (box-filtered pixels), so it does not read the G-buffer.
+// Shader: shaders/reference/path_trace.comp
+#pragma once
+
+#include "render/passes/lit_pass.h"
+#include "shared/reference.h"
+
+namespace engine::render {
+
+class ReferencePass {
+public:
+    struct Io {
+        const gpu::Buffer& frameParams;  // read
+        const gpu::Buffer& params;       // read: ReferenceParams
+        gpu::Buffer& accumulation;       // read and write
+        gpu::Buffer& radiance;           // write
+        auto bindings() const {
+            return std::to_array<PassBinding>({{shared::REFERENCE_BINDING_FRAME, &frameParams},
+                                               {shared::REFERENCE_BINDING_PARAMS, &params},
+                                               {shared::REFERENCE_BINDING_ACCUMULATION, &accumulation},
+                                               {shared::REFERENCE_BINDING_RADIANCE, &radiance}});
+        }
+    };
+    explicit ReferencePass(gpu::Context& ctx) : mPass(ctx, "reference", "reference/path_trace", bindingCount<Io>()) {}
+    void record(gpu::CommandList& cmd, const SceneBindings& scene, const Io& io, glm::uvec2 size) {
+        mPass.record(cmd, scene, io.bindings(), screenGroups(size));
+    }
+
+private:
+    LitPass mPass;
+};
+
+}  // namespace engine::render
