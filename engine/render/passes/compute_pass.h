@@ -1,9 +1,10 @@
 // ComputePass: the one shape of every pass — a labelled, timed compute dispatch whose storage
 // buffers are bound by number. A pass's Io struct lists its buffers with the binding numbers the
 // shader side takes from shaders/shared/ (bindings()), so the count of bindings follows from the
-// list and a buffer cannot land on another buffer's binding. LitPass adds the world and the
-// emitter list in front; the technique passes (render/restir/, render/baselines/,
-// render/reference/, render/irradiance_cache/) name their own buffers.
+// list and a buffer cannot land on another buffer's binding. ScreenPass runs one over the image;
+// LitPass (lit_pass.h) adds the world and the emitter list in front. The technique passes
+// (render/restir/, render/baselines/, render/reference/, render/irradiance_cache/) name their
+// own buffers.
 #pragma once
 
 #include <array>
@@ -61,6 +62,21 @@ private:
     std::string mName;
     std::uint32_t mBindingCount;
     gpu::ComputePipeline mPipeline;
+};
+
+// A ComputePass over the image whose buffers are an Io struct's (see bindingCount): a pass that
+// shades pixels derives from it and names only its label and shader.
+template <class Io>
+class ScreenPass {
+public:
+    ScreenPass(gpu::Context& ctx, std::string name, const std::string& shader)
+        : mPass(ctx, std::move(name), shader, bindingCount<Io>()) {}
+    void record(gpu::CommandList& cmd, const Io& io, glm::uvec2 size) {
+        mPass.record(cmd, io.bindings(), screenGroups(size));
+    }
+
+private:
+    ComputePass mPass;
 };
 
 }  // namespace engine::render

@@ -22,4 +22,19 @@ private:
     ComputePass mPass;
 };
 
+// A LitPass over the image whose own buffers are an Io struct's (see bindingCount): a technique
+// pass that shades pixels derives from it and names only its label and shader.
+template <class Io>
+class ScreenLitPass {
+public:
+    ScreenLitPass(gpu::Context& ctx, std::string name, const std::string& shader)
+        : mPass(ctx, std::move(name), shader, bindingCount<Io>()) {}
+    void record(gpu::CommandList& cmd, const SceneBindings& scene, const Io& io, glm::uvec2 size) {
+        mPass.record(cmd, scene, io.bindings(), screenGroups(size));
+    }
+
+private:
+    LitPass mPass;
+};
+
 }  // namespace engine::render

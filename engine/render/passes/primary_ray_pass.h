@@ -8,23 +8,21 @@
 
 namespace engine::render {
 
-class PrimaryRayPass {
-public:
-    struct Io {
-        const GpuWorld& world;          // read
-        const gpu::Buffer& frameParams; // read
-        gpu::Buffer& gbuffer;           // write
-        auto bindings() const {
-            return joinBindings(worldBindings(world),
-                                std::to_array<PassBinding>({{shared::PRIMARY_BINDING_FRAME, &frameParams},
-                                                            {shared::PRIMARY_BINDING_GBUFFER, &gbuffer}}));
-        }
-    };
-    explicit PrimaryRayPass(gpu::Context& ctx) : mPass(ctx, "primary_rays", "world/primary_rays", bindingCount<Io>()) {}
-    void record(gpu::CommandList& cmd, const Io& io, glm::uvec2 size) { mPass.record(cmd, io.bindings(), screenGroups(size)); }
+struct PrimaryRayIo {
+    const GpuWorld& world;          // read
+    const gpu::Buffer& frameParams; // read
+    gpu::Buffer& gbuffer;           // write
+    auto bindings() const {
+        return joinBindings(worldBindings(world),
+                            std::to_array<PassBinding>({{shared::PRIMARY_BINDING_FRAME, &frameParams},
+                                                        {shared::PRIMARY_BINDING_GBUFFER, &gbuffer}}));
+    }
+};
 
-private:
-    ComputePass mPass;
+class PrimaryRayPass : public ScreenPass<PrimaryRayIo> {
+public:
+    using Io = PrimaryRayIo;
+    explicit PrimaryRayPass(gpu::Context& ctx) : ScreenPass(ctx, "primary_rays", "world/primary_rays") {}
 };
 
 }  // namespace engine::render

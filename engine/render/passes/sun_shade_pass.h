@@ -8,27 +8,25 @@
 
 namespace engine::render {
 
-class SunShadePass {
-public:
-    struct Io {
-        const GpuWorld& world;           // read
-        const gpu::Buffer& frameParams;  // read
-        const gpu::Buffer& gbuffer;      // read
-        gpu::Buffer& radiance;           // write: vec4 per pixel
-        gpu::Buffer& rayStats;           // write: uvec4 per pixel
-        auto bindings() const {
-            return joinBindings(worldBindings(world),
-                                std::to_array<PassBinding>({{shared::SUN_BINDING_FRAME, &frameParams},
-                                                            {shared::SUN_BINDING_GBUFFER, &gbuffer},
-                                                            {shared::SUN_BINDING_RADIANCE, &radiance},
-                                                            {shared::SUN_BINDING_RAY_STATS, &rayStats}}));
-        }
-    };
-    explicit SunShadePass(gpu::Context& ctx) : mPass(ctx, "shade_sun", "world/shade_sun", bindingCount<Io>()) {}
-    void record(gpu::CommandList& cmd, const Io& io, glm::uvec2 size) { mPass.record(cmd, io.bindings(), screenGroups(size)); }
+struct SunShadeIo {
+    const GpuWorld& world;           // read
+    const gpu::Buffer& frameParams;  // read
+    const gpu::Buffer& gbuffer;      // read
+    gpu::Buffer& radiance;           // write: vec4 per pixel
+    gpu::Buffer& rayStats;           // write: uvec4 per pixel
+    auto bindings() const {
+        return joinBindings(worldBindings(world),
+                            std::to_array<PassBinding>({{shared::SUN_BINDING_FRAME, &frameParams},
+                                                        {shared::SUN_BINDING_GBUFFER, &gbuffer},
+                                                        {shared::SUN_BINDING_RADIANCE, &radiance},
+                                                        {shared::SUN_BINDING_RAY_STATS, &rayStats}}));
+    }
+};
 
-private:
-    ComputePass mPass;
+class SunShadePass : public ScreenPass<SunShadeIo> {
+public:
+    using Io = SunShadeIo;
+    explicit SunShadePass(gpu::Context& ctx) : ScreenPass(ctx, "shade_sun", "world/shade_sun") {}
 };
 
 }  // namespace engine::render

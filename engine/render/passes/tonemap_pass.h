@@ -6,23 +6,21 @@
 
 namespace engine::render {
 
-class TonemapPass {
-public:
-    struct Io {
-        const gpu::Buffer& frameParams;  // read
-        const gpu::Buffer& radiance;     // read
-        gpu::Buffer& ldr;                // write: packed RGBA8 per pixel
-        auto bindings() const {
-            return std::to_array<PassBinding>({{shared::TONEMAP_BINDING_FRAME, &frameParams},
-                                               {shared::TONEMAP_BINDING_RADIANCE, &radiance},
-                                               {shared::TONEMAP_BINDING_LDR, &ldr}});
-        }
-    };
-    explicit TonemapPass(gpu::Context& ctx) : mPass(ctx, "tonemap", "post/tonemap", bindingCount<Io>()) {}
-    void record(gpu::CommandList& cmd, const Io& io, glm::uvec2 size) { mPass.record(cmd, io.bindings(), screenGroups(size)); }
+struct TonemapIo {
+    const gpu::Buffer& frameParams;  // read
+    const gpu::Buffer& radiance;     // read
+    gpu::Buffer& ldr;                // write: packed RGBA8 per pixel
+    auto bindings() const {
+        return std::to_array<PassBinding>({{shared::TONEMAP_BINDING_FRAME, &frameParams},
+                                           {shared::TONEMAP_BINDING_RADIANCE, &radiance},
+                                           {shared::TONEMAP_BINDING_LDR, &ldr}});
+    }
+};
 
-private:
-    ComputePass mPass;
+class TonemapPass : public ScreenPass<TonemapIo> {
+public:
+    using Io = TonemapIo;
+    explicit TonemapPass(gpu::Context& ctx) : ScreenPass(ctx, "tonemap", "post/tonemap") {}
 };
 
 }  // namespace engine::render

@@ -8,27 +8,23 @@
 
 namespace engine::render {
 
-class ReferencePass {
-public:
-    struct Io {
-        const gpu::Buffer& frameParams;  // read
-        const gpu::Buffer& params;       // read: ReferenceParams
-        gpu::Buffer& accumulation;       // read and write
-        gpu::Buffer& radiance;           // write
-        auto bindings() const {
-            return std::to_array<PassBinding>({{shared::REFERENCE_BINDING_FRAME, &frameParams},
-                                               {shared::REFERENCE_BINDING_PARAMS, &params},
-                                               {shared::REFERENCE_BINDING_ACCUMULATION, &accumulation},
-                                               {shared::REFERENCE_BINDING_RADIANCE, &radiance}});
-        }
-    };
-    explicit ReferencePass(gpu::Context& ctx) : mPass(ctx, "reference", "reference/path_trace", bindingCount<Io>()) {}
-    void record(gpu::CommandList& cmd, const SceneBindings& scene, const Io& io, glm::uvec2 size) {
-        mPass.record(cmd, scene, io.bindings(), screenGroups(size));
+struct ReferenceIo {
+    const gpu::Buffer& frameParams;  // read
+    const gpu::Buffer& params;       // read: ReferenceParams
+    gpu::Buffer& accumulation;       // read and write
+    gpu::Buffer& radiance;           // write
+    auto bindings() const {
+        return std::to_array<PassBinding>({{shared::REFERENCE_BINDING_FRAME, &frameParams},
+                                           {shared::REFERENCE_BINDING_PARAMS, &params},
+                                           {shared::REFERENCE_BINDING_ACCUMULATION, &accumulation},
+                                           {shared::REFERENCE_BINDING_RADIANCE, &radiance}});
     }
+};
 
-private:
-    LitPass mPass;
+class ReferencePass : public ScreenLitPass<ReferenceIo> {
+public:
+    using Io = ReferenceIo;
+    explicit ReferencePass(gpu::Context& ctx) : ScreenLitPass(ctx, "reference", "reference/path_trace") {}
 };
 
 }  // namespace engine::render

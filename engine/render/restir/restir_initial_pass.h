@@ -7,28 +7,23 @@
 
 namespace engine::render {
 
-class RestirInitialPass {
-public:
-    struct Io {
-        const gpu::Buffer& frameParams;   // read
-        const gpu::Buffer& restirParams;  // read
-        const gpu::Buffer& gbuffer;       // read
-        gpu::Buffer& reservoirs;          // write
-        auto bindings() const {
-            return std::to_array<PassBinding>({{shared::RESTIR_BINDING_FRAME, &frameParams},
-                                               {shared::RESTIR_BINDING_PARAMS, &restirParams},
-                                               {shared::RESTIR_BINDING_GBUFFER, &gbuffer},
-                                               {shared::RESTIR_INITIAL_BINDING_OUT, &reservoirs}});
-        }
-    };
-    explicit RestirInitialPass(gpu::Context& ctx)
-        : mPass(ctx, "restir_initial", "restir/initial_candidates", bindingCount<Io>()) {}
-    void record(gpu::CommandList& cmd, const SceneBindings& scene, const Io& io, glm::uvec2 size) {
-        mPass.record(cmd, scene, io.bindings(), screenGroups(size));
+struct RestirInitialIo {
+    const gpu::Buffer& frameParams;   // read
+    const gpu::Buffer& restirParams;  // read
+    const gpu::Buffer& gbuffer;       // read
+    gpu::Buffer& reservoirs;          // write
+    auto bindings() const {
+        return std::to_array<PassBinding>({{shared::RESTIR_BINDING_FRAME, &frameParams},
+                                           {shared::RESTIR_BINDING_PARAMS, &restirParams},
+                                           {shared::RESTIR_BINDING_GBUFFER, &gbuffer},
+                                           {shared::RESTIR_INITIAL_BINDING_OUT, &reservoirs}});
     }
+};
 
-private:
-    LitPass mPass;
+class RestirInitialPass : public ScreenLitPass<RestirInitialIo> {
+public:
+    using Io = RestirInitialIo;
+    explicit RestirInitialPass(gpu::Context& ctx) : ScreenLitPass(ctx, "restir_initial", "restir/initial_candidates") {}
 };
 
 }  // namespace engine::render

@@ -7,29 +7,25 @@
 
 namespace engine::render {
 
-class RestirShadePass {
-public:
-    struct Io {
-        const gpu::Buffer& frameParams;   // read
-        const gpu::Buffer& restirParams;  // read
-        const gpu::Buffer& gbuffer;       // read
-        gpu::Buffer& reservoirs;          // read; occluded samples lose their weight
-        gpu::Buffer& radiance;            // write
-        auto bindings() const {
-            return std::to_array<PassBinding>({{shared::RESTIR_BINDING_FRAME, &frameParams},
-                                               {shared::RESTIR_BINDING_PARAMS, &restirParams},
-                                               {shared::RESTIR_BINDING_GBUFFER, &gbuffer},
-                                               {shared::RESTIR_SHADE_BINDING_FINAL, &reservoirs},
-                                               {shared::RESTIR_SHADE_BINDING_RADIANCE, &radiance}});
-        }
-    };
-    explicit RestirShadePass(gpu::Context& ctx) : mPass(ctx, "restir_shade", "restir/shade", bindingCount<Io>()) {}
-    void record(gpu::CommandList& cmd, const SceneBindings& scene, const Io& io, glm::uvec2 size) {
-        mPass.record(cmd, scene, io.bindings(), screenGroups(size));
+struct RestirShadeIo {
+    const gpu::Buffer& frameParams;   // read
+    const gpu::Buffer& restirParams;  // read
+    const gpu::Buffer& gbuffer;       // read
+    gpu::Buffer& reservoirs;          // read; occluded samples lose their weight
+    gpu::Buffer& radiance;            // write
+    auto bindings() const {
+        return std::to_array<PassBinding>({{shared::RESTIR_BINDING_FRAME, &frameParams},
+                                           {shared::RESTIR_BINDING_PARAMS, &restirParams},
+                                           {shared::RESTIR_BINDING_GBUFFER, &gbuffer},
+                                           {shared::RESTIR_SHADE_BINDING_FINAL, &reservoirs},
+                                           {shared::RESTIR_SHADE_BINDING_RADIANCE, &radiance}});
     }
+};
 
-private:
-    LitPass mPass;
+class RestirShadePass : public ScreenLitPass<RestirShadeIo> {
+public:
+    using Io = RestirShadeIo;
+    explicit RestirShadePass(gpu::Context& ctx) : ScreenLitPass(ctx, "restir_shade", "restir/shade") {}
 };
 
 }  // namespace engine::render

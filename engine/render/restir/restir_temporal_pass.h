@@ -8,34 +8,29 @@
 
 namespace engine::render {
 
-class RestirTemporalPass {
-public:
-    struct Io {
-        const gpu::Buffer& frameParams;     // read
-        const gpu::Buffer& restirParams;    // read
-        const gpu::Buffer& gbuffer;         // read
-        const gpu::Buffer& prevGbuffer;     // read
-        const gpu::Buffer& candidates;      // read
-        const gpu::Buffer& prevReservoirs;  // read
-        gpu::Buffer& own;                   // write
-        auto bindings() const {
-            return std::to_array<PassBinding>({{shared::RESTIR_BINDING_FRAME, &frameParams},
-                                               {shared::RESTIR_BINDING_PARAMS, &restirParams},
-                                               {shared::RESTIR_BINDING_GBUFFER, &gbuffer},
-                                               {shared::RESTIR_TEMPORAL_BINDING_PREV_GBUFFER, &prevGbuffer},
-                                               {shared::RESTIR_TEMPORAL_BINDING_CANDIDATES, &candidates},
-                                               {shared::RESTIR_TEMPORAL_BINDING_PREVIOUS, &prevReservoirs},
-                                               {shared::RESTIR_TEMPORAL_BINDING_OWN, &own}});
-        }
-    };
-    explicit RestirTemporalPass(gpu::Context& ctx)
-        : mPass(ctx, "restir_temporal", "restir/temporal_reuse", bindingCount<Io>()) {}
-    void record(gpu::CommandList& cmd, const SceneBindings& scene, const Io& io, glm::uvec2 size) {
-        mPass.record(cmd, scene, io.bindings(), screenGroups(size));
+struct RestirTemporalIo {
+    const gpu::Buffer& frameParams;     // read
+    const gpu::Buffer& restirParams;    // read
+    const gpu::Buffer& gbuffer;         // read
+    const gpu::Buffer& prevGbuffer;     // read
+    const gpu::Buffer& candidates;      // read
+    const gpu::Buffer& prevReservoirs;  // read
+    gpu::Buffer& own;                   // write
+    auto bindings() const {
+        return std::to_array<PassBinding>({{shared::RESTIR_BINDING_FRAME, &frameParams},
+                                           {shared::RESTIR_BINDING_PARAMS, &restirParams},
+                                           {shared::RESTIR_BINDING_GBUFFER, &gbuffer},
+                                           {shared::RESTIR_TEMPORAL_BINDING_PREV_GBUFFER, &prevGbuffer},
+                                           {shared::RESTIR_TEMPORAL_BINDING_CANDIDATES, &candidates},
+                                           {shared::RESTIR_TEMPORAL_BINDING_PREVIOUS, &prevReservoirs},
+                                           {shared::RESTIR_TEMPORAL_BINDING_OWN, &own}});
     }
+};
 
-private:
-    LitPass mPass;
+class RestirTemporalPass : public ScreenLitPass<RestirTemporalIo> {
+public:
+    using Io = RestirTemporalIo;
+    explicit RestirTemporalPass(gpu::Context& ctx) : ScreenLitPass(ctx, "restir_temporal", "restir/temporal_reuse") {}
 };
 
 }  // namespace engine::render
