@@ -16,7 +16,7 @@
 #include "game/undo_history.h"
 #include "lighting/lighting_settings.h"
 #include "render/gpu_world.h"
-#include "render/irradiance_cache.h"
+#include "render/irradiance_cache/irradiance_cache.h"
 #include "shared/frame_params.h"
 #include "world/scene.h"
 

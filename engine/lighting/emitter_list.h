@@ -6,7 +6,7 @@
 // their six neighbours (whose boundary voxels may have gained or lost exposure), so the cost
 // follows the edit, not the world. An emitter that survives a rescan keeps its slot; a freed or
 // reused slot gets a new generation. The alias table over emitter power is rebuilt lazily.
-// engine/lighting/gpu_emitter_list.h uploads the slots that changed.
+// engine/render/gpu_emitter_list.h uploads the slots that changed.
 #pragma once
 
 #include <cstdint>

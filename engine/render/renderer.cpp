@@ -5,40 +5,13 @@
 
 #include "gpu/command_list.h"
 #include "gpu/presenter.h"
-#include "shared/reference.h"
-#include "shared/restir.h"
+#include "render/baselines/light_sampling_params.h"
+#include "render/reference/reference_params.h"
+#include "render/restir/restir_params.h"
 
 namespace engine::render {
 
 namespace {
-
-shared::RestirParams makeRestirParams(const lighting::LightingSettings& l, std::uint32_t frame) {
-    using lighting::Method;
-    std::uint32_t flags = 0;
-    if (l.area) flags |= shared::RESTIR_AREA;
-    if (l.byPower) flags |= shared::RESTIR_ALIAS;
-    if (l.method == Method::Restir) {
-        if (l.unbiased) flags |= shared::RESTIR_UNBIASED;
-        if (l.temporal) flags |= shared::RESTIR_TEMPORAL;
-        if (l.spatial) flags |= shared::RESTIR_SPATIAL;
-        // The unbiased normalisation counts neighbours by visibility, which is only right when
-        // every stored reservoir's weight already accounts for its own sample's visibility.
-        if (l.candidateVisibility || l.unbiased) flags |= shared::RESTIR_CANDIDATE_VISIBILITY;
-    }
-    shared::RestirParams p{};
-    p.config = glm::uvec4(l.candidates, flags, l.spatialTaps, frame);
-    p.reuse = glm::vec4(l.spatialRadius, l.temporalCap, l.depthTolerance, 0.0f);
-    std::uint32_t perPixel = l.method == Method::Reference ? l.samplesPerFrame : l.shadowRays;
-    std::uint32_t referenceFlags = 0;
-    if (l.brickLights) referenceFlags |= shared::REFERENCE_BRICK_LIGHTS;
-    if (l.referenceFilter == lighting::ReferenceFilter::PixelCentre) referenceFlags |= shared::REFERENCE_PIXEL_CENTRE;
-    if (!l.referenceMis) referenceFlags |= shared::REFERENCE_LIGHT_SAMPLING_ONLY;
-    if (l.referenceProbe == lighting::ReferenceProbe::EmitterShape) referenceFlags |= shared::REFERENCE_PROBE_EMITTER_SHAPE;
-    if (l.referenceProbe == lighting::ReferenceProbe::EmitterPower) referenceFlags |= shared::REFERENCE_PROBE_EMITTER_POWER;
-    p.seeds = glm::uvec4(l.seed, perPixel, l.method == Method::Reference ? l.bounces : (l.method == Method::BruteForce ? 1u : 0u),
-                         l.method == Method::Reference ? referenceFlags : 0u);
-    return p;
-}
 
 bool sameView(const world::CameraPreset& a, const world::CameraPreset& b) {
     return a.position == b.position && a.target == b.target && a.fovYDegrees == b.fovYDegrees;
@@ -79,6 +52,9 @@ Renderer::Renderer(gpu::Context& ctx)
       mCache(ctx) {
     mFrameParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::FrameParams), "frame.params");
     mRestirParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::RestirParams), "restir.params");
+    mLightSamplingParams =
+        gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::LightSamplingParams), "baselines.params");
+    mReferenceParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::ReferenceParams), "reference.params");
 }
 
 void Renderer::resize(std::uint32_t width, std::uint32_t height) {
@@ -151,7 +127,7 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
         mCache.clear();  // a new world
     }
     scene.grid.clearDirty();
-    lighting::EmitterUploadStats lightUpload = mGpuEmitters.sync(mEmitters, mUploader);
+    EmitterUploadStats lightUpload = mGpuEmitters.sync(mEmitters, mUploader);
     const bool worldChanged = result.upload.bricks || result.upload.cells || result.upload.dynamicBytes ||
                               lightUpload.slots || lightUpload.aliveAndAlias;
 
@@ -161,9 +137,8 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
     params.prevCameraForward = prev.cameraForward;
     params.prevCameraRight = prev.cameraRight;
     params.prevCameraUp = prev.cameraUp;
-    shared::RestirParams restir = makeRestirParams(lighting, mFrameIndex);
     mUploader.write(mFrameParams, 0, &params, sizeof(params));
-    mUploader.write(mRestirParams, 0, &restir, sizeof(restir));
+    writeMethodParams(lighting);
     mUploader.record(cmd);
     if (lighting.method == lighting::Method::Reference &&
         (mAccumulatedSamples == 0 || worldChanged || !mPrevCamera || !sameView(*mPrevCamera, camera))) {
@@ -225,6 +200,31 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
     return result;
 }
 
+void Renderer::writeMethodParams(const lighting::LightingSettings& lighting) {
+    using lighting::Method;
+    switch (lighting.method) {
+        case Method::Preview:
+            break;
+        case Method::Restir:
+        case Method::Ris: {
+            const shared::RestirParams p = restirParams(lighting, mFrameIndex);
+            mUploader.write(mRestirParams, 0, &p, sizeof(p));
+            break;
+        }
+        case Method::Uniform:
+        case Method::BruteForce: {
+            const shared::LightSamplingParams p = lightSamplingParams(lighting, mFrameIndex);
+            mUploader.write(mLightSamplingParams, 0, &p, sizeof(p));
+            break;
+        }
+        case Method::Reference: {
+            const shared::ReferenceParams p = referenceParams(lighting);
+            mUploader.write(mReferenceParams, 0, &p, sizeof(p));
+            break;
+        }
+    }
+}
+
 void Renderer::recordLighting(gpu::CommandList& cmd, const lighting::LightingSettings& lighting, bool historyValid) {
     using lighting::Method;
     const SceneBindings scene{mWorld, mGpuEmitters};
@@ -256,10 +256,10 @@ void Renderer::recordLighting(gpu::CommandList& cmd, const lighting::LightingSet
         }
         case Method::Uniform:
         case Method::BruteForce:
-            mLightSampling.record(cmd, scene, {mFrameParams, mRestirParams, gbuffer, mRadiance}, mSize);
+            mLightSampling.record(cmd, scene, {mFrameParams, mLightSamplingParams, gbuffer, mRadiance}, mSize);
             break;
         case Method::Reference:
-            mReference.record(cmd, scene, {mFrameParams, mRestirParams, mAccumulation, mRadiance}, mSize);
+            mReference.record(cmd, scene, {mFrameParams, mReferenceParams, mAccumulation, mRadiance}, mSize);
             break;
     }
 }

@@ -21,20 +21,20 @@
 #include "gpu/timestamp_timer.h"
 #include "gpu/uploader.h"
 #include "lighting/emitter_list.h"
-#include "lighting/gpu_emitter_list.h"
+#include "render/gpu_emitter_list.h"
 #include "lighting/lighting_settings.h"
 #include "render/camera.h"
 #include "render/gpu_world.h"
-#include "render/irradiance_cache.h"
-#include "render/passes/light_sampling_pass.h"
+#include "render/baselines/light_sampling_pass.h"
+#include "render/irradiance_cache/irradiance_cache.h"
 #include "render/passes/primary_ray_pass.h"
-#include "render/passes/reference_pass.h"
-#include "render/passes/restir_initial_pass.h"
-#include "render/passes/restir_shade_pass.h"
-#include "render/passes/restir_spatial_pass.h"
-#include "render/passes/restir_temporal_pass.h"
 #include "render/passes/sun_shade_pass.h"
 #include "render/passes/tonemap_pass.h"
+#include "render/reference/reference_pass.h"
+#include "render/restir/restir_initial_pass.h"
+#include "render/restir/restir_shade_pass.h"
+#include "render/restir/restir_spatial_pass.h"
+#include "render/restir/restir_temporal_pass.h"
 #include "shared/gbuffer.h"
 
 namespace engine::gpu {
@@ -89,12 +89,14 @@ public:
 
 private:
     void resize(std::uint32_t width, std::uint32_t height);
+    // Uploads the parameters of the frame's lighting method (its module's one packing function).
+    void writeMethodParams(const lighting::LightingSettings& lighting);
     void recordLighting(gpu::CommandList& cmd, const lighting::LightingSettings& lighting, bool historyValid);
 
     gpu::Context& mCtx;
     GpuWorld mWorld;
     lighting::EmitterList mEmitters;
-    lighting::GpuEmitterList mGpuEmitters;
+    GpuEmitterList mGpuEmitters;
     gpu::Uploader mUploader;
     gpu::TimestampTimer mTimer;
     gpu::TimestampTimer mPresentTimer;
@@ -111,7 +113,8 @@ private:
     IrradianceCache mCache;
 
     glm::uvec2 mSize{0};
-    gpu::Buffer mFrameParams, mRestirParams, mRadiance, mLdr, mRayStats, mCandidates, mOwnReservoirs, mAccumulation, mIndirect;
+    gpu::Buffer mFrameParams, mRadiance, mLdr, mRayStats, mCandidates, mOwnReservoirs, mAccumulation, mIndirect;
+    gpu::Buffer mRestirParams, mLightSamplingParams, mReferenceParams;  // each method module's parameters
     gpu::Buffer mGBufferHost;  // this frame's G-buffer on the host, for the cache's visible voxels
     gpu::Buffer mGBuffers[2], mFinalReservoirs[2];
     std::uint32_t mCurrent = 0;  // which of the ping-pong pair is this frame's

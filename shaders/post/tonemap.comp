@@ -7,9 +7,9 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(set = 0, binding = 0, std430) readonly buffer Params { FrameParams gFrame; };
-layout(set = 0, binding = 1, std430) readonly buffer Radiance { vec4 gRadiance[]; };
-layout(set = 0, binding = 2, std430) writeonly buffer Ldr { uint gLdr[]; };
+layout(set = 0, binding = TONEMAP_BINDING_FRAME, std430) readonly buffer Params { FrameParams gFrame; };
+layout(set = 0, binding = TONEMAP_BINDING_RADIANCE, std430) readonly buffer Radiance { vec4 gRadiance[]; };
+layout(set = 0, binding = TONEMAP_BINDING_LDR, std430) writeonly buffer Ldr { uint gLdr[]; };
 
 vec3 acesFilm(vec3 x) {
     return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);

@@ -21,11 +21,10 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 0, std430) readonly buffer Params { FrameParams gFrame; };
-// seeds.x: seed, seeds.y: samples per pixel in this dispatch, seeds.z: bounces, seeds.w: REFERENCE_* flags
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 1, std430) readonly buffer Restir { RestirParams gRestir; };
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 2, std430) buffer Accumulation { vec4 gAccum[]; };
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 3, std430) writeonly buffer Radiance { vec4 gRadiance[]; };
+layout(set = 0, binding = REFERENCE_BINDING_FRAME, std430) readonly buffer Params { FrameParams gFrame; };
+layout(set = 0, binding = REFERENCE_BINDING_PARAMS, std430) readonly buffer Reference { ReferenceParams gReference; };
+layout(set = 0, binding = REFERENCE_BINDING_ACCUMULATION, std430) buffer Accumulation { vec4 gAccum[]; };
+layout(set = 0, binding = REFERENCE_BINDING_RADIANCE, std430) writeonly buffer Radiance { vec4 gRadiance[]; };
 
 vec3 cosineDirection(vec3 n, float u1, float u2) {
     float r = sqrt(u1), phi = 2.0 * PI * u2;
@@ -65,20 +64,20 @@ void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;
     if (any(greaterThanEqual(pixel, gFrame.imageSize.xy))) return;
     uint index = pixel.x + pixel.y * gFrame.imageSize.x;
-    uint flags = gRestir.seeds.w;
+    uint flags = gReference.flags;
     if ((flags & (REFERENCE_PROBE_EMITTER_SHAPE | REFERENCE_PROBE_EMITTER_POWER)) != 0u) {
         gRadiance[index] = probeEmitter(pixel, flags);
         return;
     }
-    uint bounces = gRestir.seeds.z;
+    uint bounces = gReference.bounces;
     // The direct-light reference (no bounces) stays light sampling alone: the ground truth the
     // quadrature test checks, at its old cost.
     const bool mis = (flags & REFERENCE_LIGHT_SAMPLING_ONLY) == 0u && bounces > 0u;
     const bool brickLights = (flags & REFERENCE_BRICK_LIGHTS) != 0u;
     vec4 accum = gAccum[index];
-    uint spp = max(gRestir.seeds.y, 1u);
+    uint spp = max(gReference.samples, 1u);
     for (uint sampleIndex = 0u; sampleIndex < spp; ++sampleIndex) {
-        uint rng = rngInit(pixel, uint(accum.w), 5u, gRestir.seeds.x);
+        uint rng = rngInit(pixel, uint(accum.w), 5u, gReference.seed);
         // Box filter: a uniform point of the pixel (or its centre, on request).
         vec2 jitter = vec2(0.5);
         if ((flags & REFERENCE_PIXEL_CENTRE) == 0u) jitter = vec2(rngNext(rng), rngNext(rng));

@@ -10,10 +10,10 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 0, std430) readonly buffer Params { FrameParams gFrame; };
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 1, std430) readonly buffer Restir { RestirParams gRestir; };
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 2, std430) readonly buffer GBuffer { GBufferTexel gGBuffer[]; };
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 3, std430) writeonly buffer Out { Reservoir gOut[]; };
+layout(set = 0, binding = RESTIR_BINDING_FRAME, std430) readonly buffer Params { FrameParams gFrame; };
+layout(set = 0, binding = RESTIR_BINDING_PARAMS, std430) readonly buffer Restir { RestirParams gRestir; };
+layout(set = 0, binding = RESTIR_BINDING_GBUFFER, std430) readonly buffer GBuffer { GBufferTexel gGBuffer[]; };
+layout(set = 0, binding = RESTIR_INITIAL_BINDING_OUT, std430) writeonly buffer Out { Reservoir gOut[]; };
 
 void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;
@@ -21,15 +21,14 @@ void main() {
     uint index = pixel.x + pixel.y * gFrame.imageSize.x;
     Surface s = surfaceFrom(gGBuffer[index]);
     Reservoir r = Reservoir(uvec4(RESERVOIR_EMPTY, 0u, 0u, 0u), vec4(0.0));
-    uint flags = gRestir.config.y;
-    uint candidates = gRestir.config.x;
+    uint candidates = gRestir.candidates;
     if (!s.valid || gLights.counts.x == 0u || candidates == 0u) {
         gOut[index] = r;
         return;
     }
-    bool area = (flags & RESTIR_AREA) != 0u;
-    bool byPower = (flags & RESTIR_ALIAS) != 0u;
-    uint rng = rngInit(pixel, gRestir.config.w, 1u, gRestir.seeds.x);
+    bool area = gRestir.area != 0u;
+    bool byPower = gRestir.byPower != 0u;
+    uint rng = rngInit(pixel, gRestir.frameIndex, 1u, gRestir.seed);
 
     float wSum = 0.0;
     float chosenTarget = 0.0;
@@ -60,7 +59,7 @@ void main() {
     }
     r.weights = vec4(chosenTarget > 0.0 ? wSum / (float(candidates) * chosenTarget) : 0.0, float(candidates),
                      chosenTarget, 1.0);
-    if ((flags & RESTIR_CANDIDATE_VISIBILITY) != 0u && r.light.x != RESERVOIR_EMPTY) {
+    if (gRestir.candidateVisibility != 0u && r.light.x != RESERVOIR_EMPTY) {
         GpuEmitter e = gEmitters[r.light.x];
         vec3 toLight;
         float dist;

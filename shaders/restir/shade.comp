@@ -9,13 +9,13 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 0, std430) readonly buffer Params { FrameParams gFrame; };
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 1, std430) readonly buffer Restir { RestirParams gRestir; };
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 2, std430) readonly buffer GBuffer { GBufferTexel gGBuffer[]; };
+layout(set = 0, binding = RESTIR_BINDING_FRAME, std430) readonly buffer Params { FrameParams gFrame; };
+layout(set = 0, binding = RESTIR_BINDING_PARAMS, std430) readonly buffer Restir { RestirParams gRestir; };
+layout(set = 0, binding = RESTIR_BINDING_GBUFFER, std430) readonly buffer GBuffer { GBufferTexel gGBuffer[]; };
 // Read and written: a sample found occluded here keeps its M but loses its weight, so the
 // reservoir the next frame reuses agrees with its visibility (Bitterli et al. 2020 §4.4 and §6).
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 3, std430) buffer Final { Reservoir gFinal[]; };
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 4, std430) writeonly buffer Radiance { vec4 gRadiance[]; };
+layout(set = 0, binding = RESTIR_SHADE_BINDING_FINAL, std430) buffer Final { Reservoir gFinal[]; };
+layout(set = 0, binding = RESTIR_SHADE_BINDING_RADIANCE, std430) writeonly buffer Radiance { vec4 gRadiance[]; };
 
 void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;

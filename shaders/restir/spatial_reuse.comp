@@ -18,12 +18,12 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 0, std430) readonly buffer Params { FrameParams gFrame; };
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 1, std430) readonly buffer Restir { RestirParams gRestir; };
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 2, std430) readonly buffer GBuffer { GBufferTexel gGBuffer[]; };
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 3, std430) readonly buffer Own { Reservoir gOwn[]; };
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 4, std430) readonly buffer Candidates { Reservoir gCandidates[]; };
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 5, std430) writeonly buffer Out { Reservoir gOut[]; };
+layout(set = 0, binding = RESTIR_BINDING_FRAME, std430) readonly buffer Params { FrameParams gFrame; };
+layout(set = 0, binding = RESTIR_BINDING_PARAMS, std430) readonly buffer Restir { RestirParams gRestir; };
+layout(set = 0, binding = RESTIR_BINDING_GBUFFER, std430) readonly buffer GBuffer { GBufferTexel gGBuffer[]; };
+layout(set = 0, binding = RESTIR_SPATIAL_BINDING_OWN, std430) readonly buffer Own { Reservoir gOwn[]; };
+layout(set = 0, binding = RESTIR_SPATIAL_BINDING_CANDIDATES, std430) readonly buffer Candidates { Reservoir gCandidates[]; };
+layout(set = 0, binding = RESTIR_SPATIAL_BINDING_OUT, std430) writeonly buffer Out { Reservoir gOut[]; };
 
 const uint kMaxTaps = 16u;
 
@@ -35,15 +35,15 @@ void main() {
     Reservoir own = withOwnVisibility(gOwn[index]);
     GBufferTexel g = gGBuffer[index];
     Surface s = surfaceFrom(g);
-    if (!s.valid || (gRestir.config.y & RESTIR_SPATIAL) == 0u) {
+    if (!s.valid || gRestir.spatial == 0u) {
         gOut[index] = own;
         return;
     }
     float depth = gbufferDistance(g);
-    uint rng = rngInit(pixel, gRestir.config.w, 3u, gRestir.seeds.x);
-    uint taps = min(gRestir.config.z, kMaxTaps);
-    float radius = gRestir.reuse.x;
-    float tolerance = gRestir.reuse.z;
+    uint rng = rngInit(pixel, gRestir.frameIndex, 3u, gRestir.seed);
+    uint taps = min(gRestir.spatialTaps, kMaxTaps);
+    float radius = gRestir.spatialRadius;
+    float tolerance = gRestir.depthTolerance;
 
     Combiner c = combinerStart();
     combinerAdd(c, own, reservoirHasLight(own) ? targetAt(s, own) : 0.0, rngNext(rng));

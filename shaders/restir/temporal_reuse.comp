@@ -10,13 +10,13 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 0, std430) readonly buffer Params { FrameParams gFrame; };
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 1, std430) readonly buffer Restir { RestirParams gRestir; };
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 2, std430) readonly buffer GBuffer { GBufferTexel gGBuffer[]; };
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 3, std430) readonly buffer PrevGBuffer { GBufferTexel gPrevGBuffer[]; };
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 4, std430) readonly buffer Candidates { Reservoir gCandidates[]; };
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 5, std430) readonly buffer Previous { Reservoir gPrevious[]; };
-layout(set = 0, binding = LIT_PASS_BINDING_FIRST + 6, std430) writeonly buffer Own { Reservoir gOwn[]; };
+layout(set = 0, binding = RESTIR_BINDING_FRAME, std430) readonly buffer Params { FrameParams gFrame; };
+layout(set = 0, binding = RESTIR_BINDING_PARAMS, std430) readonly buffer Restir { RestirParams gRestir; };
+layout(set = 0, binding = RESTIR_BINDING_GBUFFER, std430) readonly buffer GBuffer { GBufferTexel gGBuffer[]; };
+layout(set = 0, binding = RESTIR_TEMPORAL_BINDING_PREV_GBUFFER, std430) readonly buffer PrevGBuffer { GBufferTexel gPrevGBuffer[]; };
+layout(set = 0, binding = RESTIR_TEMPORAL_BINDING_CANDIDATES, std430) readonly buffer Candidates { Reservoir gCandidates[]; };
+layout(set = 0, binding = RESTIR_TEMPORAL_BINDING_PREVIOUS, std430) readonly buffer Previous { Reservoir gPrevious[]; };
+layout(set = 0, binding = RESTIR_TEMPORAL_BINDING_OWN, std430) writeonly buffer Own { Reservoir gOwn[]; };
 
 // Last frame's reservoir for this pixel, or an empty one when there is none to reuse.
 bool previousReservoir(uvec2 pixel, GBufferTexel g, Surface s, out Reservoir previous, out GBufferTexel pg) {
@@ -27,7 +27,7 @@ bool previousReservoir(uvec2 pixel, GBufferTexel g, Surface s, out Reservoir pre
     if (any(lessThan(prevPixel, ivec2(0))) || any(greaterThanEqual(prevPixel, ivec2(gFrame.imageSize.xy)))) return false;
     uint prevIndex = uint(prevPixel.x) + uint(prevPixel.y) * gFrame.imageSize.x;
     pg = gPrevGBuffer[prevIndex];
-    if (uint(pg.voxel.w) != s.face || abs(gbufferDistance(pg) - g.motion.z) > gRestir.reuse.z * g.motion.z) return false;
+    if (uint(pg.voxel.w) != s.face || abs(gbufferDistance(pg) - g.motion.z) > gRestir.depthTolerance * g.motion.z) return false;
     previous = gPrevious[prevIndex];
     return !reservoirStale(previous);  // a light that is gone: drop it
 }
@@ -47,16 +47,16 @@ void main() {
         gOwn[index] = current;
         return;
     }
-    previous.weights.y = min(previous.weights.y, gRestir.reuse.y * float(gRestir.config.x));
+    previous.weights.y = min(previous.weights.y, gRestir.temporalCap * float(gRestir.candidates));
 
-    uint rng = rngInit(pixel, gRestir.config.w, 2u, gRestir.seeds.x);
+    uint rng = rngInit(pixel, gRestir.frameIndex, 2u, gRestir.seed);
     Combiner c = combinerStart();
     float targetCurrent = reservoirHasLight(current) ? current.weights.z : 0.0;
     combinerAdd(c, current, targetCurrent, rngNext(rng));
     combinerAdd(c, previous, targetAt(s, previous), rngNext(rng));
 
     float normaliser = c.M;
-    if ((gRestir.config.y & RESTIR_UNBIASED) != 0u) {
+    if (gRestir.unbiased != 0u) {
         // Count only the inputs whose pixel could have produced the chosen sample: its target
         // there is positive and, for the other pixel, the sample is visible from it.
         Surface prevSurface = surfaceFrom(pg);

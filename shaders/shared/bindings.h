@@ -1,5 +1,8 @@
 // Descriptor bindings every ray-tracing pass shares: the world (set 0, bindings 0-3).
-// A pass's own buffers start at PASS_BINDING_FIRST. All bindings are storage buffers.
+// A pass's own buffers start at PASS_BINDING_FIRST. All bindings are storage buffers. The
+// techniques number their passes' own bindings in their headers (restir.h, light_sampling.h,
+// reference.h, irradiance_cache.h); the passes every method shares are numbered here. The C++
+// passes bind by these numbers (engine/render/passes/compute_pass.h).
 #ifndef SHARED_BINDINGS_H
 #define SHARED_BINDINGS_H
 #include "interop.h"
@@ -20,6 +23,24 @@ SHARED_CONST uint LIGHTS_BINDING_EMITTERS = 5u;  // GpuEmitter per slot
 SHARED_CONST uint LIGHTS_BINDING_ALIVE = 6u;     // uint slot per alive emitter
 SHARED_CONST uint LIGHTS_BINDING_ALIAS = 7u;     // AliasEntry per alive emitter
 SHARED_CONST uint LIT_PASS_BINDING_FIRST = 8u;
+
+// Own bindings of the passes every method shares.
+// world/primary_rays.comp
+SHARED_CONST uint PRIMARY_BINDING_FRAME = PASS_BINDING_FIRST + 0u;    // FrameParams
+SHARED_CONST uint PRIMARY_BINDING_GBUFFER = PASS_BINDING_FIRST + 1u;  // GBufferTexel per pixel, written
+// world/shade_sun.comp (preview shading)
+SHARED_CONST uint SUN_BINDING_FRAME = PASS_BINDING_FIRST + 0u;      // FrameParams
+SHARED_CONST uint SUN_BINDING_GBUFFER = PASS_BINDING_FIRST + 1u;    // GBufferTexel per pixel
+SHARED_CONST uint SUN_BINDING_RADIANCE = PASS_BINDING_FIRST + 2u;   // vec4 per pixel, written
+SHARED_CONST uint SUN_BINDING_RAY_STATS = PASS_BINDING_FIRST + 3u;  // uvec4 per pixel, written
+// world/trace_rays_*.comp (batch ray queries)
+SHARED_CONST uint TRACE_BINDING_PARAMS = PASS_BINDING_FIRST + 0u;  // TraceRaysParams
+SHARED_CONST uint TRACE_BINDING_RAYS = PASS_BINDING_FIRST + 1u;    // TraceRayInput per ray
+SHARED_CONST uint TRACE_BINDING_HITS = PASS_BINDING_FIRST + 2u;    // TraceRayOutput per ray, written
+// post/tonemap.comp: no world
+SHARED_CONST uint TONEMAP_BINDING_FRAME = 0u;     // FrameParams
+SHARED_CONST uint TONEMAP_BINDING_RADIANCE = 1u;  // vec4 per pixel
+SHARED_CONST uint TONEMAP_BINDING_LDR = 2u;       // packed RGBA8 per pixel, written
 
 SHARED_END
 

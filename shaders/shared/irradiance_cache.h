@@ -1,4 +1,4 @@
-// The voxel-face irradiance cache as the GPU sees it (engine/lighting/irradiance_cache.h keeps
+// The voxel-face irradiance cache as the GPU sees it (engine/render/irradiance_cache/ keeps
 // the CPU side). Entries are (voxel, set) pairs in slots; a hash table maps keys to slots.
 //
 // Per slot: CacheEntry; CACHE_FACES * K packed static hits (the static set's cached rays);
@@ -10,6 +10,7 @@
 // size. Rays are limited to CACHE_MAX_RAY_LENGTH voxels so the offsets fit.
 #ifndef SHARED_IRRADIANCE_CACHE_H
 #define SHARED_IRRADIANCE_CACHE_H
+#include "bindings.h"
 #include "interop.h"
 
 SHARED_BEGIN
@@ -30,12 +31,27 @@ SHARED_CONST float CACHE_RAY_OFFSET = 0.501f;  // rays start just outside the fa
 SHARED_CONST uint CACHE_GROUP_SIZE = 64u;
 SHARED_CONST uint CACHE_DISPATCH_ROW = 65535u * CACHE_GROUP_SIZE;  // threads per dispatch row
 
+// Scalars only, so std430 lays them out as C++ does. Packed on the host by
+// engine/render/irradiance_cache/cache_params.h.
 struct CacheParams {
-    uvec4 counts;  // x: entries to update, y: entries to trace statically, z: K directions, w: rays per face per update
-    uvec4 frame;   // x: frame index (also the rotation through the K directions), y: unused, z: bounces, w: lighting seed (also picks each entry's direction set)
-    vec4 blend;    // x: alpha, y: max ray length, z: scene time (s), w: dynamic fade (s)
-    uvec4 table;   // x: hash table buckets - 1 (a power of two minus one), y: slot capacity, z: flags
-    uvec4 image;   // x width, y height, z: static entries (they come first in the update list)
+    uint updates;        // entries to update this frame
+    uint traces;         // static entries that trace their K rays this frame
+    uint directions;     // K directions per face
+    uint raysPerUpdate;  // S of the K, traced per face per update
+    uint frameIndex;     // also the rotation through the K directions
+    uint bounces;
+    uint seed;           // the lighting seed (also picks each entry's direction set)
+    uint tableMask;      // hash table buckets - 1 (a power of two minus one)
+    uint capacity;       // slots; the trace list starts at lists[capacity]
+    uint flags;          // CACHE_FLAG_*
+    uint width;          // image
+    uint height;
+    uint staticUpdates;  // static entries (they come first in the update list)
+    float alpha;         // blend of a new estimate into the entry
+    float maxRayLength;  // voxels
+    float time;          // scene time (s)
+    float fadeSeconds;   // dynamic entries fade over this long without an update
+    uint pad0, pad1, pad2;
 };
 SHARED_ASSERT_SIZE(CacheParams, 80);
 
@@ -53,6 +69,22 @@ struct CacheBucket {
     uvec4 keySlot;  // x: voxel.x | voxel.y << 16, y: voxel.z | set << 31, z: slot, w: unused
 };
 SHARED_ASSERT_SIZE(CacheBucket, 16);
+
+// The bindings every cache pass shares (shaders/irradiance_cache/irradiance_cache.glsl), after
+// the world and the emitter list.
+SHARED_CONST uint CACHE_BINDING_PARAMS = LIT_PASS_BINDING_FIRST + 0u;         // CacheParams
+SHARED_CONST uint CACHE_BINDING_FRAME = LIT_PASS_BINDING_FIRST + 1u;          // FrameParams
+SHARED_CONST uint CACHE_BINDING_DIRECTIONS = LIT_PASS_BINDING_FIRST + 2u;     // vec4: CACHE_DIRECTION_SETS sets of K
+SHARED_CONST uint CACHE_BINDING_ENTRIES = LIT_PASS_BINDING_FIRST + 3u;        // CacheEntry per slot
+SHARED_CONST uint CACHE_BINDING_TABLE = LIT_PASS_BINDING_FIRST + 4u;          // CacheBucket
+SHARED_CONST uint CACHE_BINDING_LISTS = LIT_PASS_BINDING_FIRST + 5u;          // update list, then trace list
+SHARED_CONST uint CACHE_BINDING_STATIC_HITS = LIT_PASS_BINDING_FIRST + 6u;    // CACHE_FACES * K packed hits per slot
+SHARED_CONST uint CACHE_BINDING_SELECTED_HITS = LIT_PASS_BINDING_FIRST + 7u;  // per updated entry and ray
+SHARED_CONST uint CACHE_BINDING_IRRADIANCE = LIT_PASS_BINDING_FIRST + 8u;     // vec4 per slot and face
+SHARED_CONST uint CACHE_BINDING_FILTERED = LIT_PASS_BINDING_FIRST + 9u;       // vec4 per slot and face
+SHARED_CONST uint CACHE_BINDING_GBUFFER = LIT_PASS_BINDING_FIRST + 10u;       // GBufferTexel per pixel
+SHARED_CONST uint CACHE_BINDING_RADIANCE = LIT_PASS_BINDING_FIRST + 11u;      // vec4 per pixel, read and written
+SHARED_CONST uint CACHE_BINDING_INDIRECT = LIT_PASS_BINDING_FIRST + 12u;      // vec4 per pixel: the indirect term alone
 
 SHARED_END
 

@@ -10,8 +10,8 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(set = 0, binding = PASS_BINDING_FIRST + 0, std430) readonly buffer Params { FrameParams gFrame; };
-layout(set = 0, binding = PASS_BINDING_FIRST + 1, std430) writeonly buffer GBuffer { GBufferTexel gGBuffer[]; };
+layout(set = 0, binding = PRIMARY_BINDING_FRAME, std430) readonly buffer Params { FrameParams gFrame; };
+layout(set = 0, binding = PRIMARY_BINDING_GBUFFER, std430) writeonly buffer GBuffer { GBufferTexel gGBuffer[]; };
 
 void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;

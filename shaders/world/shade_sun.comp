@@ -9,11 +9,11 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(set = 0, binding = PASS_BINDING_FIRST + 0, std430) readonly buffer Params { FrameParams gFrame; };
-layout(set = 0, binding = PASS_BINDING_FIRST + 1, std430) readonly buffer GBuffer { GBufferTexel gGBuffer[]; };
-layout(set = 0, binding = PASS_BINDING_FIRST + 2, std430) writeonly buffer Radiance { vec4 gRadiance[]; };
+layout(set = 0, binding = SUN_BINDING_FRAME, std430) readonly buffer Params { FrameParams gFrame; };
+layout(set = 0, binding = SUN_BINDING_GBUFFER, std430) readonly buffer GBuffer { GBufferTexel gGBuffer[]; };
+layout(set = 0, binding = SUN_BINDING_RADIANCE, std430) writeonly buffer Radiance { vec4 gRadiance[]; };
 // Per pixel: x primary DDA steps, y shadow-ray steps, z rays traced (1 or 2).
-layout(set = 0, binding = PASS_BINDING_FIRST + 3, std430) writeonly buffer RayStats { uvec4 gRayStats[]; };
+layout(set = 0, binding = SUN_BINDING_RAY_STATS, std430) writeonly buffer RayStats { uvec4 gRayStats[]; };
 
 const float kShadowOffset = 1.0e-3;
 

@@ -12,9 +12,9 @@
 
 layout(local_size_x = 64) in;
 
-layout(set = 0, binding = PASS_BINDING_FIRST + 0, std430) readonly buffer Params { TraceRaysParams gParams; };
-layout(set = 0, binding = PASS_BINDING_FIRST + 1, std430) readonly buffer Rays { TraceRayInput gRays[]; };
-layout(set = 0, binding = PASS_BINDING_FIRST + 2, std430) writeonly buffer Hits { TraceRayOutput gHits[]; };
+layout(set = 0, binding = TRACE_BINDING_PARAMS, std430) readonly buffer Params { TraceRaysParams gParams; };
+layout(set = 0, binding = TRACE_BINDING_RAYS, std430) readonly buffer Rays { TraceRayInput gRays[]; };
+layout(set = 0, binding = TRACE_BINDING_HITS, std430) writeonly buffer Hits { TraceRayOutput gHits[]; };
 
 void main() {
     uint i = gl_GlobalInvocationID.x;

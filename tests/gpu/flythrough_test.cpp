@@ -12,6 +12,7 @@
 #include "scene/scene_file.h"
 
 using namespace engine::world;
+using namespace engine::scene;
 using namespace gpu_testing;
 using engine::render::FlythroughPlayer;
 

@@ -312,7 +312,7 @@ std::vector<std::uint32_t> readUints(const engine::gpu::Buffer& buffer) {
     return {view.begin(), view.end()};
 }
 
-// The cache's rays as the shaders build them (shaders/common/irradiance_cache.glsl).
+// The cache's rays as the shaders build them (shaders/irradiance_cache/irradiance_cache.glsl).
 glm::vec3 rayOrigin(glm::ivec3 voxel, std::uint32_t face) {
     glm::vec3 o = glm::vec3(voxel) + 0.5f;
     o[face >> 1] += (face & 1u) ? shared::CACHE_RAY_OFFSET : -shared::CACHE_RAY_OFFSET;
@@ -431,7 +431,7 @@ TEST_F(IrradianceCache, ObjectAgainstAWallDoesNotChangeTheFarSide) {
             if (e.voxel.w != int(shared::CACHE_SET_STATIC) || dir.slotOf({glm::ivec3(e.voxel), 0}) != slot) continue;
             for (std::uint32_t f = 0; f < 6; ++f) {
                 const std::uint32_t* v = &filtered[(slot * 6 + f) * 4];
-                byKey[engine::lighting::packCacheKey({glm::ivec3(e.voxel), 0}) * 8 + f] = {v[0], v[1], v[2], v[3]};
+                byKey[engine::render::packCacheKey({glm::ivec3(e.voxel), 0}) * 8 + f] = {v[0], v[1], v[2], v[3]};
             }
         }
         return std::make_pair(byKey, r.irradianceCache().stats());

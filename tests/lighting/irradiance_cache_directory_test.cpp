@@ -4,10 +4,10 @@
 
 #include <set>
 
-#include "lighting/irradiance_cache_directory.h"
+#include "render/irradiance_cache/irradiance_cache_directory.h"
 
-using engine::lighting::CacheKey;
-using engine::lighting::IrradianceCacheDirectory;
+using engine::render::CacheKey;
+using engine::render::IrradianceCacheDirectory;
 
 namespace {
 
@@ -17,11 +17,11 @@ std::vector<CacheKey> row(int from, int to, std::uint32_t set = shared::CACHE_SE
     return keys;
 }
 
-// The probe the shaders do (shaders/common/irradiance_cache.glsl).
+// The probe the shaders do (shaders/irradiance_cache/irradiance_cache.glsl).
 std::uint32_t probe(const std::vector<shared::CacheBucket>& table, const CacheKey& key) {
-    std::uint64_t packed = engine::lighting::packCacheKey(key);
+    std::uint64_t packed = engine::render::packCacheKey(key);
     auto mask = static_cast<std::uint32_t>(table.size() - 1);
-    std::uint32_t b = engine::lighting::cacheKeyHash(key) & mask;
+    std::uint32_t b = engine::render::cacheKeyHash(key) & mask;
     for (std::uint32_t i = 0; i <= mask; ++i, b = (b + 1) & mask) {
         if (table[b].keySlot.x == shared::CACHE_TABLE_EMPTY) return ~0u;
         if ((std::uint64_t(table[b].keySlot.y) << 32 | table[b].keySlot.x) == packed) return table[b].keySlot.z;

@@ -3,7 +3,7 @@
 
 #include "commands.h"
 #include "scene/scene_lighting.h"
-#include "render/irradiance_cache.h"
+#include "render/irradiance_cache/irradiance_cache.h"
 #include "io/vdb_info.h"
 #include "shared/brick_grid.h"
 #include "vdb_options.h"

@@ -1,39 +1,40 @@
-// LitPass: the shape every light-sampling pass shares — one compute shader over a screen-sized
-// grid that reads the world (bindings 0-3) and the emitter list (4-7), then its own buffers
-// from binding 8 on. The concrete passes (restir_*_pass.h, light_sampling_pass.h,
-// reference_pass.h) name their buffers; this class only does the binding and dispatch.
+// LitPass: the shape every pass that samples lights shares — a ComputePass that reads the world
+// and the emitter list (scene_bindings.h), then its own buffers from LIT_PASS_BINDING_FIRST on
+// (shaders/shared/bindings.h). The technique passes (render/restir/, render/baselines/,
+// render/reference/, render/irradiance_cache/) name their buffers in an Io struct whose
+// bindings() gives each its binding number; the count of own bindings follows from that list.
 #pragma once
 
 #include <string>
-#include <vector>
 
-#include <glm/glm.hpp>
-
-#include "gpu/compute_pipeline.h"
-#include "lighting/gpu_emitter_list.h"
-#include "render/gpu_world.h"
-
-namespace engine::gpu {
-class CommandList;
-}
+#include "render/passes/compute_pass.h"
+#include "render/passes/scene_bindings.h"
 
 namespace engine::render {
-
-struct SceneBindings {
-    const GpuWorld& world;
-    const lighting::GpuEmitterList& lights;
-};
 
 class LitPass {
 public:
     LitPass(gpu::Context& ctx, std::string name, const std::string& shader, std::uint32_t ownBindings);
-    void record(gpu::CommandList& cmd, const SceneBindings& scene, std::initializer_list<const gpu::Buffer*> own,
-                glm::uvec2 size);
+    // `own`: the pass's buffers, at LIT_PASS_BINDING_FIRST and after.
+    void record(gpu::CommandList& cmd, const SceneBindings& scene, std::span<const PassBinding> own, glm::uvec2 groups);
 
 private:
-    std::string mName;
-    std::uint32_t mOwnBindings;
-    gpu::ComputePipeline mPipeline;
+    ComputePass mPass;
+};
+
+// A LitPass over the image whose own buffers are an Io struct's (see bindingCount): a technique
+// pass that shades pixels derives from it and names only its label and shader.
+template <class Io>
+class ScreenLitPass {
+public:
+    ScreenLitPass(gpu::Context& ctx, std::string name, const std::string& shader)
+        : mPass(ctx, std::move(name), shader, bindingCount<Io>()) {}
+    void record(gpu::CommandList& cmd, const SceneBindings& scene, const Io& io, glm::uvec2 size) {
+        mPass.record(cmd, scene, io.bindings(), screenGroups(size));
+    }
+
+private:
+    LitPass mPass;
 };
 
 }  // namespace engine::render

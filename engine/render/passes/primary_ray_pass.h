@@ -2,27 +2,27 @@
 // face, material, distance, DDA steps). Shader: shaders/world/primary_rays.comp
 #pragma once
 
-#include "gpu/compute_pipeline.h"
-#include "render/gpu_world.h"
-
-namespace engine::gpu {
-class CommandList;
-}
+#include "render/passes/compute_pass.h"
+#include "render/passes/scene_bindings.h"
+#include "shared/bindings.h"
 
 namespace engine::render {
 
-class PrimaryRayPass {
-public:
-    explicit PrimaryRayPass(gpu::Context& ctx);
-    struct Io {
-        const GpuWorld& world;          // read
-        const gpu::Buffer& frameParams; // read
-        gpu::Buffer& gbuffer;           // write
-    };
-    void record(gpu::CommandList& cmd, const Io& io, glm::uvec2 size);
+struct PrimaryRayIo {
+    const GpuWorld& world;          // read
+    const gpu::Buffer& frameParams; // read
+    gpu::Buffer& gbuffer;           // write
+    auto bindings() const {
+        return joinBindings(worldBindings(world),
+                            std::to_array<PassBinding>({{shared::PRIMARY_BINDING_FRAME, &frameParams},
+                                                        {shared::PRIMARY_BINDING_GBUFFER, &gbuffer}}));
+    }
+};
 
-private:
-    gpu::ComputePipeline mPipeline;
+class PrimaryRayPass : public ScreenPass<PrimaryRayIo> {
+public:
+    using Io = PrimaryRayIo;
+    explicit PrimaryRayPass(gpu::Context& ctx) : ScreenPass(ctx, "primary_rays", "world/primary_rays") {}
 };
 
 }  // namespace engine::render

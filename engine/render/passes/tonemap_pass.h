@@ -1,28 +1,26 @@
 // Tonemapping: linear radiance -> exposure -> ACES fit -> sRGB RGBA8. Shader: shaders/post/tonemap.comp
 #pragma once
 
-#include <glm/glm.hpp>
-
-#include "gpu/compute_pipeline.h"
-
-namespace engine::gpu {
-class CommandList;
-}
+#include "render/passes/compute_pass.h"
+#include "shared/bindings.h"
 
 namespace engine::render {
 
-class TonemapPass {
-public:
-    explicit TonemapPass(gpu::Context& ctx);
-    struct Io {
-        const gpu::Buffer& frameParams;  // read
-        const gpu::Buffer& radiance;     // read
-        gpu::Buffer& ldr;                // write: packed RGBA8 per pixel
-    };
-    void record(gpu::CommandList& cmd, const Io& io, glm::uvec2 size);
+struct TonemapIo {
+    const gpu::Buffer& frameParams;  // read
+    const gpu::Buffer& radiance;     // read
+    gpu::Buffer& ldr;                // write: packed RGBA8 per pixel
+    auto bindings() const {
+        return std::to_array<PassBinding>({{shared::TONEMAP_BINDING_FRAME, &frameParams},
+                                           {shared::TONEMAP_BINDING_RADIANCE, &radiance},
+                                           {shared::TONEMAP_BINDING_LDR, &ldr}});
+    }
+};
 
-private:
-    gpu::ComputePipeline mPipeline;
+class TonemapPass : public ScreenPass<TonemapIo> {
+public:
+    using Io = TonemapIo;
+    explicit TonemapPass(gpu::Context& ctx) : ScreenPass(ctx, "tonemap", "post/tonemap") {}
 };
 
 }  // namespace engine::render

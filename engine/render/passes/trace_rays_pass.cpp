@@ -1,7 +1,6 @@
 #include "render/passes/trace_rays_pass.h"
 
 #include "core/check.h"
-#include "gpu/command_list.h"
 #include "shared/trace_rays.h"
 
 namespace engine::render {
@@ -13,15 +12,9 @@ void TraceRaysPass::record(gpu::CommandList& cmd, const Io& io, std::uint32_t ra
                                                "world/trace_rays_scene"};
     static_assert(shared::TRACE_MODE_HIERARCHICAL == 0 && shared::TRACE_MODE_PLAIN == 1 &&
                   shared::TRACE_MODE_SCENE == 2);
-    CHECK(mode < mPipelines.size());
-    if (!mPipelines[mode]) mPipelines[mode] = std::make_unique<gpu::ComputePipeline>(mCtx, kShaders[mode], 7);
-    cmd.beginPass("trace_rays");
-    mPipelines[mode]->dispatch(cmd,
-                               {&io.world.info(), &io.world.cells(), &io.world.pageTable(), &io.world.palette(),
-                                &io.params, &io.rays, &io.hits},
-                               (rayCount + 63) / 64);
-    cmd.endPass();
-    cmd.barrier();
+    CHECK(mode < mPasses.size());
+    if (!mPasses[mode]) mPasses[mode] = std::make_unique<ComputePass>(mCtx, "trace_rays", kShaders[mode], bindingCount<Io>());
+    mPasses[mode]->record(cmd, io.bindings(), {(rayCount + 63) / 64, 1u});
 }
 
 }  // namespace engine::render

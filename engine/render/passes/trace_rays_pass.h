@@ -6,12 +6,9 @@
 #include <array>
 #include <memory>
 
-#include "gpu/compute_pipeline.h"
-#include "render/gpu_world.h"
-
-namespace engine::gpu {
-class CommandList;
-}
+#include "render/passes/compute_pass.h"
+#include "render/passes/scene_bindings.h"
+#include "shared/bindings.h"
 
 namespace engine::render {
 
@@ -23,12 +20,17 @@ public:
         const gpu::Buffer& params;  // read: TraceRaysParams (its mode must equal `mode`)
         const gpu::Buffer& rays;    // read: TraceRayInput[]
         gpu::Buffer& hits;          // write: TraceRayOutput[]
+        auto bindings() const {
+            return joinBindings(worldBindings(world), std::to_array<PassBinding>({{shared::TRACE_BINDING_PARAMS, &params},
+                                                                                  {shared::TRACE_BINDING_RAYS, &rays},
+                                                                                  {shared::TRACE_BINDING_HITS, &hits}}));
+        }
     };
     void record(gpu::CommandList& cmd, const Io& io, std::uint32_t rayCount, std::uint32_t mode);
 
 private:
     gpu::Context& mCtx;
-    std::array<std::unique_ptr<gpu::ComputePipeline>, 3> mPipelines;  // by TRACE_MODE_*
+    std::array<std::unique_ptr<ComputePass>, 3> mPasses;  // by TRACE_MODE_*
 };
 
 }  // namespace engine::render

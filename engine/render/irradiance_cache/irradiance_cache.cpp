@@ -1,0 +1,295 @@
+#include "render/irradiance_cache/irradiance_cache.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <numeric>
+#include <unordered_set>
+
+#include "core/check.h"
+#include "core/hash.h"
+#include "gpu/command_list.h"
+#include "gpu/uploader.h"
+#include "render/irradiance_cache/cache_params.h"
+#include "shared/irradiance_cache.h"
+
+namespace engine::render {
+
+namespace {
+
+// The buffers every cache pass binds (shaders/irradiance_cache/irradiance_cache.glsl).
+struct CachePassIo {
+    const gpu::Buffer& params;
+    const gpu::Buffer& frameParams;
+    const gpu::Buffer& directions;
+    const gpu::Buffer& entries;
+    const gpu::Buffer& table;
+    const gpu::Buffer& lists;
+    gpu::Buffer& staticHits;
+    gpu::Buffer& selectedHits;
+    gpu::Buffer& irradiance;
+    gpu::Buffer& filtered;
+    const gpu::Buffer& gbuffer;
+    gpu::Buffer& radiance;  // read and written: the indirect term is added
+    gpu::Buffer& indirect;  // written: the indirect term alone
+    auto bindings() const {
+        return std::to_array<PassBinding>({{shared::CACHE_BINDING_PARAMS, &params},
+                                           {shared::CACHE_BINDING_FRAME, &frameParams},
+                                           {shared::CACHE_BINDING_DIRECTIONS, &directions},
+                                           {shared::CACHE_BINDING_ENTRIES, &entries},
+                                           {shared::CACHE_BINDING_TABLE, &table},
+                                           {shared::CACHE_BINDING_LISTS, &lists},
+                                           {shared::CACHE_BINDING_STATIC_HITS, &staticHits},
+                                           {shared::CACHE_BINDING_SELECTED_HITS, &selectedHits},
+                                           {shared::CACHE_BINDING_IRRADIANCE, &irradiance},
+                                           {shared::CACHE_BINDING_FILTERED, &filtered},
+                                           {shared::CACHE_BINDING_GBUFFER, &gbuffer},
+                                           {shared::CACHE_BINDING_RADIANCE, &radiance},
+                                           {shared::CACHE_BINDING_INDIRECT, &indirect}});
+    }
+};
+constexpr std::uint32_t kOwnBindings = bindingCount<CachePassIo>();
+
+// CACHE_DIRECTION_SETS sets of K cosine-distributed directions in a face's frame (z along the
+// normal). The base set is a jittered Fibonacci lattice in (u1, u2) = (r^2, phi / 2pi); set r is
+// the base shifted by its own uniform (a, b) modulo 1 (a Cranley-Patterson rotation), which keeps
+// the lattice's stratification and makes every direction of the set cosine-distributed on its
+// own: E = pi * mean(L) stays unbiased per entry over rotations. Shifting u2 turns the set about
+// the normal, shifting u1 moves it across the strata of cos(theta).
+std::vector<glm::vec4> makeDirections(std::uint32_t count) {
+    std::vector<glm::vec2> base(count);
+    Rng rng(0x1C0FFEEu + count);
+    const float golden = 0.6180339887f;
+    for (std::uint32_t k = 0; k < count; ++k) {
+        float u1 = (static_cast<float>(k) + rng.nextFloat()) / static_cast<float>(count);
+        float u2 = std::fmod(static_cast<float>(k) * golden + rng.nextFloat() * 0.25f, 1.0f);
+        base[k] = {u1, u2};
+    }
+    // Interleave so the S rays of one update spread over the hemisphere (index j * K/S + r).
+    std::uint32_t step = 7;
+    while (std::gcd(step, count) != 1) step += 2;
+    auto wrap = [](float u) { return u >= 1.0f ? u - 1.0f : u; };
+    std::vector<glm::vec4> out(std::size_t(count) * shared::CACHE_DIRECTION_SETS);
+    for (std::uint32_t set = 0; set < shared::CACHE_DIRECTION_SETS; ++set) {
+        const float a = rng.nextFloat(), b = rng.nextFloat();
+        for (std::uint32_t k = 0; k < count; ++k) {
+            glm::vec2 u = base[(k * step) % count];
+            float u1 = wrap(u.x + a), u2 = wrap(u.y + b);
+            float r = std::sqrt(u1), phi = 2.0f * 3.14159265f * u2;
+            out[std::size_t(set) * count + k] =
+                glm::vec4(r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0f, 1.0f - u1)), 0.0f);
+        }
+    }
+    return out;
+}
+
+// Workgroups of CACHE_GROUP_SIZE threads for a 1-D grid of `threads`, in rows of 65535 groups
+// (the shaders' cacheThread() undoes it).
+glm::uvec2 threadGroups(std::uint64_t threads) {
+    std::uint64_t groups = (threads + shared::CACHE_GROUP_SIZE - 1) / shared::CACHE_GROUP_SIZE;
+    return {static_cast<std::uint32_t>(std::min<std::uint64_t>(groups, 65535)),
+            static_cast<std::uint32_t>((groups + 65534) / 65535)};
+}
+
+}  // namespace
+
+IrradianceCache::IrradianceCache(gpu::Context& ctx)
+    : mCtx(ctx),
+      mTraceStatic(ctx, "cache.trace_static", "irradiance_cache/trace_static", kOwnBindings),
+      mVisibilityStatic(ctx, "cache.visibility_static", "irradiance_cache/visibility_static", kOwnBindings),
+      mVisibilityStaticFull(ctx, "cache.visibility_static", "irradiance_cache/visibility_static_full", kOwnBindings),
+      mVisibilityDynamic(ctx, "cache.visibility_dynamic", "irradiance_cache/visibility_dynamic", kOwnBindings),
+      mBounce(ctx, "cache.bounce", "irradiance_cache/light_bounce", kOwnBindings),
+      mFilter(ctx, "cache.filter", "irradiance_cache/filter", kOwnBindings),
+      mGather(ctx, "cache.gather", "irradiance_cache/gather", kOwnBindings) {
+    mParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::CacheParams), "cache.params");
+}
+
+std::uint64_t IrradianceCache::bytesPerSlot(const lighting::IrradianceCacheSettings& s) {
+    return sizeof(shared::CacheEntry) + shared::CACHE_FACES * s.directions * 4ull   // entry, static hits
+           + 2ull * shared::CACHE_FACES * sizeof(glm::vec4)                          // irradiance, filtered
+           + 2ull * sizeof(shared::CacheBucket) + 2ull * 4                           // table, lists
+           + shared::CACHE_FACES * s.raysPerUpdate * 4ull;                           // selected hits
+}
+
+std::uint32_t IrradianceCache::directionRotation(glm::ivec3 voxel, std::uint32_t set, std::uint32_t seed) {
+    const std::uint32_t x = static_cast<std::uint32_t>(voxel.x) | (static_cast<std::uint32_t>(voxel.y) << 16);
+    const std::uint32_t y = static_cast<std::uint32_t>(voxel.z) | (set << 31);
+    return pcgHash(x ^ pcgHash(y ^ pcgHash(seed ^ 0x9E3779B9u)));
+}
+
+glm::vec3 IrradianceCache::rayDirection(glm::ivec3 voxel, std::uint32_t set, std::uint32_t face, std::uint32_t k) const {
+    const std::uint32_t rotation = directionRotation(voxel, set, mSeed);
+    glm::vec3 local(mDirections[std::size_t(rotation % shared::CACHE_DIRECTION_SETS) * mSettings.directions + k]);
+    const std::uint32_t mirror = rotation >> 29;
+    if (mirror & 1u) std::swap(local.x, local.y);
+    if (mirror & 2u) local.x = -local.x;
+    if (mirror & 4u) local.y = -local.y;
+    const std::uint32_t axis = face >> 1;
+    glm::vec3 d;
+    d[(axis + 1) % 3] = local.x;
+    d[(axis + 2) % 3] = local.y;
+    d[axis] = (face & 1u) ? local.z : -local.z;
+    return d;
+}
+
+std::uint32_t IrradianceCache::directionIndex(std::uint32_t j) const {
+    std::uint32_t stride = mSettings.directions / mSettings.raysPerUpdate;
+    return j * stride + mFrameIndex % stride;  // the rotation advances with the frame
+}
+
+void IrradianceCache::clear() {
+    mConfigured = false;
+}
+
+void IrradianceCache::reset(const lighting::IrradianceCacheSettings& settings, std::uint32_t seed) {
+    mSettings = settings;
+    mSeed = seed;
+    mConfigured = true;
+    mDirectionsUploaded = false;
+    auto slots = static_cast<std::uint32_t>(
+        std::clamp<std::uint64_t>(settings.budgetBytes / bytesPerSlot(settings), 1, 1u << 24));
+    mDirectory = IrradianceCacheDirectory(slots);
+    mDirections = makeDirections(settings.directions);
+    mDirectionBuffer = gpu::Buffer(mCtx, gpu::BufferKind::Storage, mDirections.size() * sizeof(glm::vec4), "cache.directions");
+    mCapacity = 0;
+    mStaticHits = {};
+    mIrradiance = {};
+    mFiltered = {};
+    mEntries = {};
+    mLists = {};
+    mTable = {};
+    mSelectedHits = {};
+}
+
+void IrradianceCache::ensureCapacity(std::uint32_t slots, gpu::CommandList& cmd) {
+    if (slots <= mCapacity) return;
+    std::uint32_t capacity = std::min(std::max(std::bit_ceil(slots), 1024u), std::max(mDirectory.maxSlots(), slots));
+    auto grow = [&](gpu::Buffer& buffer, std::uint64_t bytesPerSlot, const char* name) {
+        gpu::Buffer bigger(mCtx, gpu::BufferKind::Storage, capacity * bytesPerSlot, name);
+        if (buffer.valid()) {
+            cmd.copyBuffer(buffer, bigger, {{0, 0, buffer.size()}});
+            mRetired.push_back(std::move(buffer));
+        }
+        buffer = std::move(bigger);
+    };
+    grow(mStaticHits, shared::CACHE_FACES * mSettings.directions * 4ull, "cache.staticHits");
+    grow(mIrradiance, shared::CACHE_FACES * sizeof(glm::vec4), "cache.irradiance");
+    grow(mFiltered, shared::CACHE_FACES * sizeof(glm::vec4), "cache.filtered");
+    mEntries = gpu::Buffer(mCtx, gpu::BufferKind::Storage, capacity * sizeof(shared::CacheEntry), "cache.entries");
+    mLists = gpu::Buffer(mCtx, gpu::BufferKind::Storage, 2ull * capacity * 4, "cache.lists");
+    mSelectedHits = gpu::Buffer(mCtx, gpu::BufferKind::Storage,
+                                std::uint64_t(capacity) * shared::CACHE_FACES * mSettings.raysPerUpdate * 4, "cache.selectedHits");
+    mCapacity = capacity;
+    cmd.barrier();
+}
+
+void IrradianceCache::prepare(const lighting::IrradianceCacheSettings& settings,
+                              std::span<const shared::GBufferTexel> gbuffer, glm::uvec2 size, double timeSeconds,
+                              std::uint32_t frameIndex, std::uint32_t seed, std::span<const glm::ivec3> editedCellMins,
+                              gpu::Uploader& uploader, gpu::CommandList& cmd) {
+    mRetired.clear();  // the previous frame has completed
+    // The seed picks every entry's directions: a new seed invalidates every cached hit.
+    if (!mConfigured || !(settings == mSettings) || seed != mSeed) reset(settings, seed);
+    mStats = {};
+
+    // Visible voxels, from this frame's G-buffer; an N^3 neighbourhood around the dynamic ones so
+    // the values a moving object interpolates are ready before it gets there (§4.4).
+    std::unordered_set<std::uint64_t> seenStatic, seenDynamic;
+    std::vector<CacheKey> visible;
+    std::vector<glm::ivec3> dynamicVoxels;
+    for (const shared::GBufferTexel& g : gbuffer) {
+        if (static_cast<std::uint32_t>(g.voxel.w) >= 6u) continue;
+        glm::ivec3 v(g.voxel);
+        if ((g.data.w & shared::GBUFFER_FLAG_DYNAMIC) != 0u) {
+            if (seenDynamic.insert(packCacheKey({v, shared::CACHE_SET_DYNAMIC})).second) dynamicVoxels.push_back(v);
+        } else if (seenStatic.insert(packCacheKey({v, shared::CACHE_SET_STATIC})).second) {
+            visible.push_back({v, shared::CACHE_SET_STATIC});
+        }
+    }
+    mStats.visibleStatic = static_cast<std::uint32_t>(seenStatic.size());
+    mStats.visibleDynamic = static_cast<std::uint32_t>(dynamicVoxels.size());
+    const int half = static_cast<int>(settings.neighbourhood / 2);
+    std::unordered_set<std::uint64_t> added;
+    for (const glm::ivec3& v : dynamicVoxels) {
+        for (int z = -half; z <= half; ++z) {
+            for (int y = -half; y <= half; ++y) {
+                for (int x = -half; x <= half; ++x) {
+                    glm::ivec3 n = v + glm::ivec3(x, y, z);
+                    if (glm::any(glm::lessThan(n, glm::ivec3(0))) || glm::any(glm::greaterThan(n, glm::ivec3(0xFFFE)))) continue;
+                    CacheKey key{n, shared::CACHE_SET_DYNAMIC};
+                    if (added.insert(packCacheKey(key)).second) visible.push_back(key);
+                }
+            }
+        }
+    }
+
+    mStats.invalidated = mDirectory.invalidateStatic(editedCellMins, settings.maxRayLength);
+    CacheFrameLists lists = mDirectory.beginFrame(visible, timeSeconds, settings.fadeSeconds);
+    mUpdate = std::move(lists.update);
+    auto dynamicFirst = std::stable_partition(mUpdate.begin(), mUpdate.end(), [&](std::uint32_t slot) {
+        return mDirectory.entry(slot).voxel.w == static_cast<int>(shared::CACHE_SET_STATIC);
+    });
+    mStaticUpdates = static_cast<std::uint32_t>(dynamicFirst - mUpdate.begin());
+    mTrace = std::move(lists.trace);
+    mStats.updated = static_cast<std::uint32_t>(mUpdate.size());
+    mStats.dynamicEntries = static_cast<std::uint32_t>(mUpdate.size()) - mStaticUpdates;
+    mStats.traced = static_cast<std::uint32_t>(mTrace.size());
+    mStats.entries = mDirectory.liveEntries();
+    mStats.dropped = lists.dropped;
+    mStats.evicted = lists.evicted;
+    mStats.rays = (std::uint64_t(mTrace.size()) * settings.directions + std::uint64_t(mUpdate.size()) * settings.raysPerUpdate) *
+                  shared::CACHE_FACES;
+    mFrameIndex = frameIndex;
+    mImage = size;
+
+    ensureCapacity(std::max(mDirectory.usedSlots(), 1u), cmd);
+    if (lists.tableChanged || !mTable.valid()) {
+        std::vector<shared::CacheBucket> table = mDirectory.buildTable();
+        if (!mTable.valid() || mTable.size() != table.size() * sizeof(shared::CacheBucket)) {
+            mTable = gpu::Buffer(mCtx, gpu::BufferKind::Storage, table.size() * sizeof(shared::CacheBucket), "cache.table");
+        }
+        uploader.write(mTable, 0, table.data(), table.size() * sizeof(shared::CacheBucket));
+    }
+    auto entries = mDirectory.entries();
+    uploader.write(mEntries, 0, entries.data(), entries.size_bytes());
+    uploader.write(mLists, 0, mUpdate.data(), mUpdate.size() * 4);
+    uploader.write(mLists, std::uint64_t(mCapacity) * 4, mTrace.data(), mTrace.size() * 4);
+    if (!mDirectionsUploaded) {  // fixed until the next reset
+        uploader.write(mDirectionBuffer, 0, mDirections.data(), mDirections.size() * sizeof(glm::vec4));
+        mDirectionsUploaded = true;
+    }
+
+    CacheFrame frame;
+    frame.updates = static_cast<std::uint32_t>(mUpdate.size());
+    frame.staticUpdates = mStaticUpdates;
+    frame.traces = static_cast<std::uint32_t>(mTrace.size());
+    frame.buckets = static_cast<std::uint32_t>(mTable.size() / sizeof(shared::CacheBucket));
+    frame.capacity = mCapacity;
+    frame.frameIndex = frameIndex;
+    frame.seed = seed;
+    frame.image = size;
+    frame.timeSeconds = timeSeconds;
+    const shared::CacheParams params = cacheParams(settings, frame);
+    uploader.write(mParams, 0, &params, sizeof(params));
+
+    mStats.bytes = mParams.size() + mDirectionBuffer.size() + mEntries.size() + mTable.size() + mLists.size() +
+                   mStaticHits.size() + mSelectedHits.size() + mIrradiance.size() + mFiltered.size();
+}
+
+void IrradianceCache::record(gpu::CommandList& cmd, const SceneBindings& scene, const Io& io) {
+    CHECK(mConfigured);
+    const CachePassIo own{mParams,     io.frameParams, mDirectionBuffer, mEntries,    mTable,      mLists,      mStaticHits,
+                          mSelectedHits, mIrradiance,  mFiltered,        io.gbuffer, io.radiance, io.indirect};
+    const auto bindings = own.bindings();
+    const std::uint64_t faces = shared::CACHE_FACES;
+    mTraceStatic.record(cmd, scene, bindings, threadGroups(mTrace.size() * faces * mSettings.directions));
+    (mSettings.fullRetrace ? mVisibilityStaticFull : mVisibilityStatic)
+        .record(cmd, scene, bindings, threadGroups(mStaticUpdates * faces));
+    mVisibilityDynamic.record(cmd, scene, bindings, threadGroups((mUpdate.size() - mStaticUpdates) * faces));
+    mBounce.record(cmd, scene, bindings, threadGroups(mUpdate.size() * faces));
+    mFilter.record(cmd, scene, bindings, threadGroups(mUpdate.size() * faces));
+    mGather.record(cmd, scene, bindings, screenGroups(mImage));
+}
+
+}  // namespace engine::render

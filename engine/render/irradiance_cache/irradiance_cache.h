@@ -1,0 +1,103 @@
+// The voxel-face irradiance cache on the GPU (Cosin Ayerbe et al. §4; layouts in
+// shaders/shared/irradiance_cache.h, host bookkeeping in irradiance_cache_directory.h, shaders in
+// shaders/irradiance_cache/).
+//
+// Each frame, after the primary rays: prepare() reads the visible voxels off the G-buffer (plus
+// an N^3 neighbourhood around visible dynamic voxels), updates the directory and queues the
+// uploads; record() then runs the stages, each a timed pass:
+//   cache.trace_static  new or invalidated static entries trace their K rays per face once
+//   cache.visibility_static   static entries re-trace only the dynamic grid (divide and win)
+//   cache.visibility_dynamic  dynamic entries trace both worlds
+//   cache.bounce        light leaving each ray's hit -> E_new, blended into the entry
+//   cache.filter        3^3 filter over neighbouring entries of the same set
+//   cache.gather        per pixel: albedo/pi * E from the pixel's set, added to the radiance
+// GPU storage grows with the entries (doubling) up to the budget; it never depends on the world's size.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "gpu/buffer.h"
+#include "lighting/irradiance_cache_settings.h"
+#include "render/irradiance_cache/irradiance_cache_directory.h"
+#include "render/passes/lit_pass.h"
+#include "shared/gbuffer.h"
+
+namespace engine::gpu {
+class CommandList;
+class Uploader;
+}  // namespace engine::gpu
+
+namespace engine::render {
+
+struct IrradianceCacheStats {
+    std::uint32_t visibleStatic = 0;   // distinct static voxels seen by the camera
+    std::uint32_t visibleDynamic = 0;  // distinct dynamic voxels seen by the camera
+    std::uint32_t updated = 0;         // entries updated this frame (with the neighbourhoods)
+    std::uint32_t dynamicEntries = 0;  // of them, dynamic-set entries
+    std::uint32_t traced = 0;          // static entries that traced their rays this frame
+    std::uint32_t entries = 0;         // live entries
+    std::uint32_t dropped = 0, evicted = 0, invalidated = 0;
+    std::uint64_t rays = 0;            // rays traced by the cache this frame (excluding shadow rays)
+    std::uint64_t bytes = 0;           // GPU memory the cache holds
+};
+
+class IrradianceCache {
+public:
+    explicit IrradianceCache(gpu::Context& ctx);
+
+    // `gbuffer` is this frame's G-buffer on the host; `editedCellMins` the static world's 8^3
+    // cells edited since the last frame (voxel coordinates of their corners).
+    void prepare(const lighting::IrradianceCacheSettings& settings, std::span<const shared::GBufferTexel> gbuffer,
+                 glm::uvec2 size, double timeSeconds, std::uint32_t frameIndex, std::uint32_t seed,
+                 std::span<const glm::ivec3> editedCellMins, gpu::Uploader& uploader, gpu::CommandList& cmd);
+    struct Io {
+        const gpu::Buffer& frameParams;
+        const gpu::Buffer& gbuffer;
+        gpu::Buffer& radiance;  // read and written: the indirect term is added
+        gpu::Buffer& indirect;  // written: the indirect term alone
+    };
+    void record(gpu::CommandList& cmd, const SceneBindings& scene, const Io& io);
+    void clear();
+
+    const IrradianceCacheStats& stats() const { return mStats; }
+    const IrradianceCacheDirectory& directory() const { return mDirectory; }
+    // For tests: this frame's update list and the selected hit of each traced ray.
+    std::span<const std::uint32_t> updateList() const { return mUpdate; }
+    const gpu::Buffer& selectedHits() const { return mSelectedHits; }
+    const gpu::Buffer& filtered() const { return mFiltered; }
+    std::uint32_t raysPerUpdate() const { return mSettings.raysPerUpdate; }
+    std::uint32_t directionIndex(std::uint32_t j) const;
+    // All CACHE_DIRECTION_SETS direction sets, K each, in the face frame.
+    std::span<const glm::vec4> directions() const { return mDirections; }
+    // The host's copy of the shaders' per-entry directions (irradiance_cache.glsl), bit for bit:
+    // which set and mirror entry (voxel, set) uses under a lighting seed, and its direction k on
+    // `face` in world space under the current seed.
+    static std::uint32_t directionRotation(glm::ivec3 voxel, std::uint32_t set, std::uint32_t seed);
+    glm::vec3 rayDirection(glm::ivec3 voxel, std::uint32_t set, std::uint32_t face, std::uint32_t k) const;
+    static std::uint64_t bytesPerSlot(const lighting::IrradianceCacheSettings& settings);
+
+private:
+    void reset(const lighting::IrradianceCacheSettings& settings, std::uint32_t seed);
+    void ensureCapacity(std::uint32_t slots, gpu::CommandList& cmd);
+
+    gpu::Context& mCtx;
+    LitPass mTraceStatic, mVisibilityStatic, mVisibilityStaticFull, mVisibilityDynamic, mBounce, mFilter, mGather;
+    lighting::IrradianceCacheSettings mSettings;
+    bool mConfigured = false;
+    bool mDirectionsUploaded = false;
+    std::uint32_t mSeed = 0;  // the lighting seed the cached hits were traced with
+    IrradianceCacheDirectory mDirectory{1};
+    std::vector<glm::vec4> mDirections;
+    std::vector<std::uint32_t> mUpdate, mTrace;  // mUpdate: static entries first
+    std::uint32_t mStaticUpdates = 0;
+    std::uint32_t mCapacity = 0;  // slots the GPU buffers hold
+    std::uint32_t mFrameIndex = 0;  // also the rotation through the K directions
+    glm::uvec2 mImage{0};
+    IrradianceCacheStats mStats;
+    gpu::Buffer mParams, mDirectionBuffer, mEntries, mTable, mLists, mStaticHits, mSelectedHits, mIrradiance, mFiltered;
+    std::vector<gpu::Buffer> mRetired;  // replaced buffers, kept until the frame that copied them is done
+};
+
+}  // namespace engine::render

@@ -1,0 +1,67 @@
+#version 460
+// Light-sampling baselines: N light samples per pixel, each with its own shadow ray (uniform or
+// power-proportional emitter choice), or every light once ("brute force", for small scenes).
+#extension GL_GOOGLE_include_directive : require
+
+#include "common/camera.glsl"
+#include "common/surface.glsl"
+#include "shared/light_sampling.h"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(set = 0, binding = LIGHT_SAMPLING_BINDING_FRAME, std430) readonly buffer Params { FrameParams gFrame; };
+layout(set = 0, binding = LIGHT_SAMPLING_BINDING_PARAMS, std430) readonly buffer Sampling { LightSamplingParams gSampling; };
+layout(set = 0, binding = LIGHT_SAMPLING_BINDING_GBUFFER, std430) readonly buffer GBuffer { GBufferTexel gGBuffer[]; };
+layout(set = 0, binding = LIGHT_SAMPLING_BINDING_RADIANCE, std430) writeonly buffer Radiance { vec4 gRadiance[]; };
+
+// One sample of emitter `slot` chosen with probability `emitterProbability`: f V / p.
+vec3 sampleEmitter(Surface s, uint slot, float emitterProbability, bool area, inout uint rng) {
+    GpuEmitter e = gEmitters[slot];
+    uint face = LIGHT_FACE_CENTRE;
+    vec2 uv = vec2(0.5);
+    float pdf = emitterProbability;
+    if (area) {
+        float side = float(e.minCorner.w);
+        pdf *= pickFace(e, s.position, rngNext(rng), face) / (side * side);
+        uv = vec2(rngNext(rng), rngNext(rng));
+    }
+    if (!(pdf > 0.0)) return vec3(0.0);
+    vec3 toLight;
+    float dist;
+    vec3 f = lightContribution(s, e, face, uv, toLight, dist);
+    if (!any(greaterThan(f, vec3(0.0))) || !lightVisible(s, e, toLight, dist)) return vec3(0.0);
+    return f / pdf;
+}
+
+void main() {
+    uvec2 pixel = gl_GlobalInvocationID.xy;
+    if (any(greaterThanEqual(pixel, gFrame.imageSize.xy))) return;
+    uint index = pixel.x + pixel.y * gFrame.imageSize.x;
+    GBufferTexel g = gGBuffer[index];
+    Surface s = surfaceFrom(g);
+    if (uint(g.voxel.w) == FACE_NONE) {
+        gRadiance[index] = vec4(skyBackground(gFrame, cameraRayDirection(gFrame, pixel)), 1.0);
+        return;
+    }
+    vec3 radiance = s.emission;
+    if (s.valid) {
+        radiance += sunLight(s, gFrame);
+        bool area = gSampling.area != 0u;
+        bool byPower = gSampling.byPower != 0u;
+        uint rng = rngInit(pixel, gSampling.frameIndex, 4u, gSampling.seed);
+        uint n = gLights.counts.x;
+        vec3 direct = vec3(0.0);
+        if (gSampling.everyLight != 0u) {
+            for (uint i = 0u; i < n; ++i) direct += sampleEmitter(s, gAlive[i], 1.0, area, rng);
+        } else if (n > 0u) {
+            uint samples = max(gSampling.samples, 1u);
+            for (uint i = 0u; i < samples; ++i) {
+                uint slot;
+                if (pickEmitter(rng, byPower, slot)) direct += sampleEmitter(s, slot, emitterPdf(slot, byPower), area, rng);
+            }
+            direct /= float(samples);
+        }
+        radiance += direct;
+    }
+    gRadiance[index] = vec4(radiance, 1.0);
+}

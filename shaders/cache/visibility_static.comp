@@ -1,7 +1,0 @@
-#version 460
-// Visibility update of the cache's static entries: see update_visibility.glsl.
-#extension GL_GOOGLE_include_directive : require
-
-#define VISIBILITY_SET CACHE_SET_STATIC
-#define VISIBILITY_MODE VISIBILITY_DIVIDE
-#include "cache/update_visibility.glsl"

@@ -1,0 +1,41 @@
+#version 460
+// Irradiance cache, smoothing (§4.7): a 3^3 binomial (Gaussian-like) filter over the same face of
+// the neighbouring entries of the same set. Empty neighbours and unexposed faces take no part, so
+// values never cross a one-voxel wall (its two sides are different faces).
+#extension GL_GOOGLE_include_directive : require
+
+#include "irradiance_cache/irradiance_cache.glsl"
+
+layout(local_size_x = CACHE_GROUP_SIZE) in;
+
+void main() {
+    uint thread = cacheThread();
+    uint item = thread / CACHE_FACES;
+    if (item >= gCache.updates) return;
+    uint face = thread % CACHE_FACES;
+    uint slot = gLists[item];
+    CacheEntry entry = gEntries[slot];
+    uint index = slot * CACHE_FACES + face;
+    vec4 own = gIrradiance[index];
+    if ((gCache.flags & CACHE_FLAG_NO_FILTER) != 0u || own.w == 0.0) {
+        gFiltered[index] = vec4(own.rgb, own.w > 0.0 ? 1.0 : 0.0);
+        return;
+    }
+    vec3 sum = vec3(0.0);
+    float weights = 0.0;
+    for (int z = -1; z <= 1; ++z) {
+        for (int y = -1; y <= 1; ++y) {
+            for (int x = -1; x <= 1; ++x) {
+                ivec3 o = ivec3(x, y, z);
+                uint n = o == ivec3(0) ? slot : cacheLookup(entry.voxel.xyz + o, uint(entry.voxel.w));
+                if (n == ~0u) continue;
+                vec4 v = gIrradiance[n * CACHE_FACES + face];
+                if (v.w == 0.0) continue;
+                float w = float((2 - abs(x)) * (2 - abs(y)) * (2 - abs(z)));
+                sum += w * v.rgb;
+                weights += w;
+            }
+        }
+    }
+    gFiltered[index] = vec4(sum / weights, 1.0);
+}

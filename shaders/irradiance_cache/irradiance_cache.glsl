@@ -1,0 +1,110 @@
+// The irradiance cache's buffers and the helpers its passes share. Every cache pass binds the
+// same list (after the world and the lights), so one layout serves them all. Layouts and the
+// packing of hits: shared/irradiance_cache.h.
+#ifndef IRRADIANCE_CACHE_IRRADIANCE_CACHE_GLSL
+#define IRRADIANCE_CACHE_IRRADIANCE_CACHE_GLSL
+
+#include "common/direct_light.glsl"
+#include "common/scene_trace.glsl"
+#include "shared/gbuffer.h"
+#include "shared/irradiance_cache.h"
+
+layout(set = 0, binding = CACHE_BINDING_PARAMS, std430) readonly buffer CacheParamsBuffer { CacheParams gCache; };
+layout(set = 0, binding = CACHE_BINDING_FRAME, std430) readonly buffer FrameParamsBuffer { FrameParams gFrame; };
+layout(set = 0, binding = CACHE_BINDING_DIRECTIONS, std430) readonly buffer Directions { vec4 gDirections[]; };
+layout(set = 0, binding = CACHE_BINDING_ENTRIES, std430) readonly buffer Entries { CacheEntry gEntries[]; };
+layout(set = 0, binding = CACHE_BINDING_TABLE, std430) readonly buffer Table { CacheBucket gTable[]; };
+// [0, updates): slots to update; [capacity, capacity + traces): slots to trace statically.
+layout(set = 0, binding = CACHE_BINDING_LISTS, std430) readonly buffer Lists { uint gLists[]; };
+layout(set = 0, binding = CACHE_BINDING_STATIC_HITS, std430) buffer StaticHits { uint gStaticHits[]; };
+layout(set = 0, binding = CACHE_BINDING_SELECTED_HITS, std430) buffer SelectedHits { uint gSelectedHits[]; };
+layout(set = 0, binding = CACHE_BINDING_IRRADIANCE, std430) buffer Irradiance { vec4 gIrradiance[]; };
+layout(set = 0, binding = CACHE_BINDING_FILTERED, std430) buffer Filtered { vec4 gFiltered[]; };
+layout(set = 0, binding = CACHE_BINDING_GBUFFER, std430) readonly buffer GBuffer { GBufferTexel gGBuffer[]; };
+layout(set = 0, binding = CACHE_BINDING_RADIANCE, std430) buffer Radiance { vec4 gRadiance[]; };
+layout(set = 0, binding = CACHE_BINDING_INDIRECT, std430) writeonly buffer Indirect { vec4 gIndirect[]; };
+
+uint cacheThread() { return gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * CACHE_DISPATCH_ROW; }
+
+// Which of the rotated direction sets entry (voxel, set) uses, and how it is mirrored: a hash of
+// the key and the lighting seed, so neighbours' finite sets err independently and a run repeats
+// exactly. IrradianceCache::directionRotation is the host's copy.
+uint cacheRotation(ivec3 voxel, uint set) {
+    uvec2 key = uvec2(uint(voxel.x) | (uint(voxel.y) << 16u), uint(voxel.z) | (set << 31u));
+    return pcgHash(key.x ^ pcgHash(key.y ^ pcgHash(gCache.seed ^ 0x9E3779B9u)));
+}
+
+// Direction k of face `face` of an entry with rotation `rotation`, in world space. The set comes
+// from the host's table; the mirror (swap, negations) and the face frame only permute and negate
+// components, so host and GPU get the same bits and the cosine distribution is kept.
+vec3 cacheDirection(uint rotation, uint face, uint k) {
+    vec3 local = gDirections[(rotation % CACHE_DIRECTION_SETS) * gCache.directions + k].xyz;
+    uint mirror = rotation >> 29u;
+    if ((mirror & 1u) != 0u) local.xy = local.yx;
+    if ((mirror & 2u) != 0u) local.x = -local.x;
+    if ((mirror & 4u) != 0u) local.y = -local.y;
+    uint axis = face >> 1u;
+    vec3 d;
+    d[(axis + 1u) % 3u] = local.x;
+    d[(axis + 2u) % 3u] = local.y;
+    d[axis] = (face & 1u) != 0u ? local.z : -local.z;
+    return d;
+}
+
+vec3 cacheRayOrigin(ivec3 voxel, uint face) {
+    vec3 o = vec3(voxel) + 0.5;
+    uint axis = face >> 1u;
+    o[axis] += (face & 1u) != 0u ? CACHE_RAY_OFFSET : -CACHE_RAY_OFFSET;
+    return o;
+}
+
+// The direction index the j-th ray of this update uses: all K are covered every K/S updates.
+uint cacheDirectionIndex(uint j) {
+    uint stride = gCache.directions / gCache.raysPerUpdate;
+    return j * stride + gCache.frameIndex % stride;  // the rotation advances with the frame
+}
+
+// The hit voxel's offset from the ray's voxel, counted along the ray's direction on each axis
+// (a ray only moves forward): 9 bits then reach CACHE_MAX_RAY_LENGTH voxels, enough to cross a
+// 256-voxel room. A ray cut short is taken for the sky, so it must reach the far wall.
+uint packCacheHit(ivec3 origin, ivec3 voxel, uint face, bool dynamicSet, vec3 d) {
+    ivec3 sgn = ivec3(lessThan(d, vec3(0.0))) * -2 + 1;
+    uvec3 rel = uvec3(clamp((voxel - origin) * sgn + 2, 0, 511));
+    return rel.x | (rel.y << 9u) | (rel.z << 18u) | (face << 27u) | (dynamicSet ? CACHE_HIT_DYNAMIC : 0u);
+}
+ivec3 cacheHitVoxel(ivec3 origin, uint packed, vec3 d) {
+    ivec3 sgn = ivec3(lessThan(d, vec3(0.0))) * -2 + 1;
+    return origin + (ivec3(int(packed & 511u), int((packed >> 9u) & 511u), int((packed >> 18u) & 511u)) - 2) * sgn;
+}
+uint cacheHitFace(uint packed) { return (packed >> 27u) & CACHE_HIT_FACE_MASK; }
+
+// A face is worth caching when light can reach it: its neighbour is not static solid.
+bool cacheFaceExposed(ivec3 voxel, uint face, uint set) {
+    ivec3 n = voxel + faceNormal(face);
+    if (staticVoxelMaterial(n) != 0u) return false;
+    return set == CACHE_SET_STATIC || dynamicVoxelMaterial(n) == 0u;
+}
+
+// Slot of (voxel, set), or ~0u. Same hash and probing as IrradianceCacheDirectory::buildTable.
+uint cacheLookup(ivec3 voxel, uint set) {
+    if (any(lessThan(voxel, ivec3(0))) || any(greaterThan(voxel, ivec3(0xFFFF)))) return ~0u;
+    uvec2 key = uvec2(uint(voxel.x) | (uint(voxel.y) << 16u), uint(voxel.z) | (set << 31u));
+    uint mask = gCache.tableMask;
+    uint b = pcgHash(key.x ^ pcgHash(key.y)) & mask;
+    for (uint i = 0u; i <= mask; ++i) {
+        uvec4 e = gTable[b].keySlot;
+        if (e.x == CACHE_TABLE_EMPTY) return ~0u;
+        if (e.x == key.x && e.y == key.y) return e.z;
+        b = (b + 1u) & mask;
+    }
+    return ~0u;
+}
+
+// A dynamic entry's irradiance dims linearly to zero over the fade time after its last update.
+float cacheFade(uint slot) {
+    CacheEntry e = gEntries[slot];
+    if (uint(e.voxel.w) == CACHE_SET_STATIC) return 1.0;
+    return clamp(1.0 - (gCache.time - e.time.x) / gCache.fadeSeconds, 0.0, 1.0);
+}
+
+#endif

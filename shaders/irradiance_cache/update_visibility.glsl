@@ -1,0 +1,60 @@
+// Irradiance cache, visibility update (the paper's divide-and-win, §4.5): a static entry's ray
+// keeps its cached static hit unless the dynamic grid, traced alone up to that hit, is nearer
+// (the selection bit); a dynamic entry's ray traces static and dynamic worlds. The update list
+// holds the static entries first; visibility_static.comp and visibility_dynamic.comp each run
+// this over their part (VISIBILITY_SET), so each is timed on its own. VISIBILITY_MODE picks the
+// method at compile time — lavapipe runs both sides of a branch its lanes disagree on, and even a
+// branch none takes costs, so the divide-and-win shader holds no full-trace code at all:
+//   VISIBILITY_DIVIDE  cached static hit + the dynamic grid traced alone (static entries)
+//   VISIBILITY_FULL    both worlds traced from scratch (dynamic entries; static ones in the
+//                      full-re-trace comparison mode)
+#define VISIBILITY_DIVIDE 0
+#define VISIBILITY_FULL 1
+#include "irradiance_cache/irradiance_cache.glsl"
+
+layout(local_size_x = CACHE_GROUP_SIZE) in;
+
+// The selected hit of ray j of `face` of a static entry, or of a dynamic entry.
+uint selectHit(uint slot, ivec3 voxel, uint set, uint rotation, uint face, uint j) {
+    uint K = gCache.directions;
+    uint k = cacheDirectionIndex(j);
+    vec3 o = cacheRayOrigin(voxel, face);
+    vec3 d = cacheDirection(rotation, face, k);
+    float maxLength = gCache.maxRayLength;
+#if !defined(VISIBILITY_MODE)
+#error "define VISIBILITY_MODE"
+#elif VISIBILITY_MODE == VISIBILITY_DIVIDE
+    // Only static entries come here.
+        uint cached = gStaticHits[(slot * CACHE_FACES + face) * K + k];
+        if (!dynamicGridPresent()) return cached;
+        float ts = cached == CACHE_HIT_MISS ? maxLength : faceHitT(o, d, cacheHitVoxel(voxel, cached, d), cacheHitFace(cached));
+        SceneHit dyn = traceDynamic(o, d, ts);
+        if (dyn.hit && faceHitT(o, d, dyn.voxel, dyn.face) < ts) return packCacheHit(voxel, dyn.voxel, dyn.face, true, d);
+        return cached;
+#else
+    // Dynamic entries, and what the divide-and-win must equal: both worlds traced from scratch.
+    SceneHit hit = traceScene(o, d, maxLength);
+    return hit.hit ? packCacheHit(voxel, hit.voxel, hit.face, hit.dynamicSet, d) : CACHE_HIT_MISS;
+#endif
+}
+
+// One invocation per face of an entry, looping over its S rays: the entry and the face's
+// exposure are read once, not per ray.
+void main() {
+    uint S = gCache.raysPerUpdate;
+    uint thread = cacheThread();
+    uint staticEntries = gCache.staticUpdates;
+    uint item = thread / CACHE_FACES;
+    if (VISIBILITY_SET == CACHE_SET_DYNAMIC) item += staticEntries;
+    if (item >= (VISIBILITY_SET == CACHE_SET_STATIC ? staticEntries : gCache.updates)) return;
+    uint face = thread % CACHE_FACES;
+    uint slot = gLists[item];
+    CacheEntry entry = gEntries[slot];
+    ivec3 voxel = entry.voxel.xyz;
+    uint set = uint(entry.voxel.w);
+    bool exposed = cacheFaceExposed(voxel, face, set);
+    uint rotation = cacheRotation(voxel, set);
+    for (uint j = 0u; j < S; ++j) {
+        gSelectedHits[(item * CACHE_FACES + face) * S + j] = exposed ? selectHit(slot, voxel, set, rotation, face, j) : CACHE_HIT_MISS;
+    }
+}
