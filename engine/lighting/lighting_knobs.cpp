@@ -31,6 +31,14 @@ void setField(LightingSettings& s, double v) {
     s.*Field = fromKnobValue<std::remove_cvref_t<decltype(s.*Field)>>(v);
 }
 template <auto Field>
+double getRestirField(const LightingSettings& s) {
+    return knobValue(s.restir.*Field);
+}
+template <auto Field>
+void setRestirField(LightingSettings& s, double v) {
+    s.restir.*Field = fromKnobValue<std::remove_cvref_t<decltype(s.restir.*Field)>>(v);
+}
+template <auto Field>
 double getCacheField(const LightingSettings& s) {
     return knobValue(s.cache.*Field);
 }
@@ -53,7 +61,7 @@ Status parseMethodKnob(LightingSettings& s, std::string_view text) {
     auto m = parseMethod(unbiased ? "restir" : text);
     if (!m) return m.error();
     s.method = *m;
-    if (unbiased) s.unbiased = true;
+    if (unbiased) s.restir.unbiased = true;
     return {};
 }
 std::string formatMethodKnob(const LightingSettings& s) { return methodName(s.method); }
@@ -61,7 +69,7 @@ std::string formatMethodKnob(const LightingSettings& s) { return methodName(s.me
 // --spatial TAPS,RADIUS, or 0 / off.
 Status parseSpatialKnob(LightingSettings& s, std::string_view text) {
     if (text == "0" || text == "off") {
-        s.spatial = false;
+        s.restir.spatial = false;
         return {};
     }
     unsigned taps = 0;
@@ -70,17 +78,17 @@ Status parseSpatialKnob(LightingSettings& s, std::string_view text) {
     std::string t(text);
     if (std::sscanf(t.c_str(), "%u,%f%c", &taps, &radius, &extra) != 2 || taps > 16 || !(radius > 0.0f && radius <= 256.0f))
         return makeError("spatial: expected TAPS,RADIUS with taps in 0..16 and radius in (0, 256], or 0; got '{}'", text);
-    s.spatial = taps > 0;
-    s.spatialTaps = taps;
-    s.spatialRadius = radius;
+    s.restir.spatial = taps > 0;
+    s.restir.spatialTaps = taps;
+    s.restir.spatialRadius = radius;
     return {};
 }
 std::string formatSpatialKnob(const LightingSettings& s) {
-    return s.spatial ? fmt::format("{},{}", s.spatialTaps, s.spatialRadius) : "0";
+    return s.restir.spatial ? fmt::format("{},{}", s.restir.spatialTaps, s.restir.spatialRadius) : "0";
 }
 Status checkSpatialKnob(const LightingSettings& s) {
-    if (s.spatial && (s.spatialTaps < 1 || s.spatialTaps > 16 || !(s.spatialRadius > 0.0f && s.spatialRadius <= 256.0f)))
-        return makeError("spatial: taps must be in 1..16 and radius in (0, 256], not {},{}", s.spatialTaps, s.spatialRadius);
+    if (s.restir.spatial && (s.restir.spatialTaps < 1 || s.restir.spatialTaps > 16 || !(s.restir.spatialRadius > 0.0f && s.restir.spatialRadius <= 256.0f)))
+        return makeError("spatial: taps must be in 1..16 and radius in (0, 256], not {},{}", s.restir.spatialTaps, s.restir.spatialRadius);
     return {};
 }
 
@@ -95,6 +103,7 @@ constexpr std::array<std::string_view, 2> kPixelFilters{"box", "centre"};
 
 using S = LightingSettings;
 using C = IrradianceCacheSettings;
+using R = shared::RestirKnobs;
 
 const Knob kLighting[] = {
     {.name = "method",
@@ -123,19 +132,19 @@ const Knob kEmitters[] = {
 // Voxel ReSTIR (Bitterli et al.; candidates also drive RIS).
 const Knob kRestir[] = {
     {.name = "candidates", .help = "ReSTIR/RIS candidates per pixel (M)", .kind = KnobKind::Count, .min = 1, .max = 1024,
-     .get = getField<&S::candidates>, .set = setField<&S::candidates>, .relevant = resamples},
-    {.name = "temporal", .help = "Temporal reuse", .kind = KnobKind::Switch, .get = getField<&S::temporal>,
-     .set = setField<&S::temporal>, .relevant = isRestir},
+     .get = getRestirField<&R::candidates>, .set = setRestirField<&R::candidates>, .relevant = resamples},
+    {.name = "temporal", .help = "Temporal reuse", .kind = KnobKind::Switch, .get = getRestirField<&R::temporal>,
+     .set = setRestirField<&R::temporal>, .relevant = isRestir},
     {.name = "spatial", .help = "Spatial reuse taps,radius in pixels (0 = off)", .kind = KnobKind::Custom,
      .relevant = isRestir, .parse = parseSpatialKnob, .format = formatSpatialKnob, .check = checkSpatialKnob},
     {.name = "unbiased", .help = "Visibility-aware 1/Z normalisation (restir-unbiased)", .kind = KnobKind::Switch,
-     .get = getField<&S::unbiased>, .set = setField<&S::unbiased>, .relevant = isRestir},
+     .get = getRestirField<&R::unbiased>, .set = setRestirField<&R::unbiased>, .relevant = isRestir},
     {.name = "temporal_cap", .help = "Last frame's M is capped at this times M", .kind = KnobKind::Real, .min = 1, .max = 1000,
-     .get = getField<&S::temporalCap>, .set = setField<&S::temporalCap>, .relevant = isRestir},
+     .get = getRestirField<&R::temporalCap>, .set = setRestirField<&R::temporalCap>, .relevant = isRestir},
     {.name = "depth_tolerance", .help = "Reuse between pixels whose depths agree within this fraction", .kind = KnobKind::Real,
-     .min = 0, .max = 10, .get = getField<&S::depthTolerance>, .set = setField<&S::depthTolerance>, .relevant = isRestir},
+     .min = 0, .max = 10, .get = getRestirField<&R::depthTolerance>, .set = setRestirField<&R::depthTolerance>, .relevant = isRestir},
     {.name = "candidate_visibility", .help = "Shadow-test the chosen candidate before reuse", .kind = KnobKind::Switch,
-     .get = getField<&S::candidateVisibility>, .set = setField<&S::candidateVisibility>, .relevant = isRestir},
+     .get = getRestirField<&R::candidateVisibility>, .set = setRestirField<&R::candidateVisibility>, .relevant = isRestir},
 };
 
 const Knob kBaselines[] = {
@@ -193,9 +202,9 @@ Status checkCombinations(const LightingSettings& s) {
 
 void normalise(LightingSettings& s) {
     if (s.method == Method::Ris) {  // RIS is ReSTIR's first pass alone
-        s.temporal = false;
-        s.spatial = false;
-        s.candidateVisibility = false;
+        s.restir.temporal = false;
+        s.restir.spatial = false;
+        s.restir.candidateVisibility = false;
     }
     if (s.indirect == Indirect::Reference) {
         // The path tracer with bounces is the indirect reference; it replaces the direct method.

@@ -28,12 +28,14 @@ std::string LightingSettings::describe() const {
     std::string s = methodName(method);
     switch (method) {
         case Method::Restir:
-            s += fmt::format(" {} {} M={} {} {}{}{}", unbiased ? "unbiased" : "biased", area ? "area" : "point", candidates,
+            s += fmt::format(" {} {} M={} {} {}{}{}", restir.unbiased ? "unbiased" : "biased", area ? "area" : "point",
+                             restir.candidates,
                              byPower ? "power" : "uniform", brickLights ? "bricks" : "voxels",
-                             temporal ? " temporal" : "", spatial ? fmt::format(" spatial {}x{:.0f}px", spatialTaps, spatialRadius) : "");
+                             restir.temporal ? " temporal" : "",
+                             restir.spatial ? fmt::format(" spatial {}x{:.0f}px", restir.spatialTaps, restir.spatialRadius) : "");
             break;
         case Method::Ris:
-            s += fmt::format(" {} M={} {} {}", area ? "area" : "point", candidates, byPower ? "power" : "uniform",
+            s += fmt::format(" {} M={} {} {}", area ? "area" : "point", restir.candidates, byPower ? "power" : "uniform",
                              brickLights ? "bricks" : "voxels");
             break;
         case Method::Uniform:

@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "lighting/irradiance_cache_settings.h"
+#include "shared/restir.h"
 
 namespace engine::lighting {
 
@@ -33,16 +34,8 @@ struct LightingSettings {
     Method method = Method::Restir;
     bool area = true;            // area lights (else point lights at the centres of their exposed surfaces)
     bool byPower = true;         // candidates from the alias table over power (else uniform)
-    std::uint32_t candidates = 32;
     bool brickLights = true;
-    bool temporal = true;
-    bool spatial = true;
-    std::uint32_t spatialTaps = 5;
-    float spatialRadius = 30.0f;
-    bool unbiased = false;
-    float temporalCap = 20.0f;     // last frame's M is capped at this x M
-    float depthTolerance = 0.1f;   // reuse only between pixels whose depths agree this closely
-    bool candidateVisibility = true;
+    shared::RestirKnobs restir;  // ReSTIR's knobs and their defaults (M also drives RIS)
     std::uint32_t shadowRays = 1;        // Uniform: samples (and shadow rays) per pixel
     std::uint32_t samplesPerFrame = 1;   // Reference: samples per pixel added per frame
     std::uint32_t bounces = 0;           // Reference: 0 = direct light only

@@ -238,14 +238,14 @@ void Renderer::recordLighting(gpu::CommandList& cmd, const lighting::LightingSet
             gpu::Buffer& final = mFinalReservoirs[mCurrent];
             mRestirInitial.record(cmd, scene, {mFrameParams, mRestirParams, gbuffer, mCandidates}, mSize);
             gpu::Buffer* own = &mCandidates;
-            if (lighting.method == Method::Restir && lighting.temporal && historyValid) {
+            if (lighting.method == Method::Restir && lighting.restir.temporal && historyValid) {
                 mRestirTemporal.record(cmd, scene,
                                        {mFrameParams, mRestirParams, gbuffer, mGBuffers[mCurrent ^ 1u], mCandidates,
                                         mFinalReservoirs[mCurrent ^ 1u], mOwnReservoirs},
                                        mSize);
                 own = &mOwnReservoirs;
             }
-            if (lighting.method == Method::Restir && lighting.spatial) {
+            if (lighting.method == Method::Restir && lighting.restir.spatial) {
                 mRestirSpatial.record(cmd, scene, {mFrameParams, mRestirParams, gbuffer, *own, mCandidates, final}, mSize);
             } else {
                 cmd.copyBuffer(*own, final, {{0, 0, own->size()}});

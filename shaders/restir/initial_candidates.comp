@@ -21,7 +21,7 @@ void main() {
     uint index = pixel.x + pixel.y * gFrame.imageSize.x;
     Surface s = surfaceFrom(gGBuffer[index]);
     Reservoir r = Reservoir(uvec4(RESERVOIR_EMPTY, 0u, 0u, 0u), vec4(0.0));
-    uint candidates = gRestir.candidates;
+    uint candidates = gRestir.knobs.candidates;
     if (!s.valid || gLights.counts.x == 0u || candidates == 0u) {
         gOut[index] = r;
         return;
@@ -59,7 +59,7 @@ void main() {
     }
     r.weights = vec4(chosenTarget > 0.0 ? wSum / (float(candidates) * chosenTarget) : 0.0, float(candidates),
                      chosenTarget, 1.0);
-    if (gRestir.candidateVisibility != 0u && r.light.x != RESERVOIR_EMPTY) {
+    if (gRestir.knobs.candidateVisibility != 0u && r.light.x != RESERVOIR_EMPTY) {
         GpuEmitter e = gEmitters[r.light.x];
         vec3 toLight;
         float dist;

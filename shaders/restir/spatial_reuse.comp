@@ -35,15 +35,15 @@ void main() {
     Reservoir own = withOwnVisibility(gOwn[index]);
     GBufferTexel g = gGBuffer[index];
     Surface s = surfaceFrom(g);
-    if (!s.valid || gRestir.spatial == 0u) {
+    if (!s.valid || gRestir.knobs.spatial == 0u) {
         gOut[index] = own;
         return;
     }
     float depth = gbufferDistance(g);
     uint rng = rngInit(pixel, gRestir.frameIndex, 3u, gRestir.seed);
-    uint taps = min(gRestir.spatialTaps, kMaxTaps);
-    float radius = gRestir.spatialRadius;
-    float tolerance = gRestir.depthTolerance;
+    uint taps = min(gRestir.knobs.spatialTaps, kMaxTaps);
+    float radius = gRestir.knobs.spatialRadius;
+    float tolerance = gRestir.knobs.depthTolerance;
 
     Combiner c = combinerStart();
     combinerAdd(c, own, reservoirHasLight(own) ? targetAt(s, own) : 0.0, rngNext(rng));

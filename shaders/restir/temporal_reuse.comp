@@ -27,7 +27,7 @@ bool previousReservoir(uvec2 pixel, GBufferTexel g, Surface s, out Reservoir pre
     if (any(lessThan(prevPixel, ivec2(0))) || any(greaterThanEqual(prevPixel, ivec2(gFrame.imageSize.xy)))) return false;
     uint prevIndex = uint(prevPixel.x) + uint(prevPixel.y) * gFrame.imageSize.x;
     pg = gPrevGBuffer[prevIndex];
-    if (uint(pg.voxel.w) != s.face || abs(gbufferDistance(pg) - g.motion.z) > gRestir.depthTolerance * g.motion.z) return false;
+    if (uint(pg.voxel.w) != s.face || abs(gbufferDistance(pg) - g.motion.z) > gRestir.knobs.depthTolerance * g.motion.z) return false;
     previous = gPrevious[prevIndex];
     return !reservoirStale(previous);  // a light that is gone: drop it
 }
@@ -47,7 +47,7 @@ void main() {
         gOwn[index] = current;
         return;
     }
-    previous.weights.y = min(previous.weights.y, gRestir.temporalCap * float(gRestir.candidates));
+    previous.weights.y = min(previous.weights.y, gRestir.knobs.temporalCap * float(gRestir.knobs.candidates));
 
     uint rng = rngInit(pixel, gRestir.frameIndex, 2u, gRestir.seed);
     Combiner c = combinerStart();
@@ -56,7 +56,7 @@ void main() {
     combinerAdd(c, previous, targetAt(s, previous), rngNext(rng));
 
     float normaliser = c.M;
-    if (gRestir.unbiased != 0u) {
+    if (gRestir.knobs.unbiased != 0u) {
         // Count only the inputs whose pixel could have produced the chosen sample: its target
         // there is positive and, for the other pixel, the sample is visible from it.
         Surface prevSurface = surfaceFrom(pg);

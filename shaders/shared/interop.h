@@ -10,6 +10,9 @@
 #define SHARED_END }
 #define SHARED_CONST inline constexpr
 #define SHARED_ASSERT_SIZE(T, n) static_assert(sizeof(T) == (n), #T " layout changed")
+// Defaults and equality for structs the host also keeps as settings (C++ only).
+#define SHARED_INIT(value) = value
+#define SHARED_EQUALITY(T) bool operator==(const T&) const = default;
 namespace shared {
 using uint = std::uint32_t;
 using vec4 = glm::vec4;
@@ -22,6 +25,8 @@ using mat4 = glm::mat4;
 #define SHARED_END
 #define SHARED_CONST const
 #define SHARED_ASSERT_SIZE(T, n)
+#define SHARED_INIT(value)
+#define SHARED_EQUALITY(T)
 #endif
 
 #endif

@@ -20,22 +20,35 @@ struct Reservoir {
 };
 SHARED_ASSERT_SIZE(Reservoir, 32);
 
-// Scalars only, so std430 lays them out as C++ does. Switches are uints (0 off, 1 on).
+// The ReSTIR knobs as the host keeps them (lighting::LightingSettings::restir, with these
+// defaults) and the shaders read them; lighting/lighting_knobs.cpp gives each its name, range
+// and help. A new knob is a field here (a pad slot will do), a row there, and the shader that
+// reads it. Scalars only, so std430 lays them out as C++ does; switches are uints (0 off, 1 on).
+struct RestirKnobs {
+    uint candidates SHARED_INIT(32u);          // M light samples per pixel
+    uint spatialTaps SHARED_INIT(5u);          // neighbours merged by spatial reuse
+    float spatialRadius SHARED_INIT(30.0f);    // pixels
+    float temporalCap SHARED_INIT(20.0f);      // last frame's M is capped at this times M
+    float depthTolerance SHARED_INIT(0.1f);    // relative depth difference a reused neighbour may have
+    uint temporal SHARED_INIT(1u);             // temporal reuse
+    uint spatial SHARED_INIT(1u);              // spatial reuse
+    uint unbiased SHARED_INIT(0u);             // visibility-aware 1/Z normalisation (Bitterli Alg. 6)
+    uint candidateVisibility SHARED_INIT(1u);  // shadow-test the chosen candidate
+    uint pad0 SHARED_INIT(0u);
+    uint pad1 SHARED_INIT(0u);
+    uint pad2 SHARED_INIT(0u);
+    SHARED_EQUALITY(RestirKnobs)
+};
+SHARED_ASSERT_SIZE(RestirKnobs, 48);
+
+// What the ReSTIR passes read: the knobs as they apply to this method (RIS turns reuse off) and
+// the frame's randomness.
 struct RestirParams {
-    uint candidates;           // M light samples per pixel
-    uint spatialTaps;          // neighbours merged by spatial reuse
+    RestirKnobs knobs;
+    uint area;       // area lights (else point lights at emitter centres)
+    uint byPower;    // candidates by emitter power, alias table (else uniform)
     uint frameIndex;
     uint seed;
-    float spatialRadius;       // pixels
-    float temporalCap;         // temporal M cap, times the current M
-    float depthTolerance;      // relative depth difference a reused neighbour may have
-    uint area;                 // area lights (else point lights at emitter centres)
-    uint byPower;              // candidates by emitter power, alias table (else uniform)
-    uint unbiased;             // visibility-aware 1/Z normalisation (Bitterli Alg. 6)
-    uint temporal;             // temporal reuse
-    uint spatial;              // spatial reuse
-    uint candidateVisibility;  // shadow-test the chosen candidate
-    uint pad0, pad1, pad2;
 };
 SHARED_ASSERT_SIZE(RestirParams, 64);
 

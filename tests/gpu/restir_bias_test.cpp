@@ -211,7 +211,7 @@ TEST_P(RestirBias, ModesAgreeWithThePathTracer) {
 
     LightingSettings biased;
     LightingSettings unbiased;
-    unbiased.unbiased = true;
+    unbiased.restir.unbiased = true;
     LightingSettings point;
     point.area = false;
     const ModeRun b = runMode(r, scene, biased, mask, kSeedsForTiles);

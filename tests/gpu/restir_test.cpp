@@ -46,8 +46,8 @@ FrameImages renderOnePointLightSample(Scene& scene) {
     LightingSettings l;
     l.method = Method::Ris;
     l.area = false;
-    l.candidates = 1;
-    l.temporal = l.spatial = l.candidateVisibility = false;
+    l.restir.candidates = 1;
+    l.restir.temporal = l.restir.spatial = l.restir.candidateVisibility = false;
     return renderOnce(scene, scene.camera(), frame(64), l);
 }
 
@@ -85,7 +85,7 @@ TEST_F(Restir, UnbiasedModeConvergesToReference) {
     ASSERT_GT(refMean, 0.01);
 
     LightingSettings l;
-    l.unbiased = true;
+    l.restir.unbiased = true;
     const int seeds = 32;
     std::vector<double> means;
     std::vector<glm::vec4> sumFew(ref.size()), sumAll(ref.size());
@@ -308,7 +308,7 @@ TEST_F(Restir, SwitchingALightOffDoesNotBrightenTheOthers) {
     const double refMean = meanLuminance(ref);
     for (bool unbiased : {false, true}) {
         LightingSettings l;
-        l.unbiased = unbiased;
+        l.restir.unbiased = unbiased;
         std::vector<double> after1, after4;
         for (std::uint32_t seed = 0; seed < 6; ++seed) {
             Scene s = roomScene();

@@ -31,7 +31,7 @@ TEST(LightingKnobs, EveryKnobReadsBackWhatItWrites) {
     s.method = Method::Uniform;
     s.cache.alpha = 0.07f;
     s.cache.budgetBytes = 96ull << 20;
-    s.spatialRadius = 12.5f;
+    s.restir.spatialRadius = 12.5f;
     for (const KnobGroup& g : knobGroups()) {
         for (const Knob& k : g.knobs) {
             LightingSettings copy = s;
@@ -45,7 +45,7 @@ TEST(LightingKnobs, OutOfRangeIsRefusedTheSameWayFromTextAndFromCode) {
     LightingSettings s;
     Status fromText = setKnob(*knobForOption("candidates"), s, "0");
     ASSERT_FALSE(fromText.ok());
-    s.candidates = 0;  // as a bench or the HUD would set it
+    s.restir.candidates = 0;  // as a bench or the HUD would set it
     Status fromCode = validate(s);
     ASSERT_FALSE(fromCode.ok());
     EXPECT_EQ(fromText.error().message, fromCode.error().message);
@@ -80,12 +80,12 @@ TEST(LightingKnobs, CommandLineOverridesTheSceneKnobByKnob) {
 TEST(LightingKnobs, MethodsImplyTheirSettings) {
     auto ris = mergeLighting(LightingSettings{}, std::vector<KnobValue>{option("method", "ris")});
     ASSERT_TRUE(ris.ok());
-    EXPECT_FALSE(ris->temporal);
-    EXPECT_FALSE(ris->spatial);
+    EXPECT_FALSE(ris->restir.temporal);
+    EXPECT_FALSE(ris->restir.spatial);
     auto unbiased = mergeLighting(LightingSettings{}, std::vector<KnobValue>{option("method", "restir-unbiased")});
     ASSERT_TRUE(unbiased.ok());
     EXPECT_EQ(unbiased->method, Method::Restir);
-    EXPECT_TRUE(unbiased->unbiased);
+    EXPECT_TRUE(unbiased->restir.unbiased);
     auto reference = mergeLighting(LightingSettings{}, std::vector<KnobValue>{option("indirect", "reference")});
     ASSERT_TRUE(reference.ok());
     EXPECT_EQ(reference->method, Method::Reference);

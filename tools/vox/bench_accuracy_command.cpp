@@ -37,12 +37,12 @@ std::vector<std::pair<std::string, LightingSettings>> configurations(std::uint32
         for (std::uint32_t m : {1u, 8u, 16u, 32u}) {
             LightingSettings l;
             l.area = area;
-            l.candidates = m;
+            l.restir.candidates = m;
             out.push_back({fmt::format("ReSTIR biased, {}, M={}", area ? "area" : "point", m), l});
         }
         LightingSettings u;
         u.area = area;
-        u.unbiased = true;
+        u.restir.unbiased = true;
         out.push_back({fmt::format("ReSTIR unbiased, {}, M=32", area ? "area" : "point"), u});
         if (hasBrickLights) {
             LightingSettings b;
@@ -55,11 +55,11 @@ std::vector<std::pair<std::string, LightingSettings>> configurations(std::uint32
     uniformCandidates.byPower = false;
     out.push_back({"ReSTIR biased, area, M=32, uniform candidates (thesis)", uniformCandidates});
     LightingSettings temporalOnly;
-    temporalOnly.spatial = false;
+    temporalOnly.restir.spatial = false;
     out.push_back({"ReSTIR without spatial reuse, area, M=32", temporalOnly});
     LightingSettings ris;
     ris.method = Method::Ris;
-    ris.temporal = ris.spatial = ris.candidateVisibility = false;
+    ris.restir.temporal = ris.restir.spatial = ris.restir.candidateVisibility = false;
     out.push_back({"RIS without reuse, area, M=32", ris});
     LightingSettings uniform;
     uniform.method = Method::Uniform;

@@ -64,15 +64,16 @@ int runRestirBench(const RestirBenchOptions& o) {
         SweepPoint r = measure(restir, o.frames);
 
         // Fit time = base + slope x n for each baseline, then pick n for ReSTIR's time.
-        auto equalTime = [&](LightingSettings l, std::uint32_t& n, std::uint32_t LightingSettings::*knob) {
-            l.*knob = 1;
+        auto equalTime = [&](LightingSettings l, std::uint32_t& n, std::uint32_t& (*knobOf)(LightingSettings&)) {
+            std::uint32_t& knob = knobOf(l);
+            knob = 1;
             double t1 = measure(l, 6).totalMs;
-            l.*knob = 8;
+            knob = 8;
             double t8 = measure(l, 6).totalMs;
             double slope = std::max((t8 - t1) / 7.0, 1e-6);
             double base = t1 - slope;
             n = std::clamp<std::uint32_t>(std::uint32_t(std::lround((r.totalMs - base) / slope)), 1u, 4096u);
-            l.*knob = n;
+            knob = n;
             SweepPoint m = measure(l, 8);
             // One correction step: timings are noisy and not quite linear.
             double perUnit = std::max((m.totalMs - base) / double(n), 1e-6);
@@ -80,18 +81,18 @@ int runRestirBench(const RestirBenchOptions& o) {
                 std::clamp<std::uint32_t>(std::uint32_t(std::lround((r.totalMs - base) / perUnit)), 1u, 4096u);
             if (corrected == n) return m;
             n = corrected;
-            l.*knob = n;
+            knob = n;
             return measure(l, 8);
         };
         LightingSettings uniform;
         uniform.method = Method::Uniform;
         uniform.byPower = false;
         std::uint32_t rays = 1, candidates = 1;
-        SweepPoint u = equalTime(uniform, rays, &LightingSettings::shadowRays);
+        SweepPoint u = equalTime(uniform, rays, [](LightingSettings& x) -> std::uint32_t& { return x.shadowRays; });
         LightingSettings ris;
         ris.method = Method::Ris;
-        ris.temporal = ris.spatial = ris.candidateVisibility = false;
-        SweepPoint s = equalTime(ris, candidates, &LightingSettings::candidates);
+        ris.restir.temporal = ris.restir.spatial = ris.restir.candidateVisibility = false;
+        SweepPoint s = equalTime(ris, candidates, [](LightingSettings& x) -> std::uint32_t& { return x.restir.candidates; });
 
         std::printf("%-12s %9.2f %11.3e | %9.2f %5u %11.3e %6.1fx | %9.2f %5u %11.3e %6.1fx\n", scene->name.c_str(), r.totalMs,
                     r.mse, u.totalMs, rays, u.mse, u.mse / r.mse, s.totalMs, candidates, s.mse, s.mse / r.mse);

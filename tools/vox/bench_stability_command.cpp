@@ -84,7 +84,7 @@ void response(Context& c, const std::string& name, Scene scene, const std::funct
     auto ref = cachedReference(c.gpu, edited, edited.camera(), c.frame, 512, 0, c.cache, name);
     for (const char* method : {"restir", "restir-unbiased"}) {
         LightingSettings l;
-        l.unbiased = std::string(method) == "restir-unbiased";
+        l.restir.unbiased = std::string(method) == "restir-unbiased";
         Renderer r(c.gpu);
         Scene live = scene;
         for (int i = 0; i < before; ++i) r.render(live, live.camera(), c.frame, l);
@@ -244,10 +244,10 @@ int runStability(const StabilityOptions& o) {
         std::printf("flicker %-12s reference16 %.4f\n", world, base);
         for (const char* method : {"restir", "restir-unbiased", "ris", "uniform"}) {
             LightingSettings l;
-            l.unbiased = std::string(method) == "restir-unbiased";
+            l.restir.unbiased = std::string(method) == "restir-unbiased";
             if (std::string(method) == "ris") {
                 l.method = Method::Ris;
-                l.temporal = l.spatial = l.candidateVisibility = false;
+                l.restir.temporal = l.restir.spatial = l.restir.candidateVisibility = false;
             }
             if (std::string(method) == "uniform") l.method = Method::Uniform;
             double f = flicker(c, *scene, l, 12, 6, false);

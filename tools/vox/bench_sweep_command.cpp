@@ -92,7 +92,7 @@ engine::Result<std::vector<std::pair<std::string, LightingSettings>>> settingsOf
                 } else if (base->method == Method::Restir || base->method == Method::Ris) {
                     for (std::uint32_t m : *ms) {
                         LightingSettings l = *base;
-                        l.candidates = m;
+                        l.restir.candidates = m;
                         out.push_back({fmt::format("{} M={}", tag, m), l});
                     }
                 } else {

@@ -57,7 +57,7 @@ SweepPoint measureSetting(engine::gpu::Context& gpu, engine::world::Scene& scene
     p.scene = scene.name;
     p.label = std::move(label);
     p.method = engine::lighting::methodName(lighting.method);
-    if (lighting.method == Method::Restir && lighting.unbiased) p.method = "restir-unbiased";
+    if (lighting.method == Method::Restir && lighting.restir.unbiased) p.method = "restir-unbiased";
     int counted = 0;
     for (std::uint32_t i = 0; i < frames; ++i) {
         // The path tracer as a method: each frame is its own estimate (samplesPerFrame samples),
