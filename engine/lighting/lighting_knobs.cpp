@@ -10,7 +10,7 @@
 namespace engine::lighting {
 namespace {
 
-// Accessors for knobs stored in a field of LightingSettings or of its `cache` member.
+// Accessors for knobs stored in a field of LightingSettings or of one of its parts.
 template <typename T>
 double knobValue(T v) {
     if constexpr (std::is_enum_v<T>) return static_cast<double>(static_cast<std::underlying_type_t<T>>(v));
@@ -30,23 +30,15 @@ template <auto Field>
 void setField(LightingSettings& s, double v) {
     s.*Field = fromKnobValue<std::remove_cvref_t<decltype(s.*Field)>>(v);
 }
-template <auto Field>
-double getRestirField(const LightingSettings& s) {
-    return knobValue(s.restir.*Field);
+// A field of one technique's part of the settings (s.restir, s.cache).
+template <auto Part, auto Field>
+double getPartField(const LightingSettings& s) {
+    return knobValue((s.*Part).*Field);
 }
-template <auto Field>
-void setRestirField(LightingSettings& s, double v) {
-    s.restir.*Field = fromKnobValue<std::remove_cvref_t<decltype(s.restir.*Field)>>(v);
+template <auto Part, auto Field>
+void setPartField(LightingSettings& s, double v) {
+    (s.*Part).*Field = fromKnobValue<std::remove_cvref_t<decltype((s.*Part).*Field)>>(v);
 }
-template <auto Field>
-double getCacheField(const LightingSettings& s) {
-    return knobValue(s.cache.*Field);
-}
-template <auto Field>
-void setCacheField(LightingSettings& s, double v) {
-    s.cache.*Field = fromKnobValue<std::remove_cvref_t<decltype(s.cache.*Field)>>(v);
-}
-
 
 bool isRestir(const LightingSettings& s) { return s.method == Method::Restir; }
 bool resamples(const LightingSettings& s) { return s.method == Method::Restir || s.method == Method::Ris; }
@@ -132,19 +124,19 @@ const Knob kEmitters[] = {
 // Voxel ReSTIR (Bitterli et al.; candidates also drive RIS).
 const Knob kRestir[] = {
     {.name = "candidates", .help = "ReSTIR/RIS candidates per pixel (M)", .kind = KnobKind::Count, .min = 1, .max = 1024,
-     .get = getRestirField<&R::candidates>, .set = setRestirField<&R::candidates>, .relevant = resamples},
-    {.name = "temporal", .help = "Temporal reuse", .kind = KnobKind::Switch, .get = getRestirField<&R::temporal>,
-     .set = setRestirField<&R::temporal>, .relevant = isRestir},
+     .get = getPartField<&S::restir, &R::candidates>, .set = setPartField<&S::restir, &R::candidates>, .relevant = resamples},
+    {.name = "temporal", .help = "Temporal reuse", .kind = KnobKind::Switch, .get = getPartField<&S::restir, &R::temporal>,
+     .set = setPartField<&S::restir, &R::temporal>, .relevant = isRestir},
     {.name = "spatial", .help = "Spatial reuse taps,radius in pixels (0 = off)", .kind = KnobKind::Custom,
      .relevant = isRestir, .parse = parseSpatialKnob, .format = formatSpatialKnob, .check = checkSpatialKnob},
     {.name = "unbiased", .help = "Visibility-aware 1/Z normalisation (restir-unbiased)", .kind = KnobKind::Switch,
-     .get = getRestirField<&R::unbiased>, .set = setRestirField<&R::unbiased>, .relevant = isRestir},
+     .get = getPartField<&S::restir, &R::unbiased>, .set = setPartField<&S::restir, &R::unbiased>, .relevant = isRestir},
     {.name = "temporal_cap", .help = "Last frame's M is capped at this times M", .kind = KnobKind::Real, .min = 1, .max = 1000,
-     .get = getRestirField<&R::temporalCap>, .set = setRestirField<&R::temporalCap>, .relevant = isRestir},
+     .get = getPartField<&S::restir, &R::temporalCap>, .set = setPartField<&S::restir, &R::temporalCap>, .relevant = isRestir},
     {.name = "depth_tolerance", .help = "Reuse between pixels whose depths agree within this fraction", .kind = KnobKind::Real,
-     .min = 0, .max = 10, .get = getRestirField<&R::depthTolerance>, .set = setRestirField<&R::depthTolerance>, .relevant = isRestir},
+     .min = 0, .max = 10, .get = getPartField<&S::restir, &R::depthTolerance>, .set = setPartField<&S::restir, &R::depthTolerance>, .relevant = isRestir},
     {.name = "candidate_visibility", .help = "Shadow-test the chosen candidate before reuse", .kind = KnobKind::Switch,
-     .get = getRestirField<&R::candidateVisibility>, .set = setRestirField<&R::candidateVisibility>, .relevant = isRestir},
+     .get = getPartField<&S::restir, &R::candidateVisibility>, .set = setPartField<&S::restir, &R::candidateVisibility>, .relevant = isRestir},
 };
 
 const Knob kBaselines[] = {
@@ -165,22 +157,22 @@ const Knob kReference[] = {
 // The voxel-face irradiance cache (Cosin Ayerbe et al.).
 const Knob kCache[] = {
     {.name = "directions", .help = "cache: K directions per voxel face", .kind = KnobKind::Count, .min = 16, .max = 256,
-     .get = getCacheField<&C::directions>, .set = setCacheField<&C::directions>, .relevant = usesCache},
+     .get = getPartField<&S::cache, &C::directions>, .set = setPartField<&S::cache, &C::directions>, .relevant = usesCache},
     {.name = "rays", .help = "cache: of the K, rays per face per frame, a divisor of K", .kind = KnobKind::Count, .min = 1,
-     .max = 256, .get = getCacheField<&C::raysPerUpdate>, .set = setCacheField<&C::raysPerUpdate>, .relevant = usesCache},
+     .max = 256, .get = getPartField<&S::cache, &C::raysPerUpdate>, .set = setPartField<&S::cache, &C::raysPerUpdate>, .relevant = usesCache},
     {.name = "bounces", .help = "cache: 1 = one bounce (the paper); more reads the cache at each hit", .kind = KnobKind::Count,
-     .min = 1, .max = 8, .get = getCacheField<&C::bounces>, .set = setCacheField<&C::bounces>, .relevant = usesCache},
+     .min = 1, .max = 8, .get = getPartField<&S::cache, &C::bounces>, .set = setPartField<&S::cache, &C::bounces>, .relevant = usesCache},
     {.name = "alpha", .help = "cache: temporal blend factor", .kind = KnobKind::Real, .min = 0.001, .max = 1,
-     .get = getCacheField<&C::alpha>, .set = setCacheField<&C::alpha>, .relevant = usesCache},
+     .get = getPartField<&S::cache, &C::alpha>, .set = setPartField<&S::cache, &C::alpha>, .relevant = usesCache},
     {.name = "neighbourhood", .help = "cache: N^3 around visible dynamic voxels: 0, 3 or 5", .kind = KnobKind::Count,
-     .min = 0, .max = 5, .get = getCacheField<&C::neighbourhood>, .set = setCacheField<&C::neighbourhood>,
+     .min = 0, .max = 5, .get = getPartField<&S::cache, &C::neighbourhood>, .set = setPartField<&S::cache, &C::neighbourhood>,
      .relevant = usesCache},
     {.name = "max_ray", .help = "cache: ray length in voxels, also an edit's reach", .kind = KnobKind::Real, .min = 1,
-     .max = 500, .get = getCacheField<&C::maxRayLength>, .set = setCacheField<&C::maxRayLength>, .relevant = usesCache},
+     .max = 500, .get = getPartField<&S::cache, &C::maxRayLength>, .set = setPartField<&S::cache, &C::maxRayLength>, .relevant = usesCache},
     {.name = "filter", .help = "cache: 3^3 filter over neighbouring faces", .kind = KnobKind::Switch,
-     .get = getCacheField<&C::filter>, .set = setCacheField<&C::filter>, .relevant = usesCache},
+     .get = getPartField<&S::cache, &C::filter>, .set = setPartField<&S::cache, &C::filter>, .relevant = usesCache},
     {.name = "fade", .help = "cache: seconds a dynamic entry takes to fade after its last update", .kind = KnobKind::Real,
-     .min = 0.001, .max = 60, .get = getCacheField<&C::fadeSeconds>, .set = setCacheField<&C::fadeSeconds>,
+     .min = 0.001, .max = 60, .get = getPartField<&S::cache, &C::fadeSeconds>, .set = setPartField<&S::cache, &C::fadeSeconds>,
      .relevant = usesCache},
     {.name = "budget_mb", .help = "cache: memory budget in MiB; least recently seen evicted", .kind = KnobKind::Real,
      .min = 1, .max = 16384, .get = getBudgetMb, .set = setBudgetMb, .relevant = usesCache},

@@ -176,14 +176,11 @@ int runCapture(const CaptureOptions& o) {
     if (o.fps < 0.0 || o.fps > 1000.0) return fail(engine::makeError("--fps must be in (0, 1000]"));
     if (o.sheet > 1000) return fail(engine::makeError("--sheet must be in 0..1000"));
 
+    if (o.lighting.showSettings) return showSettings(o.world, o.lighting);
     auto scene = loadWorld(o.world);
     if (!scene) return fail(scene.error());
     auto lighting = lightingSettings(o.lighting, &*scene);
     if (!lighting) return fail(lighting.error());
-    if (o.lighting.showSettings) {
-        std::fputs(settingsText(*lighting).c_str(), stdout);
-        return 0;
-    }
     fs::path pathFile = scene->sourcePath;
     if (!o.path.empty()) {
         auto p = resolvePathFile(o.path);

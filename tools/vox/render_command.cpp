@@ -23,14 +23,11 @@ int runRender(const RenderOptions& o) {
     if (o.frames < 1 || o.frames > 100000) return fail(engine::makeError("--frames must be in 1..100000"));
     if (o.spp < 1 || o.spp > 1000000) return fail(engine::makeError("--spp must be in 1..1000000"));
     if (!std::isfinite(o.time) || std::abs(o.time) > 1e7) return fail(engine::makeError("--time must be a finite number of seconds"));
+    if (o.lighting.showSettings) return showSettings(o.world, o.lighting);
     auto scene = loadWorld(o.world);
     if (!scene) return fail(scene.error());
     auto lighting = lightingSettings(o.lighting, &*scene);
     if (!lighting) return fail(lighting.error());
-    if (o.lighting.showSettings) {
-        std::fputs(settingsText(*lighting).c_str(), stdout);
-        return 0;
-    }
     engine::world::CameraPreset camera;
     if (!o.pos.empty()) {
         auto pos = parseVec3(o.pos, "--pos");
