@@ -173,7 +173,7 @@ engine::Status Sandbox::init() {
     } else if (mStore->isSave(mWorldPath)) {
         mSavePath = mWorldPath;
     } else {
-        mSavePath = fs::path("saves") / (mScene.name + ".toml");
+        mSavePath = defaultSavePath(mScene.name);
     }
     if (!mOptions.editLogPath.empty()) {
         mEditLog.open(mOptions.editLogPath);

@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <fstream>
 #include <string>
 
@@ -109,6 +110,17 @@ private:
 };
 
 }  // namespace
+
+fs::path defaultSavePath(std::string_view worldName) {
+    std::string safe;
+    for (char c : worldName) {
+        const bool allowed = std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.' || c == ' ';
+        if (safe.size() < 64) safe += allowed ? c : '_';
+    }
+    while (!safe.empty() && (safe.front() == '.' || safe.front() == ' ')) safe.erase(safe.begin());  // no "..", no hidden file
+    if (safe.empty()) safe = "untitled";
+    return fs::path("saves") / (safe + ".toml");
+}
 
 std::unique_ptr<WorldStore> makeWorldStore(SaveFaults faults) { return std::make_unique<VdbWorldStore>(std::move(faults)); }
 

@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <string_view>
 
 #include "core/error.h"
 #include "world/scene.h"
@@ -41,5 +42,10 @@ public:
 };
 
 std::unique_ptr<WorldStore> makeWorldStore(SaveFaults faults = {});
+
+// Where a world saves by default: saves/NAME.toml, with NAME made safe from a scene file's
+// `name` (letters, digits, '-', '_', '.' and spaces; no separators, no leading dot, at most 64
+// characters), so a hostile name like "../../x" or "/etc/x" cannot save outside saves/.
+std::filesystem::path defaultSavePath(std::string_view worldName);
 
 }  // namespace game

@@ -384,3 +384,19 @@ TEST(Autosave, DueAfterTheIntervalOnlyWhenTheWorldChanged) {
     EXPECT_FALSE(game::Autosave(0.0).due(1e9, 7));  // disabled
     EXPECT_EQ(game::autosavePath("saves/city.toml"), fs::path("saves/city.autosave.toml"));
 }
+
+// A scene file's `name` chose the default save path unchecked: "../../x" saved outside saves/.
+TEST(WorldStore, HostileWorldNamesSaveInsideTheSavesFolder) {
+    const char* hostile[] = {"../../x", "/etc/passwd", "..", "a/../../b", "C:\\x\\y", "", "....", "x\ny", "./.hidden",
+                             "name/with/slashes", "\xff\xfe"};
+    for (const char* name : hostile) {
+        std::filesystem::path p = game::defaultSavePath(name);
+        EXPECT_EQ(p.parent_path(), std::filesystem::path("saves")) << "'" << name << "' -> " << p;
+        const std::string file = p.filename().string();
+        EXPECT_EQ(file.find_first_of("/\\\n"), std::string::npos) << p;
+        EXPECT_NE(file.front(), '.') << p;
+        EXPECT_EQ(p.extension(), ".toml") << p;
+    }
+    EXPECT_EQ(game::defaultSavePath("dragon city"), std::filesystem::path("saves/dragon city.toml"));
+    EXPECT_EQ(game::defaultSavePath(std::string(300, 'a')).filename().string().size(), 64u + 5u);
+}
