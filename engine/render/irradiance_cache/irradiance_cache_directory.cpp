@@ -126,49 +126,52 @@ CacheFrameLists IrradianceCacheDirectory::beginFrame(std::span<const CacheKey> v
     });
     fresh.erase(std::unique(fresh.begin(), fresh.end()), fresh.end());
 
-    // Every candidate with its class (CacheWork), staleness and cost; `index` is a slot, or
+    // Every candidate with its cost and its place in the order: class (CacheWork), then the
+    // frame of its last update (most stale first), then the key. `index` is a slot, or
     // mSlots.size() + i for fresh[i].
     struct Candidate {
-        std::uint32_t cls;
-        std::uint64_t lastUpdate;
+        std::uint64_t order;  // class << 56 | last update frame
+        std::uint64_t key;
         std::uint32_t index;
         std::uint32_t cost;
+        std::uint32_t cls() const { return static_cast<std::uint32_t>(order >> 56); }
     };
     const auto near = [&](glm::ivec3 v) {
         return glm::all(glm::greaterThanEqual(v, work.nearMin)) && glm::all(glm::lessThanEqual(v, work.nearMax));
+    };
+    const auto order = [](std::uint64_t cls, std::uint64_t lastUpdate) {
+        return cls << 56 | (lastUpdate & ((1ull << 56) - 1));
     };
     const std::uint32_t update = work.raysPerUpdate;
     std::vector<Candidate> candidates;
     candidates.reserve(seen.size() + fresh.size());
     for (std::uint32_t slot : seen) {
         const Slot& s = mSlots[slot];
-        Candidate c{0, s.lastUpdateFrame, slot, update};
+        std::uint64_t cls;
+        std::uint32_t cost = update;
         if (s.key.set == shared::CACHE_SET_DYNAMIC) {
-            c.cls = 1;
+            cls = 1;
         } else if (s.traced < work.phases) {
-            c.cls = 0;
-            c.cost = 2 * update;
+            cls = 0;
+            cost = 2 * update;
         } else if (s.reset || near(s.key.voxel)) {
-            c.cls = 2;
+            cls = 2;
         } else if (s.updates < work.convergedAfter) {
-            c.cls = 3;
+            cls = 3;
         } else if (frame - s.lastUpdateFrame >= work.refreshFrames || work.rayBudget == 0) {
-            c.cls = 4;
+            cls = 4;
         } else {
             continue;  // converged and fresh enough
         }
-        candidates.push_back(c);
+        candidates.push_back({order(cls, s.lastUpdateFrame), packCacheKey(s.key), slot, cost});
     }
     const auto firstFresh = static_cast<std::uint32_t>(mSlots.size());
     for (std::uint32_t i = 0; i < fresh.size(); ++i) {
         const bool dynamic = fresh[i].set == shared::CACHE_SET_DYNAMIC;
-        candidates.push_back({dynamic ? 1u : 0u, 0, firstFresh + i, dynamic ? update : 2 * update});
+        candidates.push_back({order(dynamic ? 1 : 0, 0), packCacheKey(fresh[i]), firstFresh + i, dynamic ? update : 2 * update});
     }
-    auto keyOf = [&](std::uint32_t index) { return index < firstFresh ? mSlots[index].key : fresh[index - firstFresh]; };
-    std::sort(candidates.begin(), candidates.end(), [&](const Candidate& a, const Candidate& b) {
-        if (a.cls != b.cls) return a.cls < b.cls;
-        if (a.lastUpdate != b.lastUpdate) return a.lastUpdate < b.lastUpdate;
-        return packCacheKey(keyOf(a.index)) < packCacheKey(keyOf(b.index));
+    std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+        return a.order != b.order ? a.order < b.order : a.key < b.key;
     });
 
     // Spend the budget: class 0 up to half of it, the others, then class 0 again with the rest.
@@ -180,11 +183,11 @@ CacheFrameLists IrradianceCacheDirectory::beginFrame(std::span<const CacheKey> v
         chosen[i] = true;
         spent += candidates[i].cost;
     };
-    for (std::size_t i = 0; i < candidates.size() && candidates[i].cls == 0; ++i) take(i, budget / 2);
+    for (std::size_t i = 0; i < candidates.size() && candidates[i].cls() == 0; ++i) take(i, budget / 2);
     for (std::size_t i = 0; i < candidates.size(); ++i) {
-        if (candidates[i].cls != 0) take(i, budget);
+        if (candidates[i].cls() != 0) take(i, budget);
     }
-    for (std::size_t i = 0; i < candidates.size() && candidates[i].cls == 0; ++i) take(i, budget);
+    for (std::size_t i = 0; i < candidates.size() && candidates[i].cls() == 0; ++i) take(i, budget);
 
     // Slots for the chosen fresh keys, evicting if the memory budget is full.
     std::size_t wanted = 0;
