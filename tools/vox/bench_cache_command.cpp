@@ -43,6 +43,7 @@ engine::lighting::LightingSettings cacheLighting() {
     engine::lighting::LightingSettings l;
     l.method = engine::lighting::Method::Preview;  // the direct term is not what is measured
     l.indirect = engine::lighting::Indirect::Cache;
+    l.cache.rayBudget = 0;  // the cost of updating every visible entry, which the budget caps (vox bench frame)
     return l;
 }
 

@@ -263,7 +263,7 @@ int runCapture(const CaptureOptions& o) {
             const auto& result = row.frame.result;
             if (l.method == engine::lighting::Method::Preview) {
                 for (const auto& s : images.rayStats) row.rays += s.z;
-                if (result.cacheUsed) row.rays += result.cache.rays;
+                if (result.cacheUsed) row.rays += result.cache.raysTraced;
                 row.raysCounted = true;
             } else {
                 row.rays = rayBound(l, *scene, result, row.primaryRays, row.surfacePixels);
