@@ -139,15 +139,15 @@ TEST_F(TraversalAgreement, BrickPagesBeyondTheFirstAreReached) {
 // in open air (distances around it shrink), a tower and a lone voxel removed (they grow back).
 // GPU and CPU must still agree exactly, and the edited places must be seen.
 TEST_F(TraversalAgreement, ExactAfterEditsUploadedIncrementally) {
-    BrickGrid grid({384, 96, 384});  // 12 x 3 x 12 super cells
+    BrickGrid grid({384, 160, 384});  // 12 x 5 x 12 super cells
     fillBox(grid, Box{{0, 0, 0}, {384, 8, 384}}, 1);
     fillBox(grid, Box{{40, 8, 40}, {60, 40, 52}}, 2);
-    grid.set({300, 70, 310}, 3);
+    grid.set({300, 100, 310}, 3);
     grid.clearDirty();
     Scene scene = gpu_testing::sceneWith(std::move(grid));
     ASSERT_EQ(*std::max_element(scene.grid.superCells().begin(), scene.grid.superCells().end()), shared::SUPER_SKIP_MAX);
     engine::render::GpuWorld world(gpu_testing::context());
-    const glm::ivec3 added{200, 60, 200}, removed{300, 70, 310};
+    const glm::ivec3 added{200, 140, 200}, removed{300, 100, 310};
     const std::vector<glm::ivec3> targets{added, removed, {50, 30, 45}, {10, 7, 370}};
 
     int hits = 0;
