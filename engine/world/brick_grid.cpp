@@ -23,7 +23,8 @@ BrickGrid::BrickGrid(glm::ivec3 sizeInVoxels) {
     mCellTouched.assign(count, 0);
     mSizeInSuperCells = (mSizeInCells + 3) / 4;
     std::size_t supers = static_cast<std::size_t>(mSizeInSuperCells.x) * mSizeInSuperCells.y * mSizeInSuperCells.z;
-    mSuperCells.assign(supers, 0);
+    mSuperCells.assign(supers, shared::SUPER_SKIP_MAX);  // all air
+    mSuperCounts.assign(supers, 0);
     mSuperDirty.assign(supers, 0);
 }
 
@@ -136,7 +137,7 @@ GridMemory BrickGrid::memory() const {
     constexpr std::size_t kBrickBytes = sizeof(BrickVoxels) + sizeof(BrickMask);
     GridMemory m;
     m.topGridBytes = mCells.size() * sizeof(std::uint32_t);
-    m.superGridBytes = mSuperCells.size() * sizeof(std::uint32_t);
+    m.superGridBytes = mSuperCells.size() * sizeof(std::uint32_t) + mSuperCounts.size();
     m.brickPoolBytes = mBrickVoxels.size() * kBrickBytes;
     m.liveBrickBytes = liveBricks() * kBrickBytes;
     m.bookkeepingBytes = mFreeBricks.size() * sizeof(std::uint32_t) + mBrickDirty.size() + mCellDirty.size() +
@@ -182,18 +183,61 @@ void BrickGrid::setCell(std::size_t index, std::uint32_t value) {
     if ((old == shared::CELL_EMPTY) != (value == shared::CELL_EMPTY)) {
         std::size_t x = index % mSizeInCells.x, yz = index / mSizeInCells.x;
         std::size_t y = yz % mSizeInCells.y, z = yz / mSizeInCells.y;
-        std::size_t s = superCellIndex(glm::ivec3(int(x >> 2), int(y >> 2), int(z >> 2)));
-        std::uint32_t& count = mSuperCells[s];
+        glm::ivec3 sc(int(x >> 2), int(y >> 2), int(z >> 2));
+        std::uint8_t& count = mSuperCounts[superCellIndex(sc)];
         bool wasEmpty = count == 0;
-        count = value == shared::CELL_EMPTY ? count - 1 : count + 1;
-        if (wasEmpty != (count == 0) && !mSuperDirty[s]) {
-            mSuperDirty[s] = 1;
-            mDirtySuperCells.push_back(static_cast<std::uint32_t>(s));
-        }
+        count = static_cast<std::uint8_t>(value == shared::CELL_EMPTY ? count - 1 : count + 1);
+        if (wasEmpty != (count == 0)) updateSkipDistances(sc, count != 0);
     }
     if (!mCellDirty[index]) {
         mCellDirty[index] = 1;
         mDirtyCells.push_back(static_cast<std::uint32_t>(index));
+    }
+}
+
+// A super cell changed between empty and occupied: only skip distances within SUPER_SKIP_MAX - 1
+// of it can change (farther ones are capped below that distance already).
+void BrickGrid::updateSkipDistances(glm::ivec3 changed, bool nowOccupied) {
+    const int reach = int(shared::SUPER_SKIP_MAX) - 1;
+    const glm::ivec3 lo = glm::max(changed - reach, glm::ivec3(0));
+    const glm::ivec3 hi = glm::min(changed + reach, mSizeInSuperCells - 1);
+    for (int z = lo.z; z <= hi.z; ++z)
+        for (int y = lo.y; y <= hi.y; ++y)
+            for (int x = lo.x; x <= hi.x; ++x) {
+                const glm::ivec3 s(x, y, z);
+                const glm::ivec3 d = glm::abs(s - changed);
+                const std::uint32_t distance = std::uint32_t(std::max(d.x, std::max(d.y, d.z)));
+                const std::size_t i = superCellIndex(s);
+                if (nowOccupied) {
+                    if (distance < mSuperCells[i]) setSuperCell(i, distance);
+                } else if (mSuperCells[i] == distance) {
+                    setSuperCell(i, skipDistance(s));  // `changed` was its nearest occupied one
+                }
+            }
+}
+
+// Chebyshev distance from s to the nearest occupied super cell, capped at SUPER_SKIP_MAX.
+std::uint32_t BrickGrid::skipDistance(glm::ivec3 s) const {
+    const int reach = int(shared::SUPER_SKIP_MAX) - 1;
+    const glm::ivec3 lo = glm::max(s - reach, glm::ivec3(0));
+    const glm::ivec3 hi = glm::min(s + reach, mSizeInSuperCells - 1);
+    std::uint32_t best = shared::SUPER_SKIP_MAX;
+    for (int z = lo.z; z <= hi.z; ++z)
+        for (int y = lo.y; y <= hi.y; ++y)
+            for (int x = lo.x; x <= hi.x; ++x) {
+                if (mSuperCounts[superCellIndex({x, y, z})] == 0) continue;
+                const glm::ivec3 d = glm::abs(glm::ivec3(x, y, z) - s);
+                best = std::min(best, std::uint32_t(std::max(d.x, std::max(d.y, d.z))));
+            }
+    return best;
+}
+
+void BrickGrid::setSuperCell(std::size_t index, std::uint32_t value) {
+    if (mSuperCells[index] == value) return;
+    mSuperCells[index] = value;
+    if (!mSuperDirty[index]) {
+        mSuperDirty[index] = 1;
+        mDirtySuperCells.push_back(static_cast<std::uint32_t>(index));
     }
 }
 

@@ -31,7 +31,7 @@ struct Box {
 
 struct GridMemory {
     std::size_t topGridBytes = 0;
-    std::size_t superGridBytes = 0;  // the occupancy summary over 4^3 cells (1/64 of the top grid)
+    std::size_t superGridBytes = 0;  // skip distances and counts over 4^3 cells (5/256 of the top grid)
     std::size_t brickPoolBytes = 0;  // capacity of the pool (live + free bricks), voxels + masks
     std::size_t liveBrickBytes = 0;  // live bricks only
     std::size_t bookkeepingBytes = 0;  // free list and dirty flags
@@ -63,13 +63,16 @@ public:
     }
     std::uint32_t cell(glm::ivec3 c) const { return mCells[cellIndex(c)]; }
     std::span<const std::uint32_t> cells() const { return mCells; }
-    // Super cells (4^3 cells): the number of non-empty cells in each, for skipping open air.
+    // Super cells (4^3 cells), for skipping open air: superCells() holds the skip distance of each
+    // (0: something in it; k >= 1: empty within Chebyshev distance k - 1, see shared/brick_grid.h),
+    // kept up to date on every edit from the count of non-empty cells in each.
     std::size_t superCellIndex(glm::ivec3 s) const {
         return static_cast<std::size_t>(s.x) +
                static_cast<std::size_t>(mSizeInSuperCells.x) *
                    (static_cast<std::size_t>(s.y) + static_cast<std::size_t>(mSizeInSuperCells.y) * s.z);
     }
     std::span<const std::uint32_t> superCells() const { return mSuperCells; }
+    std::span<const std::uint8_t> superCellCounts() const { return mSuperCounts; }
     BrickVoxels readCell(glm::ivec3 c) const;           // expands homogeneous cells
     void writeCell(glm::ivec3 c, const BrickVoxels& v);  // collapses uniform bricks
     void writeCellUniform(glm::ivec3 c, MaterialId material);
@@ -110,11 +113,15 @@ private:
     void setCell(std::size_t index, std::uint32_t value);
     void markBrickDirty(std::uint32_t brick);
     void touchCell(std::size_t index);
+    void updateSkipDistances(glm::ivec3 changed, bool nowOccupied);
+    std::uint32_t skipDistance(glm::ivec3 s) const;
+    void setSuperCell(std::size_t index, std::uint32_t value);
 
     glm::ivec3 mSizeInCells;
     glm::ivec3 mSizeInSuperCells;
     std::vector<std::uint32_t> mCells;
-    std::vector<std::uint32_t> mSuperCells;
+    std::vector<std::uint32_t> mSuperCells;   // skip distances (what the GPU reads)
+    std::vector<std::uint8_t> mSuperCounts;   // non-empty cells per super cell (0..64)
     std::vector<std::uint8_t> mSuperDirty;
     std::vector<std::uint32_t> mDirtySuperCells;
     std::vector<BrickVoxels> mBrickVoxels;

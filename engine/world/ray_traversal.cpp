@@ -80,7 +80,10 @@ RayHit traceRay(const BrickGrid& grid, const Ray& ray, TraversalMode mode) {
     };
     for (std::uint32_t steps = 1; steps <= shared::TRAVERSAL_MAX_STEPS; ++steps) {
         int s = 1;
-        if (hierarchical && supers[grid.superCellIndex(v >> int(shared::SUPER_SHIFT))] == 0) {
+        // A non-zero skip distance: an empty super cell. The GPU walks runs of them in a tight
+        // loop that reads the grid only where the distance runs out; the steps, and the
+        // arithmetic of each, are these.
+        if (hierarchical && supers[grid.superCellIndex(v >> int(shared::SUPER_SHIFT))] != 0) {
             s = 32;
         } else {
             if (exact > 8) refine();

@@ -46,7 +46,7 @@ std::string formatWorldInfo(const WorldInfo& i, const std::string& title) {
     s += fmt::format("materials    {}\n", i.materials);
     s += "memory\n";
     s += fmt::format("  top grid     {:>12}  ({} bytes)\n", bytes(i.topGridBytes), i.topGridBytes);
-    s += fmt::format("  super grid   {:>12}  ({} bytes: non-empty cells per 4^3 cells)\n", bytes(i.superGridBytes),
+    s += fmt::format("  super grid   {:>12}  ({} bytes: skip distance and count per 4^3 cells)\n", bytes(i.superGridBytes),
                      i.superGridBytes);
     s += fmt::format("  brick pool   {:>12}  ({} bytes: 1024 voxel + 80 mask bytes per brick)\n",
                      bytes(i.brickPoolBytes), i.brickPoolBytes);

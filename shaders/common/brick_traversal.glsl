@@ -1,7 +1,8 @@
 // Ray traversal of the two-level brick grid. Mirrors engine/world/ray_traversal.cpp operation for
 // operation (`precise` here, -ffp-contract=off there) so both agree hit for hit; read that file
 // for the method. Each step finds the coarsest empty block around the current voxel (32^3 super
-// cell, 8^3 cell, 4^3, 2^3, voxel) and jumps to where the ray leaves it.
+// cell, 8^3 cell, 4^3, 2^3, voxel) and jumps to where the ray leaves it. Runs of empty super cells
+// are walked in a tight inner loop that reads the super grid only where its skip distance runs out.
 // traceGrid walks either the static world or the dynamic grid (grid-local coordinates); its
 // `dyn` flag is a constant at each call, so the compiler folds it away after inlining and the
 // static walk's arithmetic is the one the CPU reference agrees with bit for bit.
@@ -85,10 +86,43 @@ TraceResult traceGrid(vec3 o, vec3 d, float tMax, bool hierarchical, bool dyn) {
     uint steps = 0u;
     while (!done && steps < TRAVERSAL_MAX_STEPS) {
         ++steps;
+        uint skip = hierarchical ? gridSuperCell(dyn, v >> SUPER_SHIFT) : 0u;
+        if (skip != 0u) {
+            // Open air: walk empty super cells in this tight loop, one step each with the same
+            // arithmetic as the general step below (hits, t and step counts do not change), so
+            // lanes in the air pay neither for the finer levels' code nor for a read per super
+            // cell: the grid is read again only when the ray leaves the box `skip` says is empty.
+            if (level != 32) {
+                tNext = (vec3((v & ~31) + ivec3(positive) * 32) - o) * inv;
+                tDelta = 32.0 * absInv;
+                level = 32;
+            }
+            ivec3 boxCentre = v >> SUPER_SHIFT;
+            bool air = true;
+            while (air) {
+                int axis = tNext.x <= tNext.y ? (tNext.x <= tNext.z ? 0 : 2) : (tNext.y <= tNext.z ? 1 : 2);
+                float best = tNext[axis];
+                int lo = v[axis] & ~31;
+                v[axis] = positive[axis] ? lo + 32 : lo - 1;
+                done = best > tExit || v[axis] < 0 || v[axis] >= size[axis] || steps == TRAVERSAL_MAX_STEPS;
+                tNext[axis] += tDelta[axis];
+                face = uint(axis * 2 + (positive[axis] ? 0 : 1));
+                t = best;
+                air = !done;
+                if (air) {
+                    ++steps;
+                    if (uint(abs((v[axis] >> SUPER_SHIFT) - boxCentre[axis])) >= skip) {
+                        boxCentre = v >> SUPER_SHIFT;
+                        skip = gridSuperCell(dyn, boxCentre);
+                        air = skip != 0u;
+                    }
+                }
+            }
+            exact = 32;
+            if (done) break;
+        }
         int s = 1;
-        if (hierarchical && gridSuperCell(dyn, v >> SUPER_SHIFT) == 0u) {
-            s = 32;
-        } else {
+        {
             // Below super-cell level every test wants the exact voxel: refine once, here (the
             // CPU refines lazily per level; both give the same v at every test that reads it).
             if (exact > 1) {

@@ -24,7 +24,7 @@ layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer Dy
 
 layout(set = 0, binding = WORLD_BINDING_INFO, std430) readonly buffer WorldInfoBuffer {
     BrickGridInfo gWorld;
-    uint gSuperCells[];  // non-empty cells per 4^3 cells
+    uint gSuperCells[];  // skip distance per 4^3 cells (0: occupied), see shared/brick_grid.h
 };
 layout(set = 0, binding = WORLD_BINDING_CELLS, std430) readonly buffer CellBuffer { uint gCells[]; };
 layout(set = 0, binding = WORLD_BINDING_PAGES, std430) readonly buffer PageTable { uint64_t gPages[]; };

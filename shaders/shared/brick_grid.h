@@ -1,7 +1,10 @@
 // Two-level brick grid as the GPU sees it (and the CPU stores it — same layout).
 //
-// Super grid: one uint per 4^3 cells (32^3 voxels) counting its non-empty cells, so rays cross
-// open air 32 voxels at a step. It follows BrickGridInfo in the same buffer.
+// Super grid: one uint per 4^3 cells (32^3 voxels), so rays cross open air 32 voxels at a step:
+//   0       the super cell holds a non-empty cell
+//   k >= 1  empty, and so is every super cell within Chebyshev distance k - 1 of it (k is capped
+//           at SUPER_SKIP_MAX): a ray walks that box without reading the grid again.
+// It follows BrickGridInfo in the same buffer.
 // Top grid: one uint per 8^3 cell, x fastest:
 //   0                         empty cell
 //   CELL_HOMOGENEOUS | mat    every voxel of the cell is material `mat` (no brick storage)
@@ -19,6 +22,7 @@ SHARED_CONST uint BRICK_DIM = 8u;
 SHARED_CONST uint BRICK_SHIFT = 3u;
 SHARED_CONST uint BRICK_VOXELS = 512u;
 SHARED_CONST uint SUPER_SHIFT = 5u;  // a super cell spans 32 voxels = 4 cells per axis
+SHARED_CONST uint SUPER_SKIP_MAX = 4u;  // largest skip distance kept (an edit rewrites (2*4-1)^3 super cells at most)
 SHARED_CONST uint CELL_EMPTY = 0u;
 SHARED_CONST uint CELL_HOMOGENEOUS = 0x80000000u;
 SHARED_CONST uint CELL_MATERIAL_MASK = 0xFFFFu;

@@ -45,11 +45,12 @@ engine::world::Scene sceneWith(engine::world::BrickGrid grid, int materials) {
     return scene;
 }
 
-std::vector<shared::TraceRayOutput> traceOnGpu(engine::world::Scene& scene, const std::vector<engine::world::Ray>& rays,
-                                               std::uint32_t mode) {
+namespace {
+
+std::vector<shared::TraceRayOutput> traceThrough(engine::render::GpuWorld& world, engine::world::Scene& scene,
+                                                 const std::vector<engine::world::Ray>& rays, std::uint32_t mode) {
     using namespace engine;
     gpu::Context& ctx = context();
-    render::GpuWorld world(ctx);
     gpu::Uploader uploader(ctx);
     render::TraceRaysPass pass(ctx);
     std::vector<shared::TraceRayInput> inputs;
@@ -71,6 +72,21 @@ std::vector<shared::TraceRayOutput> traceOnGpu(engine::world::Scene& scene, cons
     cmd.submitAndWait();
     auto view = readback.view<shared::TraceRayOutput>();
     return {view.begin(), view.end()};
+}
+
+}  // namespace
+
+std::vector<shared::TraceRayOutput> traceOnGpu(engine::world::Scene& scene, const std::vector<engine::world::Ray>& rays,
+                                               std::uint32_t mode) {
+    engine::render::GpuWorld world(context());
+    return traceThrough(world, scene, rays, mode);
+}
+
+std::vector<shared::TraceRayOutput> traceOnGpu(engine::render::GpuWorld& world, engine::world::Scene& scene,
+                                               const std::vector<engine::world::Ray>& rays, std::uint32_t mode) {
+    std::vector<shared::TraceRayOutput> out = traceThrough(world, scene, rays, mode);
+    scene.grid.clearDirty();
+    return out;
 }
 
 }  // namespace gpu_testing

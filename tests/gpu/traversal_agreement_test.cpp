@@ -2,9 +2,11 @@
 // (engine/world/ray_traversal.cpp), hit for hit, on random worlds and awkward rays.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 
 #include "gpu/gpu_test_context.h"
+#include "render/gpu_world.h"
 #include "world/random_worlds.h"
 
 using namespace engine::world;
@@ -43,6 +45,43 @@ void compare(Scene& scene, const std::vector<Ray>& rays, std::uint32_t mode, Agr
             << cpu.voxel.x << "," << cpu.voxel.y << "," << cpu.voxel.z << " gpu hit " << gpuHit << " voxel "
             << g.voxel.x << "," << g.voxel.y << "," << g.voxel.z;
     }
+}
+
+// Rays from all around (above the ground) at the centres of `targets`, so small edits get hit.
+std::vector<Ray> raysAt(const std::vector<glm::ivec3>& targets, std::uint64_t seed, int perTarget) {
+    engine::Rng rng(seed);
+    std::vector<Ray> rays;
+    for (glm::ivec3 target : targets) {
+        for (int i = 0; i < perTarget; ++i) {
+            glm::vec3 from = randomDirection(rng);
+            from.y = std::abs(from.y);
+            glm::vec3 centre = glm::vec3(target) + 0.5f;
+            Ray r;
+            r.origin = centre + from * rng.uniform(20.0f, 400.0f);
+            r.direction = glm::normalize(centre - r.origin);
+            rays.push_back(r);
+        }
+    }
+    return rays;
+}
+
+// GPU against CPU with nothing tolerated: same hit, voxel, face, material, bit-identical t and
+// the same number of steps.
+int exactMismatches(Scene& scene, engine::render::GpuWorld& world, const std::vector<Ray>& rays, int& hits) {
+    std::vector<shared::TraceRayOutput> gpu = gpu_testing::traceOnGpu(world, scene, rays);
+    int mismatches = 0;
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        RayHit cpu = traceRay(scene.grid, rays[i]);
+        const shared::TraceRayOutput& g = gpu[i];
+        float gpuT;
+        std::memcpy(&gpuT, &g.data.z, sizeof(float));
+        hits += cpu.hit;
+        bool same = (g.data.x != 0) == cpu.hit && g.data.w == cpu.steps &&
+                    (!cpu.hit || (glm::ivec3(g.voxel) == cpu.voxel && std::uint32_t(g.voxel.w) == cpu.face &&
+                                  g.data.y == cpu.material && gpuT == cpu.t));
+        mismatches += !same;
+    }
+    return mismatches;
 }
 
 }  // namespace
@@ -93,4 +132,44 @@ TEST_F(TraversalAgreement, BrickPagesBeyondTheFirstAreReached) {
         ASSERT_EQ(gpu[i].data.y, cpu.material) << "ray " << i;
         ASSERT_EQ(glm::ivec3(gpu[i].voxel), cpu.voxel) << "ray " << i;
     }
+}
+
+// Open air wide enough for every skip distance, traced through one GPU world that lives on, so
+// the edits reach the GPU as incremental uploads of the super cells they dirtied: a voxel added
+// in open air (distances around it shrink), a tower and a lone voxel removed (they grow back).
+// GPU and CPU must still agree exactly, and the edited places must be seen.
+TEST_F(TraversalAgreement, ExactAfterEditsUploadedIncrementally) {
+    BrickGrid grid({384, 160, 384});  // 12 x 5 x 12 super cells
+    fillBox(grid, Box{{0, 0, 0}, {384, 8, 384}}, 1);
+    fillBox(grid, Box{{40, 8, 40}, {60, 40, 52}}, 2);
+    grid.set({300, 100, 310}, 3);
+    grid.clearDirty();
+    Scene scene = gpu_testing::sceneWith(std::move(grid));
+    ASSERT_EQ(*std::max_element(scene.grid.superCells().begin(), scene.grid.superCells().end()), shared::SUPER_SKIP_MAX);
+    engine::render::GpuWorld world(gpu_testing::context());
+    const glm::ivec3 added{200, 140, 200}, removed{300, 100, 310};
+    const std::vector<glm::ivec3> targets{added, removed, {50, 30, 45}, {10, 7, 370}};
+
+    int hits = 0;
+    std::vector<Ray> rays = makeRays(scene.grid, 99, 6000);
+    std::vector<Ray> aimed = raysAt(targets, 5, 500);
+    rays.insert(rays.end(), aimed.begin(), aimed.end());
+    EXPECT_EQ(exactMismatches(scene, world, rays, hits), 0) << "before the edits";
+
+    scene.grid.set(added, 4);
+    fillBox(scene.grid, Box{{40, 8, 40}, {60, 40, 52}}, kEmpty);
+    scene.grid.set(removed, kEmpty);
+    const std::size_t dirtySupers = scene.grid.dirtySuperCells().size();
+    EXPECT_GT(dirtySupers, 0u);
+    EXPECT_LT(dirtySupers, scene.grid.superCells().size() / 2) << "edits rewrite super cells near them only";
+    EXPECT_EQ(exactMismatches(scene, world, rays, hits), 0) << "after the edits";
+
+    int seen = 0;  // the new voxel is hit, the removed one is not
+    for (const Ray& r : raysAt({added, removed}, 6, 50)) {
+        RayHit h = traceRay(scene.grid, r);
+        seen += h.hit && h.voxel == added;
+        EXPECT_FALSE(h.hit && h.voxel == removed);
+    }
+    EXPECT_GT(seen, 40);
+    EXPECT_GT(hits, 4000);
 }
