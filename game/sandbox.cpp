@@ -99,6 +99,7 @@ private:
     Autosave mAutosave;
     Hud mHud;
     std::ofstream mEditLog;
+    std::ofstream mFrameLog;
 
     std::uint64_t mFrame = 0;
     double mTime = 0.0;  // seconds: the script clock, or wall clock since start
@@ -179,6 +180,13 @@ engine::Status Sandbox::init() {
         mEditLog.open(mOptions.editLogPath);
         if (!mEditLog) return engine::makeError("{}: cannot write the edit log", mOptions.editLogPath);
         mEditLog << "# vox play edit log: world " << mWorldPath.string() << "\n";
+    }
+    if (!mOptions.frameLogPath.empty()) {
+        mFrameLog.open(mOptions.frameLogPath);
+        if (!mFrameLog) return engine::makeError("{}: cannot write the frame log", mOptions.frameLogPath);
+        // wall: the whole loop iteration (input, HUD, edits, render + present, script actions);
+        // render_call: Renderer::render alone; gpu: its passes' GPU time, present included.
+        mFrameLog << "frame,wall_ms,render_call_ms,gpu_ms,present_gpu_ms,render_width,render_height\n";
     }
 
     WindowOptions windowOptions;
@@ -311,6 +319,8 @@ void Sandbox::frame() {
 
     engine::render::FrameResult result;
     bool presented = false;
+    double renderCallMs = 0.0;
+    glm::uvec2 renderedSize{0};
     if (mPresenter->beginFrame(framebuffer)) {
         engine::render::FrameSettings settings;
         glm::uvec2 size = renderSize(framebuffer);
@@ -320,7 +330,10 @@ void Sandbox::frame() {
         settings.timeSeconds = mTime;  // dynamic objects: the script clock when scripted, else wall clock
         mPresenter->setOverlay(ImGui::GetDrawData());
         if (mCaptureRequested) mPresenter->captureThisFrame();
+        const auto renderStart = std::chrono::steady_clock::now();
         result = mRenderer->render(mScene, mCamera.preset(), settings, mLighting, mPresenter.get());
+        renderCallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - renderStart).count();
+        renderedSize = size;
         mLastFrame = result;
         presented = true;
         if (mAutoScale) {
@@ -341,6 +354,11 @@ void Sandbox::frame() {
         std::this_thread::sleep_for(std::chrono::milliseconds(16));  // minimised: do not spin
     }
     afterFrame(result, presented);
+    if (mFrameLog && presented) {
+        const double wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        mFrameLog << fmt::format("{},{:.3f},{:.3f},{:.3f},{:.3f},{},{}\n", mFrame, wallMs, renderCallMs,
+                                 result.totalMs(), result.passMsOf("present"), renderedSize.x, renderedSize.y);
+    }
     ++mFrame;
     if (mOptions.maxFrames && mFrame >= mOptions.maxFrames) {
         if (!mQuit) message(fmt::format("stopping after {} frames (--frames)", mOptions.maxFrames));

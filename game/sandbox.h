@@ -27,6 +27,7 @@ struct PlayOptions {
     std::string scriptPath;     // replay scripted input (fixed time step, live input ignored)
     std::uint64_t maxFrames = 0;  // quit after this many frames; 0: no limit
     std::string editLogPath;    // write every edit, undo, redo, save and screenshot view here
+    std::string frameLogPath;   // CSV, one row per frame: wall, render call and GPU ms, render size
     double autosaveMinutes = 3.0;  // 0: off
     std::size_t undoMegabytes = 256;
     // The command line's lighting knobs, merged over the world's own settings

@@ -63,10 +63,15 @@ echo "edit frames: $edits, each presented with only the touched bricks uploaded"
 
 "$check" "$(dirname "$script")/../../worlds/sandbox.toml" saved.toml edits.log play.png 10 3 2 2 || fail "play_through_check"
 
-# The save reopens in the sandbox at the saved view (a short second run, no edits).
-xvfb "$vox" play saved.toml --frames 2 --size 256x144 >reopen.out 2>&1 ||
+# The save reopens in the sandbox at the saved view (a short second run, no edits), logging
+# its frame times: a header and one row per frame at the render size (256x144 at scale 1/4).
+xvfb "$vox" play saved.toml --frames 2 --size 256x144 --frame-log frames.csv >reopen.out 2>&1 ||
     fail "reopening the save: $(cat reopen.out)"
 grep -q "saves to saved.toml" reopen.out || fail "reopened save does not save back to itself"
+head -1 frames.csv | grep -q "^frame,wall_ms,render_call_ms,gpu_ms,present_gpu_ms,render_width,render_height$" ||
+    fail "frames.csv header: $(head -1 frames.csv)"
+rows=$(awk -F, 'NR > 1 && $2 > 0 && $3 > 0 && $4 > 0 && $6 == 64 && $7 == 36' frames.csv | wc -l)
+[ "$rows" -eq 2 ] || fail "frames.csv: expected 2 frame rows at 64x36 with times, got: $(cat frames.csv)"
 
 [ $failures -eq 0 ] && echo "play-through passed" || echo "$failures failure(s)"
 exit $((failures > 0))

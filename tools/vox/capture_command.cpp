@@ -16,6 +16,7 @@
 
 #include "commands.h"
 #include "ffmpeg_video.h"
+#include "frame_rays.h"
 #include "gpu/context.h"
 #include "io/contact_sheet.h"
 #include "io/image_io.h"
@@ -55,53 +56,6 @@ struct FrameRow {
     std::uint64_t visibleCacheVoxels = 0;
     double wallMs = 0.0;
 };
-
-// Rays of a frame that the method does not count on the GPU: the primary rays plus, per pixel
-// whose primary ray hit a surface, the rays its shaders trace at most (docs/CAPTURE.md) — a shadow
-// ray is skipped where its light cannot contribute (behind the surface, zero target), so this is
-// an upper bound — plus the irradiance cache's own rays, which it counts exactly.
-std::uint64_t rayBound(const engine::lighting::LightingSettings& l, const engine::world::Scene& scene,
-                       const engine::render::FrameResult& r, std::uint64_t pixels, std::uint64_t surface) {
-    using engine::lighting::Method;
-    const std::uint64_t sun = glm::any(glm::greaterThan(scene.sky.sunRadiance, glm::vec3(0.0f))) ? 1 : 0;
-    std::uint64_t perSurface = 0;
-    switch (l.method) {
-        case Method::Preview: perSurface = sun; break;  // counted on the GPU instead; for completeness
-        case Method::Restir:
-            // initial candidates (the chosen one's visibility), the unbiased mode's visibility
-            // test of the temporal input and of each spatial tap, shading: sun + chosen light.
-            perSurface = (l.restir.candidateVisibility ? 1 : 0) + (l.restir.unbiased && l.restir.temporal ? 1 : 0) +
-                         (l.restir.unbiased && l.restir.spatial ? l.restir.spatialTaps : 0) + sun + 1;
-            break;
-        case Method::Ris: perSurface = sun + 1; break;
-        case Method::Uniform: perSurface = sun + l.shadowRays; break;
-        case Method::BruteForce: perSurface = sun + r.emitters; break;
-        case Method::Reference:
-            // per sample: at each of up to bounces + 1 vertices the sun and one emitter shadow
-            // ray, and a cosine ray per bounce, plus one from the last vertex with MIS (Russian
-            // roulette and escapes end paths early)
-            perSurface = std::uint64_t(std::max(l.samplesPerFrame, 1u)) *
-                         ((l.bounces + 1) * (sun + 1) + l.bounces + (l.bounces > 0 && l.referenceMis ? 1 : 0));
-            break;
-    }
-    // The reference traces its own camera ray per sample (its box filter), besides the G-buffer's.
-    const std::uint64_t referenceCameraRays =
-        l.method == Method::Reference ? pixels * std::uint64_t(std::max(l.samplesPerFrame, 1u)) : 0;
-    return pixels + referenceCameraRays + surface * perSurface + (r.cacheUsed ? r.cache.rays : 0);
-}
-
-// A path argument: a file, or a name in worlds/paths/ ("sandbox_orbit" ->
-// worlds/paths/sandbox_orbit.toml).
-engine::Result<fs::path> resolvePathFile(const std::string& arg) {
-    std::error_code ec;
-    if (fs::is_regular_file(arg, ec)) return fs::path(arg);
-    std::string file = arg + (fs::path(arg).extension() == ".toml" ? "" : ".toml");
-    for (fs::path dir : {fs::path("worlds/paths"), fs::path(VOX_SOURCE_DIR) / "worlds/paths"}) {
-        if (fs::is_regular_file(dir / file, ec)) return dir / file;
-    }
-    return engine::makeError(
-        "--path {}: no such path file (not a file, and not found in worlds/paths/)", arg);
-}
 
 // "A:B" (inclusive; B may be left out or run past the end) within frames 0..count-1.
 engine::Result<std::pair<std::uint32_t, std::uint32_t>> parseRange(const std::string& text,

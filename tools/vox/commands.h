@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <filesystem>
 #include <optional>
 #include <string>
 
@@ -28,6 +29,7 @@ void addBenchAccuracyCommand(CLI::App& bench, int& exitCode);
 void addBenchSweepCommand(CLI::App& bench, int& exitCode);
 void addBenchStabilityCommand(CLI::App& bench, int& exitCode);
 void addBenchCacheCommand(CLI::App& bench, int& exitCode);
+void addBenchFrameCommand(CLI::App& bench, int& exitCode);
 
 struct RenderOptions {
     std::string world;
@@ -50,6 +52,9 @@ int runRender(const RenderOptions& options);
 // Loads a world by name or path (a .vdb is imported with default options); an empty argument
 // means the built-in default world.
 engine::Result<engine::world::Scene> loadWorld(const std::string& nameOrPath);
+// A camera path argument: a file, or a name in worlds/paths/ ("sandbox_orbit" ->
+// worlds/paths/sandbox_orbit.toml).
+engine::Result<std::filesystem::path> resolvePathFile(const std::string& arg);
 // "640x360" -> {640, 360}; an error names the option.
 engine::Result<glm::uvec2> parseSize(const std::string& text, const char* option);
 engine::Result<glm::vec3> parseVec3(const std::string& text, const char* option);

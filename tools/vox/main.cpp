@@ -19,6 +19,18 @@ engine::Result<engine::world::Scene> loadWorld(const std::string& nameOrPath) {
     return engine::scene::loadSceneFile(*path);
 }
 
+engine::Result<std::filesystem::path> resolvePathFile(const std::string& arg) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (fs::is_regular_file(arg, ec)) return fs::path(arg);
+    std::string file = arg + (fs::path(arg).extension() == ".toml" ? "" : ".toml");
+    for (fs::path dir : {fs::path("worlds/paths"), fs::path(VOX_SOURCE_DIR) / "worlds/paths"}) {
+        if (std::filesystem::is_regular_file(dir / file, ec)) return dir / file;
+    }
+    return engine::makeError(
+        "--path {}: no such path file (not a file, and not found in worlds/paths/)", arg);
+}
+
 engine::Result<glm::uvec2> parseSize(const std::string& text, const char* option) {
     unsigned w = 0, h = 0;
     char x = 0, extra = 0;
@@ -68,6 +80,7 @@ int main(int argc, char** argv) {
     vox::addBenchSweepCommand(*bench, exitCode);
     vox::addBenchStabilityCommand(*bench, exitCode);
     vox::addBenchCacheCommand(*bench, exitCode);
+    vox::addBenchFrameCommand(*bench, exitCode);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

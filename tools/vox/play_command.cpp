@@ -20,6 +20,8 @@ void addPlayCommand(CLI::App& app, int& exitCode) {
     cmd->add_option("--script", o->scriptPath, "Replay scripted input from FILE (format: game/script_player.h)");
     cmd->add_option("--frames", o->maxFrames, "Quit after this many frames (0: no limit)")->capture_default_str();
     cmd->add_option("--edit-log", o->editLogPath, "Write every edit, undo, redo, save and screenshot to FILE");
+    cmd->add_option("--frame-log", o->frameLogPath,
+                    "Write per-frame times to FILE.csv (frame, wall ms, render call ms, GPU ms, render size)");
     cmd->add_option("--autosave-minutes", o->autosaveMinutes, "Autosave interval to SAVE.autosave.toml (0: off)")
         ->capture_default_str();
     cmd->add_option("--undo-mb", o->undoMegabytes, "Memory budget of the undo history in MiB")->capture_default_str();
