@@ -137,6 +137,11 @@ const Knob kRestir[] = {
      .min = 0, .max = 10, .get = getPartField<&S::restir, &R::depthTolerance>, .set = setPartField<&S::restir, &R::depthTolerance>, .relevant = isRestir},
     {.name = "candidate_visibility", .help = "Shadow-test the chosen candidate before reuse", .kind = KnobKind::Switch,
      .get = getPartField<&S::restir, &R::candidateVisibility>, .set = setPartField<&S::restir, &R::candidateVisibility>, .relevant = isRestir},
+    {.name = "light_tiles",
+     .help = "Candidates by power from presampled light tiles (RTXDI) instead of alias-table draws: same probabilities, "
+             "cheaper reads",
+     .kind = KnobKind::Switch, .get = getPartField<&S::restir, &R::lightTiles>, .set = setPartField<&S::restir, &R::lightTiles>,
+     .relevant = resamples},
 };
 
 const Knob kBaselines[] = {

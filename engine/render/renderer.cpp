@@ -49,7 +49,8 @@ Renderer::Renderer(gpu::Context& ctx)
       mLightSampling(ctx),
       mReference(ctx),
       mTonemap(ctx),
-      mCache(ctx) {
+      mCache(ctx),
+      mLightTiles(ctx) {
     mFrameParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::FrameParams), "frame.params");
     mRestirParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::RestirParams), "restir.params");
     mLightSamplingParams =
@@ -137,6 +138,10 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
     params.prevCameraForward = prev.cameraForward;
     params.prevCameraRight = prev.cameraRight;
     params.prevCameraUp = prev.cameraUp;
+    if (lightTilesUsed(lighting)) {
+        params.lightTiles = mLightTiles.frameField();
+        mLightTiles.writeParams(mUploader, mFrameIndex, lighting.seed);
+    }
     mUploader.write(mFrameParams, 0, &params, sizeof(params));
     writeMethodParams(lighting);
     mUploader.record(cmd);
@@ -229,6 +234,7 @@ void Renderer::recordLighting(gpu::CommandList& cmd, const lighting::LightingSet
     using lighting::Method;
     const SceneBindings scene{mWorld, mGpuEmitters};
     gpu::Buffer& gbuffer = mGBuffers[mCurrent];
+    if (lightTilesUsed(lighting)) mLightTiles.record(cmd, scene);  // before ReSTIR and the cache read them
     switch (lighting.method) {
         case Method::Preview:
             mPreview.record(cmd, {mWorld, mFrameParams, gbuffer, mRadiance, mRayStats}, mSize);
