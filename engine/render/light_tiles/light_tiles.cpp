@@ -7,9 +7,9 @@ namespace engine::render {
 
 bool lightTilesUsed(const lighting::LightingSettings& l) {
     using lighting::Method;
-    const bool candidates = (l.method == Method::Restir || l.method == Method::Ris) && l.byPower && l.restir.lightTiles;
+    const bool candidates = l.method == Method::Restir || l.method == Method::Ris;
     const bool cache = l.indirect == lighting::Indirect::Cache && l.method != Method::Reference;
-    return candidates || cache;
+    return l.byPower && l.restir.lightTiles && (candidates || cache);
 }
 
 LightTiles::LightTiles(gpu::Context& ctx) : mPass(ctx, "light_tiles", "light_tiles/presample", 2) {

@@ -22,8 +22,9 @@ class Uploader;
 
 namespace engine::render {
 
-// Does a frame lit with `l` read the tiles? ReSTIR/RIS candidates by power with the light_tiles
-// knob on, and the irradiance cache's light bounce.
+// Does a frame lit with `l` read the tiles? With the light_tiles knob on and lights drawn by power:
+// ReSTIR/RIS candidates and the irradiance cache's light bounce (which otherwise draws from the
+// alias table, as does everything when the knob is off).
 bool lightTilesUsed(const lighting::LightingSettings& l);
 
 class LightTiles {
