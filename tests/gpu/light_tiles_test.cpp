@@ -60,7 +60,9 @@ class LightTiles : public GpuTest {};
 TEST_F(LightTiles, EntriesAreEmittersDrawnByPower) {
     Scene scene = lampScene();
     Renderer r(context());
-    r.render(scene, scene.camera(), frame(16), LightingSettings{});
+    LightingSettings l;
+    l.restir.lightTiles = 1;
+    r.render(scene, scene.camera(), frame(16), l);
     const std::vector<shared::LightTileSample> tiles = readTiles(r);
     ASSERT_EQ(tiles.size(), std::size_t(shared::LIGHT_TILE_COUNT) * shared::LIGHT_TILE_SIZE);
     const engine::lighting::EmitterList& list = r.emitters();
