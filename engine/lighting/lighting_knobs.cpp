@@ -46,6 +46,7 @@ bool samplesEmitters(const LightingSettings& s) { return s.method != Method::Pre
 bool isUniform(const LightingSettings& s) { return s.method == Method::Uniform; }
 bool isReference(const LightingSettings& s) { return s.method == Method::Reference; }
 bool usesCache(const LightingSettings& s) { return s.indirect == Indirect::Cache && s.method != Method::Reference; }
+bool drawsLightsByPower(const LightingSettings& s) { return s.byPower && (resamples(s) || usesCache(s)); }
 
 // --method: the methods by name, and restir-unbiased for ReSTIR with the unbiased normalisation.
 Status parseMethodKnob(LightingSettings& s, std::string_view text) {
@@ -137,6 +138,11 @@ const Knob kRestir[] = {
      .min = 0, .max = 10, .get = getPartField<&S::restir, &R::depthTolerance>, .set = setPartField<&S::restir, &R::depthTolerance>, .relevant = isRestir},
     {.name = "candidate_visibility", .help = "Shadow-test the chosen candidate before reuse", .kind = KnobKind::Switch,
      .get = getPartField<&S::restir, &R::candidateVisibility>, .set = setPartField<&S::restir, &R::candidateVisibility>, .relevant = isRestir},
+    {.name = "light_tiles",
+     .help = "ReSTIR candidates and cache bounce lights by power from presampled light tiles (RTXDI) instead of "
+             "alias-table draws: same probabilities, cheaper reads",
+     .kind = KnobKind::Switch, .get = getPartField<&S::restir, &R::lightTiles>, .set = setPartField<&S::restir, &R::lightTiles>,
+     .relevant = drawsLightsByPower},
 };
 
 const Knob kBaselines[] = {

@@ -53,7 +53,8 @@ Renderer::Renderer(gpu::Context& ctx)
       mLightSampling(ctx),
       mReference(ctx),
       mTonemap(ctx),
-      mCache(ctx) {
+      mCache(ctx),
+      mLightTiles(ctx) {
     mFrameParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::FrameParams), "frame.params");
     mRestirParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::RestirParams), "restir.params");
     mLightSamplingParams =
@@ -142,6 +143,10 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
     params.prevCameraForward = prev.cameraForward;
     params.prevCameraRight = prev.cameraRight;
     params.prevCameraUp = prev.cameraUp;
+    if (lightTilesUsed(lighting)) {
+        params.lightTiles = mLightTiles.frameField();
+        mLightTiles.writeParams(mUploader, mFrameIndex, lighting.seed);
+    }
     mUploader.write(mFrameParams, 0, &params, sizeof(params));
     writeMethodParams(lighting);
 
@@ -264,6 +269,7 @@ void Renderer::recordLighting(gpu::CommandList& cmd, const lighting::LightingSet
     using lighting::Method;
     const SceneBindings scene{mWorld, mGpuEmitters};
     gpu::Buffer& gbuffer = mGBuffers[mCurrent];
+    if (lightTilesUsed(lighting)) mLightTiles.record(cmd, scene);  // before ReSTIR and the cache read them
     switch (lighting.method) {
         case Method::Preview:
             mPreview.record(cmd, {mWorld, mFrameParams, gbuffer, mRadiance, mRayStats}, mSize);

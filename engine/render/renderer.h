@@ -27,6 +27,7 @@
 #include "render/gpu_world.h"
 #include "render/baselines/light_sampling_pass.h"
 #include "render/irradiance_cache/irradiance_cache.h"
+#include "render/light_tiles/light_tiles.h"
 #include "render/passes/primary_ray_pass.h"
 #include "render/passes/sun_shade_pass.h"
 #include "render/passes/tonemap_pass.h"
@@ -88,6 +89,7 @@ public:
     GpuWorld& gpuWorld() { return mWorld; }
     const lighting::EmitterList& emitters() const { return mEmitters; }
     const IrradianceCache& irradianceCache() const { return mCache; }
+    const LightTiles& lightTiles() const { return mLightTiles; }
 
 private:
     void resize(std::uint32_t width, std::uint32_t height);
@@ -113,6 +115,7 @@ private:
     ReferencePass mReference;
     TonemapPass mTonemap;
     IrradianceCache mCache;
+    LightTiles mLightTiles;
 
     glm::uvec2 mSize{0};
     gpu::Buffer mFrameParams, mRadiance, mLdr, mRayStats, mCandidates, mOwnReservoirs, mAccumulation, mIndirect;

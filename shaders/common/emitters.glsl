@@ -56,59 +56,78 @@ bool pickEmitter(inout uint rng, bool byPower, out uint slot) {
     return true;
 }
 
-vec3 faceNormalF(uint face) { return vec3(faceNormal(face)); }
+// The per-lane select forms below (no vector indexed by a varying face or axis) matter on CPU
+// Vulkan drivers (lavapipe), where a varying index becomes a store and a gather per lane; the
+// values are the ones indexing gives.
+bvec3 onAxis(uint axis) { return equal(uvec3(axis), uvec3(0u, 1u, 2u)); }
+vec3 axisMask(uint axis) { return vec3(onAxis(axis)); }
+
+vec3 faceNormalF(uint face) { return mix(vec3(0.0), vec3((face & 1u) != 0u ? 1.0 : -1.0), onAxis(face >> 1u)); }
 
 // A point on face `face` of the emitter cube, at (u, v) in [0,1)^2 over the face.
 vec3 emitterFacePoint(GpuEmitter e, uint face, vec2 uv) {
     float s = float(e.minCorner.w);
     uint axis = face >> 1u;
-    uint ua = (axis + 1u) % 3u, va = (axis + 2u) % 3u;
-    vec3 p = vec3(e.minCorner.xyz);
-    p[axis] += (face & 1u) != 0u ? s : 0.0;
-    p[ua] += uv.x * s;
-    p[va] += uv.y * s;
-    return p;
+    vec3 offset = axisMask(axis) * ((face & 1u) != 0u ? s : 0.0) + axisMask((axis + 1u) % 3u) * (uv.x * s) +
+                  axisMask((axis + 2u) % 3u) * (uv.y * s);
+    return vec3(e.minCorner.xyz) + offset;
 }
 
 vec3 emitterCentre(GpuEmitter e) { return vec3(e.minCorner.xyz) + 0.5 * float(e.minCorner.w); }
 
-// Thesis Alg. 1: the six faces weighted by the solid angle they subtend at x (estimated at the
-// face centre: A cos / d^2); unexposed faces and faces turned away from x get zero.
-float faceSolidAngle(GpuEmitter e, uint face, vec3 x) {
-    if ((e.info.x & (1u << face)) == 0u) return 0.0;
-    vec3 c = emitterFacePoint(e, face, vec2(0.5));
-    vec3 d = c - x;
-    float dist2 = dot(d, d);
-    float cosine = dot(faceNormalF(face), -d) * inversesqrt(max(dist2, 1e-12));
-    if (cosine <= 0.0) return 0.0;
+// Thesis Alg. 1 weighs the six faces by the solid angle they subtend at x, estimated at the face
+// centre (A cos / d^2), unexposed faces and faces turned away from x getting zero. A face is turned
+// towards x only when x lies beyond its plane, so on each axis at most one face counts: the one
+// returned in `faces` (its index), with its weight (0 when x is within the slab or the face is not
+// exposed).
+vec3 visibleFaceWeights(GpuEmitter e, vec3 x, out uvec3 faces) {
     float s = float(e.minCorner.w);
-    return s * s * cosine / max(dist2, 1e-12);
+    vec3 lo = vec3(e.minCorner.xyz);
+    vec3 hi = lo + s;
+    bvec3 above = greaterThan(x, hi);
+    faces = uvec3(0u, 2u, 4u) + uvec3(above);
+    bvec3 beyond = bvec3(uvec3(above) | uvec3(lessThan(x, lo)));
+    uvec3 exposed = (uvec3(e.info.x) >> faces) & 1u;
+    vec3 plane = mix(lo, hi, above);
+    vec3 centre = lo + 0.5 * s;
+    vec3 w = vec3(0.0);
+    for (int a = 0; a < 3; ++a) {  // unrolled: a is constant in every copy
+        vec3 c = centre;
+        c[a] = plane[a];
+        vec3 d = c - x;
+        float dist2 = max(dot(d, d), 1e-12);
+        float cosine = abs(x[a] - plane[a]) * inversesqrt(dist2);
+        w[a] = beyond[a] && exposed[a] != 0u ? s * s * cosine / dist2 : 0.0;
+    }
+    return w;
 }
 
 // Chooses a face by solid angle; returns its probability (0: no face is visible from x).
 float pickFace(GpuEmitter e, vec3 x, float u, out uint face) {
-    float w[6];
-    float total = 0.0;
-    for (uint f = 0u; f < 6u; ++f) {
-        w[f] = faceSolidAngle(e, f, x);
-        total += w[f];
-    }
+    uvec3 faces;
+    vec3 w = visibleFaceWeights(e, x, faces);
+    float total = w.x + w.y + w.z;
     face = 0u;
     if (!(total > 0.0)) return 0.0;
-    float target = u * total, running = 0.0;
-    for (uint f = 0u; f < 6u; ++f) {
-        if (w[f] <= 0.0) continue;
-        face = f;
-        running += w[f];
+    float target = u * total, running = 0.0, chosen = 0.0;
+    for (int a = 0; a < 3; ++a) {
+        if (w[a] <= 0.0) continue;
+        face = faces[a];
+        chosen = w[a];
+        running += w[a];
         if (target < running) break;
     }
-    return w[face] / total;
+    return chosen / total;
 }
 
 float facePdf(GpuEmitter e, vec3 x, uint face) {
-    float total = 0.0;
-    for (uint f = 0u; f < 6u; ++f) total += faceSolidAngle(e, f, x);
-    return total > 0.0 ? faceSolidAngle(e, face, x) / total : 0.0;
+    uvec3 faces;
+    vec3 w = visibleFaceWeights(e, x, faces);
+    float total = w.x + w.y + w.z;
+    uint a = face >> 1u;
+    float wa = a == 0u ? w.x : (a == 1u ? w.y : w.z);
+    uint fa = a == 0u ? faces.x : (a == 1u ? faces.y : faces.z);
+    return total > 0.0 && fa == face ? wa / total : 0.0;
 }
 
 // Point mode's light: a point at the centre of the emitter's exposed surface (the mean of its

@@ -7,6 +7,7 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "irradiance_cache/irradiance_cache.glsl"
+#include "light_tiles/light_tiles.glsl"
 
 layout(local_size_x = CACHE_GROUP_SIZE) in;
 
@@ -25,7 +26,7 @@ vec3 lightLeaving(ivec3 voxel, uint face, vec3 o, vec3 d, uint packed, inout uin
     s.normal = faceNormalF(hf);
     s.albedo = gMaterials[material].albedo.rgb;
     s.emission = vec3(0.0);  // emitters are the direct-light passes' job
-    vec3 L = directLight(s, gFrame, rng);
+    vec3 L = directLightFromTiles(s, gFrame, rng);
     if (gCache.bounces > 1u) {
         uint hs = cacheLookup(hv, dynamicHit ? CACHE_SET_DYNAMIC : CACHE_SET_STATIC);
         if (hs != ~0u && (gEntries[hs].flags & CACHE_ENTRY_RESET) == 0u) L += s.albedo / PI * gFiltered[hs * CACHE_FACES + hf].rgb * cacheFade(hs);

@@ -3,10 +3,12 @@
 // pixel, drawn uniformly or by power, resampled by weighted reservoir sampling with the
 // unshadowed contribution's luminance as target pdf; optionally the chosen one is shadow-tested.
 // The weight W stays the unshadowed one (spatial neighbours reuse it as is); the shadow test's
-// answer goes to weights.w, which only this pixel's own reuse applies.
+// answer goes to weights.w, which only this pixel's own reuse applies. With light tiles (by power),
+// the candidates are consecutive entries of one random presampled tile: the same probabilities,
+// read in order instead of drawn from the alias table.
 #extension GL_GOOGLE_include_directive : require
 
-#include "common/surface.glsl"
+#include "light_tiles/light_tiles.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -29,16 +31,27 @@ void main() {
     bool area = gRestir.area != 0u;
     bool byPower = gRestir.byPower != 0u;
     uint rng = rngInit(pixel, gRestir.frameIndex, 1u, gRestir.seed);
+    bool tiles = byPower && gRestir.knobs.lightTiles != 0u && lightTilesReady(gFrame);
+    uint run = tiles ? lightTileRunStart(rng) : 0u;
 
     float wSum = 0.0;
     float chosenTarget = 0.0;
     for (uint i = 0u; i < candidates; ++i) {
         uint slot;
-        pickEmitter(rng, byPower, slot);
-        GpuEmitter e = gEmitters[slot];
+        GpuEmitter e;
+        float pdf;
+        if (tiles) {
+            LightTileSample t = lightTileSample(gFrame, lightTileRunEntry(run, i));
+            slot = t.info.z;
+            e = lightTileEmitter(t);
+            pdf = t.radiance.w;
+        } else {
+            pickEmitter(rng, byPower, slot);
+            e = gEmitters[slot];
+            pdf = emitterPdf(slot, byPower);
+        }
         uint face = LIGHT_FACE_CENTRE;
         vec2 uv = vec2(0.5);
-        float pdf = emitterPdf(slot, byPower);
         if (area) {
             float side = float(e.minCorner.w);
             pdf *= pickFace(e, s.position, rngNext(rng), face) / (side * side);

@@ -46,7 +46,9 @@ void main() {
     float tolerance = gRestir.knobs.depthTolerance;
 
     Combiner c = combinerStart();
-    combinerAdd(c, own, reservoirHasLight(own) ? targetAt(s, own) : 0.0, rngNext(rng));
+    // weights.z already holds the own sample's target here (the candidate and temporal passes
+    // evaluated it at this surface this frame): no need to evaluate it again.
+    combinerAdd(c, own, reservoirHasLight(own) ? own.weights.z : 0.0, rngNext(rng));
     uint neighbours[kMaxTaps];
     uint accepted = 0u;
     for (uint i = 0u; i < taps; ++i) {

@@ -20,8 +20,11 @@ struct FrameParams {
     vec4 prevCameraForward;
     vec4 prevCameraRight;
     vec4 prevCameraUp;
+    // This frame's presampled light tiles (shared/light_tiles.h): xy the buffer's device address
+    // (low, high word), 0 when the frame drew none; zw unused.
+    uvec4 lightTiles;
 };
-SHARED_ASSERT_SIZE(FrameParams, 208);
+SHARED_ASSERT_SIZE(FrameParams, 224);
 
 SHARED_END
 

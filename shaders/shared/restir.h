@@ -34,7 +34,7 @@ struct RestirKnobs {
     uint spatial SHARED_INIT(1u);              // spatial reuse
     uint unbiased SHARED_INIT(0u);             // visibility-aware 1/Z normalisation (Bitterli Alg. 6)
     uint candidateVisibility SHARED_INIT(1u);  // shadow-test the chosen candidate
-    uint pad0 SHARED_INIT(0u);
+    uint lightTiles SHARED_INIT(0u);           // lights by power from presampled light tiles (also the cache's bounce)
     uint pad1 SHARED_INIT(0u);
     uint pad2 SHARED_INIT(0u);
     SHARED_EQUALITY(RestirKnobs)

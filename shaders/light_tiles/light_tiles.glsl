@@ -1,0 +1,66 @@
+// Reading the frame's presampled light tiles (shared/light_tiles.h), reached through the device
+// address in FrameParams::lightTiles so that any pass with the frame parameters can read them
+// without a binding of its own. Every entry was drawn by power, as pickEmitter draws, so an entry
+// (or a run of consecutive entries of one tile) stands in for alias-table draws with the same
+// probabilities.
+#ifndef LIGHT_TILES_LIGHT_TILES_GLSL
+#define LIGHT_TILES_LIGHT_TILES_GLSL
+
+#extension GL_EXT_buffer_reference : require
+
+#include "common/direct_light.glsl"
+#include "shared/light_tiles.h"
+
+layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer LightTileBuffer {
+    LightTileSample samples[];
+};
+
+// Did this frame draw tiles? (Only the frames whose lighting reads them do.)
+bool lightTilesReady(FrameParams f) { return (f.lightTiles.x | f.lightTiles.y) != 0u; }
+
+LightTileSample lightTileSample(FrameParams f, uint entry) {
+    LightTileBuffer tiles = LightTileBuffer(uint64_t(f.lightTiles.x) | (uint64_t(f.lightTiles.y) << 32));
+    return tiles.samples[entry];
+}
+
+// The start of a run of entries: a random tile and a random place in it.
+uint lightTileRunStart(inout uint rng) {
+    uint tile = min(uint(rngNext(rng) * float(LIGHT_TILE_COUNT)), LIGHT_TILE_COUNT - 1u);
+    uint offset = min(uint(rngNext(rng) * float(LIGHT_TILE_SIZE)), LIGHT_TILE_SIZE - 1u);
+    return tile * LIGHT_TILE_SIZE + offset;
+}
+
+// Entry i of the run, wrapping around within its tile.
+uint lightTileRunEntry(uint start, uint i) {
+    uint base = start - start % LIGHT_TILE_SIZE;
+    return base + (start + i) % LIGHT_TILE_SIZE;
+}
+
+// The entry's emitter as the light-sampling maths takes it (radiance.w holds the probability).
+GpuEmitter lightTileEmitter(LightTileSample t) {
+    return GpuEmitter(t.minCorner, t.radiance, uvec4(t.info.x, t.info.y, 0u, EMITTER_FLAG_ALIVE));
+}
+
+// directLight (common/direct_light.glsl) with the emitter taken from one random tile entry
+// instead of an alias-table draw: the sun with one shadow ray plus one emitter sample, face by
+// solid angle and a uniform point on it, with one shadow ray. Same estimator, same expectation;
+// falls back to directLight when the frame drew no tiles.
+vec3 directLightFromTiles(Surface s, FrameParams frame, inout uint rng) {
+    if (!lightTilesReady(frame)) return directLight(s, frame, rng);
+    vec3 direct = sunLight(s, frame);
+    LightTileSample t = lightTileSample(frame, lightTileRunStart(rng));
+    if (!(t.radiance.w > 0.0)) return direct;  // no lights this frame
+    GpuEmitter e = lightTileEmitter(t);
+    uint face;
+    float side = float(e.minCorner.w);
+    float pdf = t.radiance.w * pickFace(e, s.position, rngNext(rng), face) / (side * side);
+    vec2 uv = vec2(rngNext(rng), rngNext(rng));
+    if (!(pdf > 0.0)) return direct;
+    vec3 toLight;
+    float dist;
+    vec3 f = lightContribution(s, e, face, uv, toLight, dist);
+    if (!any(greaterThan(f, vec3(0.0))) || !lightVisible(s, e, toLight, dist)) return direct;
+    return direct + f / pdf;
+}
+
+#endif
