@@ -178,7 +178,7 @@ engine::Result<ConfigResult> measure(engine::gpu::Context& ctx, const Config& co
         s.gpuMs = r.totalMs();
         s.rays = rayBound(l, *scene, r, pixels, surfacePixels(renderer.readback()));
         if (r.cacheUsed) {
-            s.cacheRays = r.cache.rays;
+            s.cacheRays = r.cache.raysTraced;
             s.cacheUpdated = r.cache.updated;
             s.cacheTraced = r.cache.traced;
         }
