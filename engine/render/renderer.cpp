@@ -49,7 +49,8 @@ Renderer::Renderer(gpu::Context& ctx)
       mLightSampling(ctx),
       mReference(ctx),
       mTonemap(ctx),
-      mCache(ctx) {
+      mCache(ctx),
+      mPathIndirect(ctx) {
     mFrameParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::FrameParams), "frame.params");
     mRestirParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::RestirParams), "restir.params");
     mLightSamplingParams =
@@ -117,6 +118,7 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
     cmd.beginPass("upload");
     result.upload = mWorld.sync(scene, mUploader);
     const bool useCache = lighting.indirect == lighting::Indirect::Cache && lighting.method != lighting::Method::Reference;
+    const bool usePath = lighting.indirect == lighting::Indirect::Path && lighting.method != lighting::Method::Reference;
     std::vector<glm::ivec3> editedCells;  // for the cache: static rays through them are stale
     if (useCache && !result.upload.full) {
         const glm::ivec3 cells = scene.grid.sizeInCells();
@@ -139,19 +141,23 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
     params.prevCameraUp = prev.cameraUp;
     mUploader.write(mFrameParams, 0, &params, sizeof(params));
     writeMethodParams(lighting);
+    // What the accumulating estimators restart on (besides new settings, which drop the history).
+    const bool viewOrWorldChanged = worldChanged || !mPrevCamera || !sameView(*mPrevCamera, camera);
+    if (usePath) mPathIndirect.prepare(lighting, mSize, mFrameIndex, !mHistoryValid || viewOrWorldChanged, mUploader);
     mUploader.record(cmd);
-    if (lighting.method == lighting::Method::Reference &&
-        (mAccumulatedSamples == 0 || worldChanged || !mPrevCamera || !sameView(*mPrevCamera, camera))) {
+    if (lighting.method == lighting::Method::Reference && (mAccumulatedSamples == 0 || viewOrWorldChanged)) {
         cmd.fillBuffer(mAccumulation, 0);
         cmd.barrier();
         mAccumulatedSamples = 0;
     }
-    if (!useCache) cmd.fillBuffer(mIndirect, 0);
+    if (!useCache && !usePath) cmd.fillBuffer(mIndirect, 0);
     cmd.endPass();
 
     mPrimary.record(cmd, {mWorld, mFrameParams, mGBuffers[mCurrent]}, mSize);
     if (!useCache) {
         recordLighting(cmd, lighting, mHistoryValid);
+        if (usePath)
+            mPathIndirect.record(cmd, {mWorld, mGpuEmitters}, {mFrameParams, mGBuffers[mCurrent], mRadiance, mIndirect});
         mTonemap.record(cmd, {mFrameParams, mRadiance, mLdr}, mSize);
         cmd.submitAndWait();
         result.passMs = mTimer.results();

@@ -28,6 +28,7 @@ void addBenchAccuracyCommand(CLI::App& bench, int& exitCode);
 void addBenchSweepCommand(CLI::App& bench, int& exitCode);
 void addBenchStabilityCommand(CLI::App& bench, int& exitCode);
 void addBenchCacheCommand(CLI::App& bench, int& exitCode);
+void addBenchFlythroughCommand(CLI::App& bench, int& exitCode);
 
 struct RenderOptions {
     std::string world;

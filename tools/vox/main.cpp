@@ -68,6 +68,7 @@ int main(int argc, char** argv) {
     vox::addBenchSweepCommand(*bench, exitCode);
     vox::addBenchStabilityCommand(*bench, exitCode);
     vox::addBenchCacheCommand(*bench, exitCode);
+    vox::addBenchFlythroughCommand(*bench, exitCode);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
