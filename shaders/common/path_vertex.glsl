@@ -30,16 +30,17 @@ Surface surfaceAt(SceneHit hit, vec3 origin, vec3 dir) {
     return s;
 }
 
-// Light reflected at `s`, vertex number `vertex` of a path (0: the surface the camera sees),
-// reached with `throughput`, times that throughput; not s's own emission. At every vertex,
+// Adds to `L` the light reflected at `s`, vertex number `vertex` of a path (0: the surface the
+// camera sees), reached with `throughput`, times that throughput; not s's own emission. (Adding
+// into the caller's sum keeps the reference's additions in their old order: its images stayed
+// bit-identical when this walk moved here.) At every vertex,
 // next-event estimation of the emitters and the sun, and a cosine-weighted ray that counts the
 // emission of the light it hits (also from the last vertex, `bounces`, where it goes no further);
 // with `mis` the two ways of reaching an emitter are combined by the power heuristic (Veach &
 // Guibas 1995), else only light sampling counts and the last vertex traces no ray. Continuation
 // rays that escape see the sky; Russian roulette from the third bounce on.
-vec3 pathRadiance(Surface s, vec3 throughput, uint vertex, uint bounces, bool mis, bool brickLights, FrameParams frame,
-                  inout uint rng) {
-    vec3 L = vec3(0.0);
+void addPathRadiance(inout vec3 L, Surface s, vec3 throughput, uint vertex, uint bounces, bool mis, bool brickLights,
+                     FrameParams frame, inout uint rng) {
     for (uint bounce = vertex; s.valid; ++bounce) {
         bool last = bounce >= bounces;
         if (!mis) {
@@ -83,7 +84,6 @@ vec3 pathRadiance(Surface s, vec3 throughput, uint vertex, uint bounces, bool mi
         }
         if (last) break;
     }
-    return L;
 }
 
 #endif

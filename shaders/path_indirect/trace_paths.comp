@@ -40,7 +40,7 @@ void main() {
             if (!hit.hit) {
                 L = s.albedo * skyBackground(gFrame, dir);
             } else {
-                L = pathRadiance(surfaceAt(hit, origin, dir), s.albedo, 1u, gPath.bounces, true, brickLights, gFrame, rng);
+                addPathRadiance(L, surfaceAt(hit, origin, dir), s.albedo, 1u, gPath.bounces, true, brickLights, gFrame, rng);
             }
         }
         accum += vec4(L, 1.0);

@@ -67,7 +67,8 @@ void main() {
             L = skyBackground(gFrame, dir);
         } else {
             Surface s = surfaceAt(hit, origin, dir);
-            L = s.emission + pathRadiance(s, vec3(1.0), 0u, bounces, mis, brickLights, gFrame, rng);
+            L = s.emission;
+            addPathRadiance(L, s, vec3(1.0), 0u, bounces, mis, brickLights, gFrame, rng);
         }
         accum += vec4(L, 1.0);
     }
