@@ -151,10 +151,13 @@ void Hud::drawStats(const HudStats& stats, HudControls& controls, HudActions& ac
                           stats.gpuMemory.paletteBytes)
                     .c_str());
     if (stats.cacheUsed) {
-        ImGui::Text("irradiance cache %s, %u entries (%u visible)", megabytes(stats.cache.bytes).c_str(), stats.cache.entries,
-                    stats.cache.updated);
+        ImGui::Text("irradiance cache %s, %u entries", megabytes(stats.cache.bytes).c_str(), stats.cache.entries);
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("entries of voxels the camera has seen, least recently seen evicted at the budget");
+            ImGui::SetTooltip("entries of voxels the camera has seen, least recently seen evicted at the memory budget");
+        ImGui::Text("cache updates %u (%u waiting), %.0fk rays", stats.cache.updated, stats.cache.waiting,
+                    static_cast<double>(stats.cache.raysTraced) / 1000.0);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("entries updated this frame within the ray budget (--cache-budget); waiting: visible ones left for later frames");
     }
     ImGui::Text("undo %zu / redo %zu steps, %s of %s", stats.undo.undoSteps, stats.undo.redoSteps,
                 megabytes(stats.undo.bytes).c_str(), megabytes(stats.undo.maxBytes).c_str());

@@ -22,8 +22,9 @@ Result<Indirect> parseIndirect(std::string_view name) {
 }
 
 std::string IrradianceCacheSettings::describe() const {
-    return fmt::format("cache K={} S={} bounces={} alpha={:g} N={} {}", directions, raysPerUpdate, bounces, alpha,
-                       neighbourhood, filter ? "filtered" : "unfiltered");
+    return fmt::format("cache K={} S={} bounces={} alpha={:g} N={} {} budget={}", directions, raysPerUpdate, bounces, alpha,
+                       neighbourhood, filter ? "filtered" : "unfiltered",
+                       rayBudget ? fmt::format("{} rays", rayBudget) : std::string("none"));
 }
 
 }  // namespace engine::lighting

@@ -31,6 +31,9 @@ struct IrradianceCacheSettings {
     float maxRayLength = 500.0f;
     bool filter = true;                // 3^3 Gaussian over neighbouring voxels' faces
     std::uint64_t budgetBytes = 64ull << 20;
+    // Rays per frame the cache's updates may trace, spent by priority (new and edited entries,
+    // moving objects, changed light, then the most stale); 0: update every visible entry each frame.
+    std::uint32_t rayBudget = 150000;
     bool fullRetrace = false;          // tests: the static set traces the whole world every update
 
     bool operator==(const IrradianceCacheSettings&) const = default;

@@ -179,6 +179,9 @@ const Knob kCache[] = {
      .relevant = usesCache},
     {.name = "budget_mb", .help = "cache: memory budget in MiB; least recently seen evicted", .kind = KnobKind::Real,
      .min = 1, .max = 16384, .get = getBudgetMb, .set = setBudgetMb, .relevant = usesCache},
+    {.name = "budget", .help = "cache: rays per frame, spent on new, edited, moving and stale entries first; 0 = all every frame",
+     .kind = KnobKind::Count, .min = 0, .max = 100000000, .get = getPartField<&S::cache, &C::rayBudget>,
+     .set = setPartField<&S::cache, &C::rayBudget>, .relevant = usesCache},
 };
 
 // Path-traced indirect light beside the direct method (render/path_indirect/). The names carry

@@ -17,6 +17,10 @@ bool sameView(const world::CameraPreset& a, const world::CameraPreset& b) {
     return a.position == b.position && a.target == b.target && a.fovYDegrees == b.fovYDegrees;
 }
 
+bool sameSky(const world::SkyLight& a, const world::SkyLight& b) {
+    return a.sunDirection == b.sunDirection && a.sunRadiance == b.sunRadiance && a.skyRadiance == b.skyRadiance;
+}
+
 }  // namespace
 
 double FrameResult::totalMs() const {
@@ -37,7 +41,7 @@ Renderer::Renderer(gpu::Context& ctx)
       mWorld(ctx),
       mGpuEmitters(ctx),
       mUploader(ctx),
-      mTimer(ctx, 16),
+      mTimer(ctx, 24),
       mPresentTimer(ctx, 1),
       mLateTimer(ctx, 16),
       mPrimary(ctx),
@@ -76,6 +80,7 @@ void Renderer::resize(std::uint32_t width, std::uint32_t height) {
     mRayStats = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(glm::uvec4), "frame.rayStats");
     mIndirect = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(glm::vec4), "frame.indirect");
     mGBufferHost = gpu::Buffer(mCtx, gpu::BufferKind::Readback, pixels * sizeof(shared::GBufferTexel), "frame.gbufferHost");
+    mGBufferHostValid = false;
     resetHistory();
 }
 
@@ -141,6 +146,28 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
     params.prevCameraUp = prev.cameraUp;
     mUploader.write(mFrameParams, 0, &params, sizeof(params));
     writeMethodParams(lighting);
+
+    // The cache picks this frame's updates from the last frame's visible voxels, so the whole
+    // frame is one submission. Without them (its first frame, a new size) the frame is split: up
+    // to the G-buffer, read back, then the rest.
+    const bool splitFrame = useCache && !(mGBufferHostValid && mCache.configured());
+    CacheFrameInput cacheInput;
+    if (useCache) {
+        cacheInput.size = mSize;
+        cacheInput.timeSeconds = settings.timeSeconds;
+        cacheInput.frameIndex = mFrameIndex;
+        cacheInput.seed = lighting.seed;
+        cacheInput.editedCellMins = editedCells;
+        cacheInput.lightsChanged = (!lightEdit.full && (lightEdit.added || lightEdit.removed || lightEdit.changed)) ||
+                                   (mPrevSky && !sameSky(*mPrevSky, scene.sky));
+    }
+    auto prepareCache = [&](gpu::CommandList& list) {
+        start = std::chrono::steady_clock::now();
+        cacheInput.gbuffer = mGBufferHost.view<shared::GBufferTexel>();
+        mCache.prepare(lighting.cache, cacheInput, mUploader, list);
+        result.cachePrepareMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    };
+    if (useCache && !splitFrame) prepareCache(cmd);
     // What the accumulating estimators restart on (besides new settings, which drop the history).
     const bool viewOrWorldChanged = worldChanged || !mPrevCamera || !sameView(*mPrevCamera, camera);
     if (usePath) mPathIndirect.prepare(lighting, mSize, mFrameIndex, !mHistoryValid || viewOrWorldChanged, mUploader);
@@ -154,36 +181,44 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
     cmd.endPass();
 
     mPrimary.record(cmd, {mWorld, mFrameParams, mGBuffers[mCurrent]}, mSize);
-    if (!useCache) {
-        recordLighting(cmd, lighting, mHistoryValid);
-        if (usePath)
-            mPathIndirect.record(cmd, {mWorld, mGpuEmitters}, {mFrameParams, mGBuffers[mCurrent], mRadiance, mIndirect});
-        mTonemap.record(cmd, {mFrameParams, mRadiance, mLdr}, mSize);
-        cmd.submitAndWait();
-        result.passMs = mTimer.results();
-    } else {
-        // The cache needs this frame's visible voxels on the host: submit up to the G-buffer,
-        // read it, then record the rest.
+    gpu::CommandList late(mCtx, &mLateTimer);
+    gpu::CommandList* rest = &cmd;
+    if (splitFrame) {
         cmd.copyBuffer(mGBuffers[mCurrent], mGBufferHost, {{0, 0, mGBuffers[mCurrent].size()}});
         cmd.barrier();
         cmd.submitAndWait();
-        result.passMs = mTimer.results();
-
-        gpu::CommandList late(mCtx, &mLateTimer);
         late.begin();
         late.beginPass("cache.prepare");
-        mCache.prepare(lighting.cache, mGBufferHost.view<shared::GBufferTexel>(), mSize, settings.timeSeconds, mFrameIndex,
-                       lighting.seed, editedCells, mUploader, late);
+        prepareCache(late);
         mUploader.record(late);
         late.endPass();
-        recordLighting(late, lighting, mHistoryValid);
-        mCache.record(late, {mWorld, mGpuEmitters}, {mFrameParams, mGBuffers[mCurrent], mRadiance, mIndirect});
-        mTonemap.record(late, {mFrameParams, mRadiance, mLdr}, mSize);
-        late.submitAndWait();
-        for (const auto& pass : mLateTimer.results()) result.passMs.push_back(pass);
-        result.cacheUsed = true;
-        result.cache = mCache.stats();
+        rest = &late;
     }
+    recordLighting(*rest, lighting, mHistoryValid);
+    if (usePath)
+        mPathIndirect.record(*rest, {mWorld, mGpuEmitters}, {mFrameParams, mGBuffers[mCurrent], mRadiance, mIndirect});
+    if (useCache) {
+        mCache.record(*rest, {mWorld, mGpuEmitters}, {mFrameParams, mGBuffers[mCurrent], mRadiance, mIndirect});
+        // This frame's visible voxels, for the next frame's cache updates.
+        rest->copyBuffer(mGBuffers[mCurrent], mGBufferHost, {{0, 0, mGBuffers[mCurrent].size()}});
+        rest->barrier();
+    }
+    mTonemap.record(*rest, {mFrameParams, mRadiance, mLdr}, mSize);
+    rest->submitAndWait();
+    result.passMs = mTimer.results();
+    if (splitFrame) {
+        for (const auto& pass : mLateTimer.results()) result.passMs.push_back(pass);
+    }
+    if (useCache) {
+        mCache.collect();
+        mGBufferHostValid = true;
+        result.cacheUsed = true;
+        result.cacheSplitFrame = splitFrame;
+        result.cache = mCache.stats();
+    } else {
+        mGBufferHostValid = false;
+    }
+    mPrevSky = scene.sky;
 
     if (lighting.method == lighting::Method::Reference) mAccumulatedSamples += std::max(lighting.samplesPerFrame, 1u);
     result.referenceSamples = mAccumulatedSamples;

@@ -54,6 +54,8 @@ struct FrameResult {
     std::uint32_t emitters = 0;
     std::uint32_t referenceSamples = 0;  // samples per pixel accumulated so far (reference)
     bool cacheUsed = false;
+    bool cacheSplitFrame = false;  // the cache had no visible set yet: two submissions, the G-buffer read in between
+    double cachePrepareMs = 0.0;   // CPU time of the cache's directory and uploads
     IrradianceCacheStats cache;
     double totalMs() const;
     double passMsOf(const std::string& name) const;
@@ -102,7 +104,7 @@ private:
     gpu::Uploader mUploader;
     gpu::TimestampTimer mTimer;
     gpu::TimestampTimer mPresentTimer;
-    gpu::TimestampTimer mLateTimer;  // the passes after the G-buffer is read back
+    gpu::TimestampTimer mLateTimer;  // a split frame's passes after the G-buffer is read back
     PrimaryRayPass mPrimary;
     SunShadePass mPreview;
     RestirInitialPass mRestirInitial;
@@ -118,7 +120,10 @@ private:
     glm::uvec2 mSize{0};
     gpu::Buffer mFrameParams, mRadiance, mLdr, mRayStats, mCandidates, mOwnReservoirs, mAccumulation, mIndirect;
     gpu::Buffer mRestirParams, mLightSamplingParams, mReferenceParams;  // each method module's parameters
-    gpu::Buffer mGBufferHost;  // this frame's G-buffer on the host, for the cache's visible voxels
+    // The last frame's G-buffer on the host: the cache's visible voxels for the next frame.
+    gpu::Buffer mGBufferHost;
+    bool mGBufferHostValid = false;
+    std::optional<world::SkyLight> mPrevSky;  // the cache restarts its entries when the sun or sky changes
     gpu::Buffer mGBuffers[2], mFinalReservoirs[2];
     std::uint32_t mCurrent = 0;  // which of the ping-pong pair is this frame's
     std::uint32_t mFrameIndex = 0;

@@ -23,6 +23,7 @@ layout(set = 0, binding = CACHE_BINDING_FILTERED, std430) buffer Filtered { vec4
 layout(set = 0, binding = CACHE_BINDING_GBUFFER, std430) readonly buffer GBuffer { GBufferTexel gGBuffer[]; };
 layout(set = 0, binding = CACHE_BINDING_RADIANCE, std430) buffer Radiance { vec4 gRadiance[]; };
 layout(set = 0, binding = CACHE_BINDING_INDIRECT, std430) writeonly buffer Indirect { vec4 gIndirect[]; };
+layout(set = 0, binding = CACHE_BINDING_COUNTERS, std430) buffer Counters { uint gCounters[CACHE_COUNTER_COUNT]; };
 
 uint cacheThread() { return gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * CACHE_DISPATCH_ROW; }
 
@@ -58,10 +59,10 @@ vec3 cacheRayOrigin(ivec3 voxel, uint face) {
     return o;
 }
 
-// The direction index the j-th ray of this update uses: all K are covered every K/S updates.
-uint cacheDirectionIndex(uint j) {
-    uint stride = gCache.directions / gCache.raysPerUpdate;
-    return j * stride + gCache.frameIndex % stride;  // the rotation advances with the frame
+// The direction index the j-th ray of an entry's update uses: the entry's phase advances with its
+// own updates, so all K are covered every K/S updates however often the budget picks it.
+uint cacheDirectionIndex(uint phase, uint j) {
+    return j * (gCache.directions / gCache.raysPerUpdate) + phase;
 }
 
 // The hit voxel's offset from the ray's voxel, counted along the ray's direction on each axis
@@ -104,7 +105,7 @@ uint cacheLookup(ivec3 voxel, uint set) {
 float cacheFade(uint slot) {
     CacheEntry e = gEntries[slot];
     if (uint(e.voxel.w) == CACHE_SET_STATIC) return 1.0;
-    return clamp(1.0 - (gCache.time - e.time.x) / gCache.fadeSeconds, 0.0, 1.0);
+    return clamp(1.0 - (gCache.time - e.updatedAt) / gCache.fadeSeconds, 0.0, 1.0);
 }
 
 #endif

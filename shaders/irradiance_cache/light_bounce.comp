@@ -28,7 +28,7 @@ vec3 lightLeaving(ivec3 voxel, uint face, vec3 o, vec3 d, uint packed, inout uin
     vec3 L = directLight(s, gFrame, rng);
     if (gCache.bounces > 1u) {
         uint hs = cacheLookup(hv, dynamicHit ? CACHE_SET_DYNAMIC : CACHE_SET_STATIC);
-        if (hs != ~0u && gEntries[hs].time.y == 0.0) L += s.albedo / PI * gFiltered[hs * CACHE_FACES + hf].rgb * cacheFade(hs);
+        if (hs != ~0u && (gEntries[hs].flags & CACHE_ENTRY_RESET) == 0u) L += s.albedo / PI * gFiltered[hs * CACHE_FACES + hf].rgb * cacheFade(hs);
     }
     return L;
 }
@@ -52,13 +52,13 @@ void main() {
     vec3 sum = vec3(0.0);
     uint rotation = cacheRotation(voxel, uint(entry.voxel.w));  // the directions its hits were traced along
     for (uint j = 0u; j < S; ++j) {
-        vec3 d = cacheDirection(rotation, face, cacheDirectionIndex(j));
+        vec3 d = cacheDirection(rotation, face, cacheDirectionIndex(entry.phase, j));
         sum += lightLeaving(voxel, face, o, d, gSelectedHits[(item * CACHE_FACES + face) * S + j], rng);
     }
     vec3 fresh = PI * sum / float(S);
     // The running mean for the first 1/alpha updates, then the paper's exponential blend: a new
     // entry converges as fast as its samples allow and then keeps alpha's stability.
-    vec4 old = entry.time.y > 0.0 ? vec4(0.0) : gIrradiance[index];
+    vec4 old = (entry.flags & CACHE_ENTRY_RESET) != 0u ? vec4(0.0) : gIrradiance[index];
     float n = old.w + 1.0;
     float a = max(gCache.alpha, 1.0 / n);
     gIrradiance[index] = vec4(mix(old.rgb, fresh, a), n);

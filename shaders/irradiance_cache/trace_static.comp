@@ -1,6 +1,7 @@
 #version 460
-// Irradiance cache, static set: traces each new (or invalidated) entry's K rays per exposed face
-// through the static world once and keeps the hit (voxel and face) for every later update.
+// Irradiance cache, static set: an entry that is new or was invalidated by an edit traces the S
+// directions of its current phase through the static world and keeps the hits for every later
+// update (divide and win); after K / S such updates all K are cached. One invocation per face.
 #extension GL_GOOGLE_include_directive : require
 
 #include "irradiance_cache/irradiance_cache.glsl"
@@ -8,19 +9,26 @@
 layout(local_size_x = CACHE_GROUP_SIZE) in;
 
 void main() {
-    uint K = gCache.directions;
+    uint K = gCache.directions, S = gCache.raysPerUpdate;
     uint thread = cacheThread();
-    uint item = thread / (CACHE_FACES * K);
+    uint item = thread / CACHE_FACES;
     if (item >= gCache.traces) return;
-    uint face = (thread / K) % CACHE_FACES;
-    uint k = thread % K;
+    uint face = thread % CACHE_FACES;
     uint slot = gLists[gCache.capacity + item];
-    ivec3 voxel = gEntries[slot].voxel.xyz;
-    uint packed = CACHE_HIT_MISS;
-    if (cacheFaceExposed(voxel, face, CACHE_SET_STATIC)) {
-        vec3 d = cacheDirection(cacheRotation(voxel, CACHE_SET_STATIC), face, k);
-        TraceResult hit = traceRay(cacheRayOrigin(voxel, face), d, gCache.maxRayLength, true);
-        if (hit.hit) packed = packCacheHit(voxel, hit.voxel, hit.face, false, d);
+    CacheEntry entry = gEntries[slot];
+    ivec3 voxel = entry.voxel.xyz;
+    bool exposed = cacheFaceExposed(voxel, face, CACHE_SET_STATIC);
+    uint rotation = cacheRotation(voxel, CACHE_SET_STATIC);
+    vec3 o = cacheRayOrigin(voxel, face);
+    for (uint j = 0u; j < S; ++j) {
+        uint k = cacheDirectionIndex(entry.phase, j);
+        uint packed = CACHE_HIT_MISS;
+        if (exposed) {
+            vec3 d = cacheDirection(rotation, face, k);
+            TraceResult hit = traceRay(o, d, gCache.maxRayLength, true);
+            if (hit.hit) packed = packCacheHit(voxel, hit.voxel, hit.face, false, d);
+        }
+        gStaticHits[(slot * CACHE_FACES + face) * K + k] = packed;
     }
-    gStaticHits[(slot * CACHE_FACES + face) * K + k] = packed;
+    if (exposed) atomicAdd(gCounters[CACHE_COUNTER_RAYS], S);
 }

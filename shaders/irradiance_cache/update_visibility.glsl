@@ -14,10 +14,11 @@
 
 layout(local_size_x = CACHE_GROUP_SIZE) in;
 
-// The selected hit of ray j of `face` of a static entry, or of a dynamic entry.
-uint selectHit(uint slot, ivec3 voxel, uint set, uint rotation, uint face, uint j) {
+// The selected hit of ray j of `face` of a static entry, or of a dynamic entry; `traced` counts
+// the rays actually traced (divide and win traces none while no dynamic object exists).
+uint selectHit(uint slot, ivec3 voxel, uint set, uint rotation, uint phase, uint face, uint j, inout uint traced) {
     uint K = gCache.directions;
-    uint k = cacheDirectionIndex(j);
+    uint k = cacheDirectionIndex(phase, j);
     vec3 o = cacheRayOrigin(voxel, face);
     vec3 d = cacheDirection(rotation, face, k);
     float maxLength = gCache.maxRayLength;
@@ -28,11 +29,13 @@ uint selectHit(uint slot, ivec3 voxel, uint set, uint rotation, uint face, uint 
         uint cached = gStaticHits[(slot * CACHE_FACES + face) * K + k];
         if (!dynamicGridPresent()) return cached;
         float ts = cached == CACHE_HIT_MISS ? maxLength : faceHitT(o, d, cacheHitVoxel(voxel, cached, d), cacheHitFace(cached));
+        ++traced;
         SceneHit dyn = traceDynamic(o, d, ts);
         if (dyn.hit && faceHitT(o, d, dyn.voxel, dyn.face) < ts) return packCacheHit(voxel, dyn.voxel, dyn.face, true, d);
         return cached;
 #else
     // Dynamic entries, and what the divide-and-win must equal: both worlds traced from scratch.
+    ++traced;
     SceneHit hit = traceScene(o, d, maxLength);
     return hit.hit ? packCacheHit(voxel, hit.voxel, hit.face, hit.dynamicSet, d) : CACHE_HIT_MISS;
 #endif
@@ -54,7 +57,10 @@ void main() {
     uint set = uint(entry.voxel.w);
     bool exposed = cacheFaceExposed(voxel, face, set);
     uint rotation = cacheRotation(voxel, set);
+    uint traced = 0u;
     for (uint j = 0u; j < S; ++j) {
-        gSelectedHits[(item * CACHE_FACES + face) * S + j] = exposed ? selectHit(slot, voxel, set, rotation, face, j) : CACHE_HIT_MISS;
+        gSelectedHits[(item * CACHE_FACES + face) * S + j] =
+            exposed ? selectHit(slot, voxel, set, rotation, entry.phase, face, j, traced) : CACHE_HIT_MISS;
     }
+    if (traced > 0u) atomicAdd(gCounters[CACHE_COUNTER_RAYS], traced);
 }

@@ -1,7 +1,8 @@
 // The voxel-face irradiance cache as the GPU sees it (engine/render/irradiance_cache/ keeps
 // the CPU side). Entries are (voxel, set) pairs in slots; a hash table maps keys to slots.
 //
-// Per slot: CacheEntry; CACHE_FACES * K packed static hits (the static set's cached rays);
+// Per slot: CacheEntry; CACHE_FACES * K packed static hits (the static set's cached rays, traced
+// S at a time over an entry's first K / S updates);
 // CACHE_FACES irradiance values, accumulated and filtered. Per entry in this frame's update list
 // and per traced ray: the selected hit (static or dynamic, bit CACHE_HIT_DYNAMIC).
 //
@@ -35,10 +36,10 @@ SHARED_CONST uint CACHE_DISPATCH_ROW = 65535u * CACHE_GROUP_SIZE;  // threads pe
 // engine/render/irradiance_cache/cache_params.h.
 struct CacheParams {
     uint updates;        // entries to update this frame
-    uint traces;         // static entries that trace their K rays this frame
+    uint traces;         // static entries that trace their phase's S directions this frame
     uint directions;     // K directions per face
     uint raysPerUpdate;  // S of the K, traced per face per update
-    uint frameIndex;     // also the rotation through the K directions
+    uint frameIndex;     // seeds the light sampling at the rays' hits
     uint bounces;
     uint seed;           // the lighting seed (also picks each entry's direction set)
     uint tableMask;      // hash table buckets - 1 (a power of two minus one)
@@ -58,9 +59,16 @@ SHARED_ASSERT_SIZE(CacheParams, 80);
 SHARED_CONST uint CACHE_FLAG_NO_FILTER = 1u;
 SHARED_CONST uint CACHE_FLAG_FULL_RETRACE = 2u;  // tests and benchmarks: the static set re-traces everything (visibility_static_full.comp)
 
+// Flags of an entry in this frame's update list (zero for entries not updated this frame).
+SHARED_CONST uint CACHE_ENTRY_RESET = 1u;  // its running mean restarts: new slot, lights changed, or re-traced after an edit
+SHARED_CONST uint CACHE_ENTRY_TRACE = 2u;  // a static entry tracing its phase's S directions through the static world
+
 struct CacheEntry {
-    ivec4 voxel;  // xyz world voxel, w set (CACHE_SET_*)
-    vec4 time;    // x: scene time of its last update (s), y: 1 in the frame the slot was (re)assigned
+    ivec4 voxel;       // xyz world voxel, w set (CACHE_SET_*)
+    float updatedAt;   // scene time of its last update (s)
+    uint flags;        // CACHE_ENTRY_*, this frame
+    uint phase;        // which S of the K directions this update uses: j * (K / S) + phase
+    uint pad;
 };
 SHARED_ASSERT_SIZE(CacheEntry, 32);
 
@@ -85,6 +93,10 @@ SHARED_CONST uint CACHE_BINDING_FILTERED = LIT_PASS_BINDING_FIRST + 9u;       //
 SHARED_CONST uint CACHE_BINDING_GBUFFER = LIT_PASS_BINDING_FIRST + 10u;       // GBufferTexel per pixel
 SHARED_CONST uint CACHE_BINDING_RADIANCE = LIT_PASS_BINDING_FIRST + 11u;      // vec4 per pixel, read and written
 SHARED_CONST uint CACHE_BINDING_INDIRECT = LIT_PASS_BINDING_FIRST + 12u;      // vec4 per pixel: the indirect term alone
+SHARED_CONST uint CACHE_BINDING_COUNTERS = LIT_PASS_BINDING_FIRST + 13u;      // uint[CACHE_COUNTER_COUNT]
+
+SHARED_CONST uint CACHE_COUNTER_RAYS = 0u;  // rays the cache's passes traced this frame (not the bounce's shadow rays)
+SHARED_CONST uint CACHE_COUNTER_COUNT = 4u;
 
 SHARED_END
 

@@ -7,6 +7,7 @@
 #include "render/irradiance_cache/irradiance_cache_directory.h"
 
 using engine::render::CacheKey;
+using engine::render::CacheWork;
 using engine::render::IrradianceCacheDirectory;
 
 namespace {
@@ -31,13 +32,20 @@ std::uint32_t probe(const std::vector<shared::CacheBucket>& table, const CacheKe
 
 }  // namespace
 
+// One update traces all of a new entry's directions (K = S), no budget.
+CacheWork oneTrace() {
+    CacheWork w;
+    w.phases = 1;
+    return w;
+}
+
 TEST(IrradianceCacheDirectory, SlotsAreStableAndNewStaticEntriesTrace) {
     IrradianceCacheDirectory dir(100);
-    auto first = dir.beginFrame(row(0, 10), 0.0, 0.3f);
+    auto first = dir.beginFrame(row(0, 10), 0.0, 0.3f, oneTrace());
     EXPECT_EQ(first.update.size(), 10u);
     EXPECT_EQ(first.trace.size(), 10u);
     std::uint32_t slot = dir.slotOf({{3, 1, 2}, 0});
-    auto again = dir.beginFrame(row(0, 12), 0.1, 0.3f);
+    auto again = dir.beginFrame(row(0, 12), 0.1, 0.3f, oneTrace());
     EXPECT_EQ(again.update.size(), 12u);
     EXPECT_EQ(again.trace.size(), 2u);  // only the new ones
     EXPECT_EQ(dir.slotOf({{3, 1, 2}, 0}), slot);
@@ -78,9 +86,65 @@ TEST(IrradianceCacheDirectory, DynamicEntriesFadeAndStaticOnesStay) {
 
 TEST(IrradianceCacheDirectory, InvalidationReachesOnlyEntriesWithinTheRayLength) {
     IrradianceCacheDirectory dir(1000);
-    dir.beginFrame(row(0, 100), 0.0, 0.3f);
+    dir.beginFrame(row(0, 100), 0.0, 0.3f, oneTrace());
     // An edited cell at x in [40, 48): entries within 10 voxels are x in [30, 58].
     EXPECT_EQ(dir.invalidateStatic(std::vector<glm::ivec3>{{40, 0, 0}}, 10.0f), 28u);
-    auto lists = dir.beginFrame(row(0, 100), 0.1, 0.3f);
+    auto lists = dir.beginFrame(row(0, 100), 0.1, 0.3f, oneTrace());
     EXPECT_EQ(lists.trace.size(), 28u);
+}
+
+// The ray budget: never exceeded; new entries first but with at most half of it while others
+// wait; each (re)trace spreads over K / S updates; converged entries refresh only now and then.
+TEST(IrradianceCacheDirectory, RayBudgetIsSpentByPriorityAndNeverExceeded) {
+    IrradianceCacheDirectory dir(1000);
+    CacheWork work;
+    work.rayBudget = 40 * 96;  // 40 plain updates, or 20 updates that also trace
+    work.phases = 2;
+    work.convergedAfter = 3;
+    work.refreshFrames = 10;
+    auto first = dir.beginFrame(row(0, 100), 0.0, 0.3f, work);
+    EXPECT_LE(first.rays, work.rayBudget);
+    EXPECT_EQ(first.update.size(), 20u);  // all new: twice the rays each, and nobody else waiting
+    EXPECT_EQ(first.waiting, 80u);
+    EXPECT_EQ(dir.liveEntries(), 20u) << "keys the budget leaves out get no slot yet";
+
+    // Dynamic entries join: new static entries get at most half of the budget, dynamic the rest.
+    std::vector<CacheKey> keys = row(0, 100);
+    auto dynamic = row(0, 10, shared::CACHE_SET_DYNAMIC);
+    keys.insert(keys.end(), dynamic.begin(), dynamic.end());
+    auto second = dir.beginFrame(keys, 0.1, 0.3f, work);
+    EXPECT_LE(second.rays, work.rayBudget);
+    EXPECT_EQ(second.update.size() - second.staticUpdates, 10u) << "every dynamic entry";
+    EXPECT_EQ(second.trace.size(), second.staticUpdates);
+
+    // Run until nothing waits: every entry is then traced (2 phases) and converged (3 updates).
+    std::uint32_t frames = 2;
+    for (; frames < 100; ++frames) {
+        auto lists = dir.beginFrame(row(0, 100), 0.01 * frames, 100.0f, work);
+        EXPECT_LE(lists.rays, work.rayBudget);
+        if (lists.waiting == 0 && lists.update.empty()) break;
+    }
+    EXPECT_LT(frames, 100u);
+    // Converged and nothing changed: 100 entries each refresh every 10 frames at most.
+    std::uint64_t updates = 0;
+    for (std::uint32_t i = 0; i < 20; ++i) updates += dir.beginFrame(row(0, 100), 2.0 + 0.01 * i, 100.0f, work).update.size();
+    EXPECT_LE(updates, 200u);
+    EXPECT_GT(updates, 0u);
+
+    // After the lights change every entry restarts once, most stale first, within the budget.
+    dir.relightAll();
+    std::uint32_t restarted = 0;
+    for (std::uint32_t i = 0; i < 3; ++i) {
+        auto lists = dir.beginFrame(row(0, 100), 3.0 + 0.01 * i, 100.0f, work);
+        EXPECT_LE(lists.rays, work.rayBudget);
+        for (std::uint32_t slot : lists.update) restarted += (dir.entry(slot).flags & shared::CACHE_ENTRY_RESET) != 0u;
+    }
+    EXPECT_EQ(restarted, 100u) << "40 per frame: all within ceil(100 / 40) = 3 frames";
+}
+
+TEST(IrradianceCacheDirectory, WithoutABudgetEveryVisibleEntryUpdatesEveryFrame) {
+    IrradianceCacheDirectory dir(1000);
+    CacheWork work;
+    work.convergedAfter = 1;
+    for (int i = 0; i < 20; ++i) EXPECT_EQ(dir.beginFrame(row(0, 50), 0.01 * i, 100.0f, work).update.size(), 50u);
 }

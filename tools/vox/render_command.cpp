@@ -99,9 +99,10 @@ int runRender(const RenderOptions& o) {
     std::printf("emitters %u (list update %.3f ms CPU)\n", frame.emitters, results.front().emitterUpdateMs);
     if (frame.cacheUsed) {
         const auto& c = frame.cache;
-        std::printf("cache    %u visible static + %u dynamic voxels, %u entries updated, %u live, %.2f MiB GPU, %llu rays\n",
-                    c.visibleStatic, c.visibleDynamic, c.updated, c.entries, double(c.bytes) / 1048576.0,
-                    static_cast<unsigned long long>(c.rays));
+        std::printf("cache    %u visible static + %u dynamic voxels, %u entries updated (%u waiting for the ray budget), %u live, "
+                    "%.2f MiB GPU, %llu rays traced, %.2f ms CPU\n",
+                    c.visibleStatic, c.visibleDynamic, c.updated, c.waiting, c.entries, double(c.bytes) / 1048576.0,
+                    static_cast<unsigned long long>(c.raysTraced), frame.cachePrepareMs);
     }
     if (!o.timings.empty()) {
         std::ofstream json(o.timings);

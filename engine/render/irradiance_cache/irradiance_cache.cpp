@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <limits>
 #include <cmath>
 #include <numeric>
 #include <unordered_set>
@@ -32,6 +33,7 @@ struct CachePassIo {
     const gpu::Buffer& gbuffer;
     gpu::Buffer& radiance;  // read and written: the indirect term is added
     gpu::Buffer& indirect;  // written: the indirect term alone
+    gpu::Buffer& counters;
     auto bindings() const {
         return std::to_array<PassBinding>({{shared::CACHE_BINDING_PARAMS, &params},
                                            {shared::CACHE_BINDING_FRAME, &frameParams},
@@ -45,7 +47,8 @@ struct CachePassIo {
                                            {shared::CACHE_BINDING_FILTERED, &filtered},
                                            {shared::CACHE_BINDING_GBUFFER, &gbuffer},
                                            {shared::CACHE_BINDING_RADIANCE, &radiance},
-                                           {shared::CACHE_BINDING_INDIRECT, &indirect}});
+                                           {shared::CACHE_BINDING_INDIRECT, &indirect},
+                                           {shared::CACHE_BINDING_COUNTERS, &counters}});
     }
 };
 constexpr std::uint32_t kOwnBindings = bindingCount<CachePassIo>();
@@ -103,6 +106,8 @@ IrradianceCache::IrradianceCache(gpu::Context& ctx)
       mFilter(ctx, "cache.filter", "irradiance_cache/filter", kOwnBindings),
       mGather(ctx, "cache.gather", "irradiance_cache/gather", kOwnBindings) {
     mParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::CacheParams), "cache.params");
+    mCounters = gpu::Buffer(ctx, gpu::BufferKind::Storage, shared::CACHE_COUNTER_COUNT * 4, "cache.counters");
+    mCountersHost = gpu::Buffer(ctx, gpu::BufferKind::Readback, shared::CACHE_COUNTER_COUNT * 4, "cache.countersHost");
 }
 
 std::uint64_t IrradianceCache::bytesPerSlot(const lighting::IrradianceCacheSettings& s) {
@@ -133,9 +138,8 @@ glm::vec3 IrradianceCache::rayDirection(glm::ivec3 voxel, std::uint32_t set, std
     return d;
 }
 
-std::uint32_t IrradianceCache::directionIndex(std::uint32_t j) const {
-    std::uint32_t stride = mSettings.directions / mSettings.raysPerUpdate;
-    return j * stride + mFrameIndex % stride;  // the rotation advances with the frame
+std::uint32_t IrradianceCache::directionIndex(std::uint32_t slot, std::uint32_t j) const {
+    return j * (mSettings.directions / mSettings.raysPerUpdate) + mDirectory.entry(slot).phase;
 }
 
 void IrradianceCache::clear() {
@@ -184,21 +188,19 @@ void IrradianceCache::ensureCapacity(std::uint32_t slots, gpu::CommandList& cmd)
     cmd.barrier();
 }
 
-void IrradianceCache::prepare(const lighting::IrradianceCacheSettings& settings,
-                              std::span<const shared::GBufferTexel> gbuffer, glm::uvec2 size, double timeSeconds,
-                              std::uint32_t frameIndex, std::uint32_t seed, std::span<const glm::ivec3> editedCellMins,
+void IrradianceCache::prepare(const lighting::IrradianceCacheSettings& settings, const CacheFrameInput& frameIn,
                               gpu::Uploader& uploader, gpu::CommandList& cmd) {
     mRetired.clear();  // the previous frame has completed
     // The seed picks every entry's directions: a new seed invalidates every cached hit.
-    if (!mConfigured || !(settings == mSettings) || seed != mSeed) reset(settings, seed);
+    if (!mConfigured || !(settings == mSettings) || frameIn.seed != mSeed) reset(settings, frameIn.seed);
     mStats = {};
 
-    // Visible voxels, from this frame's G-buffer; an N^3 neighbourhood around the dynamic ones so
-    // the values a moving object interpolates are ready before it gets there (§4.4).
+    // Visible voxels, from the G-buffer; an N^3 neighbourhood around the dynamic ones so the
+    // values a moving object interpolates are ready before it gets there (§4.4).
     std::unordered_set<std::uint64_t> seenStatic, seenDynamic;
     std::vector<CacheKey> visible;
     std::vector<glm::ivec3> dynamicVoxels;
-    for (const shared::GBufferTexel& g : gbuffer) {
+    for (const shared::GBufferTexel& g : frameIn.gbuffer) {
         if (static_cast<std::uint32_t>(g.voxel.w) >= 6u) continue;
         glm::ivec3 v(g.voxel);
         if ((g.data.w & shared::GBUFFER_FLAG_DYNAMIC) != 0u) {
@@ -224,24 +226,38 @@ void IrradianceCache::prepare(const lighting::IrradianceCacheSettings& settings,
         }
     }
 
-    mStats.invalidated = mDirectory.invalidateStatic(editedCellMins, settings.maxRayLength);
-    CacheFrameLists lists = mDirectory.beginFrame(visible, timeSeconds, settings.fadeSeconds);
+    // The budget's terms. Static entries within a few voxels of a visible moving object see its
+    // shadow and bounce change every frame: they come before the merely stale ones.
+    CacheWork work;
+    work.rayBudget = settings.rayBudget;
+    work.raysPerUpdate = settings.raysPerUpdate * shared::CACHE_FACES;
+    work.phases = settings.directions / settings.raysPerUpdate;
+    work.convergedAfter = static_cast<std::uint32_t>(std::ceil(1.0f / settings.alpha));
+    if (!dynamicVoxels.empty()) {
+        constexpr int kNearMovingObject = 8;  // voxels
+        work.nearMin = glm::ivec3(std::numeric_limits<int>::max());
+        work.nearMax = glm::ivec3(std::numeric_limits<int>::min());
+        for (const glm::ivec3& v : dynamicVoxels) {
+            work.nearMin = glm::min(work.nearMin, v - kNearMovingObject);
+            work.nearMax = glm::max(work.nearMax, v + kNearMovingObject);
+        }
+    }
+    if (frameIn.lightsChanged) mDirectory.relightAll();
+    mStats.invalidated = mDirectory.invalidateStatic(frameIn.editedCellMins, settings.maxRayLength);
+    CacheFrameLists lists = mDirectory.beginFrame(visible, frameIn.timeSeconds, settings.fadeSeconds, work);
     mUpdate = std::move(lists.update);
-    auto dynamicFirst = std::stable_partition(mUpdate.begin(), mUpdate.end(), [&](std::uint32_t slot) {
-        return mDirectory.entry(slot).voxel.w == static_cast<int>(shared::CACHE_SET_STATIC);
-    });
-    mStaticUpdates = static_cast<std::uint32_t>(dynamicFirst - mUpdate.begin());
+    mStaticUpdates = lists.staticUpdates;
     mTrace = std::move(lists.trace);
     mStats.updated = static_cast<std::uint32_t>(mUpdate.size());
     mStats.dynamicEntries = static_cast<std::uint32_t>(mUpdate.size()) - mStaticUpdates;
     mStats.traced = static_cast<std::uint32_t>(mTrace.size());
+    mStats.waiting = lists.waiting;
     mStats.entries = mDirectory.liveEntries();
     mStats.dropped = lists.dropped;
     mStats.evicted = lists.evicted;
-    mStats.rays = (std::uint64_t(mTrace.size()) * settings.directions + std::uint64_t(mUpdate.size()) * settings.raysPerUpdate) *
-                  shared::CACHE_FACES;
-    mFrameIndex = frameIndex;
-    mImage = size;
+    mStats.rays = lists.rays;
+    mFrameIndex = frameIn.frameIndex;
+    mImage = frameIn.size;
 
     ensureCapacity(std::max(mDirectory.usedSlots(), 1u), cmd);
     if (lists.tableChanged || !mTable.valid()) {
@@ -266,10 +282,10 @@ void IrradianceCache::prepare(const lighting::IrradianceCacheSettings& settings,
     frame.traces = static_cast<std::uint32_t>(mTrace.size());
     frame.buckets = static_cast<std::uint32_t>(mTable.size() / sizeof(shared::CacheBucket));
     frame.capacity = mCapacity;
-    frame.frameIndex = frameIndex;
-    frame.seed = seed;
-    frame.image = size;
-    frame.timeSeconds = timeSeconds;
+    frame.frameIndex = frameIn.frameIndex;
+    frame.seed = frameIn.seed;
+    frame.image = frameIn.size;
+    frame.timeSeconds = frameIn.timeSeconds;
     const shared::CacheParams params = cacheParams(settings, frame);
     uploader.write(mParams, 0, &params, sizeof(params));
 
@@ -277,19 +293,27 @@ void IrradianceCache::prepare(const lighting::IrradianceCacheSettings& settings,
                    mStaticHits.size() + mSelectedHits.size() + mIrradiance.size() + mFiltered.size();
 }
 
+void IrradianceCache::collect() {
+    mStats.raysTraced = mCountersHost.view<std::uint32_t>()[shared::CACHE_COUNTER_RAYS];
+}
+
 void IrradianceCache::record(gpu::CommandList& cmd, const SceneBindings& scene, const Io& io) {
     CHECK(mConfigured);
     const CachePassIo own{mParams,     io.frameParams, mDirectionBuffer, mEntries,    mTable,      mLists,      mStaticHits,
-                          mSelectedHits, mIrradiance,  mFiltered,        io.gbuffer, io.radiance, io.indirect};
+                          mSelectedHits, mIrradiance,  mFiltered,        io.gbuffer, io.radiance, io.indirect, mCounters};
     const auto bindings = own.bindings();
     const std::uint64_t faces = shared::CACHE_FACES;
-    mTraceStatic.record(cmd, scene, bindings, threadGroups(mTrace.size() * faces * mSettings.directions));
+    cmd.fillBuffer(mCounters, 0);
+    cmd.barrier();
+    mTraceStatic.record(cmd, scene, bindings, threadGroups(mTrace.size() * faces));
     (mSettings.fullRetrace ? mVisibilityStaticFull : mVisibilityStatic)
         .record(cmd, scene, bindings, threadGroups(mStaticUpdates * faces));
     mVisibilityDynamic.record(cmd, scene, bindings, threadGroups((mUpdate.size() - mStaticUpdates) * faces));
     mBounce.record(cmd, scene, bindings, threadGroups(mUpdate.size() * faces));
     mFilter.record(cmd, scene, bindings, threadGroups(mUpdate.size() * faces));
     mGather.record(cmd, scene, bindings, screenGroups(mImage));
+    cmd.copyBuffer(mCounters, mCountersHost, {{0, 0, mCounters.size()}});
+    cmd.barrier();
 }
 
 }  // namespace engine::render

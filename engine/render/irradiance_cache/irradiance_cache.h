@@ -2,10 +2,12 @@
 // shaders/shared/irradiance_cache.h, host bookkeeping in irradiance_cache_directory.h, shaders in
 // shaders/irradiance_cache/).
 //
-// Each frame, after the primary rays: prepare() reads the visible voxels off the G-buffer (plus
-// an N^3 neighbourhood around visible dynamic voxels), updates the directory and queues the
-// uploads; record() then runs the stages, each a timed pass:
-//   cache.trace_static  new or invalidated static entries trace their K rays per face once
+// Each frame, before its commands are recorded: prepare() reads the visible voxels off a
+// G-buffer on the host (the previous frame's, so the frame is one submission; plus an N^3
+// neighbourhood around visible dynamic voxels), lets the directory pick this frame's updates
+// within the ray budget, and queues the uploads; record() then runs the stages, each a timed pass:
+//   cache.trace_static  new or invalidated static entries trace S of their K directions per face
+//                       (their phase's), until all K are cached
 //   cache.visibility_static   static entries re-trace only the dynamic grid (divide and win)
 //   cache.visibility_dynamic  dynamic entries trace both worlds
 //   cache.bounce        light leaving each ray's hit -> E_new, blended into the entry
@@ -36,22 +38,32 @@ struct IrradianceCacheStats {
     std::uint32_t visibleDynamic = 0;  // distinct dynamic voxels seen by the camera
     std::uint32_t updated = 0;         // entries updated this frame (with the neighbourhoods)
     std::uint32_t dynamicEntries = 0;  // of them, dynamic-set entries
-    std::uint32_t traced = 0;          // static entries that traced their rays this frame
+    std::uint32_t traced = 0;          // static entries that traced static rays this frame
+    std::uint32_t waiting = 0;         // visible entries the ray budget left for later frames
     std::uint32_t entries = 0;         // live entries
     std::uint32_t dropped = 0, evicted = 0, invalidated = 0;
-    std::uint64_t rays = 0;            // rays traced by the cache this frame (excluding shadow rays)
+    std::uint64_t rays = 0;            // rays this frame's updates may trace (what the budget counts)
+    std::uint64_t raysTraced = 0;      // rays the GPU traced (counted by the shaders; excluding shadow rays)
     std::uint64_t bytes = 0;           // GPU memory the cache holds
+};
+
+// What prepare() needs of the frame.
+struct CacheFrameInput {
+    std::span<const shared::GBufferTexel> gbuffer;  // whose visible voxels are kept up to date
+    glm::uvec2 size{0};                             // this frame's image
+    double timeSeconds = 0.0;
+    std::uint32_t frameIndex = 0;
+    std::uint32_t seed = 0;                         // the lighting seed
+    std::span<const glm::ivec3> editedCellMins;     // static 8^3 cells edited since the last frame
+    bool lightsChanged = false;                     // an emitter or the sun changed: every entry restarts
 };
 
 class IrradianceCache {
 public:
     explicit IrradianceCache(gpu::Context& ctx);
 
-    // `gbuffer` is this frame's G-buffer on the host; `editedCellMins` the static world's 8^3
-    // cells edited since the last frame (voxel coordinates of their corners).
-    void prepare(const lighting::IrradianceCacheSettings& settings, std::span<const shared::GBufferTexel> gbuffer,
-                 glm::uvec2 size, double timeSeconds, std::uint32_t frameIndex, std::uint32_t seed,
-                 std::span<const glm::ivec3> editedCellMins, gpu::Uploader& uploader, gpu::CommandList& cmd);
+    void prepare(const lighting::IrradianceCacheSettings& settings, const CacheFrameInput& frame, gpu::Uploader& uploader,
+                 gpu::CommandList& cmd);
     struct Io {
         const gpu::Buffer& frameParams;
         const gpu::Buffer& gbuffer;
@@ -59,7 +71,10 @@ public:
         gpu::Buffer& indirect;  // written: the indirect term alone
     };
     void record(gpu::CommandList& cmd, const SceneBindings& scene, const Io& io);
+    // After the frame's submission completed: reads the rays the shaders counted into stats().
+    void collect();
     void clear();
+    bool configured() const { return mConfigured; }
 
     const IrradianceCacheStats& stats() const { return mStats; }
     const IrradianceCacheDirectory& directory() const { return mDirectory; }
@@ -68,7 +83,8 @@ public:
     const gpu::Buffer& selectedHits() const { return mSelectedHits; }
     const gpu::Buffer& filtered() const { return mFiltered; }
     std::uint32_t raysPerUpdate() const { return mSettings.raysPerUpdate; }
-    std::uint32_t directionIndex(std::uint32_t j) const;
+    // The direction index ray j of `slot`'s update this frame used (its phase's).
+    std::uint32_t directionIndex(std::uint32_t slot, std::uint32_t j) const;
     // All CACHE_DIRECTION_SETS direction sets, K each, in the face frame.
     std::span<const glm::vec4> directions() const { return mDirections; }
     // The host's copy of the shaders' per-entry directions (irradiance_cache.glsl), bit for bit:
@@ -93,10 +109,11 @@ private:
     std::vector<std::uint32_t> mUpdate, mTrace;  // mUpdate: static entries first
     std::uint32_t mStaticUpdates = 0;
     std::uint32_t mCapacity = 0;  // slots the GPU buffers hold
-    std::uint32_t mFrameIndex = 0;  // also the rotation through the K directions
+    std::uint32_t mFrameIndex = 0;
     glm::uvec2 mImage{0};
     IrradianceCacheStats mStats;
     gpu::Buffer mParams, mDirectionBuffer, mEntries, mTable, mLists, mStaticHits, mSelectedHits, mIrradiance, mFiltered;
+    gpu::Buffer mCounters, mCountersHost;
     std::vector<gpu::Buffer> mRetired;  // replaced buffers, kept until the frame that copied them is done
 };
 

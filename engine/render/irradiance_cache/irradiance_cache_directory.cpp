@@ -58,14 +58,42 @@ std::uint32_t IrradianceCacheDirectory::allocate(const CacheKey& key, std::uint6
         mEntries.emplace_back();
     }
     Slot& s = mSlots[slot];
-    s = Slot{key, true, key.set == shared::CACHE_SET_STATIC, frame, time, frame};
-    mEntries[slot] = shared::CacheEntry{glm::ivec4(key.voxel, static_cast<int>(key.set)), glm::vec4(-1.0e9f, 0, 0, 0)};
+    s = Slot{};
+    s.key = key;
+    s.live = true;
+    s.lastSeen = frame;
+    s.lastUpdate = time;
+    mEntries[slot] = shared::CacheEntry{glm::ivec4(key.voxel, static_cast<int>(key.set)), static_cast<float>(time), 0u, 0u, 0u};
     mIndex.emplace(packCacheKey(key), slot);
     lists.tableChanged = true;
     return slot;
 }
 
-CacheFrameLists IrradianceCacheDirectory::beginFrame(std::span<const CacheKey> visible, double time, float fadeSeconds) {
+// Evicts the least recently seen entries (never this frame's) so that `wanted` new keys fit, in
+// one batch of at least an eighth of the slots so eviction does not run every frame. Returns the
+// free slots available afterwards.
+std::uint32_t IrradianceCacheDirectory::makeRoom(std::size_t wanted, std::uint64_t frame, CacheFrameLists& lists) {
+    std::size_t available = mFree.size() + (mMaxSlots - mSlots.size());
+    if (wanted > available) {
+        std::vector<std::uint32_t> candidates;
+        for (std::uint32_t slot = 0; slot < mSlots.size(); ++slot) {
+            if (mSlots[slot].live && mSlots[slot].lastSeen != frame) candidates.push_back(slot);
+        }
+        std::size_t want = std::min(candidates.size(), std::max(wanted - available, std::size_t(mMaxSlots / 8)));
+        std::partial_sort(candidates.begin(), candidates.begin() + static_cast<std::ptrdiff_t>(want), candidates.end(),
+                          [&](std::uint32_t a, std::uint32_t b) {
+                              return mSlots[a].lastSeen != mSlots[b].lastSeen ? mSlots[a].lastSeen < mSlots[b].lastSeen : a < b;
+                          });
+        for (std::size_t i = 0; i < want; ++i) release(candidates[i]);
+        lists.evicted = static_cast<std::uint32_t>(want);
+        lists.tableChanged = lists.tableChanged || want > 0;
+        available += want;
+    }
+    return static_cast<std::uint32_t>(available);
+}
+
+CacheFrameLists IrradianceCacheDirectory::beginFrame(std::span<const CacheKey> visible, double time, float fadeSeconds,
+                                                     const CacheWork& work) {
     CacheFrameLists lists;
     const std::uint64_t frame = ++mFrame;
 
@@ -79,8 +107,9 @@ CacheFrameLists IrradianceCacheDirectory::beginFrame(std::span<const CacheKey> v
         }
     }
 
-    // Known keys are marked seen; new ones wait until we know how many slots they need.
+    // Known keys are marked seen; new ones become candidates without a slot yet.
     std::vector<CacheKey> fresh;
+    std::vector<std::uint32_t> seen;
     for (const CacheKey& key : visible) {
         auto it = mIndex.find(packCacheKey(key));
         if (it == mIndex.end()) {
@@ -90,45 +119,132 @@ CacheFrameLists IrradianceCacheDirectory::beginFrame(std::span<const CacheKey> v
         Slot& s = mSlots[it->second];
         if (s.lastSeen == frame) continue;  // a duplicate
         s.lastSeen = frame;
+        seen.push_back(it->second);
     }
     std::sort(fresh.begin(), fresh.end(), [](const CacheKey& a, const CacheKey& b) {
         return packCacheKey(a) < packCacheKey(b);
     });
     fresh.erase(std::unique(fresh.begin(), fresh.end()), fresh.end());
 
-    // Evict the least recently seen (never this frame's) to make room, in one batch.
-    const std::size_t available = mFree.size() + (mMaxSlots - mSlots.size());
-    if (fresh.size() > available) {
-        std::vector<std::uint32_t> candidates;
-        for (std::uint32_t slot = 0; slot < mSlots.size(); ++slot) {
-            if (mSlots[slot].live && mSlots[slot].lastSeen != frame) candidates.push_back(slot);
+    // Every candidate with its cost and its place in the order: class (CacheWork), then the
+    // frame of its last update (most stale first), then the key. `index` is a slot, or
+    // mSlots.size() + i for fresh[i].
+    struct Candidate {
+        std::uint64_t order;  // class << 56 | last update frame
+        std::uint64_t key;
+        std::uint32_t index;
+        std::uint32_t cost;
+        std::uint32_t cls() const { return static_cast<std::uint32_t>(order >> 56); }
+    };
+    const auto near = [&](glm::ivec3 v) {
+        return glm::all(glm::greaterThanEqual(v, work.nearMin)) && glm::all(glm::lessThanEqual(v, work.nearMax));
+    };
+    const auto order = [](std::uint64_t cls, std::uint64_t lastUpdate) {
+        return cls << 56 | (lastUpdate & ((1ull << 56) - 1));
+    };
+    const std::uint32_t update = work.raysPerUpdate;
+    std::vector<Candidate> candidates;
+    candidates.reserve(seen.size() + fresh.size());
+    for (std::uint32_t slot : seen) {
+        const Slot& s = mSlots[slot];
+        std::uint64_t cls;
+        std::uint32_t cost = update;
+        if (s.key.set == shared::CACHE_SET_DYNAMIC) {
+            cls = 1;
+        } else if (s.traced < work.phases) {
+            cls = 0;
+            cost = 2 * update;
+        } else if (s.reset || near(s.key.voxel)) {
+            cls = 2;
+        } else if (s.updates < work.convergedAfter) {
+            cls = 3;
+        } else if (frame - s.lastUpdateFrame >= work.refreshFrames || work.rayBudget == 0) {
+            cls = 4;
+        } else {
+            continue;  // converged and fresh enough
         }
-        std::size_t want = std::min(candidates.size(), std::max(fresh.size() - available, std::size_t(mMaxSlots / 8)));
-        std::partial_sort(candidates.begin(), candidates.begin() + static_cast<std::ptrdiff_t>(want), candidates.end(),
-                          [&](std::uint32_t a, std::uint32_t b) { return mSlots[a].lastSeen < mSlots[b].lastSeen; });
-        for (std::size_t i = 0; i < want; ++i) release(candidates[i]);
-        lists.evicted = static_cast<std::uint32_t>(want);
-        lists.tableChanged = lists.tableChanged || want > 0;
+        candidates.push_back({order(cls, s.lastUpdateFrame), packCacheKey(s.key), slot, cost});
     }
-    for (const CacheKey& key : fresh) {
-        if (mFree.empty() && mSlots.size() >= mMaxSlots) {
-            ++lists.dropped;
+    const auto firstFresh = static_cast<std::uint32_t>(mSlots.size());
+    for (std::uint32_t i = 0; i < fresh.size(); ++i) {
+        const bool dynamic = fresh[i].set == shared::CACHE_SET_DYNAMIC;
+        candidates.push_back({order(dynamic ? 1 : 0, 0), packCacheKey(fresh[i]), firstFresh + i, dynamic ? update : 2 * update});
+    }
+    std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+        return a.order != b.order ? a.order < b.order : a.key < b.key;
+    });
+
+    // Spend the budget: class 0 up to half of it, the others, then class 0 again with the rest.
+    const std::uint64_t budget = work.rayBudget == 0 ? ~0ull : work.rayBudget;
+    std::vector<bool> chosen(candidates.size(), false);
+    std::uint64_t spent = 0;
+    auto take = [&](std::size_t i, std::uint64_t limit) {
+        if (chosen[i] || spent + candidates[i].cost > limit) return;
+        chosen[i] = true;
+        spent += candidates[i].cost;
+    };
+    for (std::size_t i = 0; i < candidates.size() && candidates[i].cls() == 0; ++i) take(i, budget / 2);
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+        if (candidates[i].cls() != 0) take(i, budget);
+    }
+    for (std::size_t i = 0; i < candidates.size() && candidates[i].cls() == 0; ++i) take(i, budget);
+
+    // Slots for the chosen fresh keys, evicting if the memory budget is full.
+    std::size_t wanted = 0;
+    for (std::size_t i = 0; i < candidates.size(); ++i) wanted += chosen[i] && candidates[i].index >= firstFresh;
+    std::uint32_t room = wanted ? makeRoom(wanted, frame, lists) : 0;
+    std::vector<std::uint32_t> selected;
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+        if (!chosen[i]) {
+            ++lists.waiting;
             continue;
         }
-        allocate(key, frame, time, lists);
+        std::uint32_t slot = candidates[i].index;
+        if (slot >= firstFresh) {
+            if (room == 0) {
+                ++lists.dropped;
+                spent -= candidates[i].cost;
+                continue;
+            }
+            --room;
+            slot = allocate(fresh[slot - firstFresh], frame, time, lists);
+        }
+        selected.push_back(slot);
     }
+    lists.rays = spent;
 
-    for (std::uint32_t slot = 0; slot < mSlots.size(); ++slot) {
+    // This frame's flags: zero except on the selected entries.
+    for (shared::CacheEntry& e : mEntries) e.flags = 0u;
+    std::sort(selected.begin(), selected.end(), [&](std::uint32_t a, std::uint32_t b) {
+        bool sa = mSlots[a].key.set == shared::CACHE_SET_STATIC, sb = mSlots[b].key.set == shared::CACHE_SET_STATIC;
+        return sa != sb ? sa : a < b;  // static entries first, each part in slot order
+    });
+    for (std::uint32_t slot : selected) {
         Slot& s = mSlots[slot];
-        if (!s.live || s.lastSeen != frame) continue;
-        lists.update.push_back(slot);
-        if (s.needsTrace) lists.trace.push_back(slot);
-        s.needsTrace = false;
+        shared::CacheEntry& e = mEntries[slot];
+        const bool isStatic = s.key.set == shared::CACHE_SET_STATIC;
+        e.flags = s.reset ? shared::CACHE_ENTRY_RESET : 0u;
+        e.phase = (isStatic ? s.traced : s.updates) % std::max(work.phases, 1u);
+        if (isStatic && s.traced < work.phases) {
+            e.flags |= shared::CACHE_ENTRY_TRACE;
+            lists.trace.push_back(slot);
+        }
+        if (isStatic) {
+            ++lists.staticUpdates;
+            ++s.traced;
+        }
+        s.updates = s.reset ? 1 : s.updates + 1;
+        s.reset = false;
         s.lastUpdate = time;
-        mEntries[slot].time.x = static_cast<float>(time);
-        mEntries[slot].time.y = s.born == frame ? 1.0f : 0.0f;  // the GPU forgets the slot's old values
+        s.lastUpdateFrame = frame;
+        e.updatedAt = static_cast<float>(time);
+        lists.update.push_back(slot);
     }
     return lists;
+}
+
+void IrradianceCacheDirectory::relightAll() {
+    for (Slot& s : mSlots) s.reset = s.reset || s.live;
 }
 
 std::uint32_t IrradianceCacheDirectory::invalidateStatic(std::span<const glm::ivec3> editedCellMins, float radius) {
@@ -140,7 +256,7 @@ std::uint32_t IrradianceCacheDirectory::invalidateStatic(std::span<const glm::iv
     }
     std::uint32_t marked = 0;
     for (Slot& s : mSlots) {
-        if (!s.live || s.key.set != shared::CACHE_SET_STATIC || s.needsTrace) continue;
+        if (!s.live || s.key.set != shared::CACHE_SET_STATIC || s.traced == 0) continue;
         glm::vec3 p = glm::vec3(s.key.voxel) + 0.5f;
         // Quick reject against the edits' bounds, then the distance to each edited cell.
         glm::vec3 gap = glm::max(glm::max(lo - p, p - hi), glm::vec3(0.0f));
@@ -148,7 +264,8 @@ std::uint32_t IrradianceCacheDirectory::invalidateStatic(std::span<const glm::iv
         for (const glm::ivec3& c : editedCellMins) {
             glm::vec3 g = glm::max(glm::max(glm::vec3(c) - p, p - glm::vec3(c + 8)), glm::vec3(0.0f));
             if (glm::dot(g, g) <= radius * radius) {
-                s.needsTrace = true;
+                s.traced = 0;
+                s.reset = true;
                 ++marked;
                 break;
             }

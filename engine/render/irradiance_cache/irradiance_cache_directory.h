@@ -3,6 +3,10 @@
 // has seen: slots are handed out as voxels become visible, up to a budget, and the least
 // recently seen are evicted when it is full. Slot numbers are stable while an entry lives, so
 // the GPU-side data of a slot never moves.
+//
+// Work follows what changed: each frame spends a budget of rays on the visible entries by
+// priority (see CacheWork), so a still, converged view costs little and a change is picked up
+// within a bounded number of frames.
 #pragma once
 
 #include <cstdint>
@@ -26,10 +30,32 @@ std::uint64_t packCacheKey(const CacheKey& key);
 // The bucket a key starts probing at; the shaders compute the same (shaders/irradiance_cache/irradiance_cache.glsl).
 std::uint32_t cacheKeyHash(const CacheKey& key);
 
+// How a frame's rays are spent. Visible entries are taken in this order, the most stale first
+// within a class, while the budget lasts:
+//   0. new static entries and those an edit invalidated: they trace S directions of their own
+//      through the static world per update until all K are cached (twice an update's rays);
+//      they take at most half the budget while others wait, then what is left;
+//   1. dynamic entries (moving objects' surroundings);
+//   2. static entries near a moving object, and every entry once after the lights changed;
+//   3. static entries still converging (fewer than `convergedAfter` updates since a reset);
+//   4. converged static entries not updated for `refreshFrames` frames.
+// Without a budget (rayBudget 0) every visible entry is updated every frame.
+struct CacheWork {
+    std::uint64_t rayBudget = 0;         // rays per frame; 0: no limit
+    std::uint32_t raysPerUpdate = 96;    // S rays on each of the six faces
+    std::uint32_t phases = 8;            // K / S: the updates a (re)trace takes
+    std::uint32_t convergedAfter = 33;   // about 1 / alpha
+    std::uint32_t refreshFrames = 30;
+    glm::ivec3 nearMin{0}, nearMax{-1};  // voxels near moving objects (class 2); empty when max < min
+};
+
 struct CacheFrameLists {
-    std::vector<std::uint32_t> update;  // slots the GPU updates this frame (visible ones)
-    std::vector<std::uint32_t> trace;   // static slots whose rays must be traced in the static world first
-    std::uint32_t dropped = 0;          // visible keys left out because the budget is full of visible keys
+    std::vector<std::uint32_t> update;  // slots the GPU updates this frame: static ones first, then dynamic
+    std::vector<std::uint32_t> trace;   // of them, static slots tracing their phase in the static world first
+    std::uint32_t staticUpdates = 0;    // static slots at the front of `update`
+    std::uint64_t rays = 0;             // rays the selected updates may trace (the budget's measure)
+    std::uint32_t waiting = 0;          // visible entries (or keys) the budget left for later frames
+    std::uint32_t dropped = 0;          // visible keys left out because the memory budget is full of visible keys
     std::uint32_t evicted = 0;          // least recently seen entries dropped to make room
     std::uint32_t faded = 0;            // dynamic entries released after their fade
     bool tableChanged = false;          // entries were added or removed: re-upload the table
@@ -40,12 +66,16 @@ public:
     explicit IrradianceCacheDirectory(std::uint32_t maxSlots);
 
     // Registers this frame's visible keys (deduplicated by the caller or not) and returns the
-    // slots to update. Dynamic entries not seen for `fadeSeconds` are released.
-    CacheFrameLists beginFrame(std::span<const CacheKey> visible, double time, float fadeSeconds);
+    // slots to update within `work`'s budget. Dynamic entries not updated for `fadeSeconds` are
+    // released.
+    CacheFrameLists beginFrame(std::span<const CacheKey> visible, double time, float fadeSeconds,
+                               const CacheWork& work = {});
 
     // Static entries within `radius` voxels of an edited 8^3 cell must re-trace their static rays
     // (next time they are updated). Returns how many were marked.
     std::uint32_t invalidateStatic(std::span<const glm::ivec3> editedCellMins, float radius);
+    // The lights changed: every entry restarts its running mean at its next update (class 2).
+    void relightAll();
     void clear();
 
     std::uint32_t maxSlots() const { return mMaxSlots; }
@@ -63,12 +93,15 @@ private:
     struct Slot {
         CacheKey key;
         bool live = false;
-        bool needsTrace = false;
+        bool reset = true;                 // the next update restarts the running mean
+        std::uint32_t traced = 0;          // updates since its static rays were (re)traced from scratch
+        std::uint32_t updates = 0;         // since the last reset
         std::uint64_t lastSeen = 0;
-        double lastUpdate = 0.0;
-        std::uint64_t born = 0;
+        std::uint64_t lastUpdateFrame = 0;
+        double lastUpdate = 0.0;           // scene time
     };
     std::uint32_t allocate(const CacheKey& key, std::uint64_t frame, double time, CacheFrameLists& lists);
+    std::uint32_t makeRoom(std::size_t wanted, std::uint64_t frame, CacheFrameLists& lists);
     void release(std::uint32_t slot);
 
     std::uint32_t mMaxSlots;
