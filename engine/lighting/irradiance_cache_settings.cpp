@@ -8,16 +8,17 @@ const char* indirectName(Indirect i) {
     switch (i) {
         case Indirect::None: return "none";
         case Indirect::Cache: return "cache";
+        case Indirect::Path: return "path";
         case Indirect::Reference: return "reference";
     }
     return "?";
 }
 
 Result<Indirect> parseIndirect(std::string_view name) {
-    for (Indirect i : {Indirect::None, Indirect::Cache, Indirect::Reference}) {
+    for (Indirect i : {Indirect::None, Indirect::Cache, Indirect::Path, Indirect::Reference}) {
         if (name == indirectName(i)) return i;
     }
-    return makeError("unknown indirect mode '{}' (known: none, cache, reference)", name);
+    return makeError("unknown indirect mode '{}' (known: none, cache, path, reference)", name);
 }
 
 std::string IrradianceCacheSettings::describe() const {

@@ -13,6 +13,9 @@ namespace engine::lighting {
 enum class Indirect {
     None,       // direct light only
     Cache,      // the voxel-face irradiance cache
+    // Path-traced bounces from the G-buffer's surfaces added to the direct method, accumulated
+    // while camera and world stay still (render/path_indirect/)
+    Path,
     Reference,  // the path tracer's bounces (the method becomes the reference)
 };
 

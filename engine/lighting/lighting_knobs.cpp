@@ -47,6 +47,7 @@ bool isUniform(const LightingSettings& s) { return s.method == Method::Uniform; 
 bool isReference(const LightingSettings& s) { return s.method == Method::Reference; }
 bool usesCache(const LightingSettings& s) { return s.indirect == Indirect::Cache && s.method != Method::Reference; }
 bool drawsLightsByPower(const LightingSettings& s) { return s.byPower && (resamples(s) || usesCache(s)); }
+bool usesPath(const LightingSettings& s) { return s.indirect == Indirect::Path && s.method != Method::Reference; }
 
 // --method: the methods by name, and restir-unbiased for ReSTIR with the unbiased normalisation.
 Status parseMethodKnob(LightingSettings& s, std::string_view text) {
@@ -89,7 +90,8 @@ double getBudgetMb(const LightingSettings& s) { return static_cast<double>(s.cac
 void setBudgetMb(LightingSettings& s, double mb) { s.cache.budgetBytes = static_cast<std::uint64_t>(mb * 1048576.0); }
 
 constexpr std::array<std::string_view, 6> kMethods{"preview", "restir", "ris", "uniform", "bruteforce", "reference"};
-constexpr std::array<std::string_view, 3> kIndirect{"none", "cache", "reference"};
+// In the order of enum Indirect.
+constexpr std::array<std::string_view, 4> kIndirect{"none", "cache", "path", "reference"};
 constexpr std::array<std::string_view, 2> kModes{"point", "area"};
 constexpr std::array<std::string_view, 2> kSampling{"uniform", "power"};
 constexpr std::array<std::string_view, 2> kPixelFilters{"box", "centre"};
@@ -108,7 +110,8 @@ const Knob kLighting[] = {
     {.name = "seed", .help = "Random seed", .kind = KnobKind::Count, .min = 0, .max = 4294967295.0,
      .get = getField<&S::seed>, .set = setField<&S::seed>},
     {.name = "indirect",
-     .help = "Indirect light: none | cache (voxel-face irradiance cache) | reference (path-traced bounces); a scene's "
+     .help = "Indirect light: none | cache (voxel-face irradiance cache) | path (path-traced bounces from the "
+             "G-buffer, accumulated while still) | reference (the path tracer replaces the method); a scene's "
              "[indirect] mode, else none",
      .kind = KnobKind::Choice, .choices = kIndirect, .get = getField<&S::indirect>, .set = setField<&S::indirect>},
 };
@@ -187,9 +190,23 @@ const Knob kCache[] = {
      .set = setPartField<&S::cache, &C::rayBudget>, .relevant = usesCache},
 };
 
+// Path-traced indirect light beside the direct method (render/path_indirect/). The names carry
+// the prefix themselves: a scene's [indirect] table holds them beside the cache's.
+using P = PathIndirectSettings;
+const Knob kPath[] = {
+    {.name = "path_spp", .help = "path: bounce paths per pixel per frame", .kind = KnobKind::Count, .min = 1, .max = 256,
+     .get = getPartField<&S::path, &P::samples>, .set = setPartField<&S::path, &P::samples>, .relevant = usesPath},
+    {.name = "path_bounces", .help = "path: bounces per path (1 = one bounce, as the cache)", .kind = KnobKind::Count,
+     .min = 1, .max = 16, .get = getPartField<&S::path, &P::bounces>, .set = setPartField<&S::path, &P::bounces>,
+     .relevant = usesPath},
+    {.name = "path_accumulate", .help = "path: average over frames while camera and world are still", .kind = KnobKind::Switch,
+     .get = getPartField<&S::path, &P::accumulate>, .set = setPartField<&S::path, &P::accumulate>, .relevant = usesPath},
+};
+
 const KnobGroup kGroups[] = {
     {"lighting", "", kLighting}, {"emitters", "", kEmitters},   {"restir", "", kRestir},
     {"baselines", "", kBaselines}, {"reference", "", kReference}, {"cache", "cache-", kCache},
+    {"path", "", kPath},
 };
 
 // Rules between knobs that no single range expresses.

@@ -47,6 +47,7 @@ std::string LightingSettings::describe() const {
         case Method::Preview: break;
     }
     if (indirect == Indirect::Cache && method != Method::Reference) s += " + " + cache.describe();
+    if (indirect == Indirect::Path && method != Method::Reference) s += " + " + path.describe();
     return s;
 }
 

@@ -54,7 +54,8 @@ Renderer::Renderer(gpu::Context& ctx)
       mReference(ctx),
       mTonemap(ctx),
       mCache(ctx),
-      mLightTiles(ctx) {
+      mLightTiles(ctx),
+      mPathIndirect(ctx) {
     mFrameParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::FrameParams), "frame.params");
     mRestirParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::RestirParams), "restir.params");
     mLightSamplingParams =
@@ -123,6 +124,7 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
     cmd.beginPass("upload");
     result.upload = mWorld.sync(scene, mUploader);
     const bool useCache = lighting.indirect == lighting::Indirect::Cache && lighting.method != lighting::Method::Reference;
+    const bool usePath = lighting.indirect == lighting::Indirect::Path && lighting.method != lighting::Method::Reference;
     std::vector<glm::ivec3> editedCells;  // for the cache: static rays through them are stale
     if (useCache && !result.upload.full) {
         const glm::ivec3 cells = scene.grid.sizeInCells();
@@ -171,14 +173,16 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
         result.cachePrepareMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     };
     if (useCache && !splitFrame) prepareCache(cmd);
+    // What the accumulating estimators restart on (besides new settings, which drop the history).
+    const bool viewOrWorldChanged = worldChanged || !mPrevCamera || !sameView(*mPrevCamera, camera);
+    if (usePath) mPathIndirect.prepare(lighting, mSize, mFrameIndex, !mHistoryValid || viewOrWorldChanged, mUploader);
     mUploader.record(cmd);
-    if (lighting.method == lighting::Method::Reference &&
-        (mAccumulatedSamples == 0 || worldChanged || !mPrevCamera || !sameView(*mPrevCamera, camera))) {
+    if (lighting.method == lighting::Method::Reference && (mAccumulatedSamples == 0 || viewOrWorldChanged)) {
         cmd.fillBuffer(mAccumulation, 0);
         cmd.barrier();
         mAccumulatedSamples = 0;
     }
-    if (!useCache) cmd.fillBuffer(mIndirect, 0);
+    if (!useCache && !usePath) cmd.fillBuffer(mIndirect, 0);
     cmd.endPass();
 
     mPrimary.record(cmd, {mWorld, mFrameParams, mGBuffers[mCurrent]}, mSize);
@@ -196,6 +200,8 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
         rest = &late;
     }
     recordLighting(*rest, lighting, mHistoryValid);
+    if (usePath)
+        mPathIndirect.record(*rest, {mWorld, mGpuEmitters}, {mFrameParams, mGBuffers[mCurrent], mRadiance, mIndirect});
     if (useCache) {
         mCache.record(*rest, {mWorld, mGpuEmitters}, {mFrameParams, mGBuffers[mCurrent], mRadiance, mIndirect});
         // This frame's visible voxels, for the next frame's cache updates.

@@ -4,6 +4,7 @@
 //   -> primary_rays (G-buffer with motion vectors)
 //   -> lighting: preview shading | ReSTIR (initial, temporal, spatial, shade) | RIS | light
 //      sampling | brute force | reference path tracing (accumulates while nothing changes)
+//   -> indirect term, added to the radiance: the irradiance cache, or path-traced bounces
 //   -> tonemap
 // with a GPU timestamp per pass. Temporal state (G-buffers and reservoirs of the previous frame)
 // ping-pongs between two buffers; a change of image size or method drops it. Given a
@@ -29,6 +30,7 @@
 #include "render/irradiance_cache/irradiance_cache.h"
 #include "render/light_tiles/light_tiles.h"
 #include "render/passes/primary_ray_pass.h"
+#include "render/path_indirect/path_indirect.h"
 #include "render/passes/sun_shade_pass.h"
 #include "render/passes/tonemap_pass.h"
 #include "render/reference/reference_pass.h"
@@ -66,7 +68,7 @@ struct FrameImages {
     std::vector<std::uint32_t> rgba8;  // tonemapped sRGB, R in the low byte
     std::vector<shared::GBufferTexel> gbuffer;
     std::vector<glm::uvec4> rayStats;  // preview only: x primary steps, y shadow steps, z rays
-    std::vector<glm::vec4> indirect;   // the irradiance cache's term alone (zero without it)
+    std::vector<glm::vec4> indirect;   // the indirect term alone: the cache's or the path tracer's (zero without one)
 };
 
 class Renderer {
@@ -116,6 +118,7 @@ private:
     TonemapPass mTonemap;
     IrradianceCache mCache;
     LightTiles mLightTiles;
+    PathIndirect mPathIndirect;
 
     glm::uvec2 mSize{0};
     gpu::Buffer mFrameParams, mRadiance, mLdr, mRayStats, mCandidates, mOwnReservoirs, mAccumulation, mIndirect;

@@ -5,18 +5,17 @@
 // the static world and the dynamic objects (traceScene, as the G-buffer does). The G-buffer is
 // not read: one ray through the pixel centre aliases at every edge. (REFERENCE_PIXEL_CENTRE traces
 // through the pixel centre, for comparisons with the methods that shade the G-buffer.)
-// At each vertex, next-event estimation of the emitters (by power, area sampling, one shadow ray)
-// and of the sun, and a cosine-weighted ray that counts the emission of the light it hits (also
-// from the last vertex, where it goes no further); the two ways of reaching an emitter are
-// combined by multiple importance sampling (power heuristic, Veach & Guibas 1995), so a light
-// close to a surface no longer makes fireflies. Continuation rays that escape see the sky;
-// Russian roulette after three bounces. With zero bounces it is the direct-light ground truth,
-// by light sampling alone as before.
+// From the surface hit on, the walk of common/path_vertex.glsl: at each vertex, next-event
+// estimation of the emitters (by power, area sampling, one shadow ray) and of the sun, and a
+// cosine-weighted ray that counts the emission of the light it hits (also from the last vertex,
+// where it goes no further); the two ways of reaching an emitter are combined by multiple
+// importance sampling (power heuristic, Veach & Guibas 1995), so a light close to a surface no
+// longer makes fireflies. Continuation rays that escape see the sky; Russian roulette after three
+// bounces. With zero bounces it is the direct-light ground truth, by light sampling alone as before.
 #extension GL_GOOGLE_include_directive : require
 
 #include "common/camera.glsl"
-#include "common/direct_light.glsl"
-#include "common/emitter_lookup.glsl"
+#include "common/path_vertex.glsl"
 #include "shared/reference.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -25,27 +24,6 @@ layout(set = 0, binding = REFERENCE_BINDING_FRAME, std430) readonly buffer Param
 layout(set = 0, binding = REFERENCE_BINDING_PARAMS, std430) readonly buffer Reference { ReferenceParams gReference; };
 layout(set = 0, binding = REFERENCE_BINDING_ACCUMULATION, std430) buffer Accumulation { vec4 gAccum[]; };
 layout(set = 0, binding = REFERENCE_BINDING_RADIANCE, std430) writeonly buffer Radiance { vec4 gRadiance[]; };
-
-vec3 cosineDirection(vec3 n, float u1, float u2) {
-    float r = sqrt(u1), phi = 2.0 * PI * u2;
-    vec3 t = abs(n.x) > 0.5 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
-    vec3 b1 = normalize(cross(n, t));
-    vec3 b2 = cross(n, b1);
-    return normalize(b1 * (r * cos(phi)) + b2 * (r * sin(phi)) + n * sqrt(max(0.0, 1.0 - u1)));
-}
-
-// The surface a ray hit, as surfaceFrom reads it from the G-buffer.
-Surface surfaceAt(SceneHit hit, vec3 origin, vec3 dir) {
-    Surface s;
-    s.face = hit.face;
-    s.valid = hit.face < 6u;
-    s.position = origin + dir * hit.t;
-    s.normal = s.valid ? faceNormalF(hit.face) : vec3(0.0);
-    GpuMaterial m = gMaterials[hit.material];
-    s.albedo = m.albedo.rgb;
-    s.emission = m.emission.rgb;
-    return s;
-}
 
 // Test probe: the emitter derived for the static voxel seen through the pixel centre.
 vec4 probeEmitter(uvec2 pixel, uint flags) {
@@ -90,50 +68,7 @@ void main() {
         } else {
             Surface s = surfaceAt(hit, origin, dir);
             L = s.emission;
-            vec3 throughput = vec3(1.0);
-            for (uint bounce = 0u; s.valid; ++bounce) {
-                bool last = bounce >= bounces;
-                if (!mis) {
-                    L += throughput * directLight(s, gFrame, rng);
-                    if (last) break;
-                } else {
-                    L += throughput * directLightMis(s, gFrame, rng);
-                }
-                // The cosine-sampled ray: the next vertex and, with MIS, the emitter it hits. From
-                // the last vertex it only looks for emitters (the second technique for the light
-                // sampled there) and sees no sky, as before MIS.
-                dir = cosineDirection(s.normal, rngNext(rng), rngNext(rng));
-                vec3 from = s.position, fromNormal = s.normal;
-                throughput *= s.albedo;  // cosine sampling of a diffuse BRDF: f cos / p = albedo
-                if (bounce >= 3u) {
-                    float keep = min(max(throughput.r, max(throughput.g, throughput.b)), 0.95);
-                    if (rngNext(rng) >= keep) break;
-                    throughput /= keep;
-                }
-                origin = s.position + s.normal * kRayOffset;
-                hit = traceScene(origin, dir, 1.0e30);
-                if (!hit.hit) {
-                    if (!last) L += throughput * skyBackground(gFrame, dir);
-                    break;
-                }
-                s = surfaceAt(hit, origin, dir);
-                // Emission found by the cosine ray, weighted against the light sample that could
-                // have found it. Only the lights of the emitter list count (an object's emissive
-                // voxel lights nothing, in every method).
-                EmitterShape shape;
-                if (mis && !hit.dynamicSet && s.valid && emitterOfStaticVoxel(hit.voxel, brickLights, shape) &&
-                    (shape.emitter.info.x & (1u << hit.face)) != 0u) {
-                    // Both weights from the same segment (vertex to light point) as directLightMis
-                    // measures it, so the two weights of every path sum to one.
-                    vec3 segment = s.position - from;
-                    float dist = length(segment);
-                    vec3 toLight = segment / dist;
-                    float lightPdf = lightSamplePdfSolidAngle(shape, hit.face, from, dist, toLight);
-                    float bsdfPdf = max(dot(fromNormal, toLight), 0.0) / PI;
-                    L += throughput * s.emission * powerHeuristic(bsdfPdf, lightPdf);
-                }
-                if (last) break;
-            }
+            addPathRadiance(L, s, vec3(1.0), 0u, bounces, mis, brickLights, gFrame, rng);
         }
         accum += vec4(L, 1.0);
     }

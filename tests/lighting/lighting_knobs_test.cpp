@@ -97,3 +97,21 @@ TEST(LightingKnobs, ErrorsNameWhereTheValueCameFrom) {
     ASSERT_FALSE(bad.ok());
     EXPECT_EQ(bad.error().message.rfind("--spatial: ", 0), 0u) << bad.error().message;
 }
+
+// The path-traced indirect term's knobs come from their rows like every other: a scene's
+// [indirect] keys (path_spp...), the command line's --path-* options, the same ranges.
+TEST(LightingKnobs, PathIndirectKnobsFromSceneAndCommandLine) {
+    engine::world::Scene scene;
+    scene.indirect = {{"mode", "path"}, {"path_spp", "4"}};
+    auto s = engine::scene::lightingFor(&scene, std::vector<KnobValue>{option("path-bounces", "2")});
+    ASSERT_TRUE(s.ok()) << s.error().message;
+    EXPECT_EQ(s->indirect, Indirect::Path);
+    EXPECT_EQ(s->path.samples, 4u);   // the scene's
+    EXPECT_EQ(s->path.bounces, 2u);   // the command line's
+    EXPECT_TRUE(s->path.accumulate);  // the default
+    EXPECT_NE(s->describe().find("path 4 spp 2 bounce(s)"), std::string::npos) << s->describe();
+
+    auto bad = mergeLighting(LightingSettings{}, std::vector<KnobValue>{option("path-spp", "0")});
+    ASSERT_FALSE(bad.ok());
+    EXPECT_EQ(bad.error().message.rfind("--path-spp: ", 0), 0u) << bad.error().message;
+}

@@ -30,6 +30,7 @@ void addBenchSweepCommand(CLI::App& bench, int& exitCode);
 void addBenchStabilityCommand(CLI::App& bench, int& exitCode);
 void addBenchCacheCommand(CLI::App& bench, int& exitCode);
 void addBenchFrameCommand(CLI::App& bench, int& exitCode);
+void addBenchFlythroughCommand(CLI::App& bench, int& exitCode);
 
 struct RenderOptions {
     std::string world;

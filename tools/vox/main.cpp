@@ -81,6 +81,7 @@ int main(int argc, char** argv) {
     vox::addBenchStabilityCommand(*bench, exitCode);
     vox::addBenchCacheCommand(*bench, exitCode);
     vox::addBenchFrameCommand(*bench, exitCode);
+    vox::addBenchFlythroughCommand(*bench, exitCode);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

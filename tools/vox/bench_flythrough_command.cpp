@@ -1,0 +1,298 @@
+// vox bench flythrough: the irradiance cache against path-traced indirect light at equal time, on
+// a moving camera — where the path tracer's accumulation restarts every frame and the cache's
+// world-space history should win (issue 14; docs/ACCURACY.md). Each scene plays its flythrough
+// (worlds/paths/<scene>_flythrough.toml) once per method, the methods' frames interleaved so they
+// share the machine's drift: ReSTIR direct light plus
+//   none   no indirect term (its error is the whole indirect light),
+//   cache  the voxel-face irradiance cache,
+//   path   N bounce paths per pixel per frame (--path-spp, one point each).
+// Per frame: wall milliseconds of the whole Renderer::render (host work, uploads, submission and
+// wait), and at every K-th frame after the warm-up the indirect term's MAE against the reference
+// path tracer's converged indirect light at the same frame (with B bounces minus without, at the
+// pixel centres the G-buffer shades). Results: a CSV per frame, a summary CSV, a markdown table;
+// tools/plot_flythrough.py draws error against time per scene.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "commands.h"
+#include "gpu/context.h"
+#include "metrics/image_metrics.h"
+#include "progress_line.h"
+#include "render/flythrough_player.h"
+#include "scene/path_file.h"
+
+namespace vox {
+
+namespace {
+
+namespace fs = std::filesystem;
+using engine::lighting::Indirect;
+using engine::lighting::LightingSettings;
+using engine::lighting::Method;
+using engine::render::FlythroughPlayer;
+using engine::render::FrameSettings;
+using engine::render::Renderer;
+using engine::world::Flythrough;
+using engine::world::Scene;
+using Clock = std::chrono::steady_clock;
+
+struct FlythroughOptions {
+    std::vector<std::string> worlds{"cornell", "mountain", "letters", "apartments"};
+    std::string size = "128x72";
+    std::uint32_t frames = 0;  // 0: the whole path
+    std::uint32_t warmup = 30;
+    std::uint32_t referenceEvery = 10;
+    std::uint32_t referenceSpp = 256;
+    std::vector<std::uint32_t> pathSpp{1, 4, 16, 64};
+    std::uint32_t bounces = 1;
+    std::string output = "out/flythrough";
+};
+
+// One method's run through a scene: its own scene copy (the timeline edits it), renderer and player.
+struct Run {
+    std::string method;     // none | cache | path
+    std::uint32_t spp = 0;  // path: paths per pixel per frame
+    LightingSettings lighting;
+    Scene scene;
+    Flythrough fly;
+    std::unique_ptr<Renderer> renderer;
+    std::unique_ptr<FlythroughPlayer> player;
+    std::vector<double> wallMs;  // measured frames
+    std::vector<double> mae;     // reference frames
+    std::string label() const { return method == "path" ? fmt::format("path {} spp", spp) : method; }
+};
+
+double mean(const std::vector<double>& v) {
+    double s = 0.0;
+    for (double x : v) s += x;
+    return v.empty() ? 0.0 : s / double(v.size());
+}
+
+double median(std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
+// The mean magnitude of the reference's indirect light (its noise can make a pixel negative): the
+// MAE of no indirect term at all, so errors divided by it read as a fraction of the light.
+double meanMagnitude(const std::vector<glm::vec4>& img) {
+    double s = 0.0;
+    for (const glm::vec4& p : img) s += (std::abs(p.x) + std::abs(p.y) + std::abs(p.z)) / 3.0;
+    return img.empty() ? 0.0 : s / double(img.size());
+}
+
+// worlds/paths/<world>_flythrough.toml, from the working directory or the source tree.
+engine::Result<fs::path> flythroughFile(const std::string& world) {
+    const std::string file = fs::path(world).stem().string() + "_flythrough.toml";
+    std::error_code ec;
+    for (fs::path dir : {fs::path("worlds/paths"), fs::path(VOX_SOURCE_DIR) / "worlds/paths"}) {
+        if (fs::is_regular_file(dir / file, ec)) return dir / file;
+    }
+    return engine::makeError("{}: no flythrough for this world (worlds/paths/{})", world, file);
+}
+
+// The reference path tracer's indirect light at a frame: (bounces) minus (direct only), both
+// through the pixel centres with `spp` samples. Plays its own copies of the scene so the world
+// is the frame's.
+class ReferenceIndirect {
+public:
+    ReferenceIndirect(engine::gpu::Context& ctx, const Scene& scene, const Flythrough& fly, double fps,
+                      std::uint32_t bounces, std::uint32_t spp)
+        : mSpp(spp) {
+        for (int i = 0; i < 2; ++i) {
+            Side& s = mSides[i];
+            s.scene = scene;
+            s.fly = fly;
+            (void)s.fly.timeline.bind(s.scene);  // the methods' copies bound the same path without error
+            s.renderer = std::make_unique<Renderer>(ctx);
+            s.player = std::make_unique<FlythroughPlayer>(*s.renderer, s.scene, s.fly, fps);
+            s.lighting.method = Method::Reference;
+            s.lighting.referenceFilter = engine::lighting::ReferenceFilter::PixelCentre;
+            s.lighting.bounces = i == 0 ? bounces : 0;
+            s.lighting.samplesPerFrame = std::min(spp, 32u);
+        }
+    }
+    std::vector<glm::vec4> at(std::uint32_t frame, const FrameSettings& settings) {
+        std::vector<glm::vec4> images[2];
+        for (int i = 0; i < 2; ++i) {
+            Side& s = mSides[i];
+            auto f = s.player->render(frame, settings, s.lighting);
+            FrameSettings still = settings;
+            still.timeSeconds = f.time;
+            for (std::uint32_t done = s.lighting.samplesPerFrame; done < mSpp; done += s.lighting.samplesPerFrame) {
+                s.renderer->render(s.scene, f.camera, still, s.lighting);
+            }
+            images[i] = s.renderer->readback().radiance;
+        }
+        for (std::size_t p = 0; p < images[0].size(); ++p) images[0][p] -= images[1][p];
+        return images[0];
+    }
+
+private:
+    struct Side {
+        Scene scene;
+        Flythrough fly;
+        std::unique_ptr<Renderer> renderer;
+        std::unique_ptr<FlythroughPlayer> player;
+        LightingSettings lighting;
+    };
+    Side mSides[2];
+    std::uint32_t mSpp;
+};
+
+int runFlythroughBench(const FlythroughOptions& o) {
+    auto size = parseSize(o.size, "--size");
+    if (!size) return fail(size.error());
+    if (o.referenceEvery < 1) return fail(engine::makeError("--reference-every must be at least 1"));
+    if (o.referenceSpp < 1 || o.referenceSpp > 65536) return fail(engine::makeError("--reference-spp must be in 1..65536"));
+    if (o.bounces < 1 || o.bounces > 8) return fail(engine::makeError("--bounces must be in 1..8"));
+    if (o.pathSpp.empty()) return fail(engine::makeError("--path-spp: give at least one count"));
+    for (std::uint32_t s : o.pathSpp)
+        if (s < 1 || s > 256) return fail(engine::makeError("--path-spp: {} is not in 1..256", s));
+    auto ctx = engine::gpu::Context::create({});
+    if (!ctx) return fail(ctx.error());
+    const fs::path out(o.output);
+    std::error_code ec;
+    fs::create_directories(out, ec);
+    if (ec) return fail(engine::makeError("-o {}: cannot create folder: {}", o.output, ec.message()));
+    FrameSettings frame;
+    frame.width = size->x;
+    frame.height = size->y;
+    const auto& dev = (*ctx)->info();
+    std::printf("device %s (%s); %ux%u; reference %u spp, %u bounce(s); a reference every %u frames after %u\n",
+                dev.name.c_str(), dev.driver.c_str(), frame.width, frame.height, o.referenceSpp, o.bounces,
+                o.referenceEvery, o.warmup);
+    std::fflush(stdout);
+
+    std::ofstream frames(out / "frames.csv");
+    frames << "scene,method,spp,frame,wall_ms,indirect_mae,reference_mean_abs\n";
+    std::ofstream summary(out / "summary.csv");
+    summary << "scene,method,spp,wall_ms_mean,wall_ms_median,indirect_mae,relative_mae,reference_mean_abs,frames,"
+               "reference_frames,size,reference_spp,bounces\n";
+    std::string table = "| scene | method | wall ms/frame (mean) | indirect MAE | MAE / mean \\|indirect\\| |\n|---|---|---|---|---|\n";
+
+    for (const std::string& world : o.worlds) {
+        auto loaded = loadWorld(world);
+        if (!loaded) return fail(loaded.error());
+        auto pathFile = flythroughFile(world);
+        if (!pathFile) return fail(pathFile.error());
+        auto fly = engine::scene::loadFlythroughFile(*pathFile);
+        if (!fly) return fail(fly.error());
+        const double fps = fly->fps;
+        if (engine::Status s = fly->checkFrames(fps); !s) return fail(s.error());
+        const std::uint32_t count = o.frames ? std::min(o.frames, fly->frameCount(fps)) : fly->frameCount(fps);
+        if (count <= o.warmup) {
+            return fail(engine::makeError("{}: {} frames leave none after the {} warm-up frames", pathFile->string(), count,
+                                          o.warmup));
+        }
+
+        std::vector<Run> runs;
+        auto addRun = [&](std::string method, std::uint32_t spp, Indirect indirect) -> engine::Status {
+            Run r;
+            r.method = std::move(method);
+            r.spp = spp;
+            r.lighting.indirect = indirect;
+            r.lighting.cache.bounces = o.bounces;
+            r.lighting.path.samples = spp;
+            r.lighting.path.bounces = o.bounces;
+            r.scene = *loaded;
+            r.fly = *fly;
+            if (engine::Status bound = r.fly.timeline.bind(r.scene); !bound) return bound;
+            runs.push_back(std::move(r));
+            return {};
+        };
+        engine::Status added = addRun("none", 0, Indirect::None);
+        if (added) added = addRun("cache", 0, Indirect::Cache);
+        for (std::uint32_t spp : o.pathSpp)
+            if (added) added = addRun("path", spp, Indirect::Path);
+        if (!added) return fail(added.error());
+        for (Run& r : runs) {  // after the vector stops moving: the players hold references
+            r.renderer = std::make_unique<Renderer>(**ctx);
+            r.player = std::make_unique<FlythroughPlayer>(*r.renderer, r.scene, r.fly, fps);
+        }
+        ReferenceIndirect reference(**ctx, *loaded, *fly, fps, o.bounces, o.referenceSpp);
+        std::vector<double> referenceMeans;
+
+        ProgressLine progress(fmt::format("{} ({} frames x {} methods)", loaded->name, count, runs.size()), count);
+        for (std::uint32_t i = 0; i < count; ++i) {
+            const bool measured = i >= o.warmup;
+            const bool referenceFrame = measured && (i - o.warmup) % o.referenceEvery == 0;
+            std::vector<glm::vec4> ref;
+            double refMean = 0.0;
+            if (referenceFrame) {
+                ref = reference.at(i, frame);
+                refMean = meanMagnitude(ref);
+                referenceMeans.push_back(refMean);
+            }
+            for (Run& r : runs) {
+                const auto start = Clock::now();
+                r.player->render(i, frame, r.lighting);
+                const double ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+                if (!measured) continue;
+                r.wallMs.push_back(ms);
+                std::string maeText;
+                if (referenceFrame) {
+                    const std::vector<glm::vec4> indirect = r.renderer->readback().indirect;
+                    auto e = engine::metrics::compareImages({indirect, frame.width, frame.height}, {ref, frame.width, frame.height});
+                    if (!e) return fail(e.error());
+                    r.mae.push_back(e->mae);
+                    maeText = fmt::format("{:.6g}", e->mae);
+                }
+                frames << fmt::format("{},{},{},{},{:.3f},{},{}\n", loaded->name, r.method, r.spp, i, ms, maeText,
+                                      referenceFrame ? fmt::format("{:.6g}", refMean) : "");
+            }
+            progress.update(i + 1, measured ? (referenceFrame ? "reference frame" : "") : "warm-up");
+        }
+        progress.finish();
+
+        const double refMean = mean(referenceMeans);
+        for (const Run& r : runs) {
+            const double wall = mean(r.wallMs), mae = mean(r.mae);
+            summary << fmt::format("{},{},{},{:.3f},{:.3f},{:.6g},{:.4f},{:.6g},{},{},{}x{},{},{}\n", loaded->name, r.method,
+                                   r.spp, wall, median(r.wallMs), mae, mae / std::max(refMean, 1e-12), refMean,
+                                   r.wallMs.size(), r.mae.size(), frame.width, frame.height, o.referenceSpp, o.bounces);
+            const std::string row = fmt::format("| {} | {} | {:.1f} | {:.4g} | {:.1f} % |\n", loaded->name, r.label(), wall,
+                                                mae, 100.0 * mae / std::max(refMean, 1e-12));
+            table += row;
+            std::printf("%s", row.c_str());
+        }
+        std::fflush(stdout);
+        summary.flush();
+        frames.flush();
+    }
+    std::ofstream(out / "table.md") << table;
+    std::printf("\nwrote %s, %s and %s; chart: python3 tools/plot_flythrough.py %s\n", (out / "summary.csv").c_str(),
+                (out / "frames.csv").c_str(), (out / "table.md").c_str(), (out / "summary.csv").c_str());
+    return 0;
+}
+
+}  // namespace
+
+void addBenchFlythroughCommand(CLI::App& bench, int& exitCode) {
+    auto* cmd = bench.add_subcommand(
+        "flythrough", "Indirect light on a moving camera: irradiance cache vs path-traced bounces at equal wall time");
+    auto o = std::make_shared<FlythroughOptions>();
+    cmd->add_option("worlds", o->worlds, "Worlds, each with worlds/paths/<world>_flythrough.toml")->capture_default_str();
+    cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
+    cmd->add_option("--frames", o->frames, "Frames of each path to play (0 = all)")->capture_default_str();
+    cmd->add_option("--warmup", o->warmup, "Frames played before measuring (the cache fills)")->capture_default_str();
+    cmd->add_option("--reference-every", o->referenceEvery, "Compare with the reference every K-th measured frame")
+        ->capture_default_str();
+    cmd->add_option("--reference-spp", o->referenceSpp, "Reference samples per pixel (with and without bounces)")
+        ->capture_default_str();
+    cmd->add_option("--path-spp", o->pathSpp, "Path-traced indirect: paths per pixel per frame, one point each")
+        ->delimiter(',')
+        ->capture_default_str();
+    cmd->add_option("--bounces", o->bounces, "Bounces of the reference, the cache and the paths")->capture_default_str();
+    cmd->add_option("-o,--output", o->output, "Output folder (summary.csv, frames.csv, table.md)")->capture_default_str();
+    cmd->callback([o, &exitCode] { exitCode = runFlythroughBench(*o); });
+}
+
+}  // namespace vox
