@@ -152,7 +152,9 @@ CacheFrameLists IrradianceCacheDirectory::beginFrame(std::span<const CacheKey> v
         if (s.key.set == shared::CACHE_SET_DYNAMIC) {
             cls = 1;
         } else if (s.traced < work.phases) {
-            cls = 0;
+            // Invalidated by an edit and not updated since: as urgent as a new entry; its later
+            // tracing updates converge like any other (they still trace, at twice the cost).
+            cls = s.traced == 0 ? 0 : 3;
             cost = 2 * update;
         } else if (s.reset || near(s.key.voxel)) {
             cls = 2;

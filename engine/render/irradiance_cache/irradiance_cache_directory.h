@@ -32,12 +32,14 @@ std::uint32_t cacheKeyHash(const CacheKey& key);
 
 // How a frame's rays are spent. Visible entries are taken in this order, the most stale first
 // within a class, while the budget lasts:
-//   0. new static entries and those an edit invalidated: they trace S directions of their own
-//      through the static world per update until all K are cached (twice an update's rays);
-//      they take at most half the budget while others wait, then what is left;
+//   0. new static entries and those an edit invalidated, for their first update; they take at
+//      most half the budget while others wait, then what is left. A static entry traces S
+//      directions of its own through the static world per update (twice an update's rays)
+//      until all K are cached, K / S updates;
 //   1. dynamic entries (moving objects' surroundings);
 //   2. static entries near a moving object, and every entry once after the lights changed;
-//   3. static entries still converging (fewer than `convergedAfter` updates since a reset);
+//   3. static entries still converging (fewer than `convergedAfter` updates since a reset, or
+//      still tracing);
 //   4. converged static entries not updated for `refreshFrames` frames.
 // Without a budget (rayBudget 0) every visible entry is updated every frame.
 struct CacheWork {
