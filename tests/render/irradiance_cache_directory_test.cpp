@@ -93,8 +93,8 @@ TEST(IrradianceCacheDirectory, InvalidationReachesOnlyEntriesWithinTheRayLength)
     EXPECT_EQ(lists.trace.size(), 28u);
 }
 
-// The ray budget: never exceeded; new entries first but with at most half of it while others
-// wait; each (re)trace spreads over K / S updates; converged entries refresh only now and then.
+// The ray budget: never exceeded; dynamic entries first with at most half of it, then new
+// entries; each (re)trace spreads over K / S updates; converged entries refresh only now and then.
 TEST(IrradianceCacheDirectory, RayBudgetIsSpentByPriorityAndNeverExceeded) {
     IrradianceCacheDirectory dir(1000);
     CacheWork work;
@@ -104,17 +104,21 @@ TEST(IrradianceCacheDirectory, RayBudgetIsSpentByPriorityAndNeverExceeded) {
     work.refreshFrames = 10;
     auto first = dir.beginFrame(row(0, 100), 0.0, 0.3f, work);
     EXPECT_LE(first.rays, work.rayBudget);
-    EXPECT_EQ(first.update.size(), 20u);  // all new: twice the rays each, and nobody else waiting
+    EXPECT_EQ(first.update.size(), 20u);  // all new: twice the rays each
     EXPECT_EQ(first.waiting, 80u);
     EXPECT_EQ(dir.liveEntries(), 20u) << "keys the budget leaves out get no slot yet";
 
-    // Dynamic entries join: new static entries get at most half of the budget, dynamic the rest.
+    // Dynamic entries join: they come first, up to half the budget (50 here would want 4800
+    // rays: 20 fit), then new static entries before the 20 still tracing.
     std::vector<CacheKey> keys = row(0, 100);
-    auto dynamic = row(0, 10, shared::CACHE_SET_DYNAMIC);
+    auto dynamic = row(0, 50, shared::CACHE_SET_DYNAMIC);
     keys.insert(keys.end(), dynamic.begin(), dynamic.end());
     auto second = dir.beginFrame(keys, 0.1, 0.3f, work);
     EXPECT_LE(second.rays, work.rayBudget);
-    EXPECT_EQ(second.update.size() - second.staticUpdates, 10u) << "every dynamic entry";
+    EXPECT_EQ(second.update.size() - second.staticUpdates, 20u) << "dynamic entries: half the budget";
+    EXPECT_EQ(second.staticUpdates, 10u);
+    for (std::uint32_t i = 0; i < second.staticUpdates; ++i)
+        EXPECT_GE(dir.entry(second.update[i]).voxel.x, 20) << "new keys before entries already traced once";
     EXPECT_EQ(second.trace.size(), second.staticUpdates);
 
     // Run until nothing waits: every entry is then traced (2 phases) and converged (3 updates).

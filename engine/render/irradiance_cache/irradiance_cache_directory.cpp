@@ -176,7 +176,8 @@ CacheFrameLists IrradianceCacheDirectory::beginFrame(std::span<const CacheKey> v
         return a.order != b.order ? a.order < b.order : a.key < b.key;
     });
 
-    // Spend the budget: class 0 up to half of it, the others, then class 0 again with the rest.
+    // Spend the budget: dynamic entries up to half of it (so new keys cannot starve a moving
+    // object), new keys, then the rest in order.
     const std::uint64_t budget = work.rayBudget == 0 ? ~0ull : work.rayBudget;
     std::vector<bool> chosen(candidates.size(), false);
     std::uint64_t spent = 0;
@@ -185,11 +186,10 @@ CacheFrameLists IrradianceCacheDirectory::beginFrame(std::span<const CacheKey> v
         chosen[i] = true;
         spent += candidates[i].cost;
     };
-    for (std::size_t i = 0; i < candidates.size() && candidates[i].cls() == 0; ++i) take(i, budget / 2);
     for (std::size_t i = 0; i < candidates.size(); ++i) {
-        if (candidates[i].cls() != 0) take(i, budget);
+        if (candidates[i].cls() == 1) take(i, budget / 2);
     }
-    for (std::size_t i = 0; i < candidates.size() && candidates[i].cls() == 0; ++i) take(i, budget);
+    for (std::size_t i = 0; i < candidates.size(); ++i) take(i, budget);
 
     // Slots for the chosen fresh keys, evicting if the memory budget is full.
     std::size_t wanted = 0;

@@ -32,11 +32,12 @@ std::uint32_t cacheKeyHash(const CacheKey& key);
 
 // How a frame's rays are spent. Visible entries are taken in this order, the most stale first
 // within a class, while the budget lasts:
-//   0. new static entries and those an edit invalidated, for their first update; they take at
-//      most half the budget while others wait, then what is left. A static entry traces S
-//      directions of its own through the static world per update (twice an update's rays)
-//      until all K are cached, K / S updates;
-//   1. dynamic entries (moving objects' surroundings);
+//   1. dynamic entries (moving objects' surroundings), up to half the budget, first;
+//   0. new static entries and those an edit invalidated, for their first update: on a moving
+//      camera every pixel should find an entry. A static entry traces S directions of its own
+//      through the static world per update (twice an update's rays) until all K are cached,
+//      K / S updates;
+//   1. the dynamic entries left over;
 //   2. static entries near a moving object, and every entry once after the lights changed;
 //   3. static entries still converging (fewer than `convergedAfter` updates since a reset, or
 //      still tracing);
