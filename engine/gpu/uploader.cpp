@@ -1,5 +1,6 @@
 #include "gpu/uploader.h"
 
+#include <algorithm>
 #include <bit>
 #include <cstring>
 
@@ -9,14 +10,16 @@
 
 namespace engine::gpu {
 
-Uploader::Uploader(Context& ctx) : mCtx(ctx) {}
+Uploader::Uploader(Context& ctx, std::uint64_t chunkBytes) : mCtx(ctx), mChunkBytes(chunkBytes) {}
 
 void Uploader::write(const Buffer& dst, std::uint64_t offset, const void* data, std::uint64_t bytes) {
     if (bytes == 0) return;
     CHECK_MSG(offset + bytes <= dst.size(), "upload past the end of %s", dst.name().c_str());
+    if (!mData.empty() && mData.size() + bytes > mChunkBytes) sendChunk();
     std::uint64_t at = mData.size();
     mData.resize(at + bytes);
     std::memcpy(mData.data() + at, data, bytes);
+    mPeakQueued = std::max<std::uint64_t>(mPeakQueued, mData.size());
     std::vector<VkBufferCopy>& copies = mCopies[&dst];
     // Merge with the previous region when both source and destination continue it.
     if (!copies.empty() && copies.back().srcOffset + copies.back().size == at &&
@@ -37,16 +40,33 @@ UploadStats Uploader::record(CommandList& cmd) {
         mStaging = Buffer(mCtx, BufferKind::Staging, std::bit_ceil(std::max<std::uint64_t>(mData.size(), 1 << 16)),
                           "upload.staging");
     }
-    mStaging.write(mData.data(), mData.size());
+    copyQueued(cmd, mStaging, stats);
+    return stats;
+}
+
+void Uploader::copyQueued(CommandList& cmd, Buffer& staging, UploadStats& stats) {
+    staging.write(mData.data(), mData.size());
     for (auto& [dst, copies] : mCopies) {
-        cmd.copyBuffer(mStaging, *dst, copies);
+        cmd.copyBuffer(staging, *dst, copies);
         stats.regions += copies.size();
     }
-    stats.bytes = mData.size();
+    stats.bytes += mData.size();
     cmd.barrier();
     mData.clear();
     mCopies.clear();
-    return stats;
+}
+
+void Uploader::sendChunk() {
+    if (!mChunkStaging.valid() || mChunkStaging.size() < mData.size()) {
+        mChunkStaging = Buffer(mCtx, BufferKind::Staging, std::bit_ceil(std::max<std::uint64_t>(mData.size(), 1 << 16)),
+                               "upload.chunkStaging");
+    }
+    CommandList cmd(mCtx);
+    cmd.begin();
+    UploadStats ignored;
+    copyQueued(cmd, mChunkStaging, ignored);
+    cmd.submitAndWait();
+    ++mChunksSent;
 }
 
 }  // namespace engine::gpu

@@ -2,7 +2,11 @@
 // a full re-upload gives.
 #include <gtest/gtest.h>
 
+#include <cstring>
+
+#include "gpu/command_list.h"
 #include "gpu/gpu_test_setup.h"
+#include "gpu/uploader.h"
 #include "world/random_worlds.h"
 
 using namespace engine::world;
@@ -104,4 +108,34 @@ TEST_F(Upload, CollapsingAndReusingBricksStaysConsistent) {
         fresh.render(scene, camera, smallFrame(), kPreview);
         expectSameImages(incremental, fresh.readback());
     }
+}
+
+// A whole new world is one burst of uploads (gigabytes for a large terrain). Queued whole, the
+// host held a second copy of it plus a staging buffer as large: an 8192 x 256 x 8192 terrain
+// peaked at 8.1 GB. Sent ahead in chunks, the host copy stays within one chunk, and what arrives
+// is the same.
+TEST_F(Upload, ALargeBurstIsSentInBoundedChunksAndArrivesWhole) {
+    engine::gpu::Context& ctx = gpu_testing::context();
+    constexpr std::uint64_t kChunk = 64 << 10;
+    constexpr std::uint64_t kBytes = 1 << 20;
+    engine::gpu::Uploader uploader(ctx, kChunk);
+    engine::gpu::Buffer target(ctx, engine::gpu::BufferKind::Storage, kBytes, "test.target");
+    engine::gpu::Buffer readback(ctx, engine::gpu::BufferKind::Readback, kBytes, "test.readback");
+    std::vector<std::uint32_t> data(kBytes / 4);
+    for (std::size_t i = 0; i < data.size(); ++i) data[i] = std::uint32_t(i * 2654435761u);
+    // In pieces of 3 KiB (not a divisor of the chunk), written out of order.
+    constexpr std::uint64_t kPiece = 3 << 10;
+    for (std::uint64_t at = 0; at < kBytes; at += 2 * kPiece)
+        uploader.write(target, at, reinterpret_cast<const std::uint8_t*>(data.data()) + at, std::min(kPiece, kBytes - at));
+    for (std::uint64_t at = kPiece; at < kBytes; at += 2 * kPiece)
+        uploader.write(target, at, reinterpret_cast<const std::uint8_t*>(data.data()) + at, std::min(kPiece, kBytes - at));
+    engine::gpu::CommandList cmd(ctx);
+    cmd.begin();
+    uploader.record(cmd);
+    cmd.copyBuffer(target, readback, {{0, 0, kBytes}});
+    cmd.submitAndWait();
+
+    EXPECT_LE(uploader.peakQueuedBytes(), kChunk);
+    EXPECT_GE(uploader.chunksSent(), kBytes / kChunk - 1);
+    EXPECT_EQ(std::memcmp(readback.mapped(), data.data(), kBytes), 0);
 }
