@@ -40,7 +40,7 @@ WorldUploadStats GpuWorld::sync(const world::Scene& scene, gpu::Uploader& upload
     }
 
     ensurePages(grid.brickCapacity(), uploader);
-    if (grid.sizeInCells() != mSizeInCells) {
+    if (needsFullUpload(grid)) {
         // A new or resized world: upload the top grid and every live brick.
         stats.full = true;
         mSizeInCells = grid.sizeInCells();

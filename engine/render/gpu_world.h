@@ -45,6 +45,8 @@ public:
     // Queues the uploads that bring the GPU copy up to date with `scene`. Record the uploader
     // afterwards; the caller clears the grid's dirty marks once every consumer has seen them.
     WorldUploadStats sync(const world::Scene& scene, gpu::Uploader& uploader);
+    // The next sync uploads everything (a new or resized world).
+    bool needsFullUpload(const world::BrickGrid& grid) const { return grid.sizeInCells() != mSizeInCells; }
     // Forget the GPU state: the next sync uploads everything.
     void invalidate() {
         mSizeInCells = glm::ivec3(0);

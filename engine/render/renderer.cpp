@@ -3,9 +3,11 @@
 #include <chrono>
 #include <cstring>
 
+#include "core/memory_budget.h"
 #include "gpu/command_list.h"
 #include "gpu/presenter.h"
 #include "render/baselines/light_sampling_params.h"
+#include "render/memory_plan.h"
 #include "render/reference/reference_params.h"
 #include "render/restir/restir_params.h"
 
@@ -63,6 +65,12 @@ Renderer::Renderer(gpu::Context& ctx)
     mReferenceParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::ReferenceParams), "reference.params");
 }
 
+std::uint64_t Renderer::frameBytesPerPixel() {
+    // The buffers resize() makes, per pixel; keep the two in step.
+    return 3 * sizeof(shared::GBufferTexel) + 4 * sizeof(shared::Reservoir) + 3 * sizeof(glm::vec4) +
+           sizeof(std::uint32_t) + sizeof(glm::uvec4);
+}
+
 void Renderer::resize(std::uint32_t width, std::uint32_t height) {
     if (mSize == glm::uvec2(width, height)) return;
     mSize = {width, height};
@@ -94,6 +102,13 @@ void Renderer::resetHistory() {
 
 FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& camera, const FrameSettings& settings,
                              const lighting::LightingSettings& lighting, gpu::Presenter* presenter) {
+    if (mSize != glm::uvec2(settings.width, settings.height) || mWorld.needsFullUpload(scene.grid)) {
+        // About to allocate the frame's buffers or the world's GPU copy: refuse, with the plan,
+        // what would not fit, before allocating any of it.
+        const MemoryPlan plan = planMemory(scene, {settings.width, settings.height}, lighting);
+        if (Status s = checkMemoryPlan(plan, memoryBudgetBytes(), "world '" + scene.name + "'"); !s)
+            throw MemoryBudgetExceeded(s.error().message);
+    }
     resize(settings.width, settings.height);
     if (mPrevLighting && !(*mPrevLighting == lighting)) {
         mHistoryValid = false;

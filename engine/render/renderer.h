@@ -74,6 +74,8 @@ struct FrameImages {
 class Renderer {
 public:
     explicit Renderer(gpu::Context& ctx);
+    // Device bytes of the buffers the renderer keeps per pixel (G-buffers, reservoirs, radiance…).
+    static std::uint64_t frameBytesPerPixel();
 
     // `presenter`, when given, must have begun its frame (Presenter::beginFrame); the frame is
     // presented before this returns.

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "core/allocation_budget.h"
+#include "core/memory_budget.h"
 #include "scene/generator_registry.h"
 #include "scene/indirect_keys.h"
 #include "scene/path_table.h"
@@ -16,6 +18,26 @@
 namespace engine::scene {
 
 namespace {
+
+// Runs a generator within the memory budget less what the world holds already, so a world too
+// large for the machine fails with one line instead of aborting in an allocation. Importers
+// (vdb, vox) plan and budget their own reading.
+Status runWithinBudget(const GeneratorEntry& entry, const world::GeneratorRecord& record, world::Scene& scene) {
+    if (entry.type == "vdb" || entry.type == "vox") return entry.run(record.params, scene);
+    const std::uint64_t budget = memoryBudgetBytes();
+    const world::GridMemory m = scene.grid.memory();
+    const std::uint64_t held = m.topGridBytes + m.superGridBytes + m.brickPoolBytes + m.bookkeepingBytes;
+    const std::uint64_t left = budget > held ? budget - held : 0;
+    try {
+        AllocationBudget allocations(left, left);
+        AllocationBudget::LargeAllocations large;
+        return entry.run(record.params, scene);
+    } catch (const std::bad_alloc&) {
+        return makeError("generator '{}' needs more memory than the budget of {:.0f} MiB allows (the world held {:.0f} "
+                         "MiB before it): make the world smaller, or raise --memory-budget if the machine has the memory",
+                         entry.type, double(budget) / (1 << 20), double(held) / (1 << 20));
+    }
+}
 
 using world::Scene;
 
@@ -131,7 +153,7 @@ private:
         if (!entry)
             fail(g.node("type"), "unknown generator '{}' (known: {})", type, knownGeneratorTypes());
         world::GeneratorRecord record{type, entry->parse(g)};
-        if (Status s = entry->run(record.params, scene); !s) fail(&node, "{}", s.error().message);
+        if (Status s = runWithinBudget(*entry, record, scene); !s) fail(&node, "{}", s.error().message);
         records.push_back(std::move(record));
     }
 

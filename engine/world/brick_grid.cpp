@@ -117,8 +117,8 @@ std::uint64_t BrickGrid::solidVoxels() const {
 }
 
 void BrickGrid::reserveBricks(std::uint32_t n) {
-    mBrickVoxels.reserve(n);
-    mBrickMasks.reserve(n);
+    mBrickVoxels.reservePages(n);
+    mBrickMasks.reservePages(n);
     mBrickDirty.reserve(n);
 }
 

@@ -14,6 +14,7 @@
 #include <glm/glm.hpp>
 
 #include "world/brick.h"
+#include "world/paged_pool.h"
 
 namespace engine::world {
 
@@ -90,9 +91,7 @@ public:
     std::uint32_t liveBricks() const { return brickCapacity() - static_cast<std::uint32_t>(mFreeBricks.size()); }
     std::uint32_t homogeneousCells() const;  // solid homogeneous cells (no storage)
     std::uint64_t solidVoxels() const;
-    // Reserves pool capacity for n bricks in one allocation: an importer that knows an upper bound
-    // avoids the pool's doubling (a 3x transient while a vector regrows). Pages never written are
-    // never touched, so an over-estimate costs address space, not memory.
+    // Reserves bookkeeping for n bricks (the pool itself grows by pages and never regrows).
     void reserveBricks(std::uint32_t n);
 
     // Dirty tracking for the GPU mirror.
@@ -124,8 +123,9 @@ private:
     std::vector<std::uint8_t> mSuperCounts;   // non-empty cells per super cell (0..64)
     std::vector<std::uint8_t> mSuperDirty;
     std::vector<std::uint32_t> mDirtySuperCells;
-    std::vector<BrickVoxels> mBrickVoxels;
-    std::vector<BrickMask> mBrickMasks;
+    // Paged like the GPU's brick pool, so growth never copies the pool.
+    PagedPool<BrickVoxels, shared::BRICK_PAGE_SHIFT> mBrickVoxels;
+    PagedPool<BrickMask, shared::BRICK_PAGE_SHIFT> mBrickMasks;
     std::vector<std::uint32_t> mFreeBricks;
     std::vector<std::uint8_t> mBrickDirty;
     std::vector<std::uint32_t> mDirtyBricks;

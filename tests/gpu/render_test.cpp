@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "core/memory_budget.h"
 #include "gpu/gpu_test_setup.h"
 #include "io/image_io.h"
 #include "world/random_worlds.h"
@@ -86,4 +87,26 @@ TEST_F(Render, PngAndExrFilesRoundTrip) {
     EXPECT_FALSE(bad.ok());
     EXPECT_TRUE(std::filesystem::exists(dir / "frame.png"));
     std::filesystem::remove_all(dir);
+}
+
+// A world whose GPU copy and frame buffers would not fit in the memory budget is refused with the
+// plan before any of it is allocated, and the renderer stays usable for a world that fits.
+TEST_F(Render, AWorldOverTheMemoryBudgetIsRefusedBeforeItsGpuCopy) {
+    Scene scene = loadWorld("sandbox.toml");
+    const FrameSettings settings = frame(64, 48);
+    engine::render::Renderer renderer(gpu_testing::context());
+    engine::setMemoryBudgetBytes(1ull << 20);
+    EXPECT_THROW(
+        {
+            try {
+                renderer.render(scene, scene.camera(), settings, kPreview);
+            } catch (const engine::MemoryBudgetExceeded& e) {
+                EXPECT_NE(std::string(e.what()).find("over the memory budget of 1 MiB"), std::string::npos) << e.what();
+                throw;
+            }
+        },
+        engine::MemoryBudgetExceeded);
+    engine::setMemoryBudgetBytes(0);  // the default
+    auto result = renderer.render(scene, scene.camera(), settings, kPreview);
+    EXPECT_TRUE(result.upload.full);
 }

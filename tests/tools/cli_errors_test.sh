@@ -54,4 +54,15 @@ else
 fi
 expect_error "afile/w.vdb: cannot write: '.*afile' is not a folder" -- "$vox" import "$tmp/made/here/ok.vdb" -o "$tmp/afile/w.toml"
 
+# A world over the memory budget is refused with one line: while generating, and before the
+# renderer allocates its GPU copy; vox info prints the planned peak.
+printf '[world]\nsize = [4096, 64, 4096]\n[[material]]\nname = "a"\n[[generator]]\ntype = "terrain"\ntop = "a"\nsoil = "a"\nrock = "a"\nbase_height = 20\namplitude = 16\n' > "$tmp/wide.toml"
+expect_error "wide.toml:5: generator 'terrain' needs more memory than the budget of 64 MiB" -- "$vox" info "$tmp/wide.toml" --memory-budget 64
+expect_error "world 'untitled' needs [0-9]+ MiB to show .* over the memory budget of 500 MiB" -- "$vox" render "$tmp/wide.toml" --size 64x64 -o "$tmp/b.png" --memory-budget 500
+if "$vox" info cornell | grep -qE "^peak +[0-9]+ MiB to show at 1280x720: world"; then
+    echo "ok: vox info prints the planned peak"
+else
+    echo "FAIL: vox info prints no planned peak"; failures=$((failures + 1))
+fi
+
 [ $failures -eq 0 ] || { echo "$failures failure(s)"; exit 1; }

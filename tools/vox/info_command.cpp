@@ -2,6 +2,8 @@
 #include <filesystem>
 
 #include "commands.h"
+#include "core/memory_budget.h"
+#include "render/memory_plan.h"
 #include "scene/scene_lighting.h"
 #include "render/irradiance_cache/irradiance_cache.h"
 #include "io/vdb_info.h"
@@ -35,6 +37,11 @@ void addInfoCommand(CLI::App& app, int& exitCode) {
             std::printf("%s", engine::io::formatVdbFileInfo(*info).c_str());
             return;
         }
+        // --memory-budget applies to a world too.
+        if (auto options = toImportOptions(*vdbOptions); !options) {
+            exitCode = fail(options.error());
+            return;
+        }
         auto scene = loadWorld(*world);
         if (!scene) {
             exitCode = fail(scene.error());
@@ -56,6 +63,11 @@ void addInfoCommand(CLI::App& app, int& exitCode) {
             exitCode = fail(lighting.error());
             return;
         }
+        // The peak of showing it, at the sandbox's window size (vox render and capture scale the
+        // frame part with --size); the renderer refuses a world over the budget before allocating.
+        const engine::render::MemoryPlan plan = engine::render::planMemory(*scene, {1280, 720}, *lighting);
+        std::printf("peak         %s%s\n", engine::render::formatMemoryPlan(plan, engine::memoryBudgetBytes()).c_str(),
+                    plan.total() > engine::memoryBudgetBytes() ? " — OVER BUDGET" : "");
         const engine::lighting::IrradianceCacheSettings& cache = lighting->cache;
         const std::uint64_t perVoxel = engine::render::IrradianceCache::bytesPerSlot(cache);
         std::printf("indirect     %s; irradiance cache %.2f KiB per visible surface voxel (K=%u), budget %.0f MiB = %llu voxels\n",

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "core/log.h"
+#include "core/memory_budget.h"
 #include "core/symbol_table_pages.h"
 #include "io/vdb_import.h"
 #include "scene/scene_file.h"
@@ -62,6 +63,14 @@ int main(int argc, char** argv) {
     engine::releaseSymbolTablePages();
     CLI::App app{"vox: voxel engine tool (play, edit, render, capture, inspect, compare, import, export and benchmark brick-grid worlds)", "vox"};
     app.require_subcommand(1);
+    // Options of vox itself may also follow the subcommand (vox render --memory-budget 2048 …).
+    app.fallthrough();
+    app.add_option_function<double>(
+           "--memory-budget",
+           [](double mib) { engine::setMemoryBudgetBytes(std::uint64_t(mib * double(1 << 20))); },
+           "MiB a world may take to build and show (CPU grid, GPU copy, frame buffers); default 3/4 of "
+           "physical memory or of ulimit -v")
+        ->check(CLI::Range(64.0, double(1 << 24)));
     int exitCode = 0;
     vox::addStartCommand(app, exitCode);
     vox::addPlayCommand(app, exitCode);
@@ -84,6 +93,13 @@ int main(int argc, char** argv) {
     vox::addBenchFlythroughCommand(*bench, exitCode);
     try {
         app.parse(argc, argv);
+    } catch (const engine::MemoryBudgetExceeded& e) {
+        std::fprintf(stderr, "vox: %s\n", e.what());
+        return 1;
+    } catch (const std::bad_alloc&) {
+        std::fprintf(stderr, "vox: out of memory (budget %.0f MiB): the world or the image is too large for this "
+                     "machine; make it smaller\n", double(engine::memoryBudgetBytes()) / (1 << 20));
+        return 1;
     } catch (const CLI::CallForHelp& e) {
         return app.exit(e);
     } catch (const CLI::CallForAllHelp& e) {

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "commands.h"
+#include "core/memory_budget.h"
 
 namespace vox {
 
@@ -17,7 +18,7 @@ void addVdbImportOptions(CLI::App& cmd, VdbCliOptions& o) {
     cmd.add_option("--offset", o.offset, "x,y,z: world voxel where source voxel (0,0,0) lands (default: auto)");
     cmd.add_option("--crop", o.crop, "x0,y0,z0,x1,y1,z1: import only this source index box (max exclusive)");
     cmd.add_option("--up", o.up, "Source up axis: y, z or auto (auto: z for Blender files)")->capture_default_str();
-    cmd.add_option("--memory-budget", o.memoryBudgetMiB, "Refuse imports estimated above this many MiB")
+    cmd.add_option("--memory-budget", o.memoryBudgetMiB, "MiB an import (and the world it makes) may take; refused above it (imports default to 4096)")
         ->capture_default_str();
 }
 
@@ -68,6 +69,8 @@ engine::Result<engine::io::VdbImportOptions> toImportOptions(const VdbCliOptions
     else return makeError("--up: expected y, z or auto, got '{}'", o.up);
     if (!(o.memoryBudgetMiB >= 1.0 && o.memoryBudgetMiB <= 1 << 24)) return makeError("--memory-budget: must be in 1..16777216 MiB");
     out.memoryBudgetBytes = std::uint64_t(o.memoryBudgetMiB * double(1 << 20));
+    // Given here, it is the process's budget too (the import's world is then shown or saved).
+    if (o.memoryBudgetMiB != double(engine::io::kDefaultVdbMemoryBudget >> 20)) engine::setMemoryBudgetBytes(out.memoryBudgetBytes);
     return out;
 }
 

@@ -1,0 +1,38 @@
+#include "core/memory_budget.h"
+
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+
+namespace engine {
+
+namespace {
+std::atomic<std::uint64_t> gBudget{0};  // 0: not set
+}
+
+std::uint64_t physicalMemoryBytes() {
+    const long pages = ::sysconf(_SC_PHYS_PAGES);
+    const long pageSize = ::sysconf(_SC_PAGE_SIZE);
+    if (pages <= 0 || pageSize <= 0) return 4ull << 30;  // unknown: assume a small machine
+    return std::uint64_t(pages) * std::uint64_t(pageSize);
+}
+
+std::uint64_t defaultMemoryBudgetBytes() {
+    std::uint64_t limit = physicalMemoryBytes();
+    rlimit as{};
+    // The address-space limit also pays for code, thread stacks and the Vulkan driver's own
+    // reservations; three quarters leaves room for them.
+    if (::getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY) limit = std::min<std::uint64_t>(limit, as.rlim_cur);
+    return limit / 4 * 3;
+}
+
+std::uint64_t memoryBudgetBytes() {
+    const std::uint64_t set = gBudget.load(std::memory_order_relaxed);
+    return set ? set : defaultMemoryBudgetBytes();
+}
+
+void setMemoryBudgetBytes(std::uint64_t bytes) { gBudget.store(bytes, std::memory_order_relaxed); }
+
+}  // namespace engine
