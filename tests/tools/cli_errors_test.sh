@@ -52,6 +52,6 @@ if "$vox" export cornell -o "$tmp/made/here/ok.vdb" >/dev/null && [ -s "$tmp/mad
 else
     echo "FAIL: export -o into a new folder"; failures=$((failures + 1))
 fi
-expect_error "afile/w.vdb: cannot write: '.*afile' is not a folder" -- "$vox" import "$tmp/made/here/ok.vdb" -o "$tmp/afile/w.toml"
+expect_error "afile/w.toml: cannot write: '.*afile' is not a folder" -- "$vox" import "$tmp/made/here/ok.vdb" -o "$tmp/afile/w.toml"
 
 [ $failures -eq 0 ] || { echo "$failures failure(s)"; exit 1; }
