@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <array>
@@ -158,6 +159,9 @@ Status AtomicFile::open(const fs::path& target) {
         mTemporary.clear();
         return makeError("{}: cannot create: {}", target.string(), std::strerror(error));
     }
+    // A replaced file keeps its permissions (a private save stays private).
+    struct stat previous {};
+    if (::stat(target.c_str(), &previous) == 0 && S_ISREG(previous.st_mode)) (void)::fchmod(mFd, previous.st_mode & 07777);
     return {};
 }
 

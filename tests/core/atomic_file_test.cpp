@@ -101,6 +101,15 @@ TEST(AtomicFile, AFailureAtAnyWriteOrTheFsyncKeepsThePreviousFile) {
     EXPECT_EQ(bytesOf(file), big);
 }
 
+TEST(AtomicFile, AReplacedFileKeepsItsPermissions) {
+    Scratch dir;
+    const fs::path file = dir / "private.toml";
+    ASSERT_TRUE(engine::writeFileAtomically(file, "a").ok());
+    fs::permissions(file, fs::perms::owner_read | fs::perms::owner_write);
+    ASSERT_TRUE(engine::writeFileAtomically(file, "b").ok());
+    EXPECT_EQ(fs::status(file).permissions() & fs::perms::all, fs::perms::owner_read | fs::perms::owner_write);
+}
+
 TEST(AtomicFile, AnOutputPathThatIsAFolderIsRefusedWithoutSuccess) {
     Scratch dir;
     const fs::path folder = dir / "out.png";

@@ -109,6 +109,12 @@ if one_error "$tmp/log" "frame_00001.png" &&
 else
     fail "capture on a full disk"; diff <(snapshot "$tmp/cap") <(echo "$before")
 fi
+# Four frames of two operations each, then the CSV: after:8 fails the CSV, which stays as it was.
+"${cap[@]}" --exposure 3 >/dev/null 2>&1 || fail "capture"
+before=$(snapshot "$tmp/cap")
+VOX_FAIL_WRITES=after:8 "${cap[@]}" >"$tmp/log" 2>&1 && fail "capture (CSV) on a full disk exited 0"
+one_error "$tmp/log" "capture.csv" && [ "$(snapshot "$tmp/cap" | grep capture.csv)" = "$(grep capture.csv <<<"$before")" ] &&
+    echo "ok: capture CSV: $(grep '^vox' "$tmp/log")" || fail "capture.csv changed"
 ls -A "$tmp/cap" | grep -q 'tmp-' && fail "capture left a temporary: $(ls -A "$tmp/cap")"
 
 # 5. Two captures into one folder: the second refuses, naming the first's process. First a
