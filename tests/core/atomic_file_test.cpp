@@ -110,6 +110,32 @@ TEST(AtomicFile, AReplacedFileKeepsItsPermissions) {
     EXPECT_EQ(fs::status(file).permissions() & fs::perms::all, fs::perms::owner_read | fs::perms::owner_write);
 }
 
+// A writer that only takes a path (ffmpeg): its file is fsynced (checked) and renamed; a failed
+// writer or fsync leaves the previous file and no temporary.
+TEST(AtomicFile, APathWriterIsCheckedAndRenamedLikeAnyOther) {
+    Scratch dir;
+    const fs::path file = dir / "capture.mp4";
+    ASSERT_TRUE(engine::writeFileAtomically(file, "previous").ok());
+    auto writer = [](const fs::path& temp) -> engine::Status {
+        std::ofstream(temp, std::ios::binary | std::ios::trunc) << "new video";
+        return {};
+    };
+    engine::failWritesAfter(0);  // the fsync
+    engine::Status s = engine::replaceFileAtomically(file, writer);
+    engine::failWritesAfter(std::nullopt);
+    ASSERT_FALSE(s.ok());
+    EXPECT_EQ(s.error().message, file.string() + ": cannot flush to disk: No space left on device");
+    EXPECT_EQ(bytesOf(file), "previous");
+    EXPECT_EQ(filesIn(dir.path()), 1u);
+    s = engine::replaceFileAtomically(file, [](const fs::path&) -> engine::Status { return engine::makeError("ffmpeg failed"); });
+    EXPECT_FALSE(s.ok());
+    EXPECT_EQ(bytesOf(file), "previous");
+    EXPECT_EQ(filesIn(dir.path()), 1u);
+    ASSERT_TRUE(engine::replaceFileAtomically(file, writer).ok());
+    EXPECT_EQ(bytesOf(file), "new video");
+    EXPECT_EQ(filesIn(dir.path()), 1u);
+}
+
 TEST(AtomicFile, AnOutputPathThatIsAFolderIsRefusedWithoutSuccess) {
     Scratch dir;
     const fs::path folder = dir / "out.png";

@@ -116,6 +116,15 @@ VOX_FAIL_WRITES=after:8 "${cap[@]}" >"$tmp/log" 2>&1 && fail "capture (CSV) on a
 one_error "$tmp/log" "capture.csv" && [ "$(snapshot "$tmp/cap" | grep capture.csv)" = "$(grep capture.csv <<<"$before")" ] &&
     echo "ok: capture CSV: $(grep '^vox' "$tmp/log")" || fail "capture.csv changed"
 ls -A "$tmp/cap" | grep -q 'tmp-' && fail "capture left a temporary: $(ls -A "$tmp/cap")"
+# The MP4 (ffmpeg writes the temporary; its fsync is checked): frames, CSV, sheet, then the MP4.
+if command -v ffmpeg >/dev/null 2>&1; then
+    vcap=("$vox" capture "$tmp/tiny.toml" --out "$tmp/vcap" --size 32x24 --method preview --warmup 0)
+    "${vcap[@]}" >/dev/null 2>&1 || fail "capture with video"
+    cp "$tmp/vcap/capture.mp4" "$tmp/mp4.old"
+    VOX_FAIL_WRITES=after:12 "${vcap[@]}" --exposure 3 >"$tmp/log" 2>&1 && fail "capture (MP4) on a full disk exited 0"
+    one_error "$tmp/log" "capture.mp4" && cmp -s "$tmp/vcap/capture.mp4" "$tmp/mp4.old" && ! ls -A "$tmp/vcap" | grep -q 'tmp-' &&
+        echo "ok: capture MP4: $(grep '^vox' "$tmp/log")" || fail "capture.mp4 changed or a temporary was left"
+fi
 
 # 5. Two captures into one folder: the second refuses, naming the first's process. First a
 # holder that surely runs: a record lock on all of .lock, as a whole capture takes it.
