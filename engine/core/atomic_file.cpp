@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <cerrno>
@@ -47,12 +48,18 @@ bool injectedFailure() {
 // ---- stale temporaries ----
 constexpr std::string_view kTempMarker = ".tmp-";
 
-// The process id in a temporary's name (`.NAME.tmp-PID` or the older `NAME.tmp-PID`), or 0.
+// The process id in a temporary's name, or 0: `.NAME.tmp-PID`, or the older `NAME.tmp-PID` when
+// NAME ends in an extension the engine writes (so a user's "notes.tmp-2023" is not taken).
 pid_t temporaryOwner(const std::string& name) {
     auto at = name.rfind(kTempMarker);
     if (at == std::string::npos || at == 0) return 0;
     std::string digits = name.substr(at + kTempMarker.size());
     if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) return 0;
+    if (name.front() != '.') {
+        const std::string ext = fs::path(name.substr(0, at)).extension().string();
+        constexpr std::array<std::string_view, 8> kOurs = {".png", ".exr", ".vdb", ".toml", ".csv", ".json", ".md", ".mp4"};
+        if (std::find(kOurs.begin(), kOurs.end(), ext) == kOurs.end()) return 0;
+    }
     return pid_t(std::stol(digits));
 }
 

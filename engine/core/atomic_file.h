@@ -82,8 +82,9 @@ Status replaceFileAtomically(const std::filesystem::path& target,
 
 // `.NAME.tmp-PID` for `target`, in the target's folder.
 std::filesystem::path temporaryPathFor(const std::filesystem::path& target);
-// Removes temporaries (`.NAME.tmp-PID`, and the older `NAME.tmp-PID`) whose process is no
-// longer alive from `folder`; returns how many. AtomicFile::open calls it once per folder.
+// Removes temporaries (`.NAME.tmp-PID`, and the older `NAME.tmp-PID` for the extensions the
+// engine writes) whose process is no longer alive from `folder`; returns how many.
+// AtomicFile::open calls it once per folder and process, scene/world_pair.h on every save.
 std::size_t removeStaleTemporaries(const std::filesystem::path& folder);
 
 // Failure injection for tests: after `operations` more successful writes/fsyncs (counted over

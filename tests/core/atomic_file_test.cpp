@@ -156,13 +156,15 @@ TEST(AtomicFile, TemporariesOfDeadProcessesAreRemoved) {
     const fs::path live = dir / ".c.png.tmp-1";  // init is alive
     const fs::path mine = dir / (".d.png.tmp-" + std::to_string(::getpid()));
     const fs::path notOurs = dir / "notes.tmp-draft";
-    for (const fs::path& p : {stale, staleOldStyle, live, mine, notOurs}) std::ofstream(p) << "partial";
+    const fs::path usersFile = dir / ("notes.txt.tmp-" + std::to_string(dead));  // not an extension we write
+    for (const fs::path& p : {stale, staleOldStyle, live, mine, notOurs, usersFile}) std::ofstream(p) << "partial";
     EXPECT_EQ(engine::removeStaleTemporaries(dir.path()), 2u);
     EXPECT_FALSE(fs::exists(stale));
     EXPECT_FALSE(fs::exists(staleOldStyle));
     EXPECT_TRUE(fs::exists(live));
     EXPECT_TRUE(fs::exists(mine));
     EXPECT_TRUE(fs::exists(notOurs));
+    EXPECT_TRUE(fs::exists(usersFile));
 }
 
 TEST(AtomicFile, TheFirstWriteIntoAFolderRemovesStaleTemporaries) {

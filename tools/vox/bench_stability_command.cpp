@@ -398,11 +398,12 @@ int runStability(const StabilityOptions& o) {
         // inside amplified 1000x.
         const float scale = std::max(outsideMax, 1e-6f);
         const auto [w, h] = std::pair{c.frame.width, c.frame.height};
-        for (engine::Status s : {engine::io::writePng(o.output + "/thin_wall_outside_indirect.png", w, h, indirectImage(outdoor, scale)),
-                                 engine::io::writePng(o.output + "/thin_wall_inside_indirect.png", w, h, indirectImage(in, scale)),
-                                 engine::io::writePng(o.output + "/thin_wall_inside_indirect_x1000.png", w, h,
-                                                      indirectImage(in, scale / 1000.0f))})
-            if (!s) return fail(s.error());
+        const engine::Status pictures[] = {
+            engine::io::writePng(o.output + "/thin_wall_outside_indirect.png", w, h, indirectImage(outdoor, scale)),
+            engine::io::writePng(o.output + "/thin_wall_inside_indirect.png", w, h, indirectImage(in, scale)),
+            engine::io::writePng(o.output + "/thin_wall_inside_indirect_x1000.png", w, h, indirectImage(in, scale / 1000.0f))};
+        for (const engine::Status& written : pictures)
+            if (!written) return fail(written.error());
     }
     {   // Lights removed while reservoirs point at them.
         Scene s = simpleScene({64, 32, 32});
