@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 #include <imgui.h>
 
+#include "core/atomic_file.h"
 #include "game/autosave.h"
 #include "game/camera_controller.h"
 #include "game/edit_tools.h"
@@ -98,8 +99,11 @@ private:
     UndoHistory mUndo;
     Autosave mAutosave;
     Hud mHud;
+    // The edit log is a journal: appended and flushed line by line so it survives a crash, and
+    // checked at exit. The frame log is an output like any other, written atomically at exit.
     std::ofstream mEditLog;
-    std::ofstream mFrameLog;
+    engine::AtomicFile mFrameLogFile;
+    std::ostream* mFrameLog = nullptr;
 
     std::uint64_t mFrame = 0;
     double mTime = 0.0;  // seconds: the script clock, or wall clock since start
@@ -182,11 +186,11 @@ engine::Status Sandbox::init() {
         mEditLog << "# vox play edit log: world " << mWorldPath.string() << "\n";
     }
     if (!mOptions.frameLogPath.empty()) {
-        mFrameLog.open(mOptions.frameLogPath);
-        if (!mFrameLog) return engine::makeError("{}: cannot write the frame log", mOptions.frameLogPath);
+        if (engine::Status s = mFrameLogFile.open(mOptions.frameLogPath); !s) return s;
+        mFrameLog = &mFrameLogFile.stream();
         // wall: the whole loop iteration (input, HUD, edits, render + present, script actions);
         // render_call: Renderer::render alone; gpu: its passes' GPU time, present included.
-        mFrameLog << "frame,wall_ms,render_call_ms,gpu_ms,present_gpu_ms,render_width,render_height\n";
+        *mFrameLog << "frame,wall_ms,render_call_ms,gpu_ms,present_gpu_ms,render_width,render_height\n";
     }
 
     WindowOptions windowOptions;
@@ -241,11 +245,22 @@ int Sandbox::run() {
     }
     mLastFrameStart = std::chrono::steady_clock::now();
     while (!mQuit) frame();
+    int exitCode = 0;
+    if (mFrameLog) {
+        if (engine::Status c = mFrameLogFile.commit(); !c) {
+            std::fprintf(stderr, "vox play: %s\n", c.error().message.c_str());
+            exitCode = 1;
+        }
+    }
+    if (mEditLog.is_open() && !mEditLog.flush()) {
+        std::fprintf(stderr, "vox play: %s: cannot write the edit log (disk full?)\n", mOptions.editLogPath.c_str());
+        exitCode = 1;
+    }
     if (mCtx && mCtx->validationErrors() > 0) {
         std::fprintf(stderr, "vox play: %u Vulkan validation error(s)\n", mCtx->validationErrors());
         return 1;
     }
-    return 0;
+    return exitCode;
 }
 
 void Sandbox::frame() {
@@ -356,7 +371,7 @@ void Sandbox::frame() {
     afterFrame(result, presented);
     if (mFrameLog && presented) {
         const double wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-        mFrameLog << fmt::format("{},{:.3f},{:.3f},{:.3f},{:.3f},{},{}\n", mFrame, wallMs, renderCallMs,
+        *mFrameLog << fmt::format("{},{:.3f},{:.3f},{:.3f},{:.3f},{},{}\n", mFrame, wallMs, renderCallMs,
                                  result.totalMs(), result.passMsOf("present"), renderedSize.x, renderedSize.y);
     }
     ++mFrame;

@@ -7,11 +7,8 @@
 // encodings included: the exporter writes homogeneous cells as tiles and bricks as leaves) and
 // palette for palette (the scene file lists it in order; the import merges the .vdb's by name).
 //
-// Saves are atomic as a pair. The payload goes to a new file, `STEM.N.vdb` (N one more than
-// any before), which the exporter writes to a temporary name, flushes and renames; then the
-// scene file is replaced the same way, and that rename is the commit. A crash or error at any
-// point leaves the previous scene file naming the previous payload, both intact; payloads no
-// scene file names are removed by the next successful save.
+// Saves are atomic as a pair (scene/world_pair.h): a crash or error at any point leaves the
+// previous scene file naming the previous payload, both intact.
 #pragma once
 
 #include <filesystem>

@@ -1,15 +1,16 @@
 #include "io/image_io.h"
 
 #include <cstring>
-#include <functional>
-#include <system_error>
-#include <unistd.h>
-#include <fcntl.h>
+#include <stdexcept>
+#include <string>
+
+#include "core/atomic_file.h"
 
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfInputFile.h>
+#include <ImfIO.h>
 #include <ImfOutputFile.h>
 
 #define STB_IMAGE_WRITE_IMPLEMENTATION
@@ -24,39 +25,37 @@ namespace engine::io {
 
 namespace fs = std::filesystem;
 
-Status writeAtomically(const fs::path& path, const std::function<Status(const fs::path&)>& write) {
-    std::error_code ec;
-    const fs::path folder = path.parent_path().empty() ? fs::path(".") : path.parent_path();
-    if (!fs::is_directory(folder, ec))
-        return makeError("{}: cannot write: '{}' is not a folder", path.string(), folder.string());
-    fs::path temp = path;
-    temp += ".tmp-" + std::to_string(::getpid());
-    Status s = write(temp);
-    if (!s) {
-        fs::remove(temp, ec);
-        return s;
+namespace {
+
+// OpenEXR's output stream over an AtomicFile: OpenEXR writes the line-offset table last, by
+// seeking back, so the file needs tell and seek; a failed write throws, which OpenEXR passes on.
+class AtomicExrStream final : public Imf::OStream {
+public:
+    explicit AtomicExrStream(AtomicFile& file) : Imf::OStream(file.target().c_str()), mFile(file) {}
+    void write(const char c[], int n) override { check(mFile.write(c, std::size_t(n))); }
+    std::uint64_t tellp() override { return mFile.tell(); }
+    void seekp(std::uint64_t pos) override { check(mFile.seek(pos)); }
+
+private:
+    static void check(const Status& s) {
+        if (!s) throw std::runtime_error(s.error().message);
     }
-    // Flush to disk before the rename so a crash cannot leave a renamed but empty file.
-    int fd = ::open(temp.c_str(), O_RDONLY);
-    if (fd >= 0) {
-        ::fsync(fd);
-        ::close(fd);
-    }
-    fs::rename(temp, path, ec);
-    if (ec) {
-        fs::remove(temp, ec);
-        return makeError("{}: cannot replace file: {}", path.string(), ec.message());
-    }
-    return {};
-}
+    AtomicFile& mFile;
+};
+
+}  // namespace
 
 Status writePng(const fs::path& path, std::uint32_t width, std::uint32_t height, std::span<const std::uint32_t> rgba8) {
     if (rgba8.size() != std::size_t(width) * height) return makeError("{}: image size mismatch", path.string());
-    return writeAtomically(path, [&](const fs::path& temp) -> Status {
-        if (!stbi_write_png(temp.c_str(), int(width), int(height), 4, rgba8.data(), int(width * 4)))
-            return makeError("{}: cannot write PNG", path.string());
-        return {};
-    });
+    // stb encodes into memory (its own file writer ignores fwrite and fclose errors); the
+    // checked writer puts the bytes on disk.
+    std::string png;
+    auto append = [](void* context, void* data, int size) {
+        static_cast<std::string*>(context)->append(static_cast<const char*>(data), std::size_t(size));
+    };
+    if (!stbi_write_png_to_func(append, &png, int(width), int(height), 4, rgba8.data(), int(width * 4)))
+        return makeError("{}: cannot encode PNG", path.string());
+    return writeFileAtomically(path, png);
 }
 
 Result<PngImage> readPng(const fs::path& path) {
@@ -74,12 +73,13 @@ Result<PngImage> readPng(const fs::path& path) {
 
 Status writeExr(const fs::path& path, std::uint32_t width, std::uint32_t height, std::span<const glm::vec4> linear) {
     if (linear.size() != std::size_t(width) * height) return makeError("{}: image size mismatch", path.string());
-    return writeAtomically(path, [&](const fs::path& temp) -> Status {
+    return writeFileAtomically(path, [&](AtomicFile& atomic) -> Status {
         try {
             Imf::Header header{int(width), int(height)};
             const char* names[] = {"R", "G", "B", "A"};
             for (const char* n : names) header.channels().insert(n, Imf::Channel(Imf::FLOAT));
-            Imf::OutputFile file(temp.c_str(), header);
+            AtomicExrStream stream(atomic);
+            Imf::OutputFile file(stream, header);
             Imf::FrameBuffer fb;
             char* base = const_cast<char*>(reinterpret_cast<const char*>(linear.data()));
             for (int c = 0; c < 4; ++c) {
@@ -89,6 +89,8 @@ Status writeExr(const fs::path& path, std::uint32_t width, std::uint32_t height,
             file.setFrameBuffer(fb);
             file.writePixels(int(height));
         } catch (const std::exception& e) {
+            // A failed write already names the path and the reason; anything else is OpenEXR's.
+            if (Status s = atomic.status(); !s) return s;
             return makeError("{}: cannot write EXR: {}", path.string(), e.what());
         }
         return {};

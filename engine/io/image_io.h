@@ -1,10 +1,9 @@
 // Image files: PNG (stb_image_write) for tonemapped frames, EXR (OpenEXR, 32-bit float RGBA) for
-// linear radiance. Both write atomically: a temporary file next to the target, then rename.
+// linear radiance. Both write through core/atomic_file.h: the previous file survives any failure.
 #pragma once
 
 #include <cstdint>
 #include <filesystem>
-#include <functional>
 #include <span>
 #include <vector>
 
@@ -31,9 +30,5 @@ struct ExrImage {
     std::vector<glm::vec4> pixels;
 };
 Result<ExrImage> readExr(const std::filesystem::path& path);
-
-// Runs `write(tempPath)` and renames the temporary over `path` only if it succeeded; the previous
-// file at `path` survives any failure.
-Status writeAtomically(const std::filesystem::path& path, const std::function<Status(const std::filesystem::path&)>& write);
 
 }  // namespace engine::io

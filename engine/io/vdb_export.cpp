@@ -1,12 +1,11 @@
 #include "io/vdb_export.h"
 
 #include <algorithm>
-#include <fstream>
 #include <functional>
 #include <memory>
 #include <optional>
 
-#include "io/image_io.h"
+#include "core/atomic_file.h"
 #include "io/vdb_layout.h"
 #include "io/vdb_reader.h"
 
@@ -324,15 +323,15 @@ Status exportVdb(const world::Scene& scene, const fs::path& path, const VdbExpor
     fileMetadata.insertMeta("creator", vdb::StringMetadata("voxengine"));
     vdb_layout::writeWorldMetadata(scene, fileMetadata);
 
-    Status written = writeAtomically(path, [&](const fs::path& temp) -> Status {
+    Status written = writeFileAtomically(path, [&](AtomicFile& file) -> Status {
         try {
-            std::ofstream os(temp, std::ios::out | std::ios::binary | std::ios::trunc);
-            if (!os) return makeError("{}: cannot create file", path.string());
+            std::ostream& os = file.stream();
             os.exceptions(std::ios::failbit | std::ios::badbit);
             StreamingVdbWriter().writeStreamed(os, fileMetadata, makers);
-            os.close();
+            os.flush();
         } catch (const std::ios_base::failure&) {
-            return makeError("{}: write failed (disk full or not writable?)", path.string());
+            if (Status s = file.status(); !s) return s;  // the write's own error: path and reason
+            return makeError("{}: cannot write VDB file", path.string());
         } catch (const std::exception& e) {
             return makeError("{}: cannot write VDB file: {}", path.string(), e.what());
         }

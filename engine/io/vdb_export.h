@@ -3,8 +3,8 @@
 // Streamed: no OpenVDB tree is built. Each grid's topology and leaf values are generated from the
 // brick grid cell by cell as the file is written (a homogeneous cell becomes one 8^3 tile, an
 // empty cell nothing, a brick one leaf), so exporting holds one leaf of values beyond the world.
-// The save is atomic: a temporary file beside the target, flushed, then renamed, so a failed
-// export leaves the previous file intact.
+// The save is atomic (core/atomic_file.h): a temporary file beside the target, every write
+// checked, fsynced, then renamed, so a failed export leaves the previous file intact.
 #pragma once
 
 #include <cstdint>

@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "core/atomic_file.h"
 #include "core/hash.h"
 #include "game/autosave.h"
 #include "game/world_store.h"
@@ -217,7 +218,7 @@ TEST(WorldStore, FailedPayloadWriteLeavesThePreviousSaveIntact) {
 
     // The exporter writes WORLD.2.vdb through a temporary file beside it; a folder in the way
     // makes that write fail (as a full disk or a read-only folder would).
-    fs::path blocker = dir.path() / fmt::format("world.2.vdb.tmp-{}", ::getpid());
+    fs::path blocker = engine::temporaryPathFor(dir.path() / "world.2.vdb");
     fs::create_directory(blocker);
     Scene second = makeScene(9);
     engine::Status s = game::makeWorldStore()->save(second, file);
@@ -255,11 +256,13 @@ TEST(WorldStore, ProcessDyingBetweenWriteAndRenameLeavesThePreviousSaveReadable)
     auto loaded = game::makeWorldStore()->load(file);
     ASSERT_TRUE(loaded.ok()) << loaded.error().message;
     EXPECT_TRUE(loaded->grid == first.grid);
-    // The dead save left its new payload and temporary file behind; the next save tidies the
-    // payload up and commits normally.
+    // The dead save left its new payload and temporary file behind; the next save tidies both
+    // up and commits normally.
     EXPECT_EQ(countFiles(dir.path(), ".vdb"), 2u);
     ASSERT_TRUE(game::makeWorldStore()->save(second, file).ok());
     EXPECT_EQ(countFiles(dir.path(), ".vdb"), 1u);
+    for (const auto& e : fs::directory_iterator(dir.path()))  // the dead process's temporary too
+        EXPECT_EQ(e.path().filename().string().find(".tmp-"), std::string::npos) << e.path();
     auto after = game::makeWorldStore()->load(file);
     ASSERT_TRUE(after.ok());
     EXPECT_TRUE(after->grid == second.grid);
@@ -399,4 +402,40 @@ TEST(WorldStore, HostileWorldNamesSaveInsideTheSavesFolder) {
     }
     EXPECT_EQ(game::defaultSavePath("dragon city"), std::filesystem::path("saves/dragon city.toml"));
     EXPECT_EQ(game::defaultSavePath(std::string(300, 'a')).filename().string().size(), 64u + 5u);
+}
+
+// A save whose scene file path is a folder says so and writes no payload.
+TEST(WorldStore, ASaveOverAFolderSaysSoAndLeavesNoPayload) {
+    TempDir dir;
+    fs::create_directory(dir.path() / "world.toml");
+    engine::Status s = game::makeWorldStore()->save(makeScene(6), dir.path() / "world.toml");
+    ASSERT_FALSE(s.ok());
+    EXPECT_EQ(s.error().message, (dir.path() / "world.toml").string() + " is a folder; give a file name to write");
+    EXPECT_EQ(countFiles(dir.path(), ".vdb"), 0u);
+}
+
+// A full disk at each write and fsync of a save in turn: the previous save (scene file and
+// payload) stays byte-identical and loads; no new payload is left.
+TEST(WorldStore, AFullDiskAtAnyStepOfASaveKeepsThePreviousSave) {
+    TempDir dir;
+    const fs::path file = dir.path() / "world.toml";
+    Scene first = makeScene(10), second = makeScene(11);
+    ASSERT_TRUE(game::makeWorldStore()->save(first, file).ok());
+    const std::string sceneBefore = bytesOf(file), payloadBefore = bytesOf(dir.path() / "world.1.vdb");
+    int failures = 0;
+    for (std::uint64_t n = 0; n < 400; ++n) {
+        engine::failWritesAfter(n);
+        engine::Status s = game::makeWorldStore()->save(second, file);
+        engine::failWritesAfter(std::nullopt);
+        if (s.ok()) break;
+        ++failures;
+        EXPECT_NE(s.error().message.find("No space left on device"), std::string::npos) << s.error().message;
+        ASSERT_EQ(bytesOf(file), sceneBefore) << "operation " << n;
+        ASSERT_EQ(bytesOf(dir.path() / "world.1.vdb"), payloadBefore) << "operation " << n;
+        ASSERT_EQ(std::distance(fs::directory_iterator(dir.path()), fs::directory_iterator()), 2) << "operation " << n;
+    }
+    EXPECT_GE(failures, 3);
+    auto loaded = game::makeWorldStore()->load(file);
+    ASSERT_TRUE(loaded.ok()) << loaded.error().message;
+    expectSameWorld(second, *loaded, "after the disk had room again");
 }

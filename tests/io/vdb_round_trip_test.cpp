@@ -6,6 +6,7 @@
 
 #include <fstream>
 
+#include "core/atomic_file.h"
 #include "io/vdb_export.h"
 #include "io/vdb_import.h"
 #include "vdb_test_util.h"
@@ -147,7 +148,7 @@ TEST(VdbRoundTrip, FailedExportLeavesThePreviousFileIntact) {
     const fs::path file = dir / "keep.vdb";
     std::ofstream(file) << "previous contents";
     // Block the temporary file's name with a directory, so the write fails before the rename.
-    fs::create_directory(fs::path(file.string() + ".tmp-" + std::to_string(::getpid())));
+    fs::create_directory(engine::temporaryPathFor(file));
     Status s = io::exportVdb(*scene, file);
     ASSERT_FALSE(s.ok());
     EXPECT_TRUE(vox_test::isOneLineNamingFile(s.error().message, file));

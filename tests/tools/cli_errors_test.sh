@@ -52,7 +52,7 @@ if "$vox" export cornell -o "$tmp/made/here/ok.vdb" >/dev/null && [ -s "$tmp/mad
 else
     echo "FAIL: export -o into a new folder"; failures=$((failures + 1))
 fi
-expect_error "afile/w.vdb: cannot write: '.*afile' is not a folder" -- "$vox" import "$tmp/made/here/ok.vdb" -o "$tmp/afile/w.toml"
+expect_error "afile/w.toml: cannot write: '.*afile' is not a folder" -- "$vox" import "$tmp/made/here/ok.vdb" -o "$tmp/afile/w.toml"
 
 # A world over the memory budget is refused with one line: while generating, and before the
 # renderer allocates its GPU copy; vox info prints the planned peak.

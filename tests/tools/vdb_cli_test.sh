@@ -99,9 +99,16 @@ expect_error "no such file" "$tmp/missing.vdb" -- "$vox" import "$tmp/missing.vd
 [ -e "$tmp/out.toml" ] && fail "a failed import wrote $tmp/out.toml"
 
 # A good import: a scene file plus its payload, which loads, describes and renders.
-expect_error "would overwrite the input" "$tmp/fog.vdb" -- "$vox" import "$tmp/fog.vdb" -o "$tmp/fog.toml"
-if out=$("$vox" import "$tmp/fog.vdb" -o "$tmp/world.toml" 2>&1) && [ -s "$tmp/world.toml" ] && [ -s "$tmp/world.vdb" ]; then
-    echo "ok: import wrote world.toml and world.vdb"
+# The payload gets a new versioned name (scene/world_pair.h), so importing fog.vdb as fog.toml
+# leaves the input alone.
+cp "$tmp/fog.vdb" "$tmp/fog.vdb.orig"
+if "$vox" import "$tmp/fog.vdb" -o "$tmp/fog.toml" >/dev/null 2>&1 && cmp -s "$tmp/fog.vdb" "$tmp/fog.vdb.orig" && [ -s "$tmp/fog.1.vdb" ]; then
+    echo "ok: import fog.vdb -o fog.toml keeps its input and writes fog.1.vdb"
+else
+    fail "import fog.vdb -o fog.toml"
+fi
+if out=$("$vox" import "$tmp/fog.vdb" -o "$tmp/world.toml" 2>&1) && [ -s "$tmp/world.toml" ] && [ -s "$tmp/world.1.vdb" ]; then
+    echo "ok: import wrote world.toml and world.1.vdb"
 else
     fail "good import failed: $out"
 fi

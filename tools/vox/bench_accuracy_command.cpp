@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "core/atomic_file.h"
 #include "commands.h"
 #include "gpu/context.h"
 #include "metrics/image_metrics.h"
@@ -84,8 +85,12 @@ int runAccuracy(const AccuracyOptions& o) {
     fs.width = (*size).x;
     fs.height = (*size).y;
     std::filesystem::create_directories(o.output);
-    std::ofstream md(std::filesystem::path(o.output) / "accuracy_tables.md");
-    std::ofstream csv(std::filesystem::path(o.output) / "accuracy.csv");
+    engine::AtomicFile mdFile;
+    if (engine::Status s = mdFile.open(std::filesystem::path(o.output) / "accuracy_tables.md"); !s) return fail(s.error());
+    std::ostream& md = mdFile.stream();
+    engine::AtomicFile csvFile;
+    if (engine::Status s = csvFile.open(std::filesystem::path(o.output) / "accuracy.csv"); !s) return fail(s.error());
+    std::ostream& csv = csvFile.stream();
     csv << "scene,emitters,configuration,primary_ms,initial_ms,temporal_ms,spatial_ms,shade_ms,total_ms,mae,mse,mean_ratio\n";
     md << fmt::format("Measured on {} ({}) at {}x{}, {} frames per setting (the last {} measured), reference {} spp.\n\n",
                       gpu.info().name, gpu.info().driver, fs.width, fs.height, o.frames, o.frames - o.frames / 2,
@@ -124,7 +129,8 @@ int runAccuracy(const AccuracyOptions& o) {
         std::fprintf(stderr, "\n");
         md << "\n";
     }
-    if (!md || !csv) return fail(engine::makeError("{}: cannot write results", o.output));
+    if (engine::Status s = mdFile.commit(); !s) return fail(s.error());
+    if (engine::Status s = csvFile.commit(); !s) return fail(s.error());
     std::printf("wrote    %s/accuracy_tables.md and accuracy.csv\n", o.output.c_str());
     return 0;
 }

@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "core/atomic_file.h"
 #include "commands.h"
 #include "gpu/context.h"
 #include "render/renderer.h"
@@ -162,7 +163,7 @@ int runCacheBench(const CacheBenchOptions& o) {
         json += "]\n}\n";
     }
     std::filesystem::create_directories(std::filesystem::path(o.output).parent_path());
-    std::ofstream(o.output) << json;
+    if (engine::Status s = engine::writeFileAtomically(o.output, json); !s) return fail(s.error());
     std::printf("\nwrote %s\n", o.output.c_str());
     return 0;
 }

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "core/atomic_file.h"
 #include "commands.h"
 #include "core/hash.h"
 #include "lighting/emitter_list.h"
@@ -87,12 +88,14 @@ int runEmitterBench(const EmitterBenchOptions& o) {
     std::filesystem::path out(o.output);
     std::error_code ec;
     if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path(), ec);
-    std::ofstream json(out);
+    engine::AtomicFile jsonFile;
+    if (engine::Status s = jsonFile.open(out); !s) return fail(s.error());
+    std::ostream& json = jsonFile.stream();
     json << "{\"world\": \"" << scene->name << "\", \"emissive_voxels\": " << scene->emissiveVoxels()
          << ", \"emitters\": " << list.aliveCount() << ", \"full_rebuild_ms\": " << fullMs
          << ", \"incremental_update_ms\": " << inc << ", \"speedup\": " << fullMs / inc
          << ", \"alias_rebuild_ms\": " << median(alias) << ", \"edits\": " << o.edits << "}\n";
-    if (!json) return fail(engine::makeError("{}: cannot write results", out.string()));
+    if (engine::Status s = jsonFile.commit(); !s) return fail(s.error());
     std::printf("wrote    %s\n", out.string().c_str());
     return 0;
 }

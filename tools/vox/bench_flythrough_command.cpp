@@ -20,6 +20,7 @@
 
 #include <fmt/format.h>
 
+#include "core/atomic_file.h"
 #include "commands.h"
 #include "gpu/context.h"
 #include "metrics/image_metrics.h"
@@ -171,9 +172,13 @@ int runFlythroughBench(const FlythroughOptions& o) {
                 o.referenceEvery, o.warmup);
     std::fflush(stdout);
 
-    std::ofstream frames(out / "frames.csv");
+    engine::AtomicFile framesFile;
+    if (engine::Status s = framesFile.open(out / "frames.csv"); !s) return fail(s.error());
+    std::ostream& frames = framesFile.stream();
     frames << "scene,method,spp,frame,wall_ms,indirect_mae,reference_mean_abs\n";
-    std::ofstream summary(out / "summary.csv");
+    engine::AtomicFile summaryFile;
+    if (engine::Status s = summaryFile.open(out / "summary.csv"); !s) return fail(s.error());
+    std::ostream& summary = summaryFile.stream();
     summary << "scene,method,spp,wall_ms_mean,wall_ms_median,indirect_mae,relative_mae,reference_mean_abs,frames,"
                "reference_frames,size,reference_spp,bounces\n";
     std::string table = "| scene | method | wall ms/frame (mean) | indirect MAE | MAE / mean \\|indirect\\| |\n|---|---|---|---|---|\n";
@@ -264,10 +269,10 @@ int runFlythroughBench(const FlythroughOptions& o) {
             std::printf("%s", row.c_str());
         }
         std::fflush(stdout);
-        summary.flush();
-        frames.flush();
     }
-    std::ofstream(out / "table.md") << table;
+    if (engine::Status s = framesFile.commit(); !s) return fail(s.error());
+    if (engine::Status s = summaryFile.commit(); !s) return fail(s.error());
+    if (engine::Status s = engine::writeFileAtomically(out / "table.md", table); !s) return fail(s.error());
     std::printf("\nwrote %s, %s and %s; chart: python3 tools/plot_flythrough.py %s\n", (out / "summary.csv").c_str(),
                 (out / "frames.csv").c_str(), (out / "table.md").c_str(), (out / "summary.csv").c_str());
     return 0;

@@ -18,6 +18,7 @@
 
 #include <fmt/format.h>
 
+#include "core/atomic_file.h"
 #include "commands.h"
 #include "frame_rays.h"
 #include "gpu/context.h"
@@ -269,11 +270,7 @@ std::string topPasses(const ConfigResult& r) {
 }
 
 engine::Status writeFile(const fs::path& file, const std::string& text) {
-    std::ofstream out(file, std::ios::binary);
-    out << text;
-    out.close();
-    if (!out) return engine::makeError("{}: cannot write", file.string());
-    return {};
+    return engine::writeFileAtomically(file, text);
 }
 
 int runFrameBench(const FrameBenchOptions& o) {

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "core/atomic_file.h"
 #include "commands.h"
 #include "gpu/context.h"
 #include "metrics/image_metrics.h"
@@ -42,7 +43,9 @@ int runRestirBench(const RestirBenchOptions& o) {
     std::filesystem::path out(o.output);
     std::error_code ec;
     if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path(), ec);
-    std::ofstream json(out);
+    engine::AtomicFile jsonFile;
+    if (engine::Status s = jsonFile.open(out); !s) return fail(s.error());
+    std::ostream& json = jsonFile.stream();
     json << "{\"size\": [" << fs.width << ", " << fs.height << "], \"device\": \"" << gpu.info().name
          << "\", \"reference_spp\": " << o.referenceSpp << ", \"scenes\": [\n";
 
@@ -104,7 +107,7 @@ int runRestirBench(const RestirBenchOptions& o) {
              << ", \"mse_ratio_ris\": " << s.mse / r.mse << "}" << (w + 1 < o.worlds.size() ? "," : "") << "\n";
     }
     json << "]}\n";
-    if (!json) return fail(engine::makeError("{}: cannot write results", out.string()));
+    if (engine::Status s = jsonFile.commit(); !s) return fail(s.error());
     std::printf("\nratio = baseline MSE / ReSTIR MSE at equal GPU time per frame (higher is better for ReSTIR)\n");
     std::printf("wrote    %s\n", out.string().c_str());
     return 0;

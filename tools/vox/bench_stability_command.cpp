@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "core/atomic_file.h"
 #include "commands.h"
 #include "gpu/context.h"
 #include "io/image_io.h"
@@ -38,7 +39,7 @@ struct Context {
     engine::gpu::Context& gpu;
     FrameSettings frame;
     std::filesystem::path cache;
-    std::ofstream& curves;  // case,method,frame,mae
+    std::ostream& curves;  // case,method,frame,mae
     std::vector<std::string> rows;  // markdown table rows
 };
 
@@ -224,7 +225,9 @@ int runStability(const StabilityOptions& o) {
     if (!ctx) return fail(ctx.error());
     std::filesystem::path out(o.output);
     std::filesystem::create_directories(out);
-    std::ofstream curves(out / "response.csv");
+    engine::AtomicFile curvesFile;
+    if (engine::Status s = curvesFile.open(out / "response.csv"); !s) return fail(s.error());
+    std::ostream& curves = curvesFile.stream();
     curves << "case,method,frame,mae\n";
     Context c{**ctx, {}, out / "cache", curves, {}};
     c.frame.width = (*size).x;
@@ -395,9 +398,12 @@ int runStability(const StabilityOptions& o) {
         // inside amplified 1000x.
         const float scale = std::max(outsideMax, 1e-6f);
         const auto [w, h] = std::pair{c.frame.width, c.frame.height};
-        (void)engine::io::writePng(o.output + "/thin_wall_outside_indirect.png", w, h, indirectImage(outdoor, scale));
-        (void)engine::io::writePng(o.output + "/thin_wall_inside_indirect.png", w, h, indirectImage(in, scale));
-        (void)engine::io::writePng(o.output + "/thin_wall_inside_indirect_x1000.png", w, h, indirectImage(in, scale / 1000.0f));
+        const engine::Status pictures[] = {
+            engine::io::writePng(o.output + "/thin_wall_outside_indirect.png", w, h, indirectImage(outdoor, scale)),
+            engine::io::writePng(o.output + "/thin_wall_inside_indirect.png", w, h, indirectImage(in, scale)),
+            engine::io::writePng(o.output + "/thin_wall_inside_indirect_x1000.png", w, h, indirectImage(in, scale / 1000.0f))};
+        for (const engine::Status& written : pictures)
+            if (!written) return fail(written.error());
     }
     {   // Lights removed while reservoirs point at them.
         Scene s = simpleScene({64, 32, 32});
@@ -428,7 +434,9 @@ int runStability(const StabilityOptions& o) {
         MovingRun cacheN0 = movingRun(c, "fast object", fast, fastCamera, cacheLighting(0), true, 16, moving);
         const Scene parked = fastCrate(*thinWall, true);
         MovingRun still = movingRun(c, "parked object", parked, fastCamera, cacheLighting(5), true, 16, moving);
-        std::ofstream ghosting(out / "ghosting.csv");
+        engine::AtomicFile ghostingFile;
+        if (engine::Status s = ghostingFile.open(out / "ghosting.csv"); !s) return fail(s.error());
+        std::ostream& ghosting = ghostingFile.stream();
         ghosting << "case,method,frame,mae,mae_object\n";
         const double floor = mean(still.mae, 5), floorObject = mean(still.maeObject, 5);
         for (const auto& [method, run] : {std::pair{"cache N=5 (5^3 neighbourhood)", &cacheN5},
@@ -442,14 +450,17 @@ int runStability(const StabilityOptions& o) {
             std::printf("fast object %-32s MAE %.3e (%.2fx parked), on the object %.3e (%.2fx parked)\n", method, m, m / floor,
                         mo, mo / floorObject);
         }
+        if (engine::Status s = ghostingFile.commit(); !s) return fail(s.error());
     }
 
-    std::ofstream md(out / "stability_table.md");
+    engine::AtomicFile mdFile;
+    if (engine::Status s = mdFile.open(out / "stability_table.md"); !s) return fail(s.error());
+    std::ostream& md = mdFile.stream();
     md << fmt::format("Measured on {} at {}x{}.\n\n| case | method | result |\n| --- | --- | --- |\n", c.gpu.info().name,
                       c.frame.width, c.frame.height);
     for (const std::string& row : c.rows) md << row << "\n";
-    if (!md || !curves) return fail(engine::makeError("{}: cannot write results", out.string()));
-    curves.close();
+    if (engine::Status s = mdFile.commit(); !s) return fail(s.error());
+    if (engine::Status s = curvesFile.commit(); !s) return fail(s.error());
     std::string plot = fmt::format("/usr/bin/python3 {}/tools/plot_stability.py {} {}", VOX_SOURCE_DIR,
                                    (out / "response.csv").string(), out.string());
     if (std::system(plot.c_str()) != 0) std::fprintf(stderr, "note: chart not drawn (needs python3-matplotlib)\n");

@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "core/atomic_file.h"
 #include "commands.h"
 #include "gpu/context.h"
 #include "lighting/emitter_list.h"
@@ -163,7 +164,9 @@ int runSweep(const SweepOptions& o) {
     fs.height = (*size).y;
     std::filesystem::path out(o.output);
     std::filesystem::create_directories(out);
-    std::ofstream csv(out / "sweep.csv");
+    engine::AtomicFile csvFile;
+    if (engine::Status s = csvFile.open(out / "sweep.csv"); !s) return fail(s.error());
+    std::ostream& csv = csvFile.stream();
     // reference_bounces 0: the point's error is against the direct-light reference; more: against
     // the path tracer with that many bounces (the indirect series, charted apart).
     csv << "scene,method,setting,emitters,total_ms,primary_ms,lighting_ms,mae,mse,rmae,indirect,reference_bounces,mean_ratio\n";
@@ -204,7 +207,7 @@ int runSweep(const SweepOptions& o) {
         }
     }
     std::fprintf(stderr, "\n");
-    if (!csv) return fail(engine::makeError("{}: cannot write results", (out / "sweep.csv").string()));
+    if (engine::Status s = csvFile.commit(); !s) return fail(s.error());
     std::printf("wrote    %s\n", (out / "sweep.csv").string().c_str());
     // The chart needs Debian's matplotlib; without it the CSV is still complete.
     std::string plot = fmt::format("/usr/bin/python3 {}/tools/plot_sweep.py {} {}", VOX_SOURCE_DIR,

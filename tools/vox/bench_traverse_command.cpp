@@ -9,6 +9,7 @@
 #include <fstream>
 #include <thread>
 
+#include "core/atomic_file.h"
 #include "classic_dda.h"
 #include "commands.h"
 #include "gpu/command_list.h"
@@ -276,7 +277,9 @@ int runBench(const BenchOptions& o) {
     std::filesystem::path out(o.output);
     std::error_code ec;
     if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path(), ec);
-    std::ofstream json(out);
+    engine::AtomicFile jsonFile;
+    if (engine::Status s = jsonFile.open(out); !s) return fail(s.error());
+    std::ostream& json = jsonFile.stream();
     json << "{\n  \"world\": \"" << scene->name << "\", \"size\": [" << fs.width << ", " << fs.height
          << "], \"device\": \"" << dev.name << "\", \"driver\": \"" << dev.driver << "\", \"cpu_threads\": " << threads
          << ",\n  \"primary_rays\": " << primary.size() << ", \"shadow_rays\": " << shadows.size()
@@ -291,7 +294,7 @@ int runBench(const BenchOptions& o) {
              << ", \"steps_per_ray\": " << r.stepsPerRay() << ", \"lane_steps\": " << r.laneSteps << "}" << (i + 1 < results.size() ? "," : "") << "\n";
     }
     json << "  ]\n}\n";
-    if (!json) return fail(engine::makeError("{}: cannot write results", out.string()));
+    if (engine::Status s = jsonFile.commit(); !s) return fail(s.error());
     std::printf("wrote    %s\n", out.string().c_str());
     return 0;
 }

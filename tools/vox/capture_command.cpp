@@ -9,12 +9,13 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <sstream>
 #include <vector>
 
 #include "commands.h"
+#include "core/atomic_file.h"
+#include "core/folder_lock.h"
 #include "ffmpeg_video.h"
 #include "frame_rays.h"
 #include "gpu/context.h"
@@ -114,13 +115,7 @@ engine::Status writeCsv(const fs::path& file, const std::vector<FrameRow>& rows)
                            r.wallMs);
     }
     std::string text = csv.str();
-    return engine::io::writeAtomically(file, [&](const fs::path& temp) -> engine::Status {
-        std::ofstream o(temp, std::ios::binary);
-        o << text;
-        o.close();
-        if (!o) return engine::makeError("{}: cannot write", file.string());
-        return {};
-    });
+    return engine::writeFileAtomically(file, text);
 }
 
 int runCapture(const CaptureOptions& o) {
@@ -159,6 +154,10 @@ int runCapture(const CaptureOptions& o) {
         return fail(engine::makeError("--out {}: cannot create folder: {}", o.out, ec.message()));
     const bool whole = first == 0 && last == count - 1;
     const std::string suffix = whole ? "" : fmt::format("_{:05}-{:05}", first, last);
+    // Two runs writing the same frames into one folder would mix them (and the MP4 of one would
+    // hold the other's frames): each run claims its frames; slices with disjoint frames share it.
+    auto lock = engine::FolderLock::acquire(dir, "vox capture", first, std::uint64_t(last) - first + 1);
+    if (!lock) return fail(lock.error());
 
     engine::gpu::ContextOptions ctxOptions;
 #ifndef NDEBUG

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "core/atomic_file.h"
 #include "commands.h"
 #include "core/quoted_string.h"
 #include "io/image_io.h"
@@ -110,15 +111,7 @@ int runCompare(const CompareOptions& o) {
         std::error_code ec;
         std::filesystem::path out(o.json);
         if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path(), ec);
-        engine::Status s = engine::io::writeAtomically(
-            out, [&](const std::filesystem::path& temp) -> engine::Status {
-                std::ofstream file(temp, std::ios::binary);
-                file << text;
-                file.close();
-                if (!file) return engine::makeError("{}: cannot write", o.json);
-                return {};
-            });
-        if (!s) return fail(s.error());
+        if (engine::Status s = engine::writeFileAtomically(out, text); !s) return fail(s.error());
         std::printf("wrote      %s\n", o.json.c_str());
     }
     return 0;

@@ -9,7 +9,7 @@
 #include <sstream>
 #include <vector>
 
-#include "io/image_io.h"
+#include "core/atomic_file.h"
 
 extern char** environ;
 
@@ -31,7 +31,7 @@ std::optional<std::filesystem::path> findFfmpeg() {
 engine::Status encodeMp4(const std::filesystem::path& ffmpeg, const std::string& pattern,
                          std::uint32_t first, std::uint32_t count, double fps,
                          const std::filesystem::path& out) {
-    return engine::io::writeAtomically(
+    return engine::replaceFileAtomically(
         out, [&](const std::filesystem::path& temp) -> engine::Status {
             // yuv420p for players that know nothing else; it needs even sizes, hence the pad.
             // Arguments go straight to exec: no shell, so no quoting trouble with odd paths.

@@ -1,13 +1,14 @@
 #include <cstdio>
+#include <fmt/format.h>
 #include <filesystem>
 
 #include "commands.h"
 #include "io/vdb_export.h"
 #include "io/vdb_import.h"
-#include "io/image_io.h"
 #include "vdb_options.h"
 #include "scene/generators/vdb_keys.h"
 #include "scene/scene_file.h"
+#include "scene/world_pair.h"
 #include "world/world_info.h"
 
 namespace vox {
@@ -16,7 +17,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// WORLD.toml + WORLD.vdb: the scene file names the payload with a vdb generator, so the world
+// WORLD.toml + WORLD.N.vdb: the scene file names the payload with a vdb generator, so the world
 // stays editable as text (cameras, sky, more generators) while its voxels and palette live in
 // the exact, compact .vdb. With -o WORLD.vdb only the payload is written.
 int runImport(const std::string& input, const std::string& output, bool dryRun, const VdbCliOptions& cli) {
@@ -39,35 +40,28 @@ int runImport(const std::string& input, const std::string& output, bool dryRun, 
     if (output.empty()) return fail(engine::makeError("{}: give -o WORLD.toml or WORLD.vdb (or --dry-run)", input));
     if (ext != ".toml" && ext != ".vdb") return fail(engine::makeError("-o {}: the file must end in .toml or .vdb", output));
 
-    fs::path payload = out;
-    payload.replace_extension(".vdb");
-    std::error_code ec;
-    if (ext == ".toml" && fs::equivalent(payload, fs::path(input), ec))
-        return fail(engine::makeError("{}: -o {} would overwrite the input with its payload {}; choose another name",
-                                      input, output, payload.string()));
     engine::io::VdbImportReport report;
     auto scene = engine::io::importVdb(input, *options, &report);
     if (!scene) return fail(scene.error());
+    std::error_code ec;
     if (out.has_parent_path()) fs::create_directories(out.parent_path(), ec);  // like every output of vox
-    engine::Status s = engine::io::exportVdb(*scene, payload);
-    if (!s) return fail(s.error());
-    if (ext == ".toml") {
-        std::vector<engine::world::GeneratorRecord> generators{
-            engine::scene::vdbPayloadGenerator(payload.filename().string(), /*ids=*/false)};
-        std::string comment = fmt::format(
-            "Imported by `vox import` from {}.\nVoxels and palette live in {} (voxengine's VDB layout, docs/VDB.md);\n"
-            "a [[material]] defined here with the same name overrides the payload's.",
-            fs::path(input).filename().string(), payload.filename().string());
-        std::string text = engine::scene::sceneText(*scene, {.headerComment = comment, .generators = &generators});
-        s = engine::io::writeAtomically(out, [&](const fs::path& temp) -> engine::Status {
-            std::FILE* f = std::fopen(temp.c_str(), "wb");
-            if (!f) return engine::makeError("{}: cannot create file", output);
-            bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
-            ok &= std::fclose(f) == 0;
-            if (!ok) return engine::makeError("{}: write failed", output);
-            return {};
-        });
-        if (!s) return fail(s.error());
+    fs::path payload = out;
+    if (ext == ".vdb") {
+        if (engine::Status s = engine::io::exportVdb(*scene, payload); !s) return fail(s.error());
+    } else {
+        // Atomic as a pair (scene/world_pair.h): the payload gets a new name WORLD.N.vdb, so the
+        // input and the previous import stay intact until the scene file naming it is in place.
+        auto text = [&](const std::string& payloadName) {
+            payload = out.parent_path() / payloadName;
+            std::vector<engine::world::GeneratorRecord> generators{engine::scene::vdbPayloadGenerator(payloadName, /*ids=*/false)};
+            std::string comment = fmt::format(
+                "Imported by `vox import` from {}.\nVoxels and palette live in {} (voxengine's VDB layout, docs/VDB.md);\n"
+                "a [[material]] defined here with the same name overrides the payload's.",
+                fs::path(input).filename().string(), payloadName);
+            return engine::scene::sceneText(*scene, {.headerComment = comment, .generators = &generators});
+        };
+        if (engine::Status s = engine::scene::writeWorldPair(*scene, out, text, {.keep = {fs::path(input)}}); !s)
+            return fail(s.error());
     }
     std::printf("imported %s\n%s", input.c_str(), engine::io::formatVdbImportReport(report).c_str());
     engine::world::WorldInfo info = engine::world::describeWorld(*scene);
@@ -88,7 +82,7 @@ void addImportCommand(CLI::App& app, int& exitCode) {
     auto cli = std::make_shared<VdbCliOptions>();
     auto dryRun = std::make_shared<bool>(false);
     cmd->add_option("input", *input, "Input .vdb file")->required();
-    cmd->add_option("-o,--output", *output, "WORLD.toml (scene file + WORLD.vdb payload) or WORLD.vdb");
+    cmd->add_option("-o,--output", *output, "WORLD.toml (scene file + WORLD.N.vdb payload) or WORLD.vdb");
     cmd->add_flag("--dry-run", *dryRun, "Import and report (sizes, colour error, memory) without writing anything");
     addVdbImportOptions(*cmd, *cli);
     cmd->callback([=, &exitCode] { exitCode = runImport(*input, *output, *dryRun, *cli); });

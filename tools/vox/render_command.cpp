@@ -4,6 +4,7 @@
 #include <fstream>
 #include <vector>
 
+#include "core/atomic_file.h"
 #include "commands.h"
 #include "lighting_options.h"
 #include "gpu/context.h"
@@ -105,7 +106,9 @@ int runRender(const RenderOptions& o) {
                     static_cast<unsigned long long>(c.raysTraced), frame.cachePrepareMs);
     }
     if (!o.timings.empty()) {
-        std::ofstream json(o.timings);
+        engine::AtomicFile file;
+        if (engine::Status s = file.open(o.timings); !s) return fail(s.error());
+        std::ostream& json = file.stream();
         json << "{\"world\": \"" << scene->name << "\", \"lighting\": \"" << l.describe() << "\", \"size\": ["
              << settings.width << ", " << settings.height << "], \"emitters\": " << frame.emitters << ", \"frames\": [\n";
         for (std::size_t i = 0; i < results.size(); ++i) {
@@ -115,7 +118,7 @@ int runRender(const RenderOptions& o) {
             json << "}" << (i + 1 < results.size() ? "," : "") << "\n";
         }
         json << "]}\n";
-        if (!json) return fail(engine::makeError("{}: cannot write timings", o.timings));
+        if (engine::Status s = file.commit(); !s) return fail(s.error());
         std::printf("wrote    %s\n", o.timings.c_str());
     }
 
