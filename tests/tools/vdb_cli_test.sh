@@ -96,7 +96,39 @@ expect_error "rotated or sheared" "$tmp/rotated.vdb" -- "$vox" import "$tmp/rota
 expect_error "over the engine's limit" "$tmp/giant.vdb" -- "$vox" import "$tmp/giant.vdb" -o "$tmp/out.toml"
 expect_error "would need about [0-9.]+ MiB.*over the memory budget of 4.0 MiB" "$tmp/sphere.vdb" -- "$vox" import "$tmp/sphere.vdb" --memory-budget 4 -o "$tmp/out.toml"
 expect_error "no such file" "$tmp/missing.vdb" -- "$vox" import "$tmp/missing.vdb" -o "$tmp/out.toml"
+expect_error "no voxel of grid 'density' reaches the fog threshold 2: the largest density in it is 1 " "$tmp/fog.vdb" -- \
+    "$vox" import "$tmp/fog.vdb" --fog-threshold 2 -o "$tmp/out.toml"
 [ -e "$tmp/out.toml" ] && fail "a failed import wrote $tmp/out.toml"
+for size in 0 -1 nan; do
+    err=$("$vox" import "$tmp/fog.vdb" --voxel-size "$size" --dry-run 2>&1 >/dev/null); rc=$?
+    [ "$rc" -ge 1 ] && [ "$rc" -lt 128 ] && [ "$(grep -c . <<<"$err")" -eq 1 ] && grep -q -- "--voxel-size: must be a positive number" <<<"$err" \
+        && echo "ok: --voxel-size $size: $err" || fail "--voxel-size $size exited $rc: $err"
+done
+
+# Grid instances (OpenVDB writes no tree for them) and grids that share a name.
+"$samples" instances "$tmp/inst.vdb"
+info=$("$vox" info "$tmp/inst.vdb" 2>&1) && grep -q "'density_copy': float" <<<"$info" && ! grep -q corrupt <<<"$info" \
+    && echo "ok: info reads a file with a grid instance" || fail "info inst.vdb: $info"
+out=$("$vox" import "$tmp/inst.vdb" --grid density_copy --dry-run 2>&1) && grep -qE "imported +900 solid" <<<"$out" \
+    && echo "ok: the instance imports its parent's 900 voxels" || fail "import of the instance: $out"
+"$samples" duplicate-names "$tmp/dup.vdb"
+info=$("$vox" info "$tmp/dup.vdb" 2>&1) && grep -q "'density\[1\]': float" <<<"$info" \
+    && echo "ok: info names the second grid density[1]" || fail "info dup.vdb: $info"
+out=$("$vox" import "$tmp/dup.vdb" --grid 'density[1]' --dry-run 2>&1) && grep -qE "imported +27 solid" <<<"$out" \
+    && echo "ok: --grid 'density[1]' picks the second grid" || fail "import --grid density[1]: $out"
+
+# A scene file's vdb generator notes what it cuts off, as `vox import` does.
+cat > "$tmp/crop.toml" <<TOML
+[world]
+size = [16, 16, 16]
+[[generator]]
+type = "vdb"
+source = "fog.vdb"
+offset = [10, 0, 0]
+TOML
+err=$("$vox" info "$tmp/crop.toml" 2>&1 >/dev/null)
+grep -q "crop.toml: vdb generator, fog.vdb: part of the grid lands outside the world and is cut off" <<<"$err" \
+    && echo "ok: the vdb generator prints the crop note: $err" || fail "no crop note from the scene file's generator: $err"
 
 # A good import: a scene file plus its payload, which loads, describes and renders.
 expect_error "would overwrite the input" "$tmp/fog.vdb" -- "$vox" import "$tmp/fog.vdb" -o "$tmp/fog.toml"
