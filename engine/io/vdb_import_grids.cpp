@@ -144,7 +144,11 @@ Status selectShapeGrid(ImportState& im) {
     g.kind = *kindOf(*g.shapeHeader);
     const bool ownMaterials = entries[g.shapeIndex].name == vdb_layout::kMaterialGrid;
     if (g.voxengine && ownMaterials && g.shapeHeader->isType<vdb::Int32Grid>()) g.kind = Kind::VoxIds;
-    if (Status s = checkTransform(im, *g.shapeHeader); !s) return s;
+    // Our Z-up exports turn the transform a quarter about x; index space is still ours.
+    const bool ourZUp = g.voxengine && g.worldHeader.zUp &&
+                        g.shapeHeader->transform() == *vdb_layout::gridTransform(g.worldHeader.voxelSize, true);
+    if (!ourZUp)
+        if (Status s = checkTransform(im, *g.shapeHeader); !s) return s;
     g.shapeXform = g.shapeHeader->transformPtr();
     im.plan.grid = entries[g.shapeIndex].displayName;
     im.plan.gridType = g.shapeHeader->valueType();
