@@ -63,6 +63,9 @@ Status buildWorld(ImportState& im, world::Scene& scene, bool intoExisting) {
     if (Status s = fillSlabs(im, grid, marks, intoExisting); !s) return s;
     if (im.grids.kind == Kind::Fog && im.report.solidVoxels == 0) {
         // A fog threshold above the data: say so rather than write an empty world.
+        if (im.largestFogValue >= double(im.options.fogThreshold))
+            return makeError("{}: no voxel of grid '{}' at or above the fog threshold {:g} lands inside the world",
+                             im.file, im.plan.grid, im.options.fogThreshold);
         const bool everyVoxel = im.place.map.scale == glm::dvec3(1.0);
         return makeError("{}: no voxel of grid '{}' reaches the fog threshold {:g}: the largest density {} is {:g} "
                          "(lower --fog-threshold, fog_threshold in a scene file)",
