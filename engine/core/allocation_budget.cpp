@@ -19,6 +19,7 @@ std::atomic<std::int64_t> gPeak{0};
 std::atomic<std::uint64_t> gTotalLimit{0};
 std::atomic<std::uint64_t> gSingleLimit{0};
 std::atomic<std::uint64_t> gRefused{0};
+std::atomic<bool> gRefusedAsSingle{false};  // the first refusal was the per-allocation ceiling's
 std::atomic<bool> gSoft{false};  // inside a Headroom: the total may be exceeded
 
 void* allocate(std::size_t n, std::size_t align) {
@@ -26,10 +27,13 @@ void* allocate(std::size_t n, std::size_t align) {
     if (active) [[unlikely]] {
         std::int64_t used = gUsed.load(std::memory_order_relaxed);
         std::uint64_t after = used > 0 ? std::uint64_t(used) + n : n;
-        if (n > gSingleLimit.load(std::memory_order_relaxed) ||
-            (after > gTotalLimit.load(std::memory_order_relaxed) && !gSoft.load(std::memory_order_relaxed))) {
+        const bool single = n > gSingleLimit.load(std::memory_order_relaxed);
+        if (single || (after > gTotalLimit.load(std::memory_order_relaxed) && !gSoft.load(std::memory_order_relaxed))) {
             std::uint64_t none = 0;
-            gRefused.compare_exchange_strong(none, n ? n : 1);
+            // "Single" when the ceiling, not the budget, was the limit: a larger budget would not
+            // lift it (the ceiling equals the budget only when the budget is the smaller).
+            if (gRefused.compare_exchange_strong(none, n ? n : 1))
+                gRefusedAsSingle = single && gSingleLimit.load(std::memory_order_relaxed) < gTotalLimit.load(std::memory_order_relaxed);
             throw std::bad_alloc();
         }
     }
@@ -64,8 +68,10 @@ AllocationBudget::AllocationBudget(std::uint64_t totalBytes, std::uint64_t singl
     gUsed = 0;
     gPeak = 0;
     gRefused = 0;
+    gRefusedAsSingle = false;
     gTotalLimit = totalBytes;
     gSingleLimit = singleBytes < totalBytes ? singleBytes : totalBytes;
+    mSingle = gSingleLimit;
     gActive = true;
 }
 
@@ -76,6 +82,7 @@ AllocationBudget::~AllocationBudget() {
 
 bool AllocationBudget::exceeded() const { return gRefused.load() != 0; }
 std::uint64_t AllocationBudget::refusedBytes() const { return gRefused.load(); }
+bool AllocationBudget::refusedAsSingleRequest() const { return gRefused.load() != 0 && gRefusedAsSingle.load(); }
 std::uint64_t AllocationBudget::usedBytes() const {
     std::int64_t u = gUsed.load();
     return u > 0 ? std::uint64_t(u) : 0;

@@ -26,6 +26,10 @@ public:
     // True once a request was refused; the bad_alloc that followed came from the budget.
     bool exceeded() const;
     std::uint64_t refusedBytes() const;  // size of the first refused request
+    // True when that request was refused by the per-allocation ceiling (below the budget), which
+    // a larger budget would not lift.
+    bool refusedAsSingleRequest() const;
+    std::uint64_t singleBytes() const { return mSingle; }  // the per-allocation ceiling
     std::uint64_t usedBytes() const;     // net bytes allocated since the budget began
     std::uint64_t peakBytes() const;
     std::uint64_t totalBytes() const { return mTotal; }
@@ -66,6 +70,7 @@ public:
 
 private:
     std::uint64_t mTotal;
+    std::uint64_t mSingle;
 };
 
 }  // namespace engine

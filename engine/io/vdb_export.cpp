@@ -263,16 +263,24 @@ private:
 };
 
 template <typename GridT>
-std::shared_ptr<BrickGridAsVdb<GridT>> gridOf(const world::Scene& scene, const char* name,
+std::shared_ptr<BrickGridAsVdb<GridT>> gridOf(const world::Scene& scene, const char* name, bool zUp,
                                               typename BrickGridAsVdb<GridT>::ValueOf value) {
     auto grid = std::make_shared<BrickGridAsVdb<GridT>>(scene.grid, std::move(value));
     grid->setName(name);
-    grid->setTransform(vdb::math::Transform::createLinearTransform(double(scene.voxelSize)));
+    grid->setTransform(vdb_layout::gridTransform(double(scene.voxelSize), zUp));
     grid->setCreator("voxengine");
     return grid;
 }
 
 }  // namespace
+
+Result<VdbExportOptions> vdbExportOptionsFor(const std::string& tool) {
+    VdbExportOptions o;
+    o.densityGrid = true;
+    if (tool == "blender") o.zUp = true;  // Blender ignores vox:up_axis: the transform must say it
+    else if (tool != "houdini") return makeError("unknown tool '{}' (known: blender, houdini)", tool);
+    return o;
+}
 
 Status exportVdb(const world::Scene& scene, const fs::path& path, const VdbExportOptions& options,
                  VdbExportReport* report) {
@@ -283,8 +291,19 @@ Status exportVdb(const world::Scene& scene, const fs::path& path, const VdbExpor
 
     std::vector<StreamingVdbWriter::GridMaker> makers;
     VdbExportReport local;
+    if (options.densityGrid) {
+        // First, for tools that show or read "the first grid".
+        makers.push_back([&] {
+            auto grid = gridOf<vdb::FloatGrid>(scene, vdb_layout::kDensityGrid, options.zUp,
+                                               [](MaterialId) { return std::optional<float>(1.0f); });
+            grid->setGridClass(vdb::GRID_FOG_VOLUME);
+            grid->insertMeta("vox:role", vdb::StringMetadata("fog volume, 1 in solid voxels (for other tools)"));
+            return grid;
+        });
+        local.grids.push_back(vdb_layout::kDensityGrid);
+    }
     makers.push_back([&] {
-        auto grid = gridOf<vdb::Int32Grid>(scene, vdb_layout::kMaterialGrid,
+        auto grid = gridOf<vdb::Int32Grid>(scene, vdb_layout::kMaterialGrid, options.zUp,
                                            [](MaterialId m) { return std::optional<std::int32_t>(m); });
         grid->insertMeta("vox:role", vdb::StringMetadata("material index into the vox:material.* palette"));
         local.tiles = grid->tiles();
@@ -295,7 +314,7 @@ Status exportVdb(const world::Scene& scene, const fs::path& path, const VdbExpor
     local.grids.push_back(vdb_layout::kMaterialGrid);
     if (options.colourGrids) {
         makers.push_back([&] {
-            auto grid = gridOf<vdb::Vec3SGrid>(scene, vdb_layout::kAlbedoGrid, [&](MaterialId m) {
+            auto grid = gridOf<vdb::Vec3SGrid>(scene, vdb_layout::kAlbedoGrid, options.zUp, [&](MaterialId m) {
                 glm::vec3 a = palette[m].albedo;
                 return std::optional<vdb::Vec3s>(vdb::Vec3s(a.x, a.y, a.z));
             });
@@ -306,7 +325,7 @@ Status exportVdb(const world::Scene& scene, const fs::path& path, const VdbExpor
         local.grids.push_back(vdb_layout::kAlbedoGrid);
         if (anyEmissive) {
             makers.push_back([&] {
-                auto grid = gridOf<vdb::Vec3SGrid>(scene, vdb_layout::kEmissionGrid, [&](MaterialId m) {
+                auto grid = gridOf<vdb::Vec3SGrid>(scene, vdb_layout::kEmissionGrid, options.zUp, [&](MaterialId m) {
                     if (!palette[m].emissive()) return std::optional<vdb::Vec3s>();
                     glm::vec3 e = palette[m].emittedRadiance();
                     return std::optional<vdb::Vec3s>(vdb::Vec3s(e.x, e.y, e.z));
@@ -321,7 +340,7 @@ Status exportVdb(const world::Scene& scene, const fs::path& path, const VdbExpor
 
     vdb::MetaMap fileMetadata;
     fileMetadata.insertMeta("creator", vdb::StringMetadata("voxengine"));
-    vdb_layout::writeWorldMetadata(scene, fileMetadata);
+    vdb_layout::writeWorldMetadata(scene, fileMetadata, options.zUp);
 
     Status written = writeFileAtomically(path, [&](AtomicFile& file) -> Status {
         try {

@@ -20,7 +20,17 @@ namespace engine::io {
 struct VdbExportOptions {
     // Also write the albedo and emission grids (for other tools; import does not need them).
     bool colourGrids = true;
+    // Also write a float fog volume `density`, 1.0 in every solid voxel, first in the file: the
+    // grid Blender (Volume to Mesh, its viewport), vdb_render and pyopenvdb (which cannot read
+    // int32 grids) work with. Import ignores it.
+    bool densityGrid = false;
+    // Turn the grids' transform so +z is up (Blender); index space stays ours (vdb_layout.h).
+    bool zUp = false;
 };
+
+// Export settings for another tool, by name: "blender" (Z-up, density grid), "houdini" (Y-up,
+// density grid); an Error for an unknown name.
+Result<VdbExportOptions> vdbExportOptionsFor(const std::string& tool);
 
 struct VdbExportReport {
     std::vector<std::string> grids;

@@ -51,14 +51,27 @@ Status buildWorld(ImportState& im, world::Scene& scene, bool intoExisting) {
         // Cells that solid tiles fill whole are written here; the slabs read the rest.
         auto topology = makeSource(*im.grids.shapeHeader);
         topology->attach(im.reader.readTopology(im.grids.shapeIndex));
+        DirtyListBound dirty(grid);
         Status marked = markCells(im, *topology, marks, [&](glm::ivec3 c, int material) {
             grid.writeCellUniform(c, im.palette.remap[std::size_t(material)]);
             im.report.solidVoxels += world::kBrickVoxels;
+            dirty.noteWrite();
         });
         if (!marked) return marked;
     }
     grid.clearDirty();
     if (Status s = fillSlabs(im, grid, marks, intoExisting); !s) return s;
+    if (im.grids.kind == Kind::Fog && im.report.solidVoxels == 0) {
+        // A fog threshold above the data: say so rather than write an empty world.
+        if (im.largestFogValue >= double(im.options.fogThreshold))
+            return makeError("{}: no voxel of grid '{}' at or above the fog threshold {:g} lands inside the world",
+                             im.file, im.plan.grid, im.options.fogThreshold);
+        const bool everyVoxel = im.place.map.scale == glm::dvec3(1.0);
+        return makeError("{}: no voxel of grid '{}' reaches the fog threshold {:g}: the largest density {} is {:g} "
+                         "(lower --fog-threshold, fog_threshold in a scene file)",
+                         im.file, im.plan.grid, im.options.fogThreshold, everyVoxel ? "in it" : "sampled",
+                         im.largestFogValue);
+    }
 
     const ColourError& colourError = im.palette.colourError;
     im.report.colouredVoxels = colourError.count;

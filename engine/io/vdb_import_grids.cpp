@@ -55,7 +55,7 @@ Status findShapeGrid(ImportState& im) {
     const std::string& file = im.file;
     if (entries.empty()) return makeError("{}: the file holds no grids", file);
     auto describe = [&](std::size_t i, const vdb::GridBase* g, const char* state) {
-        return fmt::format("{} ({}{}{})", entries[i].name, g ? g->valueType() : entries[i].type, *state ? ", " : "",
+        return fmt::format("{} ({}{}{})", entries[i].displayName, g ? g->valueType() : entries[i].type, *state ? ", " : "",
                            state);
     };
     std::vector<vdb::GridBase::Ptr> headers(entries.size());
@@ -100,7 +100,7 @@ Status findShapeGrid(ImportState& im) {
         const int chosen = im.reader.find(o.grid);
         if (chosen < 0) {
             std::string names;
-            for (const auto& e : entries) names += (names.empty() ? "" : ", ") + e.name;
+            for (const auto& e : entries) names += (names.empty() ? "" : ", ") + e.displayName;
             return makeError("{}: no grid named '{}' (grids: {})", file, o.grid, names);
         }
         vdb::GridBase::Ptr g = header(std::size_t(chosen));
@@ -144,9 +144,13 @@ Status selectShapeGrid(ImportState& im) {
     g.kind = *kindOf(*g.shapeHeader);
     const bool ownMaterials = entries[g.shapeIndex].name == vdb_layout::kMaterialGrid;
     if (g.voxengine && ownMaterials && g.shapeHeader->isType<vdb::Int32Grid>()) g.kind = Kind::VoxIds;
-    if (Status s = checkTransform(im, *g.shapeHeader); !s) return s;
+    // Our Z-up exports turn the transform a quarter about x; index space is still ours.
+    const bool ourZUp = g.voxengine && g.worldHeader.zUp &&
+                        g.shapeHeader->transform() == *vdb_layout::gridTransform(g.worldHeader.voxelSize, true);
+    if (!ourZUp)
+        if (Status s = checkTransform(im, *g.shapeHeader); !s) return s;
     g.shapeXform = g.shapeHeader->transformPtr();
-    im.plan.grid = entries[g.shapeIndex].name;
+    im.plan.grid = entries[g.shapeIndex].displayName;
     im.plan.gridType = g.shapeHeader->valueType();
     im.plan.gridClass = vdb::GridBase::gridClassToString(g.shapeHeader->getGridClass());
     im.plan.kind = kindName(g.kind);
@@ -178,7 +182,7 @@ Status selectColourGrid(ImportState& im) {
         g.colourIndex = found;
         g.colourXform = h->transformPtr();
         g.sameXform = *g.colourXform == *g.shapeXform;
-        im.plan.colourGrid = entry.name;
+        im.plan.colourGrid = entry.displayName;
     } else if (!o.colourGrid.empty()) {
         return makeError("{}: colour grid '{}' has type {}, not vec3", im.file, o.colourGrid, h->valueType());
     }
@@ -214,7 +218,7 @@ Status selectMaterialRule(ImportState& im) {
             break;
         case MaterialRule::Colour: {
             const std::string& colours =
-                g.colourIndex >= 0 ? im.reader.grids()[std::size_t(g.colourIndex)].name : im.plan.grid;
+                g.colourIndex >= 0 ? im.reader.grids()[std::size_t(g.colourIndex)].displayName : im.plan.grid;
             im.plan.rule = fmt::format("colours of '{}' quantised to at most {} materials", colours, o.maxColours);
             break;
         }

@@ -41,7 +41,9 @@ glm::vec3 colourAt(const ImportState& im, glm::ivec3 t) {
 bool isSolid(const ImportState& im, const Sample& s) {
     switch (im.grids.kind) {
         case Kind::LevelSet: return s.scalar < 0.0;
-        case Kind::Fog: return s.active && s.scalar >= double(im.options.fogThreshold);
+        case Kind::Fog:
+            if (s.active) im.largestFogValue = std::max(im.largestFogValue, s.scalar);
+            return s.active && s.scalar >= double(im.options.fogThreshold);
         default: return s.active;
     }
 }

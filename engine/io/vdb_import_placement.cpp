@@ -44,24 +44,55 @@ std::string metaString(const vdb::MetaMap& m, const char* key) {
     return s ? s->value() : std::string();
 }
 
+// Why a file counts as Blender's (Z-up), or empty. Blender marks its files in several ways over
+// its versions, and Blender 2.8+ fluid caches (written by Mantaflow) not at all with `creator`:
+//  - `creator` naming Blender (file or grid), as its 2.7x smoke caches write;
+//  - file metadata under "blender/" (2.7x smoke caches: blender/smoke/resolution, ...);
+//  - Mantaflow's per-grid metadata `file_base_resolution` and `file_voxel_size` (2.8x-3.x caches);
+//  - Mantaflow's smoke grid names: a `density` grid beside `shadow`, `react` or `color_r`, which
+//    only Blender's smoke caches write (Houdini and EmberGen name theirs density, temperature,
+//    flame(s), fuel, vel).
+std::string blenderEvidence(ImportState& im) {
+    const vdb::MetaMap& file = im.reader.fileMetadata();
+    const vdb::GridBase& shape = *im.grids.shapeHeader;
+    for (const char* where : {"file", "grid"}) {
+        const std::string creator = metaString(where[0] == 'f' ? file : shape, "creator");
+        if (creator.find("Blender") != std::string::npos) return fmt::format("its {} creator is '{}'", where, creator);
+    }
+    for (auto it = file.beginMeta(); it != file.endMeta(); ++it)
+        if (it->first.rfind("blender/", 0) == 0) return fmt::format("it has Blender's metadata '{}'", it->first);
+    for (const char* key : {"file_base_resolution", "file_voxel_size"})
+        if (shape[key]) return fmt::format("it has Mantaflow's metadata '{}' (Blender's fluid cache)", key);
+    bool density = false;
+    std::string smokeGrid;
+    for (const VdbReader::Entry& e : im.reader.grids()) {
+        density |= e.name == "density";
+        if (e.name == "shadow" || e.name == "react" || e.name == "color_r") smokeGrid = e.name;
+    }
+    if (density && !smokeGrid.empty())
+        return fmt::format("its grids 'density' and '{}' are Blender's smoke cache's", smokeGrid);
+    return {};
+}
+
 }  // namespace
 
 Status orientAndScale(ImportState& im) {
     const VdbImportOptions& o = im.options;
     const ChosenGrids& g = im.grids;
     AxisMap& map = im.place.map;
-    const std::string creatorFile = metaString(im.reader.fileMetadata(), "creator");
-    const std::string creatorGrid = metaString(*g.shapeHeader, "creator");
     bool upZ = o.up == UpAxis::Z;
-    if (o.up == UpAxis::Auto && !g.voxengine)
-        upZ = creatorFile.find("Blender") != std::string::npos || creatorGrid.find("Blender") != std::string::npos;
+    std::string blender;
+    if (o.up == UpAxis::Auto && !g.voxengine) {
+        blender = blenderEvidence(im);
+        upZ = !blender.empty();
+    }
     im.plan.upZ = upZ;
     if (upZ) {
         // Z-up to Y-up, a rotation about x: (x, y, z) -> (x, z, -y).
         map.perm[0] = 0, map.perm[1] = 2, map.perm[2] = 1;
         map.sign[0] = 1, map.sign[1] = 1, map.sign[2] = -1;
         if (o.up == UpAxis::Auto)
-            im.plan.notes.push_back("Z-up (the file was written by Blender); --up y to keep its axes");
+            im.plan.notes.push_back(fmt::format("Z-up: written by Blender ({}); --up y to keep its axes", blender));
     }
 
     vdb::Vec3d vs = g.shapeXform->voxelSize();

@@ -2,6 +2,7 @@
 // read and which fill whole from tiles, and the memory the import will need, refused before
 // anything is built when over the budget (io/vdb_import_state.h).
 #include <algorithm>
+#include <cmath>
 
 #include <fmt/format.h>
 
@@ -37,7 +38,9 @@ Status estimate(ImportState& im, const world::Scene* target) {
     constexpr std::uint64_t kBrickBytes = sizeof(world::BrickVoxels) + sizeof(world::BrickMask) + 1;
     const glm::u64vec3 cells = glm::u64vec3((im.place.worldSize + 7) / 8);
     const std::uint64_t cellCount = cells.x * cells.y * cells.z;
-    std::uint64_t worldBytes = target ? 0 : cellCount * (4 + 1);  // top grid and its dirty flags
+    // Top grid with its dirty and touched flags, and the super cells (4^3 cells: skip, count, flag).
+    const glm::u64vec3 supers = (cells + std::uint64_t(3)) / std::uint64_t(4);
+    std::uint64_t worldBytes = target ? 0 : cellCount * (4 + 1 + 1) + supers.x * supers.y * supers.z * (4 + 1 + 1);
     worldBytes += cellCount;                                      // the marks
     worldBytes += cells.x * cells.y * 8 * 2;                      // per-slab dirty lists
     std::uint64_t existing = target ? target->grid.liveBricks() : 0;
@@ -76,6 +79,8 @@ std::string mib(std::uint64_t bytes) { return fmt::format("{:.1f} MiB", double(b
 Status planImport(ImportState& im, const world::Scene* target) {
     im.plan.file = im.file;
     im.plan.budgetBytes = im.options.memoryBudgetBytes;
+    if (!(im.options.voxelSize >= 0.0f) || std::isinf(im.options.voxelSize))
+        return makeError("{}: the voxel size must be positive (got {})", im.file, im.options.voxelSize);
     if (Status s = chooseGrids(im); !s) return s;
     if (Status s = orientAndScale(im); !s) return s;
     im.streaming = canStream(im);

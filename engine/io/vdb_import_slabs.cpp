@@ -47,6 +47,7 @@ Status fillSlabs(ImportState& im, world::BrickGrid& grid, const std::vector<std:
     const Box& worldBox = place.worldBox;
     const glm::ivec3 cells = (place.worldSize + 7) / 8;
     const glm::ivec3 lo = worldBox.min >> 3, hi = (worldBox.max - 1) >> 3;
+    DirtyListBound dirty(grid);
     for (const Slab& slab : im.slabs) {
         Box worldPart{glm::ivec3(worldBox.min.x, worldBox.min.y, std::max(worldBox.min.z, slab.cz0 * 8)),
                       glm::ivec3(worldBox.max.x, worldBox.max.y, std::min(worldBox.max.z, slab.cz1 * 8))};
@@ -76,7 +77,10 @@ Status fillSlabs(ImportState& im, world::BrickGrid& grid, const std::vector<std:
                         im.report.solidVoxels++;
                         any = true;
                     }
-                    if (any) grid.writeCell(c, voxels);
+                    if (any) {
+                        grid.writeCell(c, voxels);
+                        dirty.noteWrite();
+                    }
                 }
             }
         }

@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 #include <unordered_map>
@@ -99,6 +100,28 @@ struct ImportState {
 
     // Loaded source values, one slab at a time.
     std::unique_ptr<SourceGrid> shape, colour;
+
+    // Fog volumes: the largest active value isSolid() has seen, to say why nothing was solid.
+    // Mutable because isSolid() is asked through const paths (tiles, samples) everywhere.
+    mutable double largestFogValue = -std::numeric_limits<double>::infinity();
+};
+
+// Clears the world's dirty lists every few thousand cell writes. An imported world is uploaded
+// whole, so the lists (which the GPU mirror reads) carry nothing, and unbounded they would be
+// allocations the plan does not count: a 2048^3 fog of tiles resampled writes 10^7 uniform
+// cells, a 40 MiB list.
+class DirtyListBound {
+public:
+    explicit DirtyListBound(world::BrickGrid& grid) : mGrid(grid) {}
+    void noteWrite() {
+        if (++mWrites < 4096) return;
+        mGrid.clearDirty();
+        mWrites = 0;
+    }
+
+private:
+    world::BrickGrid& mGrid;
+    int mWrites = 0;
 };
 
 // vdb_import_grids.cpp

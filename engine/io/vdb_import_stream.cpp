@@ -162,7 +162,7 @@ public:
                         if (*uniform != kVariesInCell) {
                             mGrid.writeCellUniform(c, remap[std::size_t(*uniform)]);
                             mIm.report.solidVoxels += world::kBrickVoxels;
-                            noteWrite();
+                            mDirty.noteWrite();
                             continue;
                         }
                     }
@@ -177,7 +177,7 @@ public:
                                 mIm.report.solidVoxels++;
                             }
                     mGrid.writeCell(c, voxels);
-                    noteWrite();
+                    mDirty.noteWrite();
                 }
         return {};
     }
@@ -217,21 +217,15 @@ public:
             for (std::size_t v = 0; v < 512; ++v)
                 if (part.set.test(v)) voxels[v] = part.voxels[v];
             mGrid.writeCell(part.cell, voxels);
-            noteWrite();
+            mDirty.noteWrite();
         }
         return {};
     }
 
 private:
-    void noteWrite() {
-        if (++mWritesSinceClear < 4096) return;
-        mGrid.clearDirty();  // keeps the dirty lists short; an imported world is uploaded whole anyway
-        mWritesSinceClear = 0;
-    }
-
     ImportState& mIm;
     world::BrickGrid& mGrid;
-    int mWritesSinceClear = 0;
+    DirtyListBound mDirty{mGrid};
 };
 
 }  // namespace

@@ -74,7 +74,7 @@ Result<VdbFileInfo> describeVdbFile(const fs::path& path, const VdbImportOptions
         for (std::size_t i = 0; i < reader.grids().size(); ++i) {
             const VdbReader::Entry& e = reader.grids()[i];
             VdbGridInfo g;
-            g.name = printable(e.name);
+            g.name = printable(e.displayName);
             g.type = printable(e.type);
             if (!vdb::GridBase::isRegistered(e.type)) {
                 g.problem = "unknown grid type";

@@ -60,10 +60,23 @@ bool finite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && st
 
 }  // namespace
 
-void writeWorldMetadata(const world::Scene& scene, vdb::MetaMap& out) {
+vdb::math::Transform::Ptr gridTransform(double voxelSize, bool zUp) {
+    vdb::math::Transform::Ptr xform = vdb::math::Transform::createLinearTransform(voxelSize);
+    if (zUp) {
+        // OpenVDB's matrices act on row vectors, so this is the turn that takes +y to +z.
+        vdb::Mat4d turn(1, 0, 0, 0,  //
+                        0, 0, 1, 0,  //
+                        0, -1, 0, 0,  //
+                        0, 0, 0, 1);
+        xform->postMult(turn);
+    }
+    return xform;
+}
+
+void writeWorldMetadata(const world::Scene& scene, vdb::MetaMap& out, bool zUp) {
     out.insertMeta(kFormatKey, vdb::StringMetadata(kFormatName));
     out.insertMeta("vox:format_version", vdb::Int32Metadata(kFormatVersion));
-    out.insertMeta("vox:up_axis", vdb::StringMetadata("y"));
+    out.insertMeta("vox:up_axis", vdb::StringMetadata(zUp ? "z" : "y"));
     out.insertMeta("vox:world.name", vdb::StringMetadata(scene.name));
     glm::ivec3 size = scene.grid.sizeInVoxels();
     out.insertMeta("vox:world.size", vdb::Vec3IMetadata(vdb::Vec3i(size.x, size.y, size.z)));
@@ -107,6 +120,7 @@ Result<WorldHeader> readWorldMetadata(const vdb::MetaMap& meta, const std::strin
     r.get("vox:world.name", h.name);
     r.get("vox:world.size", size);
     r.get("vox:world.voxel_size", h.voxelSize);
+    if (auto up = vdb::DynamicPtrCast<const vdb::StringMetadata>(meta["vox:up_axis"])) h.zUp = up->value() == "z";
     h.size = glm::ivec3(size.x(), size.y(), size.z());
     if (r.error().empty()) {
         glm::u64vec3 cells = glm::u64vec3((glm::max(h.size, 1) + 7) / 8);

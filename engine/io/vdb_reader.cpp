@@ -93,6 +93,13 @@ Error vdbError(const fs::path& path, const AllocationBudget* budget) {
     try {
         throw;
     } catch (const std::bad_alloc&) {
+        if (budget && budget->refusedAsSingleRequest()) {
+            // Not a question of the budget: no legitimate read needs one buffer this large.
+            return makeError("{}: reading it asks for {} bytes of memory in one block, more than any valid file of "
+                             "this size needs ({}: its size plus 16 MiB); the file is damaged (or, if OpenVDB's "
+                             "vdb_print reads it, this is a bug in vox)",
+                             file, budget->refusedBytes(), budget->singleBytes());
+        }
         if (budget && budget->exceeded()) {
             return makeError(
                 "{}: reading it needs more memory than the budget of {} allows (a request for {} bytes was "
@@ -182,10 +189,14 @@ VdbReader::VdbReader(const fs::path& path) : mPath(path) {
             half = true;
         }
         e.name = vdb::io::GridDescriptor::stripSuffix(e.uniqueName);
+        e.displayName = vdb::io::GridDescriptor::nameAsString(e.uniqueName);
         std::int64_t pos[3];
         mStream.read(reinterpret_cast<char*>(pos), sizeof(pos));
         const std::int64_t here = mStream.tellg();
-        if (!(here <= pos[0] && pos[0] <= pos[1] && pos[1] <= pos[2] && std::uint64_t(pos[2]) <= mFileBytes))
+        // An instance stores only metadata and transform (its tree is its parent's), and OpenVDB
+        // writes its block offset as 0.
+        const bool blocksInOrder = e.parent.empty() ? pos[0] <= pos[1] && pos[1] <= pos[2] : pos[1] == 0;
+        if (!(here <= pos[0] && pos[0] <= pos[2] && blocksInOrder && std::uint64_t(pos[2]) <= mFileBytes))
             throw vdb::IoError(fmt::format("grid '{}' reaches past the end of the file's {} bytes", oneLine(e.name), mFileBytes));
         vdb::io::GridDescriptor gd(e.uniqueName, e.type, half);
         gd.setInstanceParentName(e.parent);
@@ -205,7 +216,14 @@ std::string VdbReader::libraryVersion() const {
 
 int VdbReader::find(const std::string& name) const {
     for (std::size_t i = 0; i < mEntries.size(); ++i)
-        if (mEntries[i].name == name || mEntries[i].uniqueName == name) return int(i);
+        if (mEntries[i].name == name || mEntries[i].uniqueName == name || mEntries[i].displayName == name) return int(i);
+    // "name[0]": the first of several grids with that name (OpenVDB numbers only the later ones).
+    const std::string first = "[0]";
+    if (name.size() > first.size() && name.compare(name.size() - first.size(), first.size(), first) == 0) {
+        const std::string base = name.substr(0, name.size() - first.size());
+        for (std::size_t i = 0; i < mEntries.size(); ++i)
+            if (mEntries[i].uniqueName == base) return int(i);
+    }
     return -1;
 }
 

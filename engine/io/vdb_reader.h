@@ -32,8 +32,9 @@ namespace engine::io {
 class VdbReader : private openvdb::io::Archive {
 public:
     struct Entry {
-        std::string name;        // grid name (unique name without the "[n]" suffix)
-        std::string uniqueName;  // as stored
+        std::string name;         // grid name (unique name without the "[n]" suffix)
+        std::string uniqueName;   // as stored: OpenVDB numbers grids of a repeated name "\x1e0", "\x1e1"...
+        std::string displayName;  // OpenVDB's printable form: "density[0]", "density[1]"... (else the name)
         std::string type;        // e.g. "Tree_float_5_4_3"
         std::string parent;      // instance parent's unique name, empty when not an instance
     };
@@ -47,7 +48,9 @@ public:
     std::string libraryVersion() const;
     const openvdb::MetaMap& fileMetadata() const { return mFileMetadata; }
     const std::vector<Entry>& grids() const { return mEntries; }
-    // Index of the first grid with this name, or -1.
+    // Index of the grid named `name`, or -1. A plain name picks the first grid of that name;
+    // "name[0]", "name[1]"... each grid of a repeated name ("name[0]" also when the first one
+    // was stored without a number, as writers other than OpenVDB 10 may do).
     int find(const std::string& name) const;
 
     // Metadata and transform, no tree.

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <numbers>
 
@@ -351,4 +352,129 @@ TEST(VdbRealFiles, BlenderSmokeCacheWithEmptyGridsFailsClearly) {
     scene = io::importVdb(file, o);
     ASSERT_FALSE(scene.ok());
     EXPECT_NE(scene.error().message.find("grid 'density' is empty"), std::string::npos) << scene.error().message;
+}
+
+// Grid instances (a second grid sharing the first one's tree) are valid OpenVDB; OpenVDB writes
+// an instance's block offset as 0, which the reader once took for corruption.
+TEST(VdbForeign, GridInstancesReadAndImport) {
+    ScratchDir dir("instances");
+    samples::writeGridInstances(dir / "inst.vdb");
+    auto info = io::describeVdbFile(dir / "inst.vdb");
+    ASSERT_TRUE(info.ok()) << info.error().message;
+    ASSERT_EQ(info->grids.size(), 2u);
+    for (const auto& g : info->grids) {
+        EXPECT_EQ(g.problem, "") << g.name;
+        EXPECT_EQ(g.activeVoxels, 900u) << g.name;
+    }
+    EXPECT_EQ(info->grids[1].name, "density_copy");
+    io::VdbImportOptions o;
+    o.grid = "density_copy";
+    auto scene = io::importVdb(dir / "inst.vdb", o);
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    EXPECT_EQ(scene->grid.solidVoxels(), 900u) << "the instance imports its parent's tree";
+    auto first = io::importVdb(dir / "inst.vdb");
+    ASSERT_TRUE(first.ok()) << first.error().message;
+    EXPECT_EQ(first->grid.solidVoxels(), 900u);
+}
+
+// Blender 2.8+ fluid caches (Mantaflow) have no `creator`: the axes come from Mantaflow's grid
+// metadata, or failing that from the smoke cache's grid names.
+TEST(VdbForeign, BlenderFluidCachesWithoutCreatorAreZUp) {
+    ScratchDir dir("mantaflow");
+    samples::writeMantaflowTower(dir / "meta.vdb", true);
+    samples::writeMantaflowTower(dir / "names.vdb", false);
+    for (const fs::path& file : {dir / "meta.vdb", dir / "names.vdb"}) {
+        io::VdbImportReport report;
+        auto scene = io::importVdb(file, {}, &report);
+        ASSERT_TRUE(scene.ok()) << scene.error().message;
+        EXPECT_TRUE(report.plan.upZ) << file;
+        EXPECT_EQ(solidBounds(*scene).size().y, 32) << file << ": the tower stands along +y";
+        ASSERT_FALSE(report.plan.notes.empty());
+        EXPECT_NE(report.plan.notes[0].find("Blender"), std::string::npos) << report.plan.notes[0];
+    }
+    // A file with neither keeps its axes (the plain tower of ZUpFilesLandUpright).
+    samples::writeZUpTower(dir / "plain.vdb", "");
+    io::VdbImportReport report;
+    ASSERT_TRUE(io::importVdb(dir / "plain.vdb", {}, &report).ok());
+    EXPECT_FALSE(report.plan.upZ);
+}
+
+TEST(VdbForeign, FogThresholdAboveTheDataIsAnError) {
+    ScratchDir dir("threshold");
+    samples::writeFogBox(dir / "fog.vdb", glm::ivec3(0), glm::ivec3(8, 4, 4));  // 1.0 inside, 0.25 shell
+    io::VdbImportOptions o;
+    o.fogThreshold = 1.5f;
+    auto scene = io::importVdb(dir / "fog.vdb", o);
+    ASSERT_FALSE(scene.ok()) << "an empty world is not an import";
+    EXPECT_TRUE(vox_test::isOneLineNamingFile(scene.error().message, dir / "fog.vdb"));
+    EXPECT_NE(scene.error().message.find("fog threshold 1.5"), std::string::npos) << scene.error().message;
+    EXPECT_NE(scene.error().message.find("largest density in it is 1 "), std::string::npos) << scene.error().message;
+    o.fogThreshold = 1.0f;  // at the maximum: the box
+    scene = io::importVdb(dir / "fog.vdb", o);
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    EXPECT_EQ(scene->grid.solidVoxels(), 8u * 4u * 4u);
+}
+
+TEST(VdbForeign, VoxelSizeMustBePositive) {
+    ScratchDir dir("voxelsize");
+    samples::writeFogBox(dir / "fog.vdb", glm::ivec3(0), glm::ivec3(4));
+    for (float bad : {-1.0f, std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity()}) {
+        io::VdbImportOptions o;
+        o.voxelSize = bad;
+        auto scene = io::importVdb(dir / "fog.vdb", o);
+        ASSERT_FALSE(scene.ok()) << bad;
+        EXPECT_NE(scene.error().message.find("voxel size must be positive"), std::string::npos) << scene.error().message;
+    }
+    for (const char* value : {"0", "-2", "nan"}) {
+        std::ofstream(dir / "scene.toml") << "[world]\nsize = [8, 8, 8]\n[[generator]]\ntype = \"vdb\"\nsource = \"fog.vdb\"\nvoxel_size = "
+                                          << value << "\n";
+        auto scene = engine::scene::loadSceneFile(dir / "scene.toml");
+        ASSERT_FALSE(scene.ok()) << value;
+        EXPECT_NE(scene.error().message.find("scene.toml:6: 'voxel_size' must be a"), std::string::npos)
+            << scene.error().message;  // NaN fails as "not a number" already
+    }
+}
+
+TEST(VdbForeign, DuplicateGridNamesAreSelectableByIndex) {
+    ScratchDir dir("duplicates");
+    samples::writeDuplicateNames(dir / "dup.vdb");
+    auto info = io::describeVdbFile(dir / "dup.vdb");
+    ASSERT_TRUE(info.ok()) << info.error().message;
+    ASSERT_EQ(info->grids.size(), 2u);
+    // OpenVDB 10 numbers every grid of a repeated name: stored "density\x1e0", "density\x1e1".
+    EXPECT_EQ(info->grids[0].name, "density[0]");
+    EXPECT_EQ(info->grids[1].name, "density[1]");
+    for (auto [name, voxels] : {std::pair{"density", 8u}, std::pair{"density[0]", 8u}, std::pair{"density[1]", 27u}}) {
+        io::VdbImportOptions o;
+        o.grid = name;
+        io::VdbImportReport report;
+        auto scene = io::importVdb(dir / "dup.vdb", o, &report);
+        ASSERT_TRUE(scene.ok()) << name << ": " << scene.error().message;
+        EXPECT_EQ(scene->grid.solidVoxels(), voxels) << name;
+        EXPECT_EQ(report.plan.grid, std::string(name) == "density[1]" ? "density[1]" : "density[0]");
+    }
+    io::VdbImportOptions o;
+    o.grid = "density[2]";
+    auto missing = io::importVdb(dir / "dup.vdb", o);
+    ASSERT_FALSE(missing.ok());
+    EXPECT_NE(missing.error().message.find("grids: density[0], density[1]"), std::string::npos) << missing.error().message;
+}
+
+// A tile-filled source read through the slab path writes millions of uniform cells. The world's
+// dirty lists (for the GPU mirror) grew with every write until one growth asked for more than the
+// per-allocation ceiling (the file's size plus 16 MiB), and the import failed with advice to
+// raise --memory-budget that could not help: a 2048^3 fog at --voxel-size 1.1. A mask (always the
+// slab path) of 1408^3 voxels, 5.45 million uniform cells and no bricks, needs the same growth.
+TEST(VdbForeign, MillionsOfTileCellsStayWithinThePlan) {
+    ScratchDir dir("tilecells");
+    samples::writeMaskCube(dir / "mask.vdb", 1408);
+    io::VdbImportOptions o;
+    o.memoryBudgetBytes = 1ull << 30;
+    io::VdbImportReport report;
+    auto scene = io::importVdb(dir / "mask.vdb", o, &report);
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    EXPECT_FALSE(report.plan.streamed);
+    EXPECT_EQ(scene->grid.homogeneousCells(), 176u * 176u * 176u);
+    EXPECT_EQ(scene->grid.liveBricks(), 0u);
+    EXPECT_LE(report.peakTrackedBytes, report.plan.estimateBytes) << "the plan is the truth";
 }

@@ -4,6 +4,7 @@
 
 #include <openvdb/openvdb.h>
 
+#include <algorithm>
 #include <fstream>
 
 #include "core/atomic_file.h"
@@ -155,4 +156,55 @@ TEST(VdbRoundTrip, FailedExportLeavesThePreviousFileIntact) {
     std::ifstream in(file);
     std::string contents((std::istreambuf_iterator<char>(in)), {});
     EXPECT_EQ(contents, "previous contents");
+}
+
+// `vox export --for blender`: a float fog grid other tools can use, a transform that stands the
+// world up along +z, and still the exact world when it comes back.
+TEST(VdbRoundTrip, ExportForBlenderIsZUpWithADensityGridAndComesBackExactly) {
+    ScratchDir dir("blender");
+    auto scene = engine::scene::loadSceneFile(fs::path(VOX_SOURCE_DIR) / "worlds" / "cornell.toml");
+    ASSERT_TRUE(scene.ok());
+    auto options = io::vdbExportOptionsFor("blender");
+    ASSERT_TRUE(options.ok());
+    io::VdbExportReport report;
+    ASSERT_TRUE(io::exportVdb(*scene, dir / "b.vdb", *options, &report).ok());
+    ASSERT_FALSE(report.grids.empty());
+    EXPECT_EQ(report.grids[0], "density");
+
+    // What OpenVDB itself reads (as Blender, vdb_render and pyopenvdb do).
+    openvdb::initialize();
+    openvdb::io::File file((dir / "b.vdb").string());
+    file.open();
+    auto density = openvdb::gridPtrCast<openvdb::FloatGrid>(file.readGrid("density"));
+    ASSERT_TRUE(density);
+    EXPECT_EQ(density->getGridClass(), openvdb::GRID_FOG_VOLUME);
+    EXPECT_EQ(density->activeVoxelCount(), scene->grid.solidVoxels());
+    float lo = 2.0f, hi = -1.0f;
+    for (auto it = density->cbeginValueOn(); it; ++it) lo = std::min(lo, *it), hi = std::max(hi, *it);
+    EXPECT_EQ(lo, 1.0f);
+    EXPECT_EQ(hi, 1.0f);
+    // The engine's +y (index j) is the file's world +z, its +z the file's -y.
+    const double s = double(scene->voxelSize);
+    const openvdb::Vec3d up = density->indexToWorld(openvdb::Vec3d(0, 1, 0));
+    const openvdb::Vec3d forward = density->indexToWorld(openvdb::Vec3d(0, 0, 1));
+    const openvdb::Vec3d right = density->indexToWorld(openvdb::Vec3d(1, 0, 0));
+    EXPECT_TRUE(up.eq(openvdb::Vec3d(0, 0, s))) << up;
+    EXPECT_TRUE(forward.eq(openvdb::Vec3d(0, -s, 0))) << forward;
+    EXPECT_TRUE(right.eq(openvdb::Vec3d(s, 0, 0))) << right;
+    auto material = file.readGrid("material");
+    EXPECT_TRUE(material->transform() == density->transform());
+    file.close();
+
+    io::VdbImportReport imported;
+    auto back = io::importVdb(dir / "b.vdb", {}, &imported);
+    ASSERT_TRUE(back.ok()) << back.error().message;
+    expectSameScene(*scene, *back, "blender export");
+    EXPECT_EQ(imported.plan.grid, "material") << "import keeps using the lossless grid";
+    EXPECT_FALSE(imported.plan.upZ) << "index space is ours: nothing to turn";
+
+    auto houdini = io::vdbExportOptionsFor("houdini");
+    ASSERT_TRUE(houdini.ok());
+    EXPECT_TRUE(houdini->densityGrid);
+    EXPECT_FALSE(houdini->zUp);
+    EXPECT_FALSE(io::vdbExportOptionsFor("maya").ok());
 }

@@ -6,6 +6,8 @@
 #                                          a good import writes a scene file that loads and renders
 #   vdb_cli_test.sh memory VOX SAMPLES     importing a 10^7-voxel level set peaks (RSS, /usr/bin/time)
 #                                          below 2x the world it builds (exit 77 = no /usr/bin/time)
+#   vdb_cli_test.sh vdb_render VOX SAMPLES `vox export --for blender` makes a file OpenVDB's own
+#                                          vdb_render renders, upright along +z (exit 77 = no vdb_render)
 set -u
 mode="$1"; vox="$2"; samples="$3"
 tmp=$(mktemp -d)
@@ -42,6 +44,52 @@ if [ "$mode" = vdb_print ]; then
     meta=$(vdb_print -m "$tmp/sandbox.vdb")
     grep -q "vox:material.00001.name: grass" <<<"$meta" && grep -q "vox:format: voxengine.world" <<<"$meta" \
         && echo "ok: vdb_print shows the palette metadata" || fail "palette metadata missing from vdb_print -m"
+    [ $failures -eq 0 ] || { echo "$failures failure(s)"; exit 1; }
+    exit 0
+fi
+
+if [ "$mode" = vdb_render ]; then
+    if ! command -v vdb_render >/dev/null; then
+        echo "SKIP: vdb_render not found (Debian package libopenvdb-tools; tools/setup.sh installs it)"
+        exit 77
+    fi
+    # A wide, thin base with a narrow tower on it, along the engine's +y.
+    cat > "$tmp/tower.toml" <<'TOML'
+[world]
+name = "tower"
+size = [32, 32, 32]
+[[material]]
+name = "stone"
+albedo = [0.5, 0.5, 0.5]
+[[generator]]
+type = "box"
+min = [0, 0, 0]
+max = [32, 4, 32]
+material = "stone"
+[[generator]]
+type = "box"
+min = [12, 4, 12]
+max = [20, 32, 20]
+material = "stone"
+TOML
+    out=$("$vox" export "$tmp/tower.toml" -o "$tmp/tower.vdb" --for blender 2>&1) || { echo "FAIL: export --for blender: $out"; exit 1; }
+    grep -q "grids    density, material" <<<"$out" && echo "ok: export --for blender writes density first" || fail "grids: $out"
+    # From above a front corner, +z up on screen: a 64x64 binary PPM (P6).
+    # (Run inside $tmp: vdb_render 10 cuts the output path at its first '.', and mktemp's has one.)
+    (cd "$tmp" && vdb_render tower.vdb tower.ppm -res 64x64 -translate 60,-60,40 -lookat 16,-16,16 -up 0,0,1 \
+        >/dev/null 2>&1) || { echo "FAIL: vdb_render could not render our export"; exit 1; }
+    # Pixels that are not black, and how many of them lie in the image's top and bottom thirds.
+    header=$(head -c 64 "$tmp/tower.ppm" | awk 'NR <= 3 {n += length($0) + 1} END {print n}')
+    counts=$(od -An -v -tu1 -j "$header" "$tmp/tower.ppm" | tr -s ' ' '\n' | grep -v '^$' \
+        | awk '{ p = int((NR - 1) / 3); lit[p] = lit[p] || ($1 > 8) }
+               END { for (p in lit) if (lit[p]) { n++; if (int(p / 64) < 21) top++; if (int(p / 64) >= 43) bottom++ }
+                     print n + 0, top + 0, bottom + 0 }')
+    read -r lit top bottom <<<"$counts"
+    echo "vdb_render: $lit of 4096 pixels lit ($top in the top third, $bottom in the bottom third)"
+    [ "$lit" -gt 200 ] && echo "ok: the render is not empty" || fail "vdb_render's image is (nearly) empty"
+    # Upright: the wide base fills the bottom, the narrow tower alone reaches the top.
+    [ "$bottom" -gt $((2 * top)) ] && [ "$top" -gt 0 ] && echo "ok: upright along +z" \
+        || fail "not upright along +z: $top lit pixels at the top, $bottom at the bottom"
     [ $failures -eq 0 ] || { echo "$failures failure(s)"; exit 1; }
     exit 0
 fi
@@ -96,7 +144,39 @@ expect_error "rotated or sheared" "$tmp/rotated.vdb" -- "$vox" import "$tmp/rota
 expect_error "over the engine's limit" "$tmp/giant.vdb" -- "$vox" import "$tmp/giant.vdb" -o "$tmp/out.toml"
 expect_error "would need about [0-9.]+ MiB.*over the memory budget of 4.0 MiB" "$tmp/sphere.vdb" -- "$vox" import "$tmp/sphere.vdb" --memory-budget 4 -o "$tmp/out.toml"
 expect_error "no such file" "$tmp/missing.vdb" -- "$vox" import "$tmp/missing.vdb" -o "$tmp/out.toml"
+expect_error "no voxel of grid 'density' reaches the fog threshold 2: the largest density in it is 1 " "$tmp/fog.vdb" -- \
+    "$vox" import "$tmp/fog.vdb" --fog-threshold 2 -o "$tmp/out.toml"
 [ -e "$tmp/out.toml" ] && fail "a failed import wrote $tmp/out.toml"
+for size in 0 -1 nan; do
+    err=$("$vox" import "$tmp/fog.vdb" --voxel-size "$size" --dry-run 2>&1 >/dev/null); rc=$?
+    [ "$rc" -ge 1 ] && [ "$rc" -lt 128 ] && [ "$(grep -c . <<<"$err")" -eq 1 ] && grep -q -- "--voxel-size: must be a positive number" <<<"$err" \
+        && echo "ok: --voxel-size $size: $err" || fail "--voxel-size $size exited $rc: $err"
+done
+
+# Grid instances (OpenVDB writes no tree for them) and grids that share a name.
+"$samples" instances "$tmp/inst.vdb"
+info=$("$vox" info "$tmp/inst.vdb" 2>&1) && grep -q "'density_copy': float" <<<"$info" && ! grep -q corrupt <<<"$info" \
+    && echo "ok: info reads a file with a grid instance" || fail "info inst.vdb: $info"
+out=$("$vox" import "$tmp/inst.vdb" --grid density_copy --dry-run 2>&1) && grep -qE "imported +900 solid" <<<"$out" \
+    && echo "ok: the instance imports its parent's 900 voxels" || fail "import of the instance: $out"
+"$samples" duplicate-names "$tmp/dup.vdb"
+info=$("$vox" info "$tmp/dup.vdb" 2>&1) && grep -q "'density\[1\]': float" <<<"$info" \
+    && echo "ok: info names the second grid density[1]" || fail "info dup.vdb: $info"
+out=$("$vox" import "$tmp/dup.vdb" --grid 'density[1]' --dry-run 2>&1) && grep -qE "imported +27 solid" <<<"$out" \
+    && echo "ok: --grid 'density[1]' picks the second grid" || fail "import --grid density[1]: $out"
+
+# A scene file's vdb generator notes what it cuts off, as `vox import` does.
+cat > "$tmp/crop.toml" <<TOML
+[world]
+size = [16, 16, 16]
+[[generator]]
+type = "vdb"
+source = "fog.vdb"
+offset = [10, 0, 0]
+TOML
+err=$("$vox" info "$tmp/crop.toml" 2>&1 >/dev/null)
+grep -q "crop.toml: vdb generator, fog.vdb: part of the grid lands outside the world and is cut off" <<<"$err" \
+    && echo "ok: the vdb generator prints the crop note: $err" || fail "no crop note from the scene file's generator: $err"
 
 # A good import: a scene file plus its payload, which loads, describes and renders.
 # The payload gets a new versioned name (scene/world_pair.h), so importing fog.vdb as fog.toml

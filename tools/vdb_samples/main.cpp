@@ -2,8 +2,10 @@
 // seed corpus and memory measurements.
 //   make_vdb_samples seeds DIR               every sample, small
 //   make_vdb_samples sphere OUT RADIUS       a level-set sphere of RADIUS voxels
+//   make_vdb_samples fog-cube OUT N          fog of 1.0 over [0,N)^3, tiles only (N a multiple of 128)
 //   make_vdb_samples NAME OUT                one sample: fog-box wrong-types empty-grid rotated
 //                                            frustum non-uniform giant-tile tower ids gradient
+//                                            instances duplicate-names mantaflow-tower
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -20,6 +22,10 @@ int main(int argc, char** argv) {
     const s::fs::path out = argv[2];
     if (what == "seeds") s::writeSeedCorpus(out);
     else if (what == "sphere" && argc == 4) s::writeLevelSetSphere(out, std::strtof(argv[3], nullptr));
+    else if (what == "fog-cube" && argc == 4) s::writeFogCube(out, std::atoi(argv[3]));
+    else if (what == "instances") s::writeGridInstances(out);
+    else if (what == "duplicate-names") s::writeDuplicateNames(out);
+    else if (what == "mantaflow-tower") s::writeMantaflowTower(out, true);
     else if (what == "fog-box") s::writeFogBox(out, glm::ivec3(-5, 0, 3), glm::ivec3(11, 6, 20));
     else if (what == "wrong-types") s::writeWrongTypes(out);
     else if (what == "empty-grid") s::writeEmptyGrid(out);

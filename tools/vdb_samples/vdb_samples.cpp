@@ -108,6 +108,59 @@ void writeZUpTower(const fs::path& path, const std::string& creator) {
     write(path, {grid}, meta);
 }
 
+void writeMantaflowTower(const fs::path& path, bool gridMetadata) {
+    auto density = vdb::FloatGrid::create(0.0f);
+    density->setName("density");
+    density->setGridClass(vdb::GRID_FOG_VOLUME);
+    density->tree().fill(vdb::CoordBBox(vdb::Coord(0, 0, 0), vdb::Coord(3, 3, 31)), 1.0f, true);
+    density->tree().fill(vdb::CoordBBox(vdb::Coord(-4, -4, 30), vdb::Coord(7, 7, 31)), 1.0f, true);
+    vdb::GridPtrVec grids{density};
+    if (gridMetadata) {
+        density->insertMeta("file_base_resolution", vdb::Vec3IMetadata(vdb::Vec3i(12, 12, 32)));
+        density->insertMeta("file_voxel_size", vdb::FloatMetadata(1.0f));
+    } else {
+        auto shadow = vdb::FloatGrid::create(0.0f);
+        shadow->setName("shadow");
+        grids.push_back(shadow);
+    }
+    write(path, grids);
+}
+
+void writeGridInstances(const fs::path& path) {
+    auto grid = vdb::FloatGrid::create(0.0f);
+    grid->setName("density");
+    grid->tree().fill(vdb::CoordBBox(vdb::Coord(0, 0, 0), vdb::Coord(29, 29, 0)), 1.0f, true);
+    vdb::GridBase::Ptr copy = grid->copyGrid();  // shares the tree
+    copy->setName("density_copy");
+    write(path, {grid, copy});
+}
+
+void writeDuplicateNames(const fs::path& path) {
+    vdb::GridPtrVec grids;
+    for (int n : {2, 3}) {
+        auto grid = vdb::FloatGrid::create(0.0f);
+        grid->setName("density");
+        grid->tree().fill(vdb::CoordBBox(vdb::Coord(0), vdb::Coord(n - 1)), 1.0f, true);
+        grids.push_back(grid);
+    }
+    write(path, grids);
+}
+
+void writeFogCube(const fs::path& path, int n) {
+    auto grid = vdb::FloatGrid::create(0.0f);
+    grid->setName("density");
+    grid->setGridClass(vdb::GRID_FOG_VOLUME);
+    grid->tree().sparseFill(vdb::CoordBBox(vdb::Coord(0), vdb::Coord(n - 1)), 1.0f, true);
+    write(path, {grid});
+}
+
+void writeMaskCube(const fs::path& path, int n) {
+    auto grid = vdb::MaskGrid::create(false);
+    grid->setName("mask");
+    grid->tree().sparseFill(vdb::CoordBBox(vdb::Coord(0), vdb::Coord(n - 1)), true, true);
+    write(path, {grid});
+}
+
 void writeIdGrid(const fs::path& path) {
     auto grid = vdb::Int32Grid::create(0);
     grid->setName("labels");
@@ -171,6 +224,9 @@ void writeSeedCorpus(const fs::path& dir) {
     writeLevelSetWithColour(dir / "sphere_cd.vdb");
     writeZUpTower(dir / "tower_blender.vdb", "Blender/Smoke");
     writeIdGrid(dir / "ids.vdb");
+    writeGridInstances(dir / "instances.vdb");
+    writeDuplicateNames(dir / "duplicate_names.vdb");
+    writeMantaflowTower(dir / "tower_mantaflow.vdb", true);
     writeWrongTypes(dir / "wrong_types.vdb");
     writeEmptyGrid(dir / "empty_grid.vdb");
     writeRotatedGrid(dir / "rotated.vdb");

@@ -37,6 +37,28 @@ void writeLevelSetWithColour(const fs::path& path);
 // z = [30, 32), centred on the column. File metadata "creator" = creator (empty: none).
 void writeZUpTower(const fs::path& path, const std::string& creator);
 
+// A Blender 2.8+ fluid cache frame as Mantaflow writes it: no file metadata at all, the tower of
+// writeZUpTower as "density". With gridMetadata, every grid carries Mantaflow's
+// file_base_resolution (vec3i) and file_voxel_size (float); without, the file only has the grid
+// names of Blender's smoke cache to go by: an empty "shadow" grid beside "density".
+void writeMantaflowTower(const fs::path& path, bool gridMetadata);
+
+// Grid instancing: "density", a fog volume of 1.0 over [0,30) x [0,30) x [0,1) (900 voxels), and
+// "density_copy", a second grid sharing its tree, which OpenVDB writes as an instance (no tree of
+// its own, block offset 0) -- as pyopenvdb does for `h = g.copy()`.
+void writeGridInstances(const fs::path& path);
+
+// Two float fog grids with the same name "density": the first 1.0 over [0,2)^3 (8 voxels), the
+// second 1.0 over [0,3)^3 (27 voxels). OpenVDB 10 stores them as "density\x1e0" and
+// "density\x1e1" (vox info shows "density[0]", "density[1]"; vdb_print "density" twice).
+void writeDuplicateNames(const fs::path& path);
+
+// Fog volume "density" of 1.0 over [0,n)^3 stored as tiles only (no leaves) when n is a
+// multiple of 128: a few hundred bytes for any size.
+void writeFogCube(const fs::path& path, int n);
+// The same as a mask grid "mask" (tiles only): imports without a single brick.
+void writeMaskCube(const fs::path& path, int n);
+
 // Int32 grid "labels": values 7 and 42 in two 8^3 blocks, and -3 in one voxel.
 void writeIdGrid(const fs::path& path);
 

@@ -1,5 +1,6 @@
 #include "vdb_options.h"
 
+#include <cmath>
 #include <cstdio>
 
 #include "commands.h"
@@ -8,13 +9,16 @@
 namespace vox {
 
 void addVdbImportOptions(CLI::App& cmd, VdbCliOptions& o) {
-    cmd.add_option("--grid", o.grid, "Grid to import (default: ours, else the first usable non-empty grid)");
+    cmd.add_option("--grid", o.grid,
+                   "Grid to import (default: ours, else the first usable non-empty grid); of several grids with "
+                   "one name, NAME[0], NAME[1]... as `vox info` lists them");
     cmd.add_option("--colour-grid", o.colourGrid, "vec3 grid giving colours (default: one named color/colour/Cd/albedo/rgb)");
     cmd.add_option("--material", o.rule, "Material rule: auto, constant, height, colour, ids")->capture_default_str();
     cmd.add_option("--albedo", o.albedo, "Albedo r,g,b of the constant material (linear, 0..1)");
     cmd.add_option("--fog-threshold", o.fogThreshold, "Fog volumes: solid where density >= this")->capture_default_str();
     cmd.add_option("--max-colours", o.maxColours, "Colour rule: at most this many materials")->capture_default_str();
-    cmd.add_option("--voxel-size", o.voxelSize, "Resample to this voxel size (file units; default: the file's)");
+    o.voxelSizeOption =
+        cmd.add_option("--voxel-size", o.voxelSize, "Resample to this voxel size (file units, > 0; default: the file's)");
     cmd.add_option("--offset", o.offset, "x,y,z: world voxel where source voxel (0,0,0) lands (default: auto)");
     cmd.add_option("--crop", o.crop, "x0,y0,z0,x1,y1,z1: import only this source index box (max exclusive)");
     cmd.add_option("--up", o.up, "Source up axis: y, z or auto (auto: z for Blender files)")->capture_default_str();
@@ -45,7 +49,9 @@ engine::Result<engine::io::VdbImportOptions> toImportOptions(const VdbCliOptions
     out.fogThreshold = o.fogThreshold;
     if (o.maxColours < 1 || o.maxColours > 65534) return makeError("--max-colours: must be in 1..65534");
     out.maxColours = o.maxColours;
-    if (o.voxelSize < 0.0f || !(o.voxelSize == o.voxelSize)) return makeError("--voxel-size: must be positive");
+    const bool voxelSizeGiven = o.voxelSizeOption && o.voxelSizeOption->count() > 0;
+    if ((voxelSizeGiven && !(o.voxelSize > 0.0f)) || std::isinf(o.voxelSize))
+        return makeError("--voxel-size: must be a positive number, got {}", o.voxelSize);
     out.voxelSize = o.voxelSize;
     if (!o.offset.empty()) {
         int x, y, z;

@@ -3,8 +3,10 @@
 // save names its payload and rule and nothing it did not choose.
 #include "scene/generators/vdb_keys.h"
 
+#include <cmath>
 #include <filesystem>
 
+#include "core/log.h"
 #include "io/vdb_import.h"
 #include "scene/generator_registry.h"
 
@@ -63,8 +65,11 @@ VdbParams parse(GeneratorKeys& g) {
     o.maxColours = g.integer("max_colours", o.maxColours);
     if (o.maxColours < 1 || std::size_t(o.maxColours) >= world::kMaxMaterials)
         g.fail(g.node("max_colours"), "'max_colours' must be in 1..{}", world::kMaxMaterials - 1);
-    o.voxelSize = static_cast<float>(g.number("voxel_size", 0.0));
-    if (o.voxelSize < 0.0f) g.fail(g.node("voxel_size"), "'voxel_size' must be positive");
+    if (g.has("voxel_size")) {  // absent: the file's
+        o.voxelSize = static_cast<float>(g.number("voxel_size", 0.0));
+        if (!(o.voxelSize > 0.0f) || std::isinf(o.voxelSize))
+            g.fail(g.node("voxel_size"), "'voxel_size' must be a positive number");
+    }
     if (g.has("offset")) o.offset = g.ivec3("offset", {});
     if (g.has("crop_min") || g.has("crop_max")) {
         world::Box crop{g.ivec3("crop_min", {}, true), g.ivec3("crop_max", {}, true)};
@@ -89,7 +94,11 @@ Status run(const VdbParams& p, world::Scene& scene) {
     fs::path path = fs::path(p.source).is_absolute()
                         ? fs::path(p.source)
                         : fs::path(scene.sourcePath).parent_path() / p.source;
-    return io::importVdbInto(scene, path, p.options);
+    io::VdbImportReport report;
+    if (Status s = io::importVdbInto(scene, path, p.options, &report); !s) return s;
+    // The notes `vox import` prints (content cut off at the world's edge, axes turned, resampling).
+    for (const std::string& note : report.plan.notes) log::warn("{}: vdb generator, {}: {}", scene.sourcePath, p.source, note);
+    return {};
 }
 
 void write(const VdbParams& p, const GeneratorWriter& out) {
