@@ -374,8 +374,8 @@ Result<std::vector<VoxInstance>> voxInstances(const VoxFile& file, std::string_v
             return false;
         }
         if (depth > kVoxMaxGraphDepth || ++visits > 4 * kVoxMaxInstances) {
-            error = fmt::format("{}: offset {}: scene graph: deeper than {} nodes or over {} node visits", name,
-                                n.offset, kVoxMaxGraphDepth, 4 * kVoxMaxInstances);
+            error = fmt::format("{}: offset {}: scene graph: more than {} levels deep or more than {} node visits",
+                                name, n.offset, kVoxMaxGraphDepth, 4 * kVoxMaxInstances);
             return false;
         }
         bool ok = true;

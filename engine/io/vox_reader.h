@@ -93,15 +93,17 @@ std::uint32_t voxDefaultPaletteColour(int index);
 Result<VoxFile> parseVox(std::span<const std::uint8_t> bytes, std::string_view name);
 Result<VoxFile> readVoxFile(const std::filesystem::path& path);
 
-// One visible model placed in MagicaVoxel's (Z-up) space: its voxel v lands on the voxel that
-// holds rotation * (v + 0.5 - size / 2) + translation (size / 2 rounded down per axis).
+// One visible model placed in MagicaVoxel's (Z-up) space: its voxel v lands on
+// floor(rotation * (v + 0.5 - size / 2) + translation), size / 2 not rounded. Along an axis of
+// even size the point is a voxel centre; along an odd one it is a whole number, and floor keeps
+// an odd model's middle voxel in place when it is turned, as MagicaVoxel does.
 struct VoxInstance {
     int model = 0;
     VoxRotation rotation;
     glm::ivec3 translation{0};
 };
 
-inline constexpr std::size_t kVoxMaxInstances = 1u << 20;
+inline constexpr std::size_t kVoxMaxInstances = 1u << 18;
 inline constexpr int kVoxMaxGraphDepth = 64;
 // |_t| per axis; with the depth limit, sums of translations stay far from int overflow.
 inline constexpr int kVoxMaxTranslation = 1 << 20;
@@ -113,10 +115,9 @@ Result<std::vector<VoxInstance>> voxInstances(const VoxFile& file, std::string_v
 
 // Where voxel v of a model of `size` lands under an instance (MagicaVoxel's Z-up space).
 inline glm::ivec3 voxPlace(const VoxInstance& in, glm::ivec3 size, glm::ivec3 v) {
-    // Twice the voxel centre relative to the pivot, so the rotation stays in integers; the result
-    // is always odd, and (twice - 1) / 2 (exact) is the voxel that holds the rotated centre.
-    const glm::ivec3 twice = in.rotation.apply(2 * v + 1 - 2 * (size / 2)) + 2 * in.translation;
-    return (twice - 1) / 2;
+    // In half voxels, so the rotation stays in integers; >> 1 rounds down (arithmetic shift).
+    const glm::ivec3 twice = in.rotation.apply(2 * v + 1 - size) + 2 * in.translation;
+    return {twice.x >> 1, twice.y >> 1, twice.z >> 1};
 }
 
 }  // namespace engine::io
