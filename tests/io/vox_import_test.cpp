@@ -141,6 +141,34 @@ TEST(VoxImport, TurningAnOddModelKeepsItsMiddleVoxel) {
     EXPECT_EQ(voxelsOf(*scene), expected);
 }
 
+TEST(VoxImport, OverlappingInstancesKeepTheLaterOne) {
+    // Two 2 x 2 x 2 models on the same place, the second with a hole: the second's voxels win,
+    // the first shows through the hole.
+    ScratchDir dir("overlap");
+    VoxBuilder b;
+    std::vector<VoxBuilder::V> full, holed;
+    for (int i = 0; i < 8; ++i) {
+        full.push_back({i & 1, (i >> 1) & 1, i >> 2, 1});
+        if (i != 0) holed.push_back({i & 1, (i >> 1) & 1, i >> 2, 2});
+    }
+    b.model(2, 2, 2, full);
+    b.model(2, 2, 2, holed);
+    b.transform(0, 1, -1, {});
+    b.group(1, {2, 4});
+    b.transform(2, 3, 0, {});
+    b.shape(3, 0);
+    b.transform(4, 5, 0, {});
+    b.shape(5, 1);
+    b.write(dir / "overlap.vox");
+    auto scene = io::importVox(dir / "overlap.vox");
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    auto v = voxelsOf(*scene);
+    ASSERT_EQ(v.size(), 8u);
+    int first = 0;
+    for (const auto& [p, name] : v) first += name == "overlap_1";
+    EXPECT_EQ(first, 1);
+}
+
 TEST(VoxImport, RotationBytesDecodeAndComposeExactly) {
     // Every valid _r byte decodes to a rotation matrix (det +-1) and encodes back to itself.
     int valid = 0;
