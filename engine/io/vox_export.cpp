@@ -189,13 +189,14 @@ Status exportVox(const world::Scene& scene, const fs::path& path, VoxExportRepor
     });
 
     Bytes children;
-    for (const auto& [key, m] : models) {
+    for (auto& [key, m] : models) {
         Bytes size, xyzi;
         size.i32(m.size.x), size.i32(m.size.y), size.i32(m.size.z);
         children.chunk("SIZE", size);
         xyzi.i32(std::int32_t(m.voxels.size()));
         xyzi.raw(m.voxels.data(), m.voxels.size() * sizeof(VoxVoxel));
         children.chunk("XYZI", xyzi);
+        std::vector<VoxVoxel>().swap(m.voxels);  // written: free it before the next model's copy
     }
     // Scene graph: root transform 0 -> group 1 -> (transform 2 + 2i -> shape 3 + 2i -> model i).
     {
@@ -243,20 +244,20 @@ Status exportVox(const world::Scene& scene, const fs::path& path, VoxExportRepor
         children.chunk("MATL", matl);
         ++r.emissive;
     }
-    Bytes file;
-    file.raw("VOX ", 4);
-    file.i32(150);
-    file.raw("MAIN", 4);
-    file.i32(0);
-    file.i32(std::int32_t(children.data.size()));
     if (children.data.size() > 0x7FFFFFF0u)
         return makeError("{}: the world's {} voxels do not fit in one .vox file (2 GiB)", path.string(), r.solidVoxels);
-    file.raw(children.data.data(), children.data.size());
+    Bytes header;
+    header.raw("VOX ", 4);
+    header.i32(150);
+    header.raw("MAIN", 4);
+    header.i32(0);
+    header.i32(std::int32_t(children.data.size()));
 
     Status s = writeAtomically(path, [&](const fs::path& temp) -> Status {
         std::FILE* f = std::fopen(temp.c_str(), "wb");
         if (!f) return makeError("{}: cannot create file", path.string());
-        bool ok = std::fwrite(file.data.data(), 1, file.data.size(), f) == file.data.size();
+        bool ok = std::fwrite(header.data.data(), 1, header.data.size(), f) == header.data.size();
+        ok &= std::fwrite(children.data.data(), 1, children.data.size(), f) == children.data.size();
         ok &= std::fflush(f) == 0;
         ok &= std::fclose(f) == 0;
         if (!ok) return makeError("{}: write failed (disk full?)", path.string());
@@ -265,7 +266,7 @@ Status exportVox(const world::Scene& scene, const fs::path& path, VoxExportRepor
     if (!s) return s;
     r.models = models.size();
     r.colours = palette.used;
-    r.fileBytes = file.data.size();
+    r.fileBytes = header.data.size() + children.data.size();
     if (reportOut) *reportOut = r;
     return {};
 }
