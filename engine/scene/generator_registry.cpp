@@ -24,7 +24,8 @@ namespace engine::scene {
     X(Menger)                   \
     X(Apartment)                \
     X(Bridge)                   \
-    X(Vdb)
+    X(Vdb)                      \
+    X(Vox)
 
 #define VOX_DECLARE_GENERATOR(Name) extern const GeneratorEntry k##Name##Generator;
 #define VOX_LIST_GENERATOR(Name) &k##Name##Generator,

@@ -43,7 +43,7 @@ TEST(SceneFile, EveryShippedWorldLoads) {
 TEST(SceneFile, ErrorsNameTheFileAndLine) {
     std::string e = errorOf(std::string(kMinimal) + "\n[[generator]]\ntype = \"terain\"\n");
     EXPECT_EQ(e, "test.toml:7: unknown generator 'terain' (known: terrain, box, sphere, cornell, buildings, lamps, "
-                 "mountain, scattered_lights, text, menger, apartment, bridge, vdb)");
+                 "mountain, scattered_lights, text, menger, apartment, bridge, vdb, vox)");
     // Saves from before .vdb payloads are refused by name, not as a typo.
     e = errorOf(std::string(kMinimal) + "\n[[generator]]\ntype = \"bricks\"\nfile = \"old.1.bricks\"\n");
     EXPECT_EQ(e, "test.toml:7: generator 'bricks' (the .bricks payload of older vox play saves) is no longer "
@@ -162,7 +162,7 @@ TEST(SceneFile, ObjectErrorsNameTheLine) {
     EXPECT_EQ(with("time = 2.0", "time = 0.0"), "test.toml:17: key times must increase (0 follows 0)");
     EXPECT_EQ(with("type = \"box\"", "type = \"cube\""),
               "test.toml:9: unknown generator 'cube' (known: terrain, box, sphere, cornell, buildings, lamps, "
-              "mountain, scattered_lights, text, menger, apartment, bridge, vdb)");
+              "mountain, scattered_lights, text, menger, apartment, bridge, vdb, vox)");
     EXPECT_EQ(with("size = [4, 4, 4]", "size = [4, 0, 4]"), "test.toml:7: object 'cube': size must be 1..256 voxels per axis");
     EXPECT_EQ(with("rotation = [90, 0, 0]", "rotation = [90, 0, 0]\nangle = 4"),
               "test.toml:16: key: give 'rotation' or 'axis' and 'angle', not both");

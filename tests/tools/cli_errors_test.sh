@@ -38,6 +38,15 @@ expect_error "--pos: expected x,y,z" -- "$vox" render --pos 1,2 --target 3,4,5 -
 expect_error "unknown|not expected|Extraction" -- "$vox" render --bogus
 expect_error "afile/a.png: cannot write: '.*afile' is not a folder" -- "$vox" render --size 8x8 -o "$tmp/afile/a.png"
 expect_error "afile/w.vdb: cannot write: '.*afile' is not a folder" -- "$vox" export cornell -o "$tmp/afile/w.vdb"
+# MagicaVoxel files: by extension; a binary file of another name is not read as a scene file.
+printf 'VOX \226\0\0\0MAIN' > "$tmp/cut.vox"
+cp "$tmp/cut.vox" "$tmp/model.dat"
+expect_error "cut.vox: offset 12: MAIN content size needs 4 bytes" -- "$vox" import "$tmp/cut.vox" -o "$tmp/w.toml"
+expect_error "cut.vox: offset 12:" -- "$vox" info "$tmp/cut.vox"
+expect_error "cut.vox: offset 12:" -- "$vox" render "$tmp/cut.vox" -o "$tmp/a.png"
+expect_error "model.dat: not a scene file \(binary data; a TOML scene file, a .vdb or a .vox file was expected" -- "$vox" info "$tmp/model.dat"
+expect_error "afile/w.vox: cannot write: '.*afile' is not a folder" -- "$vox" export cornell -o "$tmp/afile/w.vox"
+expect_error "the file must end in .vdb or .vox" -- "$vox" export cornell -o "$tmp/w.obj"
 
 out=$("$vox" render --size 64x40 -o "$tmp/ok.png" 2>&1); rc=$?
 if [ $rc -ne 0 ] || ! grep -q "wrote    $tmp/ok.png" <<<"$out" || [ "$(head -c 4 "$tmp/ok.png" | tail -c 3)" != "PNG" ]; then
@@ -63,6 +72,13 @@ if "$vox" info cornell | grep -qE "^peak +[0-9]+ MiB to show at 1280x720: world"
     echo "ok: vox info prints the planned peak"
 else
     echo "FAIL: vox info prints no planned peak"; failures=$((failures + 1))
+fi
+# A world through .vox and back: export, describe, import as a scene file + payload.
+if "$vox" export cornell -o "$tmp/made/c.vox" >/dev/null && "$vox" info "$tmp/made/c.vox" | grep -q "MagicaVoxel .vox" &&
+    "$vox" import "$tmp/made/c.vox" -o "$tmp/made/c.toml" >/dev/null && "$vox" info "$tmp/made/c.toml" >/dev/null; then
+    echo "ok: cornell through .vox export, info and import"
+else
+    echo "FAIL: cornell through .vox"; failures=$((failures + 1))
 fi
 
 [ $failures -eq 0 ] || { echo "$failures failure(s)"; exit 1; }

@@ -7,6 +7,7 @@
 #include "scene/scene_lighting.h"
 #include "render/irradiance_cache/irradiance_cache.h"
 #include "io/vdb_info.h"
+#include "io/vox_import.h"
 #include "shared/brick_grid.h"
 #include "vdb_options.h"
 #include "world/world_info.h"
@@ -15,14 +16,31 @@ namespace vox {
 
 void addInfoCommand(CLI::App& app, int& exitCode) {
     auto* cmd = app.add_subcommand(
-        "info", "Describe a world (size, bricks, voxels, emitters, memory) or a .vdb file (grids, and what an import would make)");
+        "info", "Describe a world (size, bricks, voxels, emitters, memory) or a .vdb/.vox file (contents, and what an import would make)");
     auto world = std::make_shared<std::string>();
     auto json = std::make_shared<bool>(false);
     auto vdbOptions = std::make_shared<VdbCliOptions>();
-    cmd->add_option("world", *world, "World name (worlds/NAME.toml), scene file or .vdb file; default: sandbox");
+    cmd->add_option("world", *world, "World name (worlds/NAME.toml), scene file, .vdb or .vox file; default: sandbox");
     cmd->add_flag("--json", *json, "Print JSON instead of text (worlds)");
     addVdbImportOptions(*cmd, *vdbOptions);
     cmd->callback([=, &exitCode] {
+        if (std::filesystem::path(*world).extension() == ".vox") {
+            auto options = toImportOptions(*vdbOptions);
+            if (!options) {
+                exitCode = fail(options.error());
+                return;
+            }
+            engine::io::VoxImportOptions voxOptions;
+            if (options->offset) voxOptions.offset = *options->offset;
+            voxOptions.memoryBudgetBytes = options->memoryBudgetBytes;
+            auto plan = engine::io::planVoxImport(*world, voxOptions);
+            if (!plan) {
+                exitCode = fail(plan.error());
+                return;
+            }
+            std::printf("file         %s\n%s", world->c_str(), engine::io::formatVoxImportReport(*plan, /*planned=*/true).c_str());
+            return;
+        }
         if (std::filesystem::path(*world).extension() == ".vdb") {
             auto options = toImportOptions(*vdbOptions);
             if (!options) {

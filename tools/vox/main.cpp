@@ -1,5 +1,6 @@
 // vox: the engine's command-line tool. `vox --help` lists the subcommands.
 #include <cstdio>
+#include <cstring>
 
 #include "commands.h"
 #include <filesystem>
@@ -8,15 +9,39 @@
 #include "core/memory_budget.h"
 #include "core/symbol_table_pages.h"
 #include "io/vdb_import.h"
+#include "io/vox_import.h"
 #include "scene/scene_file.h"
 
 namespace vox {
 
+namespace {
+
+using engine::Status;
+
+// A scene file is TOML text: a NUL byte in its first 4 KiB means something else was given.
+Status checkLooksLikeText(const std::filesystem::path& path) {
+    std::FILE* f = std::fopen(path.c_str(), "rb");
+    if (!f) return {};  // loadSceneFile reports it
+    char head[4096];
+    const std::size_t n = std::fread(head, 1, sizeof head, f);
+    std::fclose(f);
+    if (std::memchr(head, 0, n) == nullptr) return {};
+    return engine::makeError("{}: not a scene file (binary data; a TOML scene file, a .vdb or a .vox file was expected, "
+                             "told apart by the file's extension)",
+                             path.string());
+}
+
+}  // namespace
+
 engine::Result<engine::world::Scene> loadWorld(const std::string& nameOrPath) {
-    // A .vdb stands for itself: imported with the default options.
-    if (std::filesystem::path(nameOrPath).extension() == ".vdb") return engine::io::importVdb(nameOrPath);
+    // A .vdb or .vox stands for itself: imported with the default options.
+    const std::string ext = std::filesystem::path(nameOrPath).extension().string();
+    if (ext == ".vdb") return engine::io::importVdb(nameOrPath);
+    if (ext == ".vox") return engine::io::importVox(nameOrPath);
     auto path = engine::scene::resolveWorldPath(nameOrPath.empty() ? "sandbox" : nameOrPath);
     if (!path) return path.error();
+    // Anything else must be a scene file: say so for a binary file rather than report its bytes.
+    if (engine::Status text = checkLooksLikeText(*path); !text) return text.error();
     return engine::scene::loadSceneFile(*path);
 }
 
