@@ -137,8 +137,7 @@ TEST(EditTools, PickRefusesARayThatIsNotFinite) {
         EditTools tools;
         EXPECT_FALSE(tools.press(p));
     }
-    EXPECT_NE(game::missReason(lookDown(grid, 10.5f, 20.5f)), "");
-    EXPECT_EQ(game::missReason(lookDown(grid, 10.5f, 20.5f)).find("sky"), std::string::npos);
+    EXPECT_EQ(game::missReason(lookDown(grid, 10.5f, 20.5f)), "");  // a hit: nothing to explain
     game::Pick sky = game::pick(grid, {10.5f, 30.0f, 20.5f}, {0.0f, 1.0f, 0.0f});
     EXPECT_NE(game::missReason(sky).find("aiming at the sky"), std::string::npos);
 }

@@ -278,8 +278,9 @@ void mutateEveryNumber(const std::string& text, Counts& counts) {
                 continue;
             }
             // Accepted: the value stands as given; written back, the key holds it (not a default).
-            // The sun direction is the exception: it is normalised (worlds/README.md).
-            if (pathName(path).rfind("sky.sun_direction", 0) == 0) continue;
+            // Exceptions: the sun direction is normalised (worlds/README.md); path events are kept
+            // in time order, so a new time can move the event to another index.
+            if (pathName(path).rfind("sky.sun_direction", 0) == 0 || pathName(path).rfind("path.event[", 0) == 0) continue;
             toml::table written = toml::parse(sceneText(*scene), std::string_view("written.toml"));
             if (toml::node* back = find(written, path); back && back->is_number()) {
                 double given = std::visit([](auto v) { return double(v); }, bad.value);

@@ -58,14 +58,15 @@ for command in "${commands[@]}"; do
             fi
             # Inside the range (only 0, -1 or -0.5 can be): a value, not an error; not run.
             inside=$(awk -v r="$range" -v v="$v" 'BEGIN {
+                if (v !~ /^-?[0-9.]+(e[+-]?[0-9]+)?$/) { print 0; exit }  # nan, inf: in no range
                 if (match(r, /^-?[0-9.e+]+\.\.-?[0-9.e+]+/)) {
                     split(substr(r, 1, RLENGTH), b, /\.\./); lo = b[1] + 0; hi = b[2] + 0;
                     print (v == int(v) && v >= lo && v <= hi) ? 1 : 0; exit
                 }
                 if (match(r, /^[[(]-?[0-9.e+]+, -?[0-9.e+]+[])]/)) {
-                    s = substr(r, 1, RLENGTH); open = substr(s, 1, 1); close = substr(s, RLENGTH, 1);
+                    s = substr(r, 1, RLENGTH); lb = substr(s, 1, 1); rb = substr(s, RLENGTH, 1);
                     split(substr(s, 2, RLENGTH - 2), b, /, /); lo = b[1] + 0; hi = b[2] + 0;
-                    ok = (open == "(" ? v > lo : v >= lo) && (close == ")" ? v < hi : v <= hi);
+                    ok = (lb == "(" ? v > lo : v >= lo) && (rb == ")" ? v < hi : v <= hi);
                     print ok ? 1 : 0; exit
                 }
                 print "?" }')

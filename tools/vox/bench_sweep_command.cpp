@@ -294,7 +294,7 @@ void addBenchSweepCommand(CLI::App& bench, int& exitCode) {
     auto r = std::make_shared<RecommendOptions>();
     rec->add_option("world", r->world, "World name or scene file")->required();
     rec->add_option("--target-mae", r->targetMae, "Target MAE against the reference")->required()
-        ->check(numberIn(engine::aboveRange(0.0, 1e30)));
+        ->check(numberIn(engine::aboveRange(0.0, 1e6)));
     rec->add_option("--sweep", r->sweep, "Sweep results (CSV from vox bench sweep)")->capture_default_str();
     rec->add_flag("--indirect", r->indirect,
                   "Choose among the indirect-light series (error against the multi-bounce reference)");

@@ -140,7 +140,7 @@ void addCompareCommand(CLI::App& app, int& exitCode) {
         ->capture_default_str();
     cmd->add_option("--heatmap-max", o->heatmapMax,
                     "Error at the top of the colour ramp (default: the 99th percentile)")
-        ->check(numberIn(engine::aboveRange(0.0, 1e30)));
+        ->check(numberIn(engine::aboveRange(0.0, 1e6)));
     cmd->add_option("--json", o->json, "Also write the results as JSON");
     cmd->callback([o, &exitCode] { exitCode = runCompare(*o); });
 }

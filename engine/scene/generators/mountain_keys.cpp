@@ -8,6 +8,10 @@ namespace {
 
 using world::MountainParams;
 
+// snow_line and cliff_step: their default, 2^30 (what the writer writes), is above any world:
+// no snow, no cliffs.
+constexpr NumberRange kNoneAbove = wholeRange(-(1 << 30), 1 << 30, "voxels");
+
 MountainParams parse(GeneratorKeys& g) {
     MountainParams p;
     world::ColumnMaterials& m = p.materials;
@@ -16,9 +20,9 @@ MountainParams parse(GeneratorKeys& g) {
     m.rock = g.material("rock");
     m.soilDepth = g.integer("soil_depth", m.soilDepth, wholeRange(0, world::kMaxWorldExtent, "voxels"));
     m.snow = g.material("snow", "empty");
-    m.snowLine = g.integer("snow_line", m.snowLine, kVoxelIndexRange);
+    m.snowLine = g.integer("snow_line", m.snowLine, kNoneAbove);
     m.cliff = g.material("cliff", "empty");
-    m.cliffStep = g.integer("cliff_step", m.cliffStep, wholeRange(0, world::kMaxWorldExtent, "voxels"));
+    m.cliffStep = g.integer("cliff_step", m.cliffStep, kNoneAbove);
     glm::vec3 size(g.scene().grid.sizeInVoxels());
     p.peak = g.vec2("peak", {size.x * 0.5f, size.z * 0.5f}, world::kCoordinateRange);
     p.peakHeight = static_cast<float>(g.number("peak_height", p.peakHeight, closedRange(-world::kMaxWorldExtent, world::kMaxWorldExtent, "voxels")));
