@@ -1,5 +1,7 @@
 #include "game/edit_tools.h"
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "world/ray_traversal.h"
@@ -28,9 +30,15 @@ const char* brushName(Brush brush) {
 }
 
 Pick pick(const world::BrickGrid& grid, glm::vec3 origin, glm::vec3 direction, float maxDistance) {
+    Pick p;
+    // A NaN ray would traverse to voxel (0, 0, 0) and "hit" it: refuse it instead.
+    float lengths = glm::dot(origin, origin) + glm::dot(direction, direction) + maxDistance;
+    if (!std::isfinite(lengths) || glm::dot(direction, direction) == 0.0f) {
+        p.validRay = false;
+        return p;
+    }
     world::Ray ray{origin, glm::normalize(direction), maxDistance};
     world::RayHit hit = world::traceRay(grid, ray);
-    Pick p;
     if (!hit.hit) return p;
     p.hit = true;
     p.voxel = hit.voxel;
@@ -45,6 +53,12 @@ Pick pick(const world::BrickGrid& grid, glm::vec3 origin, glm::vec3 direction, f
         p.normal[axis] = ray.direction[axis] > 0.0f ? -1 : 1;
     }
     return p;
+}
+
+std::string missReason(const Pick& target) {
+    if (!target.validRay) return "the view ray is not finite (camera position or direction is NaN or infinite)";
+    if (!target.hit) return fmt::format("aiming at the sky (nothing within {:.0f} voxels)", kPickDistance);
+    return {};
 }
 
 world::Box EditOp::region() const {
@@ -81,6 +95,21 @@ void applyEdit(world::BrickGrid& grid, const EditOp& op) {
     }
 }
 
+std::string unchangedReason(const world::BrickGrid& grid, const EditOp& op, const world::Palette& palette) {
+    world::Box r = op.region();
+    world::Box b = grid.bounds();
+    world::Box inside{glm::max(r.min, b.min), glm::min(r.max, b.max)};
+    glm::ivec3 s = b.size();
+    if (inside.empty()) return fmt::format("it lies outside the world (0..{}, 0..{}, 0..{})", s.x, s.y, s.z);
+    std::string what = op.material < palette.size() ? palette[op.material].name : fmt::format("#{}", op.material);
+    switch (op.tool) {
+        case Tool::Place: return fmt::format("every voxel there is already {}", what);
+        case Tool::Remove: return "there is nothing to remove there";
+        case Tool::Paint: return fmt::format("no solid voxel there to paint, or all are already {}", what);
+    }
+    return {};
+}
+
 EditOp EditTools::makeOp() const {
     EditOp op;
     op.tool = tool;
@@ -113,8 +142,9 @@ std::optional<EditOp> EditTools::release(const Pick& target) {
     if (!mAnchor) return std::nullopt;
     glm::ivec3 a = *mAnchor;
     mAnchor.reset();
-    // Released over the sky: the box collapses to the anchor voxel rather than vanishing.
-    glm::ivec3 b = target.hit ? targetVoxel(target) : a;
+    // Released over the sky: no second corner, so no box (the sandbox says why).
+    if (!target.hit) return std::nullopt;
+    glm::ivec3 b = targetVoxel(target);
     EditOp op = makeOp();
     op.box = {glm::min(a, b), glm::max(a, b) + 1};
     return op;

@@ -25,6 +25,9 @@ const char* brushName(Brush brush);
 
 struct Pick {
     bool hit = false;
+    // False when the view ray was not finite (a NaN or infinite camera): nothing is picked, so no
+    // click can edit voxel (0, 0, 0) by accident.
+    bool validRay = true;
     glm::ivec3 voxel{0};   // the voxel hit
     glm::ivec3 normal{0};  // outward normal of the face the ray entered through
     engine::world::MaterialId material = engine::world::kEmpty;
@@ -35,6 +38,10 @@ struct Pick {
 inline constexpr float kPickDistance = 1024.0f;  // voxels
 Pick pick(const engine::world::BrickGrid& grid, glm::vec3 origin, glm::vec3 direction,
           float maxDistance = kPickDistance);
+
+// Why aiming at `target` cannot edit: "aiming at the sky", or the ray is not finite. Empty when
+// it hits a voxel.
+std::string missReason(const Pick& target);
 
 struct EditOp {
     Tool tool = Tool::Place;
@@ -51,6 +58,10 @@ struct EditOp {
 
 // Applies the edit (no undo: see UndoHistory::record).
 void applyEdit(engine::world::BrickGrid& grid, const EditOp& op);
+// Why an edit that changed no voxel changed nothing: outside the world, already that material,
+// nothing there to remove or paint.
+std::string unchangedReason(const engine::world::BrickGrid& grid, const EditOp& op,
+                            const engine::world::Palette& palette);
 
 class EditTools {
 public:
@@ -60,7 +71,9 @@ public:
     float radius = 3.0f;
 
     // The apply button went down / came up while aiming at `target`. Returns the edit to apply:
-    // one voxel and sphere edits on press, a box on release (anchored at the press).
+    // one voxel and sphere edits on press, a box on release (anchored at the press). A box
+    // released over the sky (or with an invalid ray) is cancelled: no edit, and missReason says
+    // why.
     std::optional<EditOp> press(const Pick& target);
     std::optional<EditOp> release(const Pick& target);
     void cancelDrag() { mAnchor.reset(); }

@@ -32,6 +32,16 @@ bool drawChoice(const Knob& k, LightingSettings& s) {
     return changed;
 }
 
+// A number from a slider (Ctrl+click types any text, NaN and out-of-range values included) goes
+// through the knob's own range check (the one number check) before it is taken.
+bool setChecked(const Knob& k, LightingSettings& s, double v) {
+    LightingSettings t = s;
+    k.set(t, v);
+    if (!checkKnob(k, t).ok()) return false;
+    s = t;
+    return true;
+}
+
 bool drawWidget(const Knob& k, LightingSettings& s) {
     switch (k.kind) {
         case KnobKind::Count: {
@@ -44,16 +54,14 @@ bool drawWidget(const Knob& k, LightingSettings& s) {
             int v = static_cast<int>(k.get(s));
             if (!ImGui::SliderInt(k.name.data(), &v, static_cast<int>(k.min), static_cast<int>(k.max), "%d", sliderFlags(k)))
                 return false;
-            k.set(s, v);
-            return true;
+            return setChecked(k, s, v);
         }
         case KnobKind::Real: {
             float v = static_cast<float>(k.get(s));
             if (!ImGui::SliderFloat(k.name.data(), &v, static_cast<float>(k.min), static_cast<float>(k.max), "%.3g",
                                     sliderFlags(k)))
                 return false;
-            k.set(s, v);
-            return true;
+            return setChecked(k, s, v);
         }
         case KnobKind::Switch: {
             bool v = k.get(s) != 0.0;

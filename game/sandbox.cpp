@@ -410,19 +410,22 @@ void Sandbox::handleInput(float dt) {
     mTarget = pick(mScene.grid, mCamera.position(), mCamera.forward());
 
     if (mMouseLook && !clickCaptured) {
-        if (mInput.buttonPressed(GLFW_MOUSE_BUTTON_LEFT)) {
-            if (auto op = mTools.press(mTarget)) applyEdit(*op);
-        }
-        if (mInput.buttonReleased(GLFW_MOUSE_BUTTON_LEFT)) {
-            if (auto op = mTools.release(mTarget)) applyEdit(*op);
-        }
+        // A press or release that edits nothing says why (the sky, a ray that is not finite).
+        auto use = [&](bool pressed) {
+            bool wasDragging = mTools.dragging();
+            std::optional<EditOp> op = pressed ? mTools.press(mTarget) : mTools.release(mTarget);
+            if (op) applyEdit(*op);
+            else if (pressed && !mTarget.hit) message(fmt::format("{}: nothing edited: {}", toolName(mTools.tool), missReason(mTarget)));
+            else if (!pressed && wasDragging) message(fmt::format("box released over no surface: nothing edited: {}", missReason(mTarget)));
+        };
+        if (mInput.buttonPressed(GLFW_MOUSE_BUTTON_LEFT)) use(true);
+        if (mInput.buttonReleased(GLFW_MOUSE_BUTTON_LEFT)) use(false);
         // Right button: remove with the current brush, whatever the tool.
         if (mInput.buttonPressed(GLFW_MOUSE_BUTTON_RIGHT) || mInput.buttonReleased(GLFW_MOUSE_BUTTON_RIGHT)) {
             Tool saved = mTools.tool;
             mTools.tool = Tool::Remove;
-            std::optional<EditOp> op = mInput.buttonPressed(GLFW_MOUSE_BUTTON_RIGHT) ? mTools.press(mTarget) : mTools.release(mTarget);
+            use(mInput.buttonPressed(GLFW_MOUSE_BUTTON_RIGHT));
             mTools.tool = saved;
-            if (op) applyEdit(*op);
         }
         if (mInput.buttonPressed(GLFW_MOUSE_BUTTON_MIDDLE) || mInput.pressed(GLFW_KEY_I)) {
             if (mTools.eyedrop(mTarget)) message("eyedropper: " + mScene.palette[mTools.material].name);
@@ -514,7 +517,7 @@ void Sandbox::applyEdit(const EditOp& op) {
     EditRecord rec = mUndo.record(mScene.grid, op.region(), op.describe(mScene.palette),
                                   [&](world::BrickGrid& grid) { game::applyEdit(grid, op); });
     if (rec.changedCells == 0) {
-        message(op.describe(mScene.palette) + ": nothing changed");
+        message(op.describe(mScene.palette) + ": nothing changed: " + unchangedReason(mScene.grid, op, mScene.palette));
         return;
     }
     ++mWorldVersion;
@@ -559,6 +562,8 @@ engine::Status Sandbox::save(const fs::path& path, bool autosave) {
     std::vector<world::CameraPreset> presets = mScene.cameras;
     world::CameraPreset view = mCamera.preset();
     view.name = kSavedViewName;
+    // A camera that is not finite would be written and refused on loading: refuse it here.
+    if (engine::Status ok = world::checkCamera(view); !ok) return ok;
     std::erase_if(mScene.cameras, [](const world::CameraPreset& c) { return c.name == kSavedViewName; });
     mScene.cameras.insert(mScene.cameras.begin(), view);
     engine::Status s = mStore->save(mScene, path);

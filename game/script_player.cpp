@@ -6,21 +6,22 @@
 #include <fstream>
 #include <sstream>
 
+#include <fmt/format.h>
+
+#include "core/number_check.h"
+
 namespace game {
 
 namespace {
+
+// Mouse motion and cursor positions: far beyond any window, in pixels.
+constexpr engine::NumberRange kPointerRange = engine::closedRange(-1e6, 1e6, "pixels");
 
 std::vector<std::string> words(const std::string& line) {
     std::istringstream in(line);
     std::vector<std::string> out;
     for (std::string w; in >> w;) out.push_back(w);
     return out;
-}
-
-bool parseNumber(const std::string& s, float& out) {
-    const char* end = s.data() + s.size();
-    auto r = std::from_chars(s.data(), end, out);
-    return r.ec == std::errc() && r.ptr == end;
 }
 
 bool parseFrame(const std::string& s, std::uint64_t& out) {
@@ -70,10 +71,18 @@ engine::Result<ScriptPlayer> ScriptPlayer::parse(std::string_view text, std::str
             if (s == "up") return false;
             return fail("expected 'down' or 'up', got '" + s + "'");
         };
-        auto vec2 = [&]() -> engine::Result<glm::vec2> {
-            glm::vec2 v;
-            if (!parseNumber(w[2], v.x) || !parseNumber(w[3], v.y)) return fail("expected two numbers");
-            return v;
+        // Every number goes through the one number check (core/number_check.h).
+        auto number = [&](const std::string& word, std::string_view name, const engine::NumberRange& range) -> engine::Result<float> {
+            auto v = engine::parseNumber(fmt::format("{} {}", cmd, name), word, range);
+            if (!v) return fail(v.error().message);
+            return float(*v);
+        };
+        auto vec2 = [&](const engine::NumberRange& range) -> engine::Result<glm::vec2> {
+            auto x = number(w[2], "x", range);
+            if (!x) return x.error();
+            auto y = number(w[3], "y", range);
+            if (!y) return y.error();
+            return glm::vec2(*x, *y);
         };
         auto push = [&](InputEventType type, int code, bool down, glm::vec2 value, std::uint64_t at) {
             ScriptStep s = step;
@@ -95,22 +104,20 @@ engine::Result<ScriptPlayer> ScriptPlayer::parse(std::string_view text, std::str
             push(type, *code, true, {}, step.frame);
             push(type, *code, false, {}, step.frame + 1);
         } else if ((cmd == "move" || cmd == "cursor") && args(2)) {
-            auto v = vec2();
+            auto v = vec2(kPointerRange);
             if (!v) return v.error();
             push(cmd == "move" ? InputEventType::MouseMove : InputEventType::CursorPos, 0, false, *v, step.frame);
         } else if (cmd == "scroll" && args(1)) {
-            float dy;
-            if (!parseNumber(w[2], dy)) return fail("expected a number");
-            push(InputEventType::Scroll, 0, false, {0.0f, dy}, step.frame);
+            auto dy = number(w[2], "steps", engine::closedRange(-1e4, 1e4, "steps"));
+            if (!dy) return dy.error();
+            push(InputEventType::Scroll, 0, false, {0.0f, *dy}, step.frame);
         } else if ((cmd == "screenshot" || cmd == "capture") && args(1)) {
             step.isAction = true;
             step.action = {cmd == "screenshot" ? ScriptAction::Kind::Screenshot : ScriptAction::Kind::Capture, w[2]};
             player.mSteps.push_back(step);
         } else if (cmd == "resize" && args(2)) {
-            auto v = vec2();
+            auto v = vec2(engine::wholeRange(1, 8192, "pixels"));
             if (!v) return v.error();
-            if (v->x < 1 || v->y < 1 || v->x > 8192 || v->y > 8192 || v->x != std::floor(v->x) || v->y != std::floor(v->y))
-                return fail("resize: expected whole sizes in 1..8192");
             step.isAction = true;
             step.action.kind = ScriptAction::Kind::Resize;
             step.action.size = glm::uvec2(*v);

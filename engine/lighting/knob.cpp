@@ -5,17 +5,11 @@
 
 #include <fmt/format.h>
 
+#include "core/number_check.h"
 #include "lighting/lighting_settings.h"
 
 namespace engine::lighting {
 namespace {
-
-Result<double> parseNumber(std::string_view text) {
-    double v = 0.0;
-    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-    if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(v)) return makeError("not a number");
-    return v;
-}
 
 std::string choiceList(const Knob& knob) {
     std::string list;
@@ -23,12 +17,7 @@ std::string choiceList(const Knob& knob) {
     return list;
 }
 
-Status inRange(const Knob& knob, double v) {
-    if (knob.kind == KnobKind::Count && v != std::floor(v))
-        return makeError("{} must be a whole number, not {}", knob.name, v);
-    if (!(v >= knob.min && v <= knob.max)) return makeError("{} must be in {}..{}, not {}", knob.name, knob.min, knob.max, v);
-    return {};
-}
+Status inRange(const Knob& knob, double v) { return checkNumber(knob.name, v, knobRange(knob)); }
 
 }  // namespace
 
@@ -36,7 +25,7 @@ Status setKnob(const Knob& knob, LightingSettings& s, std::string_view text) {
     switch (knob.kind) {
         case KnobKind::Count:
         case KnobKind::Real: {
-            auto v = parseNumber(text);
+            auto v = readNumber(text);
             if (!v) return makeError("{}: expected a number, got '{}'", knob.name, text);
             if (Status ok = inRange(knob, *v); !ok) return ok;
             knob.set(s, *v);
@@ -85,6 +74,10 @@ Status checkKnob(const Knob& knob, const LightingSettings& s) {
         case KnobKind::Custom: return knob.check ? knob.check(s) : Status{};
     }
     return {};
+}
+
+NumberRange knobRange(const Knob& knob) {
+    return knob.kind == KnobKind::Count ? wholeRange(knob.min, knob.max) : closedRange(knob.min, knob.max);
 }
 
 bool knobRelevant(const Knob& knob, const LightingSettings& s) { return !knob.relevant || knob.relevant(s); }

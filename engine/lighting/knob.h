@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "core/error.h"
+#include "core/number_check.h"
 
 namespace engine::lighting {
 
@@ -46,5 +47,8 @@ std::string knobText(const Knob& knob, const LightingSettings& s);
 // Whether the current value is in range (for settings built in code: benches, the HUD).
 Status checkKnob(const Knob& knob, const LightingSettings& s);
 bool knobRelevant(const Knob& knob, const LightingSettings& s);
+// The range of a Count or Real knob for the one number check (core/number_check.h); the command
+// line's check of --PREFIX-NAME is built from it too.
+NumberRange knobRange(const Knob& knob);
 
 }  // namespace engine::lighting

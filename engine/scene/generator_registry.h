@@ -14,6 +14,7 @@
 #include "scene/toml_reader.h"
 #include "scene/toml_writer.h"
 #include "world/scene.h"
+#include "world/world_limits.h"
 
 namespace engine::scene {
 

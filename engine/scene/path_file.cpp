@@ -2,6 +2,7 @@
 #include "scene/path_file.h"
 
 #include "scene/path_table.h"
+#include "world/scene.h"
 
 #include <string>
 #include <vector>
@@ -9,6 +10,9 @@
 namespace engine::scene {
 
 namespace {
+
+// Key and event times, and the duration: a path lasts at most a day.
+constexpr NumberRange kPathTimeRange = closedRange(0.0, 24.0 * 3600.0, "s");
 
 using world::CameraKey;
 using world::TimelineEvent;
@@ -19,19 +23,17 @@ CameraKey readKey(const toml::node& node, const std::vector<CameraKey>& previous
     if (!t) throw ParseError{std::string(source) + ": each [[path.key]] must be a table"};
     KeyReader k(source, *t);
     CameraKey key;
-    key.time = k.number("time", 0.0, true);
-    key.position = k.vec3("position", {}, true);
-    key.target = k.vec3("target", {}, true);
-    key.fovYDegrees =
-        static_cast<float>(k.number("fov", previous.empty() ? 60.0 : previous.back().fovYDegrees));
-    if (key.time < 0.0) k.fail(k.node("time"), "'time' must not be negative");
+    key.time = k.number("time", 0.0, kPathTimeRange, true);
+    key.position = k.vec3("position", {}, world::kCoordinateRange, true);
+    key.target = k.vec3("target", {}, world::kCoordinateRange, true);
+    key.fovYDegrees = static_cast<float>(
+        k.number("fov", previous.empty() ? 60.0 : previous.back().fovYDegrees, world::kFovRange));
     if (!previous.empty() && key.time <= previous.back().time)
         k.fail(k.node("time"), "key times must increase: {} s after {} s", key.time,
                previous.back().time);
-    if (key.fovYDegrees <= 1.0f || key.fovYDegrees >= 179.0f)
-        k.fail(k.node("fov"), "'fov' must be in (1, 179) degrees");
     if (glm::length(key.target - key.position) < 1e-3f)
         k.fail(&node, "key target equals its position");
+    k.finish();
     return key;
 }
 
@@ -41,7 +43,7 @@ TimelineEvent readEvent(const toml::node& node, double duration, std::string_vie
     KeyReader e(source, *t);
     TimelineEvent ev;
     ev.where = e.where(&node);
-    ev.time = e.number("time", 0.0, true);
+    ev.time = e.number("time", 0.0, kPathTimeRange, true);
     if (ev.time < 0.0 || ev.time > duration)
         e.fail(e.node("time"), "event time {} s is outside the path's 0..{} s", ev.time, duration);
     std::string type = e.string("type");
@@ -52,18 +54,17 @@ TimelineEvent readEvent(const toml::node& node, double duration, std::string_vie
     };
     if (type == "box") {
         ev.kind = TimelineEvent::Kind::Box;
-        ev.box = world::Box{e.ivec3("min", {}, true), e.ivec3("max", {}, true)};
+        ev.box = world::Box{e.ivec3("min", {}, kVoxelIndexRange, true),
+                            e.ivec3("max", {}, kVoxelIndexRange, true)};
         material();
     } else if (type == "sphere") {
         ev.kind = TimelineEvent::Kind::Sphere;
-        ev.center = e.vec3("center", {}, true);
-        ev.radius = static_cast<float>(e.number("radius", 0.0, true));
-        if (ev.radius <= 0.0f || ev.radius > 32768.0f)
-            e.fail(e.node("radius"), "'radius' must be in (0, 32768]");
+        ev.center = e.vec3("center", {}, world::kCoordinateRange, true);
+        ev.radius = static_cast<float>(e.number("radius", 0.0, aboveRange(0.0, 32768.0, "voxels"), true));
         material();
     } else if (type == "voxel") {
         ev.kind = TimelineEvent::Kind::Voxel;
-        ev.voxel = e.ivec3("at", {}, true);
+        ev.voxel = e.ivec3("at", {}, kVoxelIndexRange, true);
         material();
     } else if (type == "light") {
         ev.kind = TimelineEvent::Kind::Light;
@@ -74,7 +75,9 @@ TimelineEvent readEvent(const toml::node& node, double duration, std::string_vie
             e.fail(&node,
                    "a light region needs both 'min' and 'max' (or neither: the whole world)");
         ev.wholeWorld = !hasMin;
-        if (hasMin) ev.box = world::Box{e.ivec3("min", {}, true), e.ivec3("max", {}, true)};
+        if (hasMin)
+            ev.box = world::Box{e.ivec3("min", {}, kVoxelIndexRange, true),
+                                e.ivec3("max", {}, kVoxelIndexRange, true)};
     } else if (type == "dynamic") {
         ev.kind = TimelineEvent::Kind::DynamicStart;
         ev.object = e.string("object");
@@ -83,6 +86,7 @@ TimelineEvent readEvent(const toml::node& node, double duration, std::string_vie
         e.fail(e.node("type"),
                "unknown event type '{}' (known: box, sphere, voxel, light, dynamic)", type);
     }
+    e.finish();
     return ev;
 }
 
@@ -129,9 +133,7 @@ world::Flythrough readPath(const toml::table& t, std::string_view source) {
     KeyReader path(source, t);
     world::Flythrough fly;
     fly.source = std::string(source);
-    fly.fps = path.number("fps", 30.0);
-    if (!(fly.fps > 0.0 && fly.fps <= 1000.0))
-        path.fail(path.node("fps"), "'fps' must be in (0, 1000]");
+    fly.fps = path.number("fps", 30.0, world::kFpsRange);
 
     std::vector<CameraKey> keys;
     const toml::node* k = path.node("key");
@@ -141,8 +143,8 @@ world::Flythrough readPath(const toml::table& t, std::string_view source) {
     for (const toml::node& key : *ka) keys.push_back(readKey(key, keys, source));
 
     double lastKey = keys.back().time;
-    fly.duration = path.number("duration", lastKey);
-    if (fly.duration < lastKey || fly.duration > 24.0 * 3600.0)
+    fly.duration = path.number("duration", lastKey, kPathTimeRange);
+    if (fly.duration < lastKey)
         path.fail(path.node("duration"),
                   "'duration' must be at least the last key's time ({} s) and at most a day",
                   lastKey);
@@ -156,6 +158,7 @@ world::Flythrough readPath(const toml::table& t, std::string_view source) {
             events.push_back(readEvent(event, fly.duration, source));
     }
     fly.timeline = world::Timeline(std::move(events));
+    path.finish();
     return fly;
 }
 
@@ -183,7 +186,9 @@ Result<world::Flythrough> loadFlythroughText(std::string_view text, std::string_
         if (!n) top.fail(nullptr, "no [path] table (camera keys and events for vox capture)");
         const toml::table* t = n->as_table();
         if (!t) top.fail(n, "'path' must be a table ([path])");
-        return readPath(*t, source);
+        world::Flythrough fly = readPath(*t, source);
+        top.finish();
+        return fly;
     });
 }
 

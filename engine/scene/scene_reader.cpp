@@ -75,6 +75,7 @@ public:
         }
         scene.grid.clearDirty();
         world::updateDynamicObjects(scene.objects, scene.dynamic, 0.0, 0.0);
+        top.finish();
         return scene;
     }
 
@@ -94,14 +95,10 @@ private:
         if (!n || !n->as_table()) fail(&top.raw(), "missing [world] table");
         KeyReader keys(mSource, *n->as_table());
         scene.name = keys.string("name", "untitled");
-        scene.voxelSize = static_cast<float>(keys.number("voxel_size", 1.0));
-        if (!(scene.voxelSize > 0.0f && scene.voxelSize <= 1e6f))
-            fail(keys.node("voxel_size"), "'voxel_size' must be in (0, 1e6]");
-        glm::ivec3 size = keys.ivec3("size", {}, true);
-        if (glm::any(glm::lessThan(size, glm::ivec3(1))) ||
-            glm::any(glm::greaterThan(size, glm::ivec3(world::kMaxWorldExtent))))
-            fail(keys.node("size"), "world size {}x{}x{} is outside 1..{} voxels per axis", size.x,
-                 size.y, size.z, world::kMaxWorldExtent);
+        scene.voxelSize =
+            static_cast<float>(keys.number("voxel_size", 1.0, aboveRange(0.0, 1e6, "m")));
+        glm::ivec3 size =
+            keys.ivec3("size", {}, wholeRange(1, world::kMaxWorldExtent, "voxels"), true);
         glm::u64vec3 cells = glm::u64vec3((size + 7) / 8);
         if (cells.x * cells.y * cells.z > world::kMaxTopGridCells)
             fail(keys.node("size"),
@@ -117,15 +114,9 @@ private:
         world::Material mat;
         mat.name = m.string("name");
         if (scene.palette.find(mat.name)) fail(&node, "material '{}' is defined twice", mat.name);
-        mat.albedo = m.vec3("albedo", mat.albedo);
-        mat.emissionColor = m.vec3("emission", glm::vec3(1.0f));
-        mat.emissionStrength = static_cast<float>(m.number("strength", 0.0));
-        if (glm::any(glm::lessThan(mat.albedo, glm::vec3(0.0f))) ||
-            glm::any(glm::greaterThan(mat.albedo, glm::vec3(1.0f))))
-            fail(&node, "material '{}': albedo must lie in [0, 1]", mat.name);
-        if (mat.emissionStrength < 0.0f ||
-            glm::any(glm::lessThan(mat.emissionColor, glm::vec3(0.0f))))
-            fail(&node, "material '{}': emission must not be negative", mat.name);
+        mat.albedo = m.vec3("albedo", mat.albedo, closedRange(0.0, 1.0));
+        mat.emissionColor = m.vec3("emission", glm::vec3(1.0f), kRadianceRange);
+        mat.emissionStrength = static_cast<float>(m.number("strength", 0.0, kRadianceRange));
         if (!mat.emissive()) {
             mat.emissionColor = glm::vec3(0.0f);
             mat.emissionStrength = 0.0f;
@@ -166,11 +157,8 @@ private:
         KeyReader o(mSource, *t);
         world::DynamicObject object;
         object.name = o.string("name", "object");
-        object.modelSize = o.ivec3("size", {}, true);
-        if (glm::any(glm::lessThan(object.modelSize, glm::ivec3(1))) ||
-            glm::any(glm::greaterThan(object.modelSize, glm::ivec3(world::kMaxObjectExtent))))
-            fail(o.node("size"), "object '{}': size must be 1..{} voxels per axis", object.name,
-                 world::kMaxObjectExtent);
+        object.modelSize =
+            o.ivec3("size", {}, wholeRange(1, world::kMaxObjectExtent, "voxels"), true);
         object.model = world::BrickGrid(object.modelSize);
 
         const toml::node* gens = o.node("generator");
@@ -211,24 +199,25 @@ private:
         KeyReader k(mSource, *kt);
         world::ObjectKey key;
         if (!k.has("time")) fail(&kn, "key: missing 'time'");
-        key.time = k.number("time", 0.0);
+        key.time = k.number("time", 0.0, closedRange(-1e7, 1e7, "s"));
         if (!previous.empty() && !(key.time > previous.back().time))
             fail(k.node("time"), "key times must increase ({} follows {})", key.time,
                  previous.back().time);
-        key.position = glm::dvec3(k.vec3("position", {}, true));
+        key.position = glm::dvec3(k.vec3("position", {}, world::kCoordinateRange, true));
         if (k.has("rotation") && (k.has("axis") || k.has("angle")))
             fail(&kn, "key: give 'rotation' or 'axis' and 'angle', not both");
         if (k.has("rotation")) {
             key.given = Given::YawPitchRoll;
-            key.angles = glm::dvec3(k.vec3("rotation", {}));
+            key.angles = glm::dvec3(k.vec3("rotation", {}, closedRange(-1e6, 1e6, "degrees")));
             key.rotation = world::rotationFromYawPitchRoll(key.angles);
         } else if (k.has("axis") || k.has("angle")) {
             key.given = Given::AxisAngle;
-            key.angles = glm::dvec3(k.vec3("axis", {0.0f, 1.0f, 0.0f}));
+            key.angles = glm::dvec3(k.vec3("axis", {0.0f, 1.0f, 0.0f}, closedRange(-1e6, 1e6)));
             if (glm::length(key.angles) < 1e-9) fail(k.node("axis"), "'axis' must not be zero");
-            key.angle = k.number("angle", 0.0);
+            key.angle = k.number("angle", 0.0, closedRange(-1e6, 1e6, "degrees"));
             key.rotation = world::rotationFromAxisAngle(key.angles, key.angle);
         }
+        k.finish();
         return key;
     }
 
@@ -238,11 +227,9 @@ private:
         KeyReader c(mSource, *t);
         world::CameraPreset cam;
         cam.name = c.string("name");
-        cam.position = c.vec3("position", {}, true);
-        cam.target = c.vec3("target", {}, true);
-        cam.fovYDegrees = static_cast<float>(c.number("fov", 60.0));
-        if (cam.fovYDegrees <= 1.0f || cam.fovYDegrees >= 179.0f)
-            fail(c.node("fov"), "'fov' must be in (1, 179) degrees");
+        cam.position = c.vec3("position", {}, world::kCoordinateRange, true);
+        cam.target = c.vec3("target", {}, world::kCoordinateRange, true);
+        cam.fovYDegrees = static_cast<float>(c.number("fov", 60.0, world::kFovRange));
         if (glm::length(cam.target - cam.position) < 1e-4f)
             fail(&node, "camera '{}': target equals position", cam.name);
         scene.cameras.push_back(cam);
@@ -252,14 +239,14 @@ private:
         const toml::table* t = n.as_table();
         if (!t) fail(&n, "'sky' must be a table");
         KeyReader sky(mSource, *t);
-        glm::vec3 dir = sky.vec3("sun_direction", scene.sky.sunDirection);
+        glm::vec3 dir = sky.vec3("sun_direction", scene.sky.sunDirection, closedRange(-1e6, 1e6));
         if (glm::length(dir) < 1e-6f) fail(&n, "'sun_direction' must not be zero");
         // A unit vector (as a written-back scene holds) is kept as is: normalising it again can
         // move its last bits, and load -> write -> load would drift.
         scene.sky.sunDirection =
             std::abs(glm::length(dir) - 1.0f) > 1e-6f ? glm::normalize(dir) : dir;
-        scene.sky.sunRadiance = sky.vec3("sun_radiance", scene.sky.sunRadiance);
-        scene.sky.skyRadiance = sky.vec3("sky_radiance", scene.sky.skyRadiance);
+        scene.sky.sunRadiance = sky.vec3("sun_radiance", scene.sky.sunRadiance, kRadianceRange);
+        scene.sky.skyRadiance = sky.vec3("sky_radiance", scene.sky.skyRadiance, kRadianceRange);
     }
 
     std::string mSource;

@@ -23,7 +23,12 @@ Result<std::string> readTextFile(const std::filesystem::path& path, std::string_
 }
 
 KeyReader::~KeyReader() noexcept(false) {
-    if (std::uncaught_exceptions()) return;
+    if (mFinished || std::uncaught_exceptions()) return;
+    finish();
+}
+
+void KeyReader::finish() {
+    mFinished = true;
     for (auto&& [key, node] : mTable) {
         if (!mUsed.count(std::string(key.str()))) fail(&node, "unknown key '{}'", key.str());
     }
@@ -38,24 +43,36 @@ void KeyReader::acceptAll() {
     for (auto&& [key, node] : mTable) mUsed.insert(std::string(key.str()));
 }
 
-double KeyReader::number(std::string_view key, double fallback, bool required) {
+void KeyReader::check(const toml::node* at, std::string_view name, double value,
+                      const NumberRange& range) {
+    if (Status ok = checkNumber(name, value, range); !ok) fail(at, "{}", ok.error().message);
+}
+
+double KeyReader::number(std::string_view key, double fallback, const NumberRange& range,
+                         bool required) {
     const toml::node* n = node(key);
     if (!n) {
         if (required) fail(&mTable, "missing '{}'", key);
         return fallback;
     }
-    if (auto v = n->value<double>(); v && std::isfinite(*v)) return *v;
-    fail(n, "'{}' must be a number", key);
+    auto v = n->value<double>();
+    if (!v) fail(n, "'{}' must be a number in {}", key, describeRange(range));
+    check(n, fmt::format("'{}'", key), *v, range);
+    return *v;
 }
 
-int KeyReader::integer(std::string_view key, int fallback) {
+int KeyReader::integer(std::string_view key, int fallback, const NumberRange& range) {
     const toml::node* n = node(key);
     if (!n) return fallback;
-    if (auto v = n->value<std::int64_t>()) {
-        if (*v < -(1ll << 30) || *v > (1ll << 30)) fail(n, "'{}' is out of range", key);
+    NumberRange whole = range;
+    whole.whole = true;
+    if (auto v = n->value_exact<std::int64_t>()) {
+        check(n, fmt::format("'{}'", key), static_cast<double>(*v), whole);
         return static_cast<int>(*v);
     }
-    fail(n, "'{}' must be an integer", key);
+    // A float (3.0, 1e300, nan): refused, with the range it should have been in.
+    if (auto v = n->value<double>()) check(n, fmt::format("'{}'", key), *v, whole);
+    fail(n, "'{}' must be a whole number in {}", key, describeRange(whole));
 }
 
 bool KeyReader::boolean(std::string_view key, bool fallback, bool required) {
@@ -94,46 +111,45 @@ std::vector<std::string> KeyReader::strings(std::string_view key) {
 
 template <int N>
 glm::vec<N, double> KeyReader::vector(std::string_view key, glm::vec<N, double> fallback,
-                                      bool required) {
+                                      NumberRange range, bool required) {
     const toml::node* n = node(key);
     if (!n) {
         if (required) fail(&mTable, "missing '{}'", key);
         return fallback;
     }
     const toml::array* a = n->as_array();
-    if (!a || a->size() != N) fail(n, "'{}' must be an array of {} numbers", key, N);
+    const char* kind = range.whole ? "whole numbers" : "numbers";
+    if (!a || a->size() != N) fail(n, "'{}' must be an array of {} {}", key, N, kind);
     glm::vec<N, double> out;
     for (int i = 0; i < N; ++i) {
-        auto v = (*a)[std::size_t(i)].value<double>();
-        // Finite and at most 1e7: far beyond any world, and floats still hold whole voxels there.
-        if (!v || !std::isfinite(*v) || std::abs(*v) > 1e7)
-            fail(n, "'{}' must be an array of {} numbers", key, N);
+        const toml::node& e = (*a)[std::size_t(i)];
+        auto v = e.value<double>();
+        if (!v) fail(n, "'{}' must be an array of {} {}", key, N, kind);
+        check(n, fmt::format("'{}' {}", key, "xyzw"[i]), *v, range);
         out[i] = *v;
     }
     return out;
 }
 
-template <int N>
-glm::vec<N, int> KeyReader::whole(std::string_view key, glm::vec<N, int> fallback, bool required) {
-    using V = glm::vec<N, double>;
-    V v = vector<N>(key, V(fallback), required);
-    if (glm::any(glm::notEqual(glm::floor(v), v)) ||
-        glm::any(glm::greaterThan(glm::abs(v), V(1 << 20))))
-        fail(node(key), "'{}' must hold whole numbers of voxels", key);
-    return glm::vec<N, int>(v);
+glm::vec2 KeyReader::vec2(std::string_view key, glm::vec2 fallback, const NumberRange& range,
+                          bool required) {
+    return glm::vec2(vector<2>(key, glm::dvec2(fallback), range, required));
 }
-
-glm::vec2 KeyReader::vec2(std::string_view key, glm::vec2 fallback, bool required) {
-    return glm::vec2(vector<2>(key, glm::dvec2(fallback), required));
+glm::vec3 KeyReader::vec3(std::string_view key, glm::vec3 fallback, const NumberRange& range,
+                          bool required) {
+    return glm::vec3(vector<3>(key, glm::dvec3(fallback), range, required));
 }
-glm::vec3 KeyReader::vec3(std::string_view key, glm::vec3 fallback, bool required) {
-    return glm::vec3(vector<3>(key, glm::dvec3(fallback), required));
+glm::ivec2 KeyReader::ivec2(std::string_view key, glm::ivec2 fallback,
+                            const NumberRange& range, bool required) {
+    NumberRange whole = range;
+    whole.whole = true;
+    return glm::ivec2(vector<2>(key, glm::dvec2(fallback), whole, required));
 }
-glm::ivec2 KeyReader::ivec2(std::string_view key, glm::ivec2 fallback, bool required) {
-    return whole<2>(key, fallback, required);
-}
-glm::ivec3 KeyReader::ivec3(std::string_view key, glm::ivec3 fallback, bool required) {
-    return whole<3>(key, fallback, required);
+glm::ivec3 KeyReader::ivec3(std::string_view key, glm::ivec3 fallback,
+                            const NumberRange& range, bool required) {
+    NumberRange whole = range;
+    whole.whole = true;
+    return glm::ivec3(vector<3>(key, glm::dvec3(fallback), whole, required));
 }
 
 }  // namespace engine::scene

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/number_check.h"
 
 namespace engine::scene {
 
@@ -71,28 +72,48 @@ public:
     bool has(std::string_view key) const { return mTable.contains(key); }
     // Marks every key understood (a table whose other keys belong to someone else).
     void acceptAll();
+    // Fails now on the first key nobody asked for; the destructor then checks nothing. Call it
+    // before returning a value built while this reader lives: a destructor that throws after the
+    // return value is made can leak that value (clang 14 does; the scene fuzzer found it).
+    void finish();
 
     // Each returns `fallback` when the key is absent, unless `required` (then "missing 'key'").
-    double number(std::string_view key, double fallback, bool required = false);
-    int integer(std::string_view key, int fallback);
+    // Every number is checked against its range (core/number_check.h): a key cannot be read
+    // without stating what it accepts, so NaN, infinities and out-of-range values never pass.
+    double number(std::string_view key, double fallback, const NumberRange& range,
+                  bool required = false);
+    int integer(std::string_view key, int fallback, const NumberRange& range);
     bool boolean(std::string_view key, bool fallback, bool required = false);
     std::string string(std::string_view key,
                        const char* fallback = nullptr);      // no fallback: required
     std::vector<std::string> strings(std::string_view key);  // an array of strings; absent: none
-    glm::vec2 vec2(std::string_view key, glm::vec2 fallback, bool required = false);
-    glm::vec3 vec3(std::string_view key, glm::vec3 fallback, bool required = false);
-    glm::ivec2 ivec2(std::string_view key, glm::ivec2 fallback, bool required = false);
-    glm::ivec3 ivec3(std::string_view key, glm::ivec3 fallback, bool required = false);
+    // Vectors: `range` holds for each component.
+    glm::vec2 vec2(std::string_view key, glm::vec2 fallback, const NumberRange& range,
+                   bool required = false);
+    glm::vec3 vec3(std::string_view key, glm::vec3 fallback, const NumberRange& range,
+                   bool required = false);
+    glm::ivec2 ivec2(std::string_view key, glm::ivec2 fallback, const NumberRange& range,
+                     bool required = false);
+    glm::ivec3 ivec3(std::string_view key, glm::ivec3 fallback, const NumberRange& range,
+                     bool required = false);
 
 private:
     template <int N>
-    glm::vec<N, double> vector(std::string_view key, glm::vec<N, double> fallback, bool required);
-    template <int N>
-    glm::vec<N, int> whole(std::string_view key, glm::vec<N, int> fallback, bool required);
+    glm::vec<N, double> vector(std::string_view key, glm::vec<N, double> fallback,
+                               NumberRange range, bool required);
+    void check(const toml::node* at, std::string_view name, double value, const NumberRange& range);
 
     std::string mSource;
     const toml::table& mTable;
     std::set<std::string> mUsed;
+    bool mFinished = false;
 };
+
+// Ranges many keys share.
+// Voxel indices (box corners, offsets): the largest world is 32768 voxels across.
+inline constexpr NumberRange kVoxelIndexRange = wholeRange(-(1 << 20), 1 << 20, "voxels");
+inline constexpr NumberRange kSeedRange = wholeRange(0, 2147483647);
+// Linear colours and radiance: 0 is black; 1e6 is far above any light in a scene.
+inline constexpr NumberRange kRadianceRange = closedRange(0.0, 1e6);
 
 }  // namespace engine::scene

@@ -8,10 +8,14 @@
 #include <string>
 
 #include "core/error.h"
+#include "core/number_check.h"
 #include "world/camera_path.h"
 #include "world/timeline.h"
 
 namespace engine::world {
+
+// Frame rates of a path file's fps and of vox capture --fps.
+inline constexpr NumberRange kFpsRange = aboveRange(0.0, 1000.0, "frames per second");
 
 struct Flythrough {
     std::string source;     // the file it came from, for messages

@@ -1,6 +1,20 @@
 #include "world/scene.h"
 
+#include <fmt/format.h>
+
 namespace engine::world {
+
+Status checkCamera(const CameraPreset& c) {
+    for (int i = 0; i < 3; ++i) {
+        for (auto [what, v] : {std::pair{"position", c.position[i]}, std::pair{"target", c.target[i]}}) {
+            if (Status ok = checkNumber(fmt::format("camera '{}' {} {}", c.name, what, "xyz"[i]), v, kCoordinateRange); !ok)
+                return ok;
+        }
+    }
+    if (Status ok = checkNumber(fmt::format("camera '{}' fov", c.name), c.fovYDegrees, kFovRange); !ok) return ok;
+    if (glm::length(c.target - c.position) < 1e-4f) return makeError("camera '{}': target equals position", c.name);
+    return {};
+}
 
 CameraPreset Scene::camera(std::string_view wanted) const {
     for (const CameraPreset& c : cameras) {

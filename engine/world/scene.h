@@ -10,6 +10,7 @@
 
 #include <glm/glm.hpp>
 
+#include "core/number_check.h"
 #include "world/brick_grid.h"
 #include "world/dynamic_grid.h"
 #include "world/dynamic_object.h"
@@ -20,12 +21,22 @@ namespace engine::world {
 
 struct Flythrough;
 
+// Vertical field of view a camera accepts wherever it comes from (scene and path files, --fov).
+inline constexpr NumberRange kFovRange = openRange(1.0, 179.0, "degrees");
+// Positions (cameras, sphere centres, object keys): far beyond any world, and floats still hold
+// whole voxels there.
+inline constexpr NumberRange kCoordinateRange = closedRange(-1e7, 1e7, "voxels");
+
 struct CameraPreset {
     std::string name;
     glm::vec3 position{0.0f};
     glm::vec3 target{0.0f, 0.0f, 1.0f};
     float fovYDegrees = 60.0f;
 };
+
+// The camera's numbers within kCoordinateRange and kFovRange, and its target apart from its
+// position; the message names the camera.
+Status checkCamera(const CameraPreset& camera);
 
 struct SkyLight {
     glm::vec3 sunDirection = glm::normalize(glm::vec3(0.4f, 1.0f, 0.3f));  // towards the sun

@@ -1,6 +1,9 @@
 // The pick finds the voxel under the crosshair; each tool and brush edits what it should.
 #include <gtest/gtest.h>
 
+#include <limits>
+#include <utility>
+
 #include "game/edit_tools.h"
 #include "world/world_edits.h"
 
@@ -114,4 +117,57 @@ TEST(EditTools, SphereBrushAndEyedropper) {
     EXPECT_TRUE(tools.eyedrop(lookDown(grid, 3.5f, 3.5f)));
     EXPECT_EQ(tools.material, 6);
     EXPECT_FALSE(tools.eyedrop(game::pick(grid, {3.5f, 30.0f, 3.5f}, {0.0f, 1.0f, 0.0f})));
+}
+
+// A NaN or infinite camera gives a view ray that is not finite: it picks nothing (it used to
+// "hit" voxel (0, 0, 0), and a click edited there), and the sandbox can say why.
+TEST(EditTools, PickRefusesARayThatIsNotFinite) {
+    BrickGrid grid = ground();
+    fillBox(grid, Box{{0, 0, 0}, {1, 1, 1}}, 2);  // something at (0, 0, 0) to hit by mistake
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const float inf = std::numeric_limits<float>::infinity();
+    for (auto [origin, direction] : {std::pair{glm::vec3(nan, 30.0f, 5.0f), glm::vec3(0.0f, -1.0f, 0.0f)},
+                                     std::pair{glm::vec3(5.0f, 30.0f, 5.0f), glm::vec3(0.0f, nan, 0.0f)},
+                                     std::pair{glm::vec3(inf, 30.0f, 5.0f), glm::vec3(0.0f, -1.0f, 0.0f)},
+                                     std::pair{glm::vec3(5.0f, 30.0f, 5.0f), glm::vec3(0.0f)}}) {
+        game::Pick p = game::pick(grid, origin, direction);
+        EXPECT_FALSE(p.hit);
+        EXPECT_FALSE(p.validRay);
+        EXPECT_NE(game::missReason(p).find("not finite"), std::string::npos) << game::missReason(p);
+        EditTools tools;
+        EXPECT_FALSE(tools.press(p));
+    }
+    EXPECT_EQ(game::missReason(lookDown(grid, 10.5f, 20.5f)), "");  // a hit: nothing to explain
+    game::Pick sky = game::pick(grid, {10.5f, 30.0f, 20.5f}, {0.0f, 1.0f, 0.0f});
+    EXPECT_NE(game::missReason(sky).find("aiming at the sky"), std::string::npos);
+}
+
+// A box drag released over the sky has no second corner: no edit (it used to place the anchor
+// voxel silently).
+TEST(EditTools, BoxReleasedOverTheSkyEditsNothing) {
+    BrickGrid grid = ground();
+    EditTools tools;
+    tools.brush = Brush::Box;
+    EXPECT_FALSE(tools.press(lookDown(grid, 10.5f, 20.5f)));
+    EXPECT_TRUE(tools.dragging());
+    game::Pick sky = game::pick(grid, {10.5f, 30.0f, 20.5f}, {0.0f, 1.0f, 0.0f});
+    EXPECT_FALSE(tools.release(sky));
+    EXPECT_FALSE(tools.dragging());
+}
+
+// An edit that changes nothing says why: outside the world, or nothing to do there.
+TEST(EditTools, UnchangedEditsSayWhy) {
+    BrickGrid grid = ground();
+    Palette palette;
+    ASSERT_TRUE(palette.add(Material{"stone"}));
+    game::EditOp op;
+    op.tool = Tool::Place;
+    op.material = 1;
+    op.box = Box{{100, 5, 5}, {101, 6, 6}};
+    EXPECT_EQ(game::unchangedReason(grid, op, palette), "it lies outside the world (0..64, 0..32, 0..64)");
+    op.box = Box{{5, 5, 5}, {6, 6, 6}};
+    EXPECT_EQ(game::unchangedReason(grid, op, palette), "every voxel there is already stone");
+    op.tool = Tool::Remove;
+    op.box = Box{{5, 20, 5}, {6, 21, 6}};
+    EXPECT_EQ(game::unchangedReason(grid, op, palette), "there is nothing to remove there");
 }

@@ -64,7 +64,14 @@ TEST(ScriptPlayer, ErrorsNameFileAndLine) {
     expectError("0 click sideways\n", "unknown mouse button");
     expectError("0 fly away\n", "bad.script:1: unknown command");
     expectError("0 key W sideways\n", "expected 'down' or 'up'");
-    expectError("0 resize 0 10\n", "resize: expected whole sizes");
+    expectError("0 resize 0 10\n", "bad.script:1: resize x must be positive, not 0; allowed: 1..8192 pixels");
+    // Numbers go through the one number check: no NaN or infinite mouse motion reaches the camera.
+    expectError("0 move nan 0\n", "bad.script:1: move x must be a finite number");
+    expectError("0 move 0 inf\n", "bad.script:1: move y must be a finite number");
+    expectError("0 cursor 1e300 0\n", "bad.script:1: cursor x is too large (max 1000000)");
+    expectError("0 scroll -inf\n", "bad.script:1: scroll steps must be a finite number");
+    expectError("0 resize 640.5 360\n", "bad.script:1: resize x must be a whole number");
+    expectError("0 move 1,5 0\n", "bad.script:1: move x: expected a number");
 }
 
 TEST(CameraController, SameInputSameFlightAndPresetsRoundTrip) {

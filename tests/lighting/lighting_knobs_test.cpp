@@ -49,7 +49,7 @@ TEST(LightingKnobs, OutOfRangeIsRefusedTheSameWayFromTextAndFromCode) {
     Status fromCode = validate(s);
     ASSERT_FALSE(fromCode.ok());
     EXPECT_EQ(fromText.error().message, fromCode.error().message);
-    EXPECT_NE(fromText.error().message.find("candidates must be in 1..1024"), std::string::npos);
+    EXPECT_NE(fromText.error().message.find("candidates must be positive, not 0; allowed: 1..1024"), std::string::npos);
 
     LightingSettings c;
     c.cache.raysPerUpdate = 7;  // not a divisor of 128

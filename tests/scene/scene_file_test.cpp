@@ -62,9 +62,18 @@ TEST(SceneFile, AbsurdSizesAreRefused) {
     std::string e = errorOf("[world]\nsize = [32768, 32768, 32768]\n");
     EXPECT_NE(e.find("test.toml:2: world size 32768x32768x32768 needs"), std::string::npos) << e;
     e = errorOf("[world]\nsize = [0, 16, 16]\n");
-    EXPECT_NE(e.find("outside 1..32768"), std::string::npos) << e;
+    EXPECT_NE(e.find("test.toml:2: 'size' x must be positive, not 0; allowed: 1..32768 voxels"),
+              std::string::npos)
+        << e;
     e = errorOf("[world]\nsize = [1.5, 16, 16]\n");
-    EXPECT_NE(e.find("whole numbers"), std::string::npos) << e;
+    EXPECT_NE(e.find("'size' x must be a whole number in 1..32768 voxels, not 1.5"), std::string::npos)
+        << e;
+    // A whole number that is too large says so (it is not "not whole").
+    e = errorOf("[world]\nsize = [16, 4294967291, 16]\n");
+    EXPECT_NE(e.find("test.toml:2: 'size' y is too large (max 32768), not 4294967291"), std::string::npos)
+        << e;
+    e = errorOf("[world]\nsize = [16, -5, 16]\n");
+    EXPECT_NE(e.find("test.toml:2: 'size' y must be positive, not -5"), std::string::npos) << e;
 }
 
 TEST(SceneFile, CornellBoxHasTheThesisLight) {
@@ -163,7 +172,7 @@ TEST(SceneFile, ObjectErrorsNameTheLine) {
     EXPECT_EQ(with("type = \"box\"", "type = \"cube\""),
               "test.toml:9: unknown generator 'cube' (known: terrain, box, sphere, cornell, buildings, lamps, "
               "mountain, scattered_lights, text, menger, apartment, bridge, vdb, vox)");
-    EXPECT_EQ(with("size = [4, 4, 4]", "size = [4, 0, 4]"), "test.toml:7: object 'cube': size must be 1..256 voxels per axis");
+    EXPECT_EQ(with("size = [4, 4, 4]", "size = [4, 0, 4]"), "test.toml:7: 'size' y must be positive, not 0; allowed: 1..256 voxels");
     EXPECT_EQ(with("rotation = [90, 0, 0]", "rotation = [90, 0, 0]\nangle = 4"),
               "test.toml:16: key: give 'rotation' or 'axis' and 'angle', not both");
     EXPECT_EQ(with("position = [20, 10, 10]", "positon = [20, 10, 10]"), "test.toml:16: missing 'position'");

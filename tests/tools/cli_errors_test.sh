@@ -27,11 +27,11 @@ echo "a file, not a folder" > "$tmp/afile"
 
 expect_error "typo.toml:6: unknown generator 'terain'" -- "$vox" render "$tmp/typo.toml" -o "$tmp/a.png"
 expect_error "syntax.toml:2:" -- "$vox" info "$tmp/syntax.toml"
-expect_error "huge.toml:2: world size 100000x100000x100000 is outside" -- "$vox" info "$tmp/huge.toml"
+expect_error "huge.toml:2: 'size' x is too large \\(max 32768\\), not 100000" -- "$vox" info "$tmp/huge.toml"
 expect_error "random.toml" -- "$vox" info "$tmp/random.toml"
 expect_error "nosuchworld: no such world" -- "$vox" render nosuchworld
 expect_error "--size: expected WIDTHxHEIGHT" -- "$vox" render --size 12by4
-expect_error "--size: 0x10 is outside" -- "$vox" render --size 0x10
+expect_error "--size: width must be positive, not 0" -- "$vox" render --size 0x10
 expect_error "must end in .png or .exr" -- "$vox" render -o "$tmp/out.jpg"
 expect_error "no camera named 'nope'" -- "$vox" render --camera nope -o "$tmp/a.png"
 expect_error "--pos: expected x,y,z" -- "$vox" render --pos 1,2 --target 3,4,5 -o "$tmp/a.png"

@@ -284,7 +284,7 @@ TEST(ApartmentGenerator, SeedChangesTheFacadesNotTheShell) {
 
 TEST(SceneGenerators, ParseErrorsNameTheLine) {
     EXPECT_EQ(errorOf("type = \"menger\"\nlevel = 9\nmaterial = \"stone\"\n"),
-              "test.toml:7: 'level' must be in 0..6");
+              "test.toml:7: 'level' is too large (max 6), not 9; allowed: 0..6");
     EXPECT_EQ(
         errorOf("type = \"scattered_lights\"\nspacing = 4\nsize = [5, 1, 1]\nlight = \"stone\"\n"),
         "test.toml:8: 'size' must be at least 1, at most 'spacing' across and 256 high");
@@ -296,5 +296,5 @@ TEST(SceneGenerators, ParseErrorsNameTheLine) {
               "test.toml:8: 'max' must exceed 'min' on every axis");
     EXPECT_EQ(errorOf("type = \"mountain\"\ntop = \"stone\"\nsoil = \"stone\"\nrock = "
                       "\"stone\"\nridges = 2.0\n"),
-              "test.toml:10: 'ridges' must be in 0..1");
+              "test.toml:10: 'ridges' is too large (max 1), not 2; allowed: [0, 1]");
 }

@@ -10,6 +10,7 @@
 
 #include "core/atomic_file.h"
 #include "commands.h"
+#include "number_options.h"
 #include "gpu/context.h"
 #include "metrics/image_metrics.h"
 #include "render/renderer.h"
@@ -77,7 +78,6 @@ std::vector<std::pair<std::string, LightingSettings>> configurations(std::uint32
 int runAccuracy(const AccuracyOptions& o) {
     auto size = parseSize(o.size, "--size");
     if (!size) return fail(size.error());
-    if (o.frames < 2 || o.frames > 1000) return fail(engine::makeError("--frames must be in 2..1000"));
     auto ctx = engine::gpu::Context::create({});
     if (!ctx) return fail(ctx.error());
     engine::gpu::Context& gpu = **ctx;
@@ -142,8 +142,10 @@ void addBenchAccuracyCommand(CLI::App& bench, int& exitCode) {
     auto o = std::make_shared<AccuracyOptions>();
     cmd->add_option("worlds", o->worlds, "Worlds (default: the four thesis scenes)");
     cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
-    cmd->add_option("--frames", o->frames, "Frames per setting (the last half are measured)")->capture_default_str();
-    cmd->add_option("--ref-spp", o->referenceSpp, "Reference samples per pixel")->capture_default_str();
+    cmd->add_option("--frames", o->frames, "Frames per setting (the last half are measured)")->capture_default_str()
+        ->check(numberIn(engine::wholeRange(2, 1000, "frames")));
+    cmd->add_option("--ref-spp", o->referenceSpp, "Reference samples per pixel")->capture_default_str()
+        ->check(numberIn(kSamplesRange));
     cmd->add_option("-o,--output", o->output, "Output folder (markdown tables and CSV)")->capture_default_str();
     cmd->callback([o, &exitCode] { exitCode = runAccuracy(*o); });
 }

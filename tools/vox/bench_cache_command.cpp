@@ -12,6 +12,7 @@
 
 #include "core/atomic_file.h"
 #include "commands.h"
+#include "number_options.h"
 #include "gpu/context.h"
 #include "render/renderer.h"
 #include "world/world_edits.h"
@@ -85,7 +86,6 @@ engine::world::Scene streetWorld(glm::ivec3 size) {
 int runCacheBench(const CacheBenchOptions& o) {
     auto size = parseSize(o.size, "--size");
     if (!size) return fail(size.error());
-    if (o.frames < 4 || o.frames > 1000) return fail(engine::makeError("--frames must be in 4..1000"));
     auto ctx = engine::gpu::Context::create({});
     if (!ctx) return fail(ctx.error());
     std::string json = "{\n";
@@ -176,7 +176,9 @@ void addBenchCacheCommand(CLI::App& bench, int& exitCode) {
     cmd->add_option("--worlds", o->worlds, "Worlds with dynamic objects for the divide-and-win figure (comma-separated)")
         ->capture_default_str();
     cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
-    cmd->add_option("--frames", o->frames, "Frames per measurement (medians; the first two are skipped)")->capture_default_str();
+    cmd->add_option("--frames", o->frames, "Frames per measurement (medians; the first two are skipped)")
+        ->capture_default_str()
+        ->check(numberIn(engine::wholeRange(4, 1000, "frames")));
     cmd->add_option("-o,--output", o->output, "JSON results")->capture_default_str();
     cmd->callback([o, &exitCode] { exitCode = runCacheBench(*o); });
 }

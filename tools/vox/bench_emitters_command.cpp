@@ -8,6 +8,7 @@
 
 #include "core/atomic_file.h"
 #include "commands.h"
+#include "number_options.h"
 #include "core/hash.h"
 #include "lighting/emitter_list.h"
 #include "world/generators.h"
@@ -33,8 +34,6 @@ struct EmitterBenchOptions {
 };
 
 int runEmitterBench(const EmitterBenchOptions& o) {
-    if (o.lights < 1 || o.lights > 10000000) return fail(engine::makeError("--lights must be in 1..10000000"));
-    if (o.edits < 1 || o.edits > 100000) return fail(engine::makeError("--edits must be in 1..100000"));
     std::printf("loading world %s ...\n", o.world.c_str());
     auto scene = loadWorld(o.world);
     if (!scene) return fail(scene.error());
@@ -106,8 +105,10 @@ void addBenchEmittersCommand(CLI::App& bench, int& exitCode) {
     auto* cmd = bench.add_subcommand("emitters", "Emitter list: incremental update after an edit vs full rebuild");
     auto o = std::make_shared<EmitterBenchOptions>();
     cmd->add_option("world", o->world, "World name or scene file")->capture_default_str();
-    cmd->add_option("--lights", o->lights, "Emissive voxels to scatter on the surface")->capture_default_str();
-    cmd->add_option("--edits", o->edits, "Single-voxel edits to time")->capture_default_str();
+    cmd->add_option("--lights", o->lights, "Emissive voxels to scatter on the surface")->capture_default_str()
+        ->check(numberIn(engine::wholeRange(1, 10000000, "voxels")));
+    cmd->add_option("--edits", o->edits, "Single-voxel edits to time")->capture_default_str()
+        ->check(numberIn(engine::wholeRange(1, 100000, "edits")));
     cmd->add_option("-o,--output", o->output, "JSON results file")->capture_default_str();
     cmd->callback([o, &exitCode] { exitCode = runEmitterBench(*o); });
 }

@@ -22,6 +22,7 @@
 
 #include "core/atomic_file.h"
 #include "commands.h"
+#include "number_options.h"
 #include "gpu/context.h"
 #include "metrics/image_metrics.h"
 #include "progress_line.h"
@@ -46,7 +47,7 @@ using Clock = std::chrono::steady_clock;
 struct FlythroughOptions {
     std::vector<std::string> worlds{"cornell", "mountain", "letters", "apartments"};
     std::string size = "128x72";
-    std::uint32_t frames = 0;  // 0: the whole path
+    std::optional<std::uint32_t> frames;  // absent: the whole path
     std::uint32_t warmup = 30;
     std::uint32_t referenceEvery = 10;
     std::uint32_t referenceSpp = 256;
@@ -151,9 +152,6 @@ private:
 int runFlythroughBench(const FlythroughOptions& o) {
     auto size = parseSize(o.size, "--size");
     if (!size) return fail(size.error());
-    if (o.referenceEvery < 1) return fail(engine::makeError("--reference-every must be at least 1"));
-    if (o.referenceSpp < 1 || o.referenceSpp > 65536) return fail(engine::makeError("--reference-spp must be in 1..65536"));
-    if (o.bounces < 1 || o.bounces > 8) return fail(engine::makeError("--bounces must be in 1..8"));
     if (o.pathSpp.empty()) return fail(engine::makeError("--path-spp: give at least one count"));
     for (std::uint32_t s : o.pathSpp)
         if (s < 1 || s > 256) return fail(engine::makeError("--path-spp: {} is not in 1..256", s));
@@ -192,7 +190,7 @@ int runFlythroughBench(const FlythroughOptions& o) {
         if (!fly) return fail(fly.error());
         const double fps = fly->fps;
         if (engine::Status s = fly->checkFrames(fps); !s) return fail(s.error());
-        const std::uint32_t count = o.frames ? std::min(o.frames, fly->frameCount(fps)) : fly->frameCount(fps);
+        const std::uint32_t count = o.frames ? std::min(*o.frames, fly->frameCount(fps)) : fly->frameCount(fps);
         if (count <= o.warmup) {
             return fail(engine::makeError("{}: {} frames leave none after the {} warm-up frames", pathFile->string(), count,
                                           o.warmup));
@@ -286,16 +284,22 @@ void addBenchFlythroughCommand(CLI::App& bench, int& exitCode) {
     auto o = std::make_shared<FlythroughOptions>();
     cmd->add_option("worlds", o->worlds, "Worlds, each with worlds/paths/<world>_flythrough.toml")->capture_default_str();
     cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
-    cmd->add_option("--frames", o->frames, "Frames of each path to play (0 = all)")->capture_default_str();
-    cmd->add_option("--warmup", o->warmup, "Frames played before measuring (the cache fills)")->capture_default_str();
+    cmd->add_option("--frames", o->frames, "Frames of each path to play (default: all)")
+        ->check(numberIn(kFrameCountRange));
+    cmd->add_option("--warmup", o->warmup, "Frames played before measuring (the cache fills)")->capture_default_str()
+        ->check(numberIn(kWarmupRange));
     cmd->add_option("--reference-every", o->referenceEvery, "Compare with the reference every K-th measured frame")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->check(numberIn(engine::wholeRange(1, 100000, "frames")));
     cmd->add_option("--reference-spp", o->referenceSpp, "Reference samples per pixel (with and without bounces)")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->check(numberIn(engine::wholeRange(1, 65536, "samples per pixel")));
     cmd->add_option("--path-spp", o->pathSpp, "Path-traced indirect: paths per pixel per frame, one point each")
         ->delimiter(',')
-        ->capture_default_str();
-    cmd->add_option("--bounces", o->bounces, "Bounces of the reference, the cache and the paths")->capture_default_str();
+        ->capture_default_str()
+        ->check(numberIn(engine::wholeRange(1, 256, "paths per pixel")));
+    cmd->add_option("--bounces", o->bounces, "Bounces of the reference, the cache and the paths")->capture_default_str()
+        ->check(numberIn(engine::wholeRange(1, 8, "bounces")));
     cmd->add_option("-o,--output", o->output, "Output folder (summary.csv, frames.csv, table.md)")->capture_default_str();
     cmd->callback([o, &exitCode] { exitCode = runFlythroughBench(*o); });
 }

@@ -20,6 +20,7 @@
 
 #include "core/atomic_file.h"
 #include "commands.h"
+#include "number_options.h"
 #include "frame_rays.h"
 #include "gpu/context.h"
 #include "lighting_options.h"
@@ -274,7 +275,6 @@ engine::Status writeFile(const fs::path& file, const std::string& text) {
 }
 
 int runFrameBench(const FrameBenchOptions& o) {
-    if (o.frames < 1 || o.frames > 100000) return fail(engine::makeError("--frames must be in 1..100000"));
     if (o.lighting.showSettings) return showSettings(splitList(o.worlds).empty() ? "" : splitList(o.worlds)[0], o.lighting);
     std::map<std::string, std::string> paths = kDefaultPaths;
     for (const std::string& item : splitList(o.paths)) {
@@ -388,9 +388,11 @@ void addBenchFrameCommand(CLI::App& bench, int& exitCode) {
                     "cornell_sway, else the world's own [path])")
         ->capture_default_str();
     cmd->add_option("--paths", o->paths, "Moving-camera paths per world: WORLD=PATH,... (files or names in worlds/paths/)");
-    cmd->add_option("--frames", o->frames, "Measured frames per configuration")->capture_default_str();
+    cmd->add_option("--frames", o->frames, "Measured frames per configuration")->capture_default_str()
+        ->check(numberIn(kFrameCountRange));
     cmd->add_option("--warmup", o->warmup, "Frames rendered before measuring (temporal history, cache)")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->check(numberIn(kWarmupRange));
     cmd->add_option("-o,--output", o->output, "Folder for frame.csv, frames.csv (per frame) and frame.json")
         ->capture_default_str();
     // The other knobs (e.g. --cache-rays) apply to every row; the rows set --method and --indirect.

@@ -8,6 +8,7 @@
 
 #include "core/atomic_file.h"
 #include "commands.h"
+#include "number_options.h"
 #include "gpu/context.h"
 #include "metrics/image_metrics.h"
 #include "render/renderer.h"
@@ -31,7 +32,6 @@ struct RestirBenchOptions {
 int runRestirBench(const RestirBenchOptions& o) {
     auto size = parseSize(o.size, "--size");
     if (!size) return fail(size.error());
-    if (o.frames < 4 || o.frames > 1000) return fail(engine::makeError("--frames must be in 4..1000"));
     auto ctx = engine::gpu::Context::create({});
     if (!ctx) return fail(ctx.error());
     engine::gpu::Context& gpu = **ctx;
@@ -120,8 +120,10 @@ void addBenchRestirCommand(CLI::App& bench, int& exitCode) {
     auto o = std::make_shared<RestirBenchOptions>();
     cmd->add_option("worlds", o->worlds, "Worlds (default: the four thesis scenes)");
     cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
-    cmd->add_option("--frames", o->frames, "Frames of ReSTIR history (the last half are measured)")->capture_default_str();
-    cmd->add_option("--ref-spp", o->referenceSpp, "Reference samples per pixel")->capture_default_str();
+    cmd->add_option("--frames", o->frames, "Frames of ReSTIR history (the last half are measured)")->capture_default_str()
+        ->check(numberIn(engine::wholeRange(4, 1000, "frames")));
+    cmd->add_option("--ref-spp", o->referenceSpp, "Reference samples per pixel")->capture_default_str()
+        ->check(numberIn(kSamplesRange));
     cmd->add_option("-o,--output", o->output, "JSON results file")->capture_default_str();
     cmd->callback([o, &exitCode] { exitCode = runRestirBench(*o); });
 }

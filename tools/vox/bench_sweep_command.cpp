@@ -13,6 +13,7 @@
 
 #include "core/atomic_file.h"
 #include "commands.h"
+#include "number_options.h"
 #include "gpu/context.h"
 #include "lighting/emitter_list.h"
 #include "lighting_options.h"
@@ -116,7 +117,6 @@ engine::Result<std::vector<std::pair<std::string, LightingSettings>>> settingsOf
 engine::Result<std::vector<std::pair<std::string, LightingSettings>>> indirectSettingsOf(const SweepOptions& o) {
     using engine::lighting::Indirect;
     std::vector<std::pair<std::string, LightingSettings>> out;
-    if (o.indirectBounces < 1 || o.indirectBounces > 16) return engine::makeError("--indirect-bounces must be in 1..16");
     for (const std::string& item : splitList(o.indirect)) {
         LightingSettings l;
         if (item == "none") {
@@ -152,7 +152,6 @@ const char* indirectColumn(const LightingSettings& l) {
 int runSweep(const SweepOptions& o) {
     auto size = parseSize(o.size, "--size");
     if (!size) return fail(size.error());
-    if (o.frames < 2 || o.frames > 1000) return fail(engine::makeError("--frames must be in 2..1000"));
     auto settings = settingsOf(o);
     if (!settings) return fail(settings.error());
     auto indirect = indirectSettingsOf(o);
@@ -224,7 +223,6 @@ struct RecommendOptions {
 };
 
 int runRecommend(const RecommendOptions& o) {
-    if (!(o.targetMae > 0.0)) return fail(engine::makeError("--target-mae must be positive"));
     auto scene = loadWorld(o.world);
     if (!scene) return fail(scene.error());
     std::ifstream in(o.sweep);
@@ -278,23 +276,28 @@ void addBenchSweepCommand(CLI::App& bench, int& exitCode) {
     cmd->add_option("--brick-lights", o->brickLights, "on, off or both")->capture_default_str();
     cmd->add_option("--rays", o->rays, "Shadow rays for uniform light sampling")->capture_default_str();
     cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
-    cmd->add_option("--frames", o->frames, "Frames per setting (the last half are measured)")->capture_default_str();
-    cmd->add_option("--ref-spp", o->referenceSpp, "Reference samples per pixel (cached on disk)")->capture_default_str();
+    cmd->add_option("--frames", o->frames, "Frames per setting (the last half are measured)")->capture_default_str()
+        ->check(numberIn(engine::wholeRange(2, 1000, "frames")));
+    cmd->add_option("--ref-spp", o->referenceSpp, "Reference samples per pixel (cached on disk)")->capture_default_str()
+        ->check(numberIn(kSamplesRange));
     cmd->add_option("--indirect", o->indirect,
                     "Indirect-light series: none, cache-K (K directions), reference; empty = no series")
         ->capture_default_str();
     cmd->add_option("--indirect-bounces", o->indirectBounces,
                     "Bounces of the indirect reference (and of the cache and path-tracer points)")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->check(numberIn(engine::wholeRange(1, 16, "bounces")));
     cmd->add_option("--indirect-ref-spp", o->indirectReferenceSpp, "Samples per pixel of the indirect reference (cached)")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->check(numberIn(kSamplesRange));
     cmd->add_option("-o,--output", o->output, "Output folder")->capture_default_str();
     cmd->callback([o, &exitCode] { exitCode = runSweep(*o); });
 
     auto* rec = bench.add_subcommand("recommend", "The cheapest swept setting that meets a target MAE on a scene");
     auto r = std::make_shared<RecommendOptions>();
     rec->add_option("world", r->world, "World name or scene file")->required();
-    rec->add_option("--target-mae", r->targetMae, "Target MAE against the reference")->required();
+    rec->add_option("--target-mae", r->targetMae, "Target MAE against the reference")->required()
+        ->check(numberIn(engine::aboveRange(0.0, 1e6)));
     rec->add_option("--sweep", r->sweep, "Sweep results (CSV from vox bench sweep)")->capture_default_str();
     rec->add_flag("--indirect", r->indirect,
                   "Choose among the indirect-light series (error against the multi-bounce reference)");

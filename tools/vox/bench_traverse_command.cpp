@@ -12,6 +12,7 @@
 #include "core/atomic_file.h"
 #include "classic_dda.h"
 #include "commands.h"
+#include "number_options.h"
 #include "gpu/command_list.h"
 #include "gpu/context.h"
 #include "gpu/timestamp_timer.h"
@@ -144,7 +145,6 @@ SkipEditCost measureSkipEditCost(engine::world::BrickGrid grid) {
 int runBench(const BenchOptions& o) {
     auto size = parseSize(o.size, "--size");
     if (!size) return fail(size.error());
-    if (o.repeats < 1 || o.repeats > 1000) return fail(engine::makeError("--repeats must be in 1..1000"));
     std::printf("loading world %s ...\n", o.world.c_str());
     auto scene = loadWorld(o.world);
     if (!scene) return fail(scene.error());
@@ -307,7 +307,8 @@ void addBenchTraverseCommand(CLI::App& bench, int& exitCode) {
     cmd->add_option("world", o->world, "World name or scene file")->capture_default_str();
     cmd->add_option("--camera", o->camera, "Camera preset");
     cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
-    cmd->add_option("--repeats", o->repeats, "Timed repetitions per method (median reported)")->capture_default_str();
+    cmd->add_option("--repeats", o->repeats, "Timed repetitions per method (median reported)")->capture_default_str()
+        ->check(numberIn(engine::wholeRange(1, 1000, "repetitions")));
     cmd->add_option("-o,--output", o->output, "JSON results file")->capture_default_str();
     cmd->callback([o, &exitCode] { exitCode = runBench(*o); });
 }

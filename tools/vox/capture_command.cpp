@@ -16,6 +16,7 @@
 #include "commands.h"
 #include "core/atomic_file.h"
 #include "core/folder_lock.h"
+#include "number_options.h"
 #include "ffmpeg_video.h"
 #include "frame_rays.h"
 #include "gpu/context.h"
@@ -38,7 +39,7 @@ struct CaptureOptions {
     std::string path;
     std::string out;
     std::string size = "320x180";
-    double fps = 0.0;  // 0: the path file's
+    std::optional<double> fps;  // absent: the path file's
     std::string frames;
     std::uint32_t warmup = 30;
     bool exr = false;
@@ -122,8 +123,6 @@ int runCapture(const CaptureOptions& o) {
     auto size = parseSize(o.size, "--size");
     if (!size) return fail(size.error());
     if (o.out.empty()) return fail(engine::makeError("--out: give the output folder"));
-    if (o.fps < 0.0 || o.fps > 1000.0) return fail(engine::makeError("--fps must be in (0, 1000]"));
-    if (o.sheet > 1000) return fail(engine::makeError("--sheet must be in 0..1000"));
 
     if (o.lighting.showSettings) return showSettings(o.world, o.lighting);
     auto scene = loadWorld(o.world);
@@ -138,7 +137,7 @@ int runCapture(const CaptureOptions& o) {
     }
     auto fly = engine::scene::loadFlythroughFile(pathFile);
     if (!fly) return fail(fly.error());
-    const double fps = o.fps > 0.0 ? o.fps : fly->fps;
+    const double fps = o.fps.value_or(fly->fps);
     const std::uint32_t count = fly->frameCount(fps);
     auto range = parseRange(o.frames, count);
     if (!range) return fail(range.error());
@@ -293,17 +292,21 @@ void addCaptureCommand(CLI::App& app, int& exitCode) {
                     "Path file or name in worlds/paths/ (default: the world's own [path])");
     cmd->add_option("--out", o->out, "Output folder")->required();
     cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
-    cmd->add_option("--fps", o->fps, "Frames per second (default: the path's fps, else 30)");
+    cmd->add_option("--fps", o->fps, "Frames per second (default: the path's fps, else 30)")
+        ->check(numberIn(engine::world::kFpsRange));
     cmd->add_option("--frames", o->frames,
                     "Only frames A..B (inclusive; A: = to the end), e.g. 40:79");
     cmd->add_option("--warmup", o->warmup, "Frames of history rendered, not written, before A")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->check(numberIn(kWarmupRange));
     cmd->add_flag("--exr", o->exr, "Also write linear radiance as frame_NNNNN.exr");
     cmd->add_flag("--no-video", o->noVideo, "Do not encode an MP4 even when ffmpeg is present");
     cmd->add_option("--sheet", o->sheet, "Thumbnails on the contact sheet (0 = none)")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->check(numberIn(engine::wholeRange(0, 1000, "thumbnails")));
     cmd->add_option("--exposure", o->exposure, "Exposure multiplier before tonemapping")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->check(numberIn(kExposureRange));
     addLightingOptions(*cmd, o->lighting);
     cmd->callback([o, &exitCode] { exitCode = runCapture(*o); });
 }

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "core/number_check.h"
 #include "lighting_options.h"
 #include "world/scene.h"
 
@@ -36,7 +37,7 @@ struct RenderOptions {
     std::string world;
     std::string camera;
     std::string pos, target;
-    float fov = 0.0f;
+    std::optional<float> fov;  // absent: the camera's
     std::string size = "640x360";
     std::string output = "out/render.png";
     std::string exr;
@@ -57,8 +58,11 @@ engine::Result<engine::world::Scene> loadWorld(const std::string& nameOrPath);
 // worlds/paths/sandbox_orbit.toml).
 engine::Result<std::filesystem::path> resolvePathFile(const std::string& arg);
 // "640x360" -> {640, 360}; an error names the option.
+// Each number goes through the one number check (core/number_check.h): "--size: width must be
+// positive, not -5 (1..8192 pixels)".
 engine::Result<glm::uvec2> parseSize(const std::string& text, const char* option);
-engine::Result<glm::vec3> parseVec3(const std::string& text, const char* option);
+// "x,y,z", each component within `range`.
+engine::Result<glm::vec3> parseVec3(const std::string& text, const char* option, const engine::NumberRange& range);
 // --show-settings: loads the world, merges its lighting with the options and prints the result.
 int showSettings(const std::string& world, const LightingOptions& options);
 // One line on stderr, exit code 1.

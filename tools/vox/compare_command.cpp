@@ -9,6 +9,7 @@
 
 #include "core/atomic_file.h"
 #include "commands.h"
+#include "number_options.h"
 #include "core/quoted_string.h"
 #include "io/image_io.h"
 #include "metrics/heat_map.h"
@@ -22,7 +23,7 @@ struct CompareOptions {
     std::string image, reference;
     std::string heatmap, json;
     std::string heatmapError = "abs";
-    float heatmapMax = 0.0f;
+    std::optional<float> heatmapMax;  // absent: the 99th percentile
 };
 
 engine::Result<engine::io::ExrImage> loadExr(const std::string& path) {
@@ -54,8 +55,6 @@ int runCompare(const CompareOptions& o) {
     else
         return fail(engine::makeError(
             "--heatmap-error: expected abs, squared or relative, got '{}'", o.heatmapError));
-    if (!(o.heatmapMax >= 0.0f))
-        return fail(engine::makeError("--heatmap-max must be >= 0 (0 = automatic)"));
     if (!o.heatmap.empty() && std::filesystem::path(o.heatmap).extension() != ".png")
         return fail(engine::makeError("--heatmap {}: the file must end in .png", o.heatmap));
 
@@ -89,7 +88,7 @@ int runCompare(const CompareOptions& o) {
         std::filesystem::path out(o.heatmap);
         if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path(), ec);
         auto written =
-            writeHeatMap(out, *values, a.width, a.height, HeatMapOptions{o.heatmapMax, true});
+            writeHeatMap(out, *values, a.width, a.height, HeatMapOptions{o.heatmapMax.value_or(0.0f), true});
         if (!written) return fail(written.error());
         map = std::move(*written);
         std::printf("wrote      %s (%s error per pixel, colour range 0 .. %.3g)\n",
@@ -133,8 +132,8 @@ void addCompareCommand(CLI::App& app, int& exitCode) {
                     "Error shown in the heat map: abs, squared or relative")
         ->capture_default_str();
     cmd->add_option("--heatmap-max", o->heatmapMax,
-                    "Error at the top of the colour ramp (0 = the 99th percentile)")
-        ->capture_default_str();
+                    "Error at the top of the colour ramp (default: the 99th percentile)")
+        ->check(numberIn(engine::aboveRange(0.0, 1e6)));
     cmd->add_option("--json", o->json, "Also write the results as JSON");
     cmd->callback([o, &exitCode] { exitCode = runCompare(*o); });
 }

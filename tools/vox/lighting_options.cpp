@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "commands.h"
+#include "number_options.h"
 #include "scene/scene_lighting.h"
 
 namespace vox {
@@ -41,7 +42,9 @@ void addLightingOptions(CLI::App& cmd, LightingOptions& o) {
             std::string help = fmt::format("{} (default: {})", k.help, knobText(k, defaults));
             if (k.kind == engine::lighting::KnobKind::Count || k.kind == engine::lighting::KnobKind::Real)
                 help = fmt::format("{}; {}..{}", help, k.min, k.max);
-            cmd.add_option(knobOption(g, k), o.given[i++], help)->type_name(typeName(k));
+            CLI::Option* option = cmd.add_option(knobOption(g, k), o.given[i++], help)->type_name(typeName(k));
+            if (k.kind == engine::lighting::KnobKind::Count || k.kind == engine::lighting::KnobKind::Real)
+                option->check(numberIn(engine::lighting::knobRange(k)));
         }
     }
     cmd.add_flag("--show-settings", o.showSettings, "Print the lighting settings this command would use, and stop");

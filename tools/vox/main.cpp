@@ -1,15 +1,17 @@
 // vox: the engine's command-line tool. `vox --help` lists the subcommands.
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
+#include <optional>
 
 #include "commands.h"
-#include <filesystem>
 
 #include "core/log.h"
 #include "core/memory_budget.h"
 #include "core/symbol_table_pages.h"
 #include "io/vdb_import.h"
 #include "io/vox_import.h"
+#include "number_options.h"
 #include "scene/scene_file.h"
 
 namespace vox {
@@ -58,21 +60,35 @@ engine::Result<std::filesystem::path> resolvePathFile(const std::string& arg) {
 }
 
 engine::Result<glm::uvec2> parseSize(const std::string& text, const char* option) {
-    unsigned w = 0, h = 0;
-    char x = 0, extra = 0;
-    if (std::sscanf(text.c_str(), "%u%c%u%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X'))
-        return engine::makeError("{}: expected WIDTHxHEIGHT, got '{}'", option, text);
-    if (w < 1 || h < 1 || w > 8192 || h > 8192)
-        return engine::makeError("{}: {}x{} is outside 1..8192 per side", option, w, h);
-    return glm::uvec2(w, h);
+    constexpr engine::NumberRange kSide = engine::wholeRange(1, 8192, "pixels");
+    std::size_t x = text.find_first_of("xX");
+    std::optional<double> w, h;
+    if (x != std::string::npos) {
+        w = engine::readNumber(std::string_view(text).substr(0, x));
+        h = engine::readNumber(std::string_view(text).substr(x + 1));
+    }
+    if (!w || !h) return engine::makeError("{}: expected WIDTHxHEIGHT, got '{}'", option, text);
+    for (auto [name, v] : {std::pair{"width", *w}, std::pair{"height", *h}}) {
+        if (engine::Status ok = engine::checkNumber(name, v, kSide); !ok)
+            return engine::makeError("{}: {}", option, ok.error().message);
+    }
+    return glm::uvec2(unsigned(*w), unsigned(*h));
 }
 
-engine::Result<glm::vec3> parseVec3(const std::string& text, const char* option) {
-    float a, b, c;
-    char extra = 0;
-    if (std::sscanf(text.c_str(), "%f,%f,%f%c", &a, &b, &c, &extra) != 3)
-        return engine::makeError("{}: expected x,y,z, got '{}'", option, text);
-    return glm::vec3(a, b, c);
+engine::Result<glm::vec3> parseVec3(const std::string& text, const char* option, const engine::NumberRange& range) {
+    glm::vec3 out(0.0f);
+    std::string_view rest = text;
+    for (int i = 0; i < 3; ++i) {
+        std::size_t end = i < 2 ? rest.find(',') : rest.size();
+        std::optional<double> v;
+        if (end != std::string_view::npos) v = engine::readNumber(rest.substr(0, end));
+        if (!v) return engine::makeError("{}: expected x,y,z, got '{}'", option, text);
+        if (engine::Status ok = engine::checkNumber(std::string(1, "xyz"[i]), *v, range); !ok)
+            return engine::makeError("{}: {}", option, ok.error().message);
+        out[i] = float(*v);
+        if (i < 2) rest = rest.substr(end + 1);
+    }
+    return out;
 }
 
 int fail(const engine::Error& error) {
@@ -95,7 +111,7 @@ int main(int argc, char** argv) {
            [](double mib) { engine::setMemoryBudgetBytes(std::uint64_t(mib * double(1 << 20))); },
            "MiB a world may take to build and show (CPU grid, GPU copy, frame buffers); default 3/4 of "
            "physical memory or of ulimit -v")
-        ->check(CLI::Range(64.0, double(1 << 24)));
+        ->check(vox::numberIn(engine::closedRange(64.0, double(1 << 24), "MiB")));
     int exitCode = 0;
     vox::addStartCommand(app, exitCode);
     vox::addPlayCommand(app, exitCode);

@@ -1,5 +1,6 @@
 // `vox play [WORLD]`: the play/edit sandbox (game/sandbox.h). This file only maps options.
 #include "commands.h"
+#include "number_options.h"
 #include "game/sandbox.h"
 
 namespace vox {
@@ -15,16 +16,24 @@ void addPlayCommand(CLI::App& app, int& exitCode) {
     cmd->add_option("--size", *size, "Window size WIDTHxHEIGHT")->capture_default_str();
     cmd->add_option("--render-scale", o->renderScale,
                     "Render resolution as a fraction of the window's (1/16..1); fixes it (default: start at 0.25 and "
-                    "adapt to keep frames near --target-ms)");
-    cmd->add_option("--target-ms", o->targetFrameMs, "Frame time the automatic render scale aims at")->capture_default_str();
+                    "adapt to keep frames near --target-ms)")
+        ->check(numberIn(engine::closedRange(1.0 / 16.0, 1.0)));
+    cmd->add_option("--target-ms", o->targetFrameMs, "Frame time the automatic render scale aims at")
+        ->capture_default_str()
+        ->check(numberIn(engine::aboveRange(0.0, 10000.0, "ms")));
     cmd->add_option("--script", o->scriptPath, "Replay scripted input from FILE (format: game/script_player.h)");
-    cmd->add_option("--frames", o->maxFrames, "Quit after this many frames (0: no limit)")->capture_default_str();
+    cmd->add_option("--frames", o->maxFrames, "Quit after this many frames (0: no limit)")
+        ->capture_default_str()
+        ->check(numberIn(engine::wholeRange(0, 1e12, "frames")));
     cmd->add_option("--edit-log", o->editLogPath, "Write every edit, undo, redo, save and screenshot to FILE");
     cmd->add_option("--frame-log", o->frameLogPath,
                     "Write per-frame times to FILE.csv (frame, wall ms, render call ms, GPU ms, render size)");
     cmd->add_option("--autosave-minutes", o->autosaveMinutes, "Autosave interval to SAVE.autosave.toml (0: off)")
-        ->capture_default_str();
-    cmd->add_option("--undo-mb", o->undoMegabytes, "Memory budget of the undo history in MiB")->capture_default_str();
+        ->capture_default_str()
+        ->check(numberIn(engine::closedRange(0.0, 24.0 * 60.0, "minutes")));
+    cmd->add_option("--undo-mb", o->undoMegabytes, "Memory budget of the undo history in MiB")
+        ->capture_default_str()
+        ->check(numberIn(engine::wholeRange(1, 1 << 20, "MiB")));
     cmd->add_flag("!--no-hud", o->hud, "Start with the HUD hidden (Tab shows it)");
     addLightingOptions(*cmd, *lighting);
     cmd->callback([o, size, lighting, cmd, &exitCode] {
@@ -37,10 +46,6 @@ void addPlayCommand(CLI::App& app, int& exitCode) {
         auto parsed = parseSize(*size, "--size");
         if (!parsed) {
             exitCode = fail(parsed.error());
-            return;
-        }
-        if (!(o->renderScale >= 1.0f / 16.0f && o->renderScale <= 1.0f)) {
-            exitCode = fail(engine::makeError("--render-scale must be in [0.0625, 1], got {}", o->renderScale));
             return;
         }
         o->windowSize = *parsed;

@@ -7,6 +7,7 @@
 #include "core/atomic_file.h"
 #include "commands.h"
 #include "lighting_options.h"
+#include "number_options.h"
 #include "gpu/context.h"
 #include "io/image_io.h"
 #include "render/renderer.h"
@@ -20,22 +21,23 @@ int runRender(const RenderOptions& o) {
     std::string ext = out.extension().string();
     if (ext != ".png" && ext != ".exr") return fail(engine::makeError("-o {}: the file must end in .png or .exr", o.output));
     if (o.pos.empty() != o.target.empty()) return fail(engine::makeError("--pos and --target go together"));
+    std::optional<glm::vec3> pos, target;
+    if (!o.pos.empty()) {
+        auto p = parseVec3(o.pos, "--pos", engine::world::kCoordinateRange);
+        if (!p) return fail(p.error());
+        auto t = parseVec3(o.target, "--target", engine::world::kCoordinateRange);
+        if (!t) return fail(t.error());
+        if (glm::length(*t - *p) < 1e-4f) return fail(engine::makeError("--target must differ from --pos"));
+        pos = *p, target = *t;
+    }
 
-    if (o.frames < 1 || o.frames > 100000) return fail(engine::makeError("--frames must be in 1..100000"));
-    if (o.spp < 1 || o.spp > 1000000) return fail(engine::makeError("--spp must be in 1..1000000"));
-    if (!std::isfinite(o.time) || std::abs(o.time) > 1e7) return fail(engine::makeError("--time must be a finite number of seconds"));
     if (o.lighting.showSettings) return showSettings(o.world, o.lighting);
     auto scene = loadWorld(o.world);
     if (!scene) return fail(scene.error());
     auto lighting = lightingSettings(o.lighting, &*scene);
     if (!lighting) return fail(lighting.error());
     engine::world::CameraPreset camera;
-    if (!o.pos.empty()) {
-        auto pos = parseVec3(o.pos, "--pos");
-        if (!pos) return fail(pos.error());
-        auto target = parseVec3(o.target, "--target");
-        if (!target) return fail(target.error());
-        if (glm::length(*target - *pos) < 1e-4f) return fail(engine::makeError("--target must differ from --pos"));
+    if (pos) {
         camera = scene->camera(o.camera);
         camera.name = "command line";
         camera.position = *pos;
@@ -48,10 +50,7 @@ int runRender(const RenderOptions& o) {
         }
         camera = scene->camera(o.camera);
     }
-    if (o.fov != 0.0f) {
-        if (o.fov <= 1.0f || o.fov >= 179.0f) return fail(engine::makeError("--fov must be in (1, 179) degrees"));
-        camera.fovYDegrees = o.fov;
-    }
+    if (o.fov) camera.fovYDegrees = *o.fov;
 
     engine::gpu::ContextOptions ctxOptions;
 #ifndef NDEBUG
@@ -147,14 +146,21 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
     cmd->add_option("--camera", o->camera, "Camera preset from the scene file (default: its first)");
     cmd->add_option("--pos", o->pos, "Camera position x,y,z (with --target)");
     cmd->add_option("--target", o->target, "Point the camera looks at x,y,z (with --pos)");
-    cmd->add_option("--fov", o->fov, "Vertical field of view in degrees");
+    cmd->add_option("--fov", o->fov, "Vertical field of view in degrees (default: the camera's)")
+        ->check(numberIn(engine::world::kFovRange));
     cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
     cmd->add_option("-o,--output", o->output, "Output image (.png or .exr)")->capture_default_str();
     cmd->add_option("--exr", o->exr, "Also write the linear radiance to this EXR file");
-    cmd->add_option("--exposure", o->exposure, "Exposure multiplier before tonemapping")->capture_default_str();
-    cmd->add_option("--frames", o->frames, "Frames of a still camera (temporal reuse accumulates)")->capture_default_str();
-    cmd->add_option("--time", o->time, "Scene time in seconds (poses dynamic objects)")->capture_default_str();
-    cmd->add_option("--spp", o->spp, "reference: samples per pixel")->capture_default_str();
+    cmd->add_option("--exposure", o->exposure, "Exposure multiplier before tonemapping")
+        ->capture_default_str()
+        ->check(numberIn(kExposureRange));
+    cmd->add_option("--frames", o->frames, "Frames of a still camera (temporal reuse accumulates)")
+        ->capture_default_str()
+        ->check(numberIn(kFrameCountRange));
+    cmd->add_option("--time", o->time, "Scene time in seconds (poses dynamic objects)")
+        ->capture_default_str()
+        ->check(numberIn(engine::closedRange(-1e7, 1e7, "s")));
+    cmd->add_option("--spp", o->spp, "reference: samples per pixel")->capture_default_str()->check(numberIn(kSamplesRange));
     cmd->add_option("--timings", o->timings, "Write per-frame, per-pass GPU milliseconds to this JSON file");
     addLightingOptions(*cmd, o->lighting);
     cmd->callback([o, &exitCode] { exitCode = runRender(*o); });

@@ -5,6 +5,7 @@
 
 #include "commands.h"
 #include "core/memory_budget.h"
+#include "number_options.h"
 
 namespace vox {
 
@@ -15,15 +16,18 @@ void addVdbImportOptions(CLI::App& cmd, VdbCliOptions& o) {
     cmd.add_option("--colour-grid", o.colourGrid, "vec3 grid giving colours (default: one named color/colour/Cd/albedo/rgb)");
     cmd.add_option("--material", o.rule, "Material rule: auto, constant, height, colour, ids")->capture_default_str();
     cmd.add_option("--albedo", o.albedo, "Albedo r,g,b of the constant material (linear, 0..1)");
-    cmd.add_option("--fog-threshold", o.fogThreshold, "Fog volumes: solid where density >= this")->capture_default_str();
-    cmd.add_option("--max-colours", o.maxColours, "Colour rule: at most this many materials")->capture_default_str();
-    o.voxelSizeOption =
-        cmd.add_option("--voxel-size", o.voxelSize, "Resample to this voxel size (file units, > 0; default: the file's)");
+    cmd.add_option("--fog-threshold", o.fogThreshold, "Fog volumes: solid where density >= this")->capture_default_str()
+        ->check(numberIn(engine::closedRange(-1e6, 1e6)));
+    cmd.add_option("--max-colours", o.maxColours, "Colour rule: at most this many materials")->capture_default_str()
+        ->check(numberIn(engine::wholeRange(1, 65534, "materials")));
+    o.voxelSizeOption = cmd.add_option("--voxel-size", o.voxelSize, "Resample to this voxel size (file units; default: the file's)")
+        ->check(numberIn(engine::aboveRange(0.0, 1e6, "file units")));
     cmd.add_option("--offset", o.offset, "x,y,z: world voxel where source voxel (0,0,0) lands (default: auto)");
     cmd.add_option("--crop", o.crop, "x0,y0,z0,x1,y1,z1: import only this source index box (max exclusive)");
     cmd.add_option("--up", o.up, "Source up axis: y, z or auto (auto: z for Blender files)")->capture_default_str();
     cmd.add_option("--memory-budget", o.memoryBudgetMiB, "MiB an import (and the world it makes) may take; refused above it (imports default to 4096)")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->check(numberIn(engine::wholeRange(1, 1 << 24, "MiB")));
 }
 
 engine::Result<engine::io::VdbImportOptions> toImportOptions(const VdbCliOptions& o) {
@@ -39,10 +43,8 @@ engine::Result<engine::io::VdbImportOptions> toImportOptions(const VdbCliOptions
     else if (o.rule == "ids") out.rule = io::MaterialRule::Ids;
     else return makeError("--material: unknown rule '{}' (known: auto, constant, height, colour, ids)", o.rule);
     if (!o.albedo.empty()) {
-        auto a = parseVec3(o.albedo, "--albedo");
+        auto a = parseVec3(o.albedo, "--albedo", engine::closedRange(0.0, 1.0));
         if (!a) return a.error();
-        if (glm::any(glm::lessThan(*a, glm::vec3(0.0f))) || glm::any(glm::greaterThan(*a, glm::vec3(1.0f))))
-            return makeError("--albedo: each channel must lie in [0, 1]");
         out.material.albedo = *a;
     }
     if (!(o.fogThreshold == o.fogThreshold)) return makeError("--fog-threshold: not a number");

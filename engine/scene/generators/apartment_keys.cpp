@@ -10,15 +10,15 @@ using world::ApartmentParams;
 
 ApartmentParams parse(GeneratorKeys& g) {
     ApartmentParams p;
-    p.min = g.ivec3("min", {}, true);
-    p.size = g.ivec3("size", {}, true);
-    p.storey = g.integer("storey", p.storey);
-    p.windowSize = g.ivec2("window_size", p.windowSize);
-    p.windowSpacing = g.integer("window_spacing", p.windowSpacing);
-    p.lit = static_cast<float>(g.number("lit", p.lit));
-    p.balconies = static_cast<float>(g.number("balconies", p.balconies));
-    p.baseDepth = g.integer("base_depth", p.baseDepth);
-    p.seed = static_cast<std::uint32_t>(g.integer("seed", static_cast<int>(p.seed)));
+    p.min = g.ivec3("min", {}, kVoxelIndexRange, true);
+    p.size = g.ivec3("size", {}, wholeRange(1, world::kMaxWorldExtent, "voxels"), true);
+    p.storey = g.integer("storey", p.storey, wholeRange(6, 64, "voxels"));
+    p.windowSize = g.ivec2("window_size", p.windowSize, wholeRange(1, 1024, "voxels"));
+    p.windowSpacing = g.integer("window_spacing", p.windowSpacing, wholeRange(2, 1024, "voxels"));
+    p.lit = static_cast<float>(g.number("lit", p.lit, closedRange(0.0, 1.0)));
+    p.balconies = static_cast<float>(g.number("balconies", p.balconies, closedRange(0.0, 1.0)));
+    p.baseDepth = g.integer("base_depth", p.baseDepth, wholeRange(0, world::kMaxWorldExtent, "voxels"));
+    p.seed = static_cast<std::uint32_t>(g.integer("seed", static_cast<int>(p.seed), kSeedRange));
     p.wall = g.material("wall");
     p.slab = g.material("slab");
     p.railing = g.material("railing", "empty");
@@ -29,16 +29,12 @@ ApartmentParams parse(GeneratorKeys& g) {
         if (!id) g.fail(g.node("windows"), "unknown material '{}'", name);
         p.windowLights.push_back(*id);
     }
-    if (p.storey < 6 || p.storey > 64) g.fail(g.node("storey"), "'storey' must be in 6..64");
     if (p.size.x < 8 || p.size.z < 8 || p.size.y < p.storey + 1)
         g.fail(g.node("size"),
                "'size' must be at least 8 across and one storey ('storey' + 1) high");
     if (p.windowSize.x < 1 || p.windowSize.y < 1 || p.windowSpacing <= p.windowSize.x)
         g.fail(g.node("window_size"),
                "windows must be at least 1x1 and narrower than 'window_spacing'");
-    if (p.lit < 0.0f || p.lit > 1.0f || p.balconies < 0.0f || p.balconies > 1.0f)
-        g.fail(&g.raw(), "'lit' and 'balconies' are fractions in 0..1");
-    if (p.baseDepth < 0) g.fail(g.node("base_depth"), "'base_depth' must not be negative");
     return p;
 }
 

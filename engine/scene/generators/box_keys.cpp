@@ -14,9 +14,10 @@ struct BoxParams {
 
 BoxParams parse(GeneratorKeys& g) {
     BoxParams p;
-    p.box = world::Box{g.ivec3("min", {}, true), g.ivec3("max", {}, true)};
+    p.box = world::Box{g.ivec3("min", {}, kVoxelIndexRange, true),
+                       g.ivec3("max", {}, kVoxelIndexRange, true)};
     p.material = g.material("material");
-    p.hollowWall = g.integer("hollow_wall", 0);
+    p.hollowWall = g.integer("hollow_wall", 0, wholeRange(0, world::kMaxWorldExtent, "voxels"));
     return p;
 }
 

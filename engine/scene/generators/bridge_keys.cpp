@@ -10,11 +10,11 @@ using world::BridgeParams;
 
 BridgeParams parse(GeneratorKeys& g) {
     BridgeParams p;
-    p.min = g.ivec3("min", {}, true);
-    p.max = g.ivec3("max", {}, true);
-    p.railingHeight = g.integer("railing_height", p.railingHeight);
-    p.postSpacing = g.integer("post_spacing", p.postSpacing);
-    p.lightSpacing = g.integer("light_spacing", p.lightSpacing);
+    p.min = g.ivec3("min", {}, kVoxelIndexRange, true);
+    p.max = g.ivec3("max", {}, kVoxelIndexRange, true);
+    p.railingHeight = g.integer("railing_height", p.railingHeight, wholeRange(0, 64, "voxels"));
+    p.postSpacing = g.integer("post_spacing", p.postSpacing, wholeRange(1, 4096, "voxels"));
+    p.lightSpacing = g.integer("light_spacing", p.lightSpacing, wholeRange(0, 4096, "voxels"));
     p.deck = g.material("deck");
     p.railing = g.material("railing", "empty");
     p.light = g.material("light", "empty");

@@ -10,19 +10,18 @@ using world::BuildingsParams;
 
 BuildingsParams parse(GeneratorKeys& g) {
     BuildingsParams p;
-    p.count = g.integer("count", p.count);
-    p.seed = static_cast<std::uint32_t>(g.integer("seed", static_cast<int>(p.seed)));
-    p.minHeight = g.integer("min_height", p.minHeight);
-    p.maxHeight = g.integer("max_height", p.maxHeight);
+    p.count = g.integer("count", p.count, wholeRange(0, 10000));
+    p.seed = static_cast<std::uint32_t>(g.integer("seed", static_cast<int>(p.seed), kSeedRange));
+    p.minHeight = g.integer("min_height", p.minHeight, wholeRange(6, world::kMaxWorldExtent, "voxels"));
+    p.maxHeight = g.integer("max_height", p.maxHeight, wholeRange(6, world::kMaxWorldExtent, "voxels"));
     // Sizes are [x, y, z] like every extent; y is not used.
-    glm::ivec3 minSize = g.ivec3("min_size", {p.minSize.x, 0, p.minSize.y});
-    glm::ivec3 maxSize = g.ivec3("max_size", {p.maxSize.x, 0, p.maxSize.y});
+    glm::ivec3 minSize = g.ivec3("min_size", {p.minSize.x, 0, p.minSize.y}, wholeRange(0, world::kMaxWorldExtent, "voxels"));
+    glm::ivec3 maxSize = g.ivec3("max_size", {p.maxSize.x, 0, p.maxSize.y}, wholeRange(0, world::kMaxWorldExtent, "voxels"));
     p.minSize = {minSize.x, minSize.z};
     p.maxSize = {maxSize.x, maxSize.z};
     p.wall = g.material("wall");
     p.roof = g.material("roof");
     p.window = g.material("window");
-    if (p.count < 0 || p.count > 10000) g.fail(g.node("count"), "'count' must be in 0..10000");
     if (glm::any(glm::lessThan(p.minSize, glm::ivec2(4))) ||
         glm::any(glm::lessThan(p.maxSize, p.minSize)) || p.minHeight < 6 ||
         p.maxHeight < p.minHeight)

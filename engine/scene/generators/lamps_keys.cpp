@@ -10,15 +10,12 @@ using world::LampsParams;
 
 LampsParams parse(GeneratorKeys& g) {
     LampsParams p;
-    p.count = g.integer("count", p.count);
-    p.seed = static_cast<std::uint32_t>(g.integer("seed", static_cast<int>(p.seed)));
-    p.postHeight = g.integer("post_height", p.postHeight);
-    p.lampSize = g.integer("lamp_size", p.lampSize);
+    p.count = g.integer("count", p.count, wholeRange(0, 1000000));
+    p.seed = static_cast<std::uint32_t>(g.integer("seed", static_cast<int>(p.seed), kSeedRange));
+    p.postHeight = g.integer("post_height", p.postHeight, wholeRange(0, 4096, "voxels"));
+    p.lampSize = g.integer("lamp_size", p.lampSize, wholeRange(1, 64, "voxels"));
     p.post = g.material("post");
     p.light = g.material("light");
-    if (p.count < 0 || p.count > 1000000) g.fail(g.node("count"), "'count' must be in 0..1000000");
-    if (p.lampSize < 1 || p.lampSize > 64)
-        g.fail(g.node("lamp_size"), "'lamp_size' must be in 1..64");
     return p;
 }
 

@@ -10,12 +10,10 @@ using world::MengerParams;
 
 MengerParams parse(GeneratorKeys& g) {
     MengerParams p;
-    p.origin = g.ivec3("origin", p.origin);
-    p.level = g.integer("level", p.level);
-    p.scale = g.integer("scale", p.scale);
+    p.origin = g.ivec3("origin", p.origin, kVoxelIndexRange);
+    p.level = g.integer("level", p.level, wholeRange(0, 6));
+    p.scale = g.integer("scale", p.scale, wholeRange(1, 64, "voxels"));
     p.material = g.material("material");
-    if (p.level < 0 || p.level > 6) g.fail(g.node("level"), "'level' must be in 0..6");
-    if (p.scale < 1 || p.scale > 64) g.fail(g.node("scale"), "'scale' must be in 1..64");
     return p;
 }
 

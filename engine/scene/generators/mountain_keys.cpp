@@ -8,33 +8,32 @@ namespace {
 
 using world::MountainParams;
 
+// snow_line and cliff_step: their default, 2^30 (what the writer writes), is above any world:
+// no snow, no cliffs.
+constexpr NumberRange kNoneAbove = wholeRange(-(1 << 30), 1 << 30, "voxels");
+
 MountainParams parse(GeneratorKeys& g) {
     MountainParams p;
     world::ColumnMaterials& m = p.materials;
     m.top = g.material("top");
     m.soil = g.material("soil");
     m.rock = g.material("rock");
-    m.soilDepth = g.integer("soil_depth", m.soilDepth);
+    m.soilDepth = g.integer("soil_depth", m.soilDepth, wholeRange(0, world::kMaxWorldExtent, "voxels"));
     m.snow = g.material("snow", "empty");
-    m.snowLine = g.integer("snow_line", m.snowLine);
+    m.snowLine = g.integer("snow_line", m.snowLine, kNoneAbove);
     m.cliff = g.material("cliff", "empty");
-    m.cliffStep = g.integer("cliff_step", m.cliffStep);
+    m.cliffStep = g.integer("cliff_step", m.cliffStep, kNoneAbove);
     glm::vec3 size(g.scene().grid.sizeInVoxels());
-    p.peak = g.vec2("peak", {size.x * 0.5f, size.z * 0.5f});
-    p.peakHeight = static_cast<float>(g.number("peak_height", p.peakHeight));
-    p.baseHeight = static_cast<float>(g.number("base_height", p.baseHeight));
-    p.radius = static_cast<float>(g.number("radius", p.radius));
-    p.hills = static_cast<float>(g.number("hills", p.hills));
-    p.ridges = static_cast<float>(g.number("ridges", p.ridges));
-    p.wavelength = static_cast<float>(g.number("wavelength", p.wavelength));
-    p.octaves = g.integer("octaves", p.octaves);
-    p.terrace = g.integer("terrace", p.terrace);
-    p.seed = static_cast<std::uint32_t>(g.integer("seed", static_cast<int>(p.seed)));
-    if (p.octaves < 1 || p.octaves > 12) g.fail(g.node("octaves"), "'octaves' must be in 1..12");
-    if (p.radius <= 0.0f) g.fail(g.node("radius"), "'radius' must be positive");
-    if (p.ridges < 0.0f || p.ridges > 1.0f) g.fail(g.node("ridges"), "'ridges' must be in 0..1");
-    if (p.terrace < 0 || p.terrace > 64) g.fail(g.node("terrace"), "'terrace' must be in 0..64");
-    if (m.soilDepth < 0) g.fail(g.node("soil_depth"), "'soil_depth' must not be negative");
+    p.peak = g.vec2("peak", {size.x * 0.5f, size.z * 0.5f}, world::kCoordinateRange);
+    p.peakHeight = static_cast<float>(g.number("peak_height", p.peakHeight, closedRange(-world::kMaxWorldExtent, world::kMaxWorldExtent, "voxels")));
+    p.baseHeight = static_cast<float>(g.number("base_height", p.baseHeight, closedRange(-world::kMaxWorldExtent, world::kMaxWorldExtent, "voxels")));
+    p.radius = static_cast<float>(g.number("radius", p.radius, aboveRange(0.0, 1e6, "voxels")));
+    p.hills = static_cast<float>(g.number("hills", p.hills, closedRange(-world::kMaxWorldExtent, world::kMaxWorldExtent, "voxels")));
+    p.ridges = static_cast<float>(g.number("ridges", p.ridges, closedRange(0.0, 1.0)));
+    p.wavelength = static_cast<float>(g.number("wavelength", p.wavelength, aboveRange(0.0, 1e6, "voxels")));
+    p.octaves = g.integer("octaves", p.octaves, wholeRange(1, 12));
+    p.terrace = g.integer("terrace", p.terrace, wholeRange(0, 64, "voxels"));
+    p.seed = static_cast<std::uint32_t>(g.integer("seed", static_cast<int>(p.seed), kSeedRange));
     return p;
 }
 

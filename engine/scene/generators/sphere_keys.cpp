@@ -15,10 +15,8 @@ struct SphereParams {
 
 SphereParams parse(GeneratorKeys& g) {
     SphereParams p;
-    p.center = g.vec3("center", {}, true);
-    p.radius = static_cast<float>(g.number("radius", p.radius));
-    if (p.radius <= 0.0f || p.radius > world::kMaxWorldExtent)
-        g.fail(g.node("radius"), "'radius' must be in (0, {}]", world::kMaxWorldExtent);
+    p.center = g.vec3("center", {}, world::kCoordinateRange, true);
+    p.radius = static_cast<float>(g.number("radius", p.radius, aboveRange(0.0, world::kMaxWorldExtent, "voxels")));
     p.material = g.material("material");
     return p;
 }

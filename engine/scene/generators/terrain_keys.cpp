@@ -1,6 +1,7 @@
 // [[generator]] type = "terrain": keys of world/generators.h's height-field terrain.
 #include "scene/generator_registry.h"
 #include "world/generators.h"
+#include "world/world_limits.h"
 
 namespace engine::scene {
 
@@ -13,13 +14,12 @@ TerrainParams parse(GeneratorKeys& g) {
     p.top = g.material("top");
     p.soil = g.material("soil");
     p.rock = g.material("rock");
-    p.soilDepth = g.integer("soil_depth", p.soilDepth);
-    p.baseHeight = static_cast<float>(g.number("base_height", p.baseHeight));
-    p.amplitude = static_cast<float>(g.number("amplitude", p.amplitude));
-    p.wavelength = static_cast<float>(g.number("wavelength", p.wavelength));
-    p.octaves = g.integer("octaves", p.octaves);
-    p.seed = static_cast<std::uint32_t>(g.integer("seed", static_cast<int>(p.seed)));
-    if (p.octaves < 1 || p.octaves > 12) g.fail(g.node("octaves"), "'octaves' must be in 1..12");
+    p.soilDepth = g.integer("soil_depth", p.soilDepth, wholeRange(0, world::kMaxWorldExtent, "voxels"));
+    p.baseHeight = static_cast<float>(g.number("base_height", p.baseHeight, closedRange(-world::kMaxWorldExtent, world::kMaxWorldExtent, "voxels")));
+    p.amplitude = static_cast<float>(g.number("amplitude", p.amplitude, closedRange(-world::kMaxWorldExtent, world::kMaxWorldExtent, "voxels")));
+    p.wavelength = static_cast<float>(g.number("wavelength", p.wavelength, aboveRange(0.0, 1e6, "voxels")));
+    p.octaves = g.integer("octaves", p.octaves, wholeRange(1, 12));
+    p.seed = static_cast<std::uint32_t>(g.integer("seed", static_cast<int>(p.seed), kSeedRange));
     return p;
 }
 

@@ -11,12 +11,12 @@ using world::TextParams;
 TextParams parse(GeneratorKeys& g) {
     TextParams p;
     p.text = g.string("text");
-    p.origin = g.ivec3("origin", {}, true);
-    p.right = g.ivec3("right", p.right);
-    p.up = g.ivec3("up", p.up);
-    p.scale = g.integer("scale", p.scale);
-    p.depth = g.integer("depth", p.depth);
-    p.spacing = g.integer("spacing", p.spacing);
+    p.origin = g.ivec3("origin", {}, kVoxelIndexRange, true);
+    p.right = g.ivec3("right", p.right, wholeRange(-1, 1));
+    p.up = g.ivec3("up", p.up, wholeRange(-1, 1));
+    p.scale = g.integer("scale", p.scale, wholeRange(1, 64, "voxels"));
+    p.depth = g.integer("depth", p.depth, wholeRange(1, 64, "voxels"));
+    p.spacing = g.integer("spacing", p.spacing, wholeRange(0, 64, "voxels"));
     p.material = g.material("material");
     if (std::string problem = world::validateTextParams(p); !problem.empty())
         g.fail(&g.raw(), "text: {}", problem);

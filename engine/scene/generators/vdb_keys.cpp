@@ -61,18 +61,14 @@ VdbParams parse(GeneratorKeys& g) {
             o.heightMaterials.push_back(g.scene().palette[*id]);
         }
     }
-    o.fogThreshold = static_cast<float>(g.number("fog_threshold", o.fogThreshold));
-    o.maxColours = g.integer("max_colours", o.maxColours);
-    if (o.maxColours < 1 || std::size_t(o.maxColours) >= world::kMaxMaterials)
-        g.fail(g.node("max_colours"), "'max_colours' must be in 1..{}", world::kMaxMaterials - 1);
-    if (g.has("voxel_size")) {  // absent: the file's
-        o.voxelSize = static_cast<float>(g.number("voxel_size", 0.0));
-        if (!(o.voxelSize > 0.0f) || std::isinf(o.voxelSize))
-            g.fail(g.node("voxel_size"), "'voxel_size' must be a positive number");
-    }
-    if (g.has("offset")) o.offset = g.ivec3("offset", {});
+    o.fogThreshold = static_cast<float>(g.number("fog_threshold", o.fogThreshold, closedRange(-1e6, 1e6)));
+    o.maxColours = g.integer("max_colours", o.maxColours, wholeRange(1, double(world::kMaxMaterials - 1)));
+    // Absent: the file's own voxel size (0 in the options); 0 in the file is refused.
+    o.voxelSize = static_cast<float>(g.number("voxel_size", 0.0, aboveRange(0.0, 1e6, "file units")));
+    if (g.has("offset")) o.offset = g.ivec3("offset", {}, kVoxelIndexRange);
     if (g.has("crop_min") || g.has("crop_max")) {
-        world::Box crop{g.ivec3("crop_min", {}, true), g.ivec3("crop_max", {}, true)};
+        world::Box crop{g.ivec3("crop_min", {}, kVoxelIndexRange, true),
+                        g.ivec3("crop_max", {}, kVoxelIndexRange, true)};
         if (crop.empty())
             g.fail(g.node("crop_max"), "'crop_max' must exceed 'crop_min' on every axis");
         o.crop = crop;
@@ -83,8 +79,8 @@ VdbParams parse(GeneratorKeys& g) {
         if (up == name) o.up = axis, known = true;
     }
     if (!known) g.fail(g.node("up"), "'up' must be \"y\", \"z\" or \"auto\"");
-    int budget = g.integer("memory_budget_mib", int(o.memoryBudgetBytes >> 20));
-    if (budget < 1) g.fail(g.node("memory_budget_mib"), "'memory_budget_mib' must be positive");
+    int budget = g.integer("memory_budget_mib", int(o.memoryBudgetBytes >> 20),
+                           wholeRange(1, 1 << 24, "MiB"));
     o.memoryBudgetBytes = std::uint64_t(budget) << 20;
     return p;
 }
