@@ -18,9 +18,8 @@ struct VoxParams {
 VoxParams parse(GeneratorKeys& g) {
     VoxParams p;
     p.source = g.string("source");
-    p.options.offset = g.ivec3("offset", p.options.offset);
-    int budget = g.integer("memory_budget_mib", int(p.options.memoryBudgetBytes >> 20));
-    if (budget < 1) g.fail(g.node("memory_budget_mib"), "'memory_budget_mib' must be positive");
+    p.options.offset = g.ivec3("offset", p.options.offset, kVoxelIndexRange);
+    int budget = g.integer("memory_budget_mib", int(p.options.memoryBudgetBytes >> 20), wholeRange(1, 1 << 24, "MiB"));
     p.options.memoryBudgetBytes = std::uint64_t(budget) << 20;
     return p;
 }
