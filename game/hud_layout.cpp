@@ -42,8 +42,9 @@ HudLayout layoutHud(glm::vec2 window, float lineHeight, bool showKeys, bool mess
     const float height = std::max(0.0f, bottom - top);
 
     if (l.compact) {
-        // A strip of at most four lines on top; the keys (F1) below it.
-        float stripH = std::min(height, 4.0f * line + pad);
+        // A strip of at most four lines on top; the keys (F1) below it, which then get all
+        // but one line of the strip (asked for, they matter more than the figures).
+        float stripH = std::min(height, (showKeys ? 1.0f : 4.0f) * line + pad);
         l.stats = {{margin, top}, {window.x - 2.0f * margin, stripH}};
         if (showKeys) {
             float keysTop = top + stripH + margin;

@@ -25,9 +25,15 @@ void expectClean(glm::vec2 window, bool keys, bool message) {
     }
     // The stats always get room for at least one line; a message for at least one; keys too.
     EXPECT_GE(l.stats.size.y, kLine * l.fontScale);
-    if (message) EXPECT_GE(l.message.size.y, kLine * l.fontScale);
-    if (keys) EXPECT_GE(l.keys.size.y, kLine * l.fontScale);
-    if (!l.compact) EXPECT_FALSE(l.tools.empty());
+    if (message) {
+        EXPECT_GE(l.message.size.y, kLine * l.fontScale);
+    }
+    if (keys) {
+        EXPECT_GE(l.keys.size.y, kLine * l.fontScale);
+    }
+    if (!l.compact) {
+        EXPECT_FALSE(l.tools.empty());
+    }
 }
 
 }  // namespace
@@ -73,7 +79,9 @@ TEST(HudLayout, WrapsOnlyBetweenEntries) {
             std::regex whole(R"(^[a-z ]+ \d+\.\d+(, [a-z ]+ \d+\.\d+)*,?$)");
             EXPECT_TRUE(std::regex_match(line, whole)) << "'" << line << "'";
             // Wider than allowed only when the line is one entry.
-            if (chars(line) > maxWidth) EXPECT_EQ(line.find(", "), std::string::npos) << line;
+            if (chars(line) > maxWidth) {
+                EXPECT_EQ(line.find(", "), std::string::npos) << line;
+            }
             joined += (joined.empty() ? "" : " ") + line;
         }
         std::string expected;
