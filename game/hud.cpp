@@ -50,6 +50,37 @@ void drawBox(ImDrawList* dl, const shared::FrameParams& f, const engine::world::
         }
 }
 
+// Places the next window at `area` (anchored at its top-left, or top-right for `right`) and
+// lets it auto-size up to the area; beyond that it scrolls.
+void placeWindow(const HudRect& area, bool right = false) {
+    ImVec2 pos = right ? ImVec2(area.max().x, area.min.y) : ImVec2(area.min.x, area.min.y);
+    ImGui::SetNextWindowPos(pos, ImGuiCond_Always, ImVec2(right ? 1.0f : 0.0f, 0.0f));
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(area.size.x, area.size.y));
+}
+
+constexpr ImGuiWindowFlags kPanelFlags = ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
+                                         ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoCollapse;
+
+// The text width a panel of `area` leaves: its padding and a vertical scrollbar taken off.
+float textWidth(const HudRect& area) {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    return std::max(ImGui::GetFontSize(), area.size.x - 2.0f * style.WindowPadding.x - style.ScrollbarSize);
+}
+
+// One line per group of whole entries that fits `width`: a wrap never splits "name 1.25".
+void textEntries(const std::vector<std::string>& entries, float width) {
+    auto measure = [](std::string_view t) { return ImGui::CalcTextSize(t.data(), t.data() + t.size()).x; };
+    for (const std::string& line : wrapEntries(entries, ", ", width, measure)) ImGui::TextUnformatted(line.c_str());
+}
+
+std::string fps(double ms) { return fmt::format("{:.0f} fps", ms > 0 ? 1000.0 / ms : 0.0); }
+
+double gpuTotal(const HudStats& stats) {
+    double gpu = 0.0;
+    for (const auto& [name, ms] : stats.passMs) gpu += ms;
+    return gpu;
+}
+
 }  // namespace
 
 const std::vector<std::pair<const char*, const char*>>& keyBindings() {
@@ -78,37 +109,56 @@ const std::vector<std::pair<const char*, const char*>>& keyBindings() {
 
 HudActions Hud::draw(const HudStats& stats, HudControls& controls, bool quitPrompt) {
     HudActions actions;
+    ImGuiIO& io = ImGui::GetIO();
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float line = ImGui::GetFont()->FontSize + style.ItemSpacing.y;  // at font scale 1
+    HudLayout layout = layoutHud({io.DisplaySize.x, io.DisplaySize.y}, line, visible && showKeys, !stats.message.empty());
+    io.FontGlobalScale = layout.fontScale;  // takes effect from the next frame
     drawCrosshair(stats);
     if (visible) {
-        drawStats(stats, controls, actions);
-        drawTools(stats, controls);
-        if (showKeys) drawKeys();
+        if (layout.compact) {
+            drawCompact(stats, controls, layout.stats);
+        } else {
+            drawStats(stats, controls, actions, layout.stats);
+            drawTools(stats, controls, layout.tools);
+        }
+        if (showKeys) drawKeys(layout.keys, layout.compact);
     }
-    if (!stats.message.empty()) {
-        ImGuiIO& io = ImGui::GetIO();
-        ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y - 8.0f), ImGuiCond_Always, ImVec2(0.5f, 1.0f));
-        ImGui::SetNextWindowBgAlpha(0.6f);
-        ImGui::Begin("##message", nullptr,
-                     ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs |
-                         ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
-        ImGui::TextUnformatted(stats.message.c_str());
-        ImGui::End();
-    }
+    if (!stats.message.empty()) drawMessage(stats.message, layout.message);
     if (quitPrompt) {
         ImGui::OpenPopup("Unsaved changes");
-        ImGuiIO& io = ImGui::GetIO();
         ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+        ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(io.DisplaySize.x - 8.0f, io.DisplaySize.y - 8.0f));
         if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
             ImGui::Text("%s has unsaved changes.", stats.worldName.c_str());
-            if (ImGui::Button("Save and quit (Y)")) actions.quitSave = true;
-            ImGui::SameLine();
-            if (ImGui::Button("Quit without saving (N)")) actions.quitDiscard = true;
-            ImGui::SameLine();
-            if (ImGui::Button("Cancel (Esc)")) actions.quitCancel = true;
+            // Side by side when they fit, else one under another.
+            const char* labels[] = {"Save and quit (Y)", "Quit without saving (N)", "Cancel (Esc)"};
+            float row = 0.0f;
+            for (const char* label : labels) row += ImGui::CalcTextSize(label).x + 2.0f * style.FramePadding.x + style.ItemSpacing.x;
+            bool sideBySide = row + 2.0f * style.WindowPadding.x <= io.DisplaySize.x - 8.0f;
+            bool* results[] = {&actions.quitSave, &actions.quitDiscard, &actions.quitCancel};
+            for (int i = 0; i < 3; ++i) {
+                if (i > 0 && sideBySide) ImGui::SameLine();
+                if (ImGui::Button(labels[i])) *results[i] = true;
+            }
             ImGui::EndPopup();
         }
     }
     return actions;
+}
+
+void Hud::drawMessage(const std::string& message, const HudRect& area) {
+    // Centred at the bottom, as wide as the text up to the window; wraps to a second line.
+    ImGui::SetNextWindowPos(ImVec2(area.min.x + area.size.x * 0.5f, area.max().y), ImGuiCond_Always, ImVec2(0.5f, 1.0f));
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(area.size.x, area.size.y));
+    ImGui::SetNextWindowBgAlpha(0.6f);
+    ImGui::Begin("##message", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs |
+                     ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
+    ImGui::PushTextWrapPos(textWidth(area) + ImGui::GetStyle().WindowPadding.x);
+    ImGui::TextUnformatted(message.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::End();
 }
 
 void Hud::drawCrosshair(const HudStats& stats) {
@@ -123,44 +173,71 @@ void Hud::drawCrosshair(const HudStats& stats) {
     if (stats.preview && stats.mouseLook) drawBox(dl, stats.view, *stats.preview, display, IM_COL32(255, 230, 80, 220));
 }
 
-void Hud::drawStats(const HudStats& stats, HudControls& controls, HudActions& actions) {
-    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_Always);
+void Hud::drawCompact(const HudStats& stats, HudControls& controls, const HudRect& area) {
+    // Small windows: the figures a player needs, wrapped between entries; the keys still work.
+    placeWindow(area);
+    ImGui::SetNextWindowBgAlpha(0.6f);
+    ImGui::Begin("##compact", nullptr, ImGuiWindowFlags_NoDecoration | kPanelFlags);
+    const EditTools& t = controls.tools;
+    const auto& mat = controls.palette[t.material];
+    std::vector<std::string> entries = {
+        fmt::format("{:.1f} ms", stats.cpuFrameMs), fps(stats.cpuFrameMs), fmt::format("GPU {:.1f} ms", gpuTotal(stats)),
+        fmt::format("{} {}", toolName(t.tool), brushName(t.brush)), mat.name + (mat.emissive() ? " (light)" : ""),
+    };
+    if (stats.target.hit)
+        entries.push_back(fmt::format("target {} {} {}", stats.target.voxel.x, stats.target.voxel.y, stats.target.voxel.z));
+    if (stats.unsaved) entries.push_back("unsaved");
+    entries.push_back(showKeys ? "F1: hide keys" : "F1: keys");
+    // Only whole lines: the strip has no scrollbar, so what does not fit is left out.
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float lineHeight = ImGui::GetTextLineHeightWithSpacing();
+    const auto fit = static_cast<std::size_t>(
+        std::max(1.0f, std::floor((area.size.y - 2.0f * style.WindowPadding.y + style.ItemSpacing.y) / lineHeight)));
+    auto measure = [](std::string_view text) { return ImGui::CalcTextSize(text.data(), text.data() + text.size()).x; };
+    auto lines = wrapEntries(entries, ", ", textWidth(area), measure);
+    for (std::size_t i = 0; i < std::min(fit, lines.size()); ++i) ImGui::TextUnformatted(lines[i].c_str());
+    ImGui::End();
+}
+
+void Hud::drawStats(const HudStats& stats, HudControls& controls, HudActions& actions, const HudRect& area) {
+    placeWindow(area);
     ImGui::SetNextWindowBgAlpha(0.65f);
-    ImGui::Begin("Frame", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoFocusOnAppearing);
-    double gpu = 0.0;
-    for (const auto& [name, ms] : stats.passMs) gpu += ms;
-    ImGui::Text("frame %.1f ms (%.0f fps), GPU %.2f ms", stats.cpuFrameMs, stats.cpuFrameMs > 0 ? 1000.0 / stats.cpuFrameMs : 0.0,
-                gpu);
-    std::string passes;
-    for (const auto& [name, ms] : stats.passMs) passes += fmt::format("{}{} {:.2f}", passes.empty() ? "" : ", ", name, ms);
-    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 24.0f);
-    ImGui::TextUnformatted(passes.c_str());
-    ImGui::PopTextWrapPos();
-    ImGui::Text("render %ux%u -> window %ux%u", stats.renderSize.x, stats.renderSize.y, stats.windowSize.x,
-                stats.windowSize.y);
+    ImGui::Begin("Frame", nullptr, kPanelFlags);
+    const float width = textWidth(area);
+    textEntries({fmt::format("frame {:.1f} ms", stats.cpuFrameMs), fps(stats.cpuFrameMs),
+                 fmt::format("GPU {:.2f} ms", gpuTotal(stats))},
+                width);
+    std::vector<std::string> passes;
+    for (const auto& [name, ms] : stats.passMs) passes.push_back(fmt::format("{} {:.2f}", name, ms));
+    textEntries(passes, width);
+    textEntries({fmt::format("render {}x{}", stats.renderSize.x, stats.renderSize.y),
+                 fmt::format("window {}x{}", stats.windowSize.x, stats.windowSize.y)},
+                width);
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
     ImGui::SliderFloat("render scale", &controls.renderScale, 1.0f / 16.0f, 1.0f, "%.3f");
     ImGui::SameLine();
     ImGui::Checkbox("auto", &controls.autoScale);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("adapt the render scale to keep the frame responsive");
-    ImGui::Text("bricks %u, emitters %llu", stats.liveBricks, static_cast<unsigned long long>(stats.emitters));
+    textEntries({fmt::format("bricks {}", stats.liveBricks), fmt::format("emitters {}", stats.emitters)}, width);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("emissive voxels with an exposed face; a cell all of one emissive material is one brick light");
-    ImGui::Text("memory CPU %s, GPU %s", megabytes(stats.cpuMemory.topGridBytes + stats.cpuMemory.brickPoolBytes).c_str(),
-                megabytes(stats.gpuMemory.topGridBytes + stats.gpuMemory.brickPageBytes + stats.gpuMemory.pageTableBytes +
-                          stats.gpuMemory.paletteBytes)
-                    .c_str());
+    textEntries({"memory CPU " + megabytes(stats.cpuMemory.topGridBytes + stats.cpuMemory.brickPoolBytes),
+                 "GPU " + megabytes(stats.gpuMemory.topGridBytes + stats.gpuMemory.brickPageBytes +
+                                    stats.gpuMemory.pageTableBytes + stats.gpuMemory.paletteBytes)},
+                width);
     if (stats.cacheUsed) {
-        ImGui::Text("irradiance cache %s, %u entries", megabytes(stats.cache.bytes).c_str(), stats.cache.entries);
+        textEntries({"irradiance cache " + megabytes(stats.cache.bytes), fmt::format("{} entries", stats.cache.entries)}, width);
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("entries of voxels the camera has seen, least recently seen evicted at the memory budget");
-        ImGui::Text("cache updates %u (%u waiting), %.0fk rays", stats.cache.updated, stats.cache.waiting,
-                    static_cast<double>(stats.cache.raysTraced) / 1000.0);
+        textEntries({fmt::format("cache updates {} ({} waiting)", stats.cache.updated, stats.cache.waiting),
+                     fmt::format("{:.0f}k rays", static_cast<double>(stats.cache.raysTraced) / 1000.0)},
+                    width);
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("entries updated this frame within the ray budget (--cache-budget); waiting: visible ones left for later frames");
     }
-    ImGui::Text("undo %zu / redo %zu steps, %s of %s", stats.undo.undoSteps, stats.undo.redoSteps,
-                megabytes(stats.undo.bytes).c_str(), megabytes(stats.undo.maxBytes).c_str());
+    textEntries({fmt::format("undo {} / redo {} steps", stats.undo.undoSteps, stats.undo.redoSteps),
+                 fmt::format("{} of {}", megabytes(stats.undo.bytes), megabytes(stats.undo.maxBytes))},
+                width);
     if (stats.undo.droppedSteps) ImGui::Text("  %zu oldest steps dropped (budget)", stats.undo.droppedSteps);
     if (!showKeys) ImGui::TextDisabled("F1: keys, Tab: hide HUD");
     if (ImGui::Button("Undo")) actions.undo = true;
@@ -168,13 +245,15 @@ void Hud::drawStats(const HudStats& stats, HudControls& controls, HudActions& ac
     if (ImGui::Button("Redo")) actions.redo = true;
     ImGui::SameLine();
     if (ImGui::Button("Save")) actions.save = true;
+    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + width);
     ImGui::Text("%s%s", stats.savePath.c_str(), stats.unsaved ? " (unsaved changes)" : "");
+    ImGui::PopTextWrapPos();
     engine::lighting::LightingSettings& l = controls.lighting;
     if (!ImGui::CollapsingHeader(fmt::format("Lighting: {}###lighting", engine::lighting::methodName(l.method)).c_str())) {
         ImGui::End();
         return;
     }
-    mLightingPanel.draw(l);
+    mLightingPanel.draw(l, width);
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
     ImGui::SliderFloat("exposure", &controls.exposure, 0.05f, 8.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
     glm::vec3 d = controls.sky.sunDirection;
@@ -191,11 +270,11 @@ void Hud::drawStats(const HudStats& stats, HudControls& controls, HudActions& ac
     ImGui::End();
 }
 
-void Hud::drawTools(const HudStats& stats, HudControls& controls) {
-    ImGuiIO& io = ImGui::GetIO();
-    ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - 8, 8), ImGuiCond_Always, ImVec2(1.0f, 0.0f));
+void Hud::drawTools(const HudStats& stats, HudControls& controls, const HudRect& area) {
+    placeWindow(area, /*right=*/true);
     ImGui::SetNextWindowBgAlpha(0.65f);
-    ImGui::Begin("Edit", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoFocusOnAppearing);
+    ImGui::Begin("Edit", nullptr, kPanelFlags);
+    const ImGuiStyle& style = ImGui::GetStyle();
     EditTools& t = controls.tools;
     int tool = static_cast<int>(t.tool);
     ImGui::RadioButton("place", &tool, 0);
@@ -217,9 +296,17 @@ void Hud::drawTools(const HudStats& stats, HudControls& controls) {
         ImGui::SliderFloat("radius", &t.radius, 0.5f, 32.0f, "%.1f");
     }
 
-    // The palette: emissive materials (lights) get a bright frame and a star.
+    // The palette: emissive materials (lights) get a bright frame and a star. It scrolls in a
+    // box that leaves room for the lines below it (material, target, drag hint).
     const auto& materials = controls.palette.materials();
     const float swatch = ImGui::GetFrameHeight();
+    const float cell = swatch + style.ItemSpacing.x;
+    const float below = 3.0f * ImGui::GetTextLineHeightWithSpacing() + style.WindowPadding.y;
+    const float room = area.max().y - ImGui::GetCursorScreenPos().y - below;
+    const int count = static_cast<int>(materials.size()) - 1;  // id 0 is empty
+    PaletteGrid grid = paletteGrid(count, textWidth(area), room, cell);
+    const float boxWidth = grid.columns * cell + (grid.scrolls() ? style.ScrollbarSize : 0.0f);
+    ImGui::BeginChild("palette", ImVec2(boxWidth, grid.visibleRows * cell), false);
     for (std::size_t i = 1; i < materials.size(); ++i) {
         const auto& m = materials[i];
         ImGui::PushID(static_cast<int>(i));
@@ -234,38 +321,48 @@ void Hud::drawTools(const HudStats& stats, HudControls& controls) {
             t.material = static_cast<engine::world::MaterialId>(i);
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("%s%s", m.name.c_str(), m.emissive() ? fmt::format(" (light, {:.1f})", m.emissionStrength).c_str() : "");
+        if (selected && mShownMaterial != t.material) {
+            ImGui::SetScrollHereY(0.5f);  // a material chosen by key or wheel comes into view
+            mShownMaterial = t.material;
+        }
         if (selected || m.emissive()) {
             ImGui::PopStyleColor();
             ImGui::PopStyleVar();
         }
         ImGui::PopID();
-        if (i % 8 != 0 && i + 1 < materials.size()) ImGui::SameLine();
+        if (i % static_cast<std::size_t>(grid.columns) != 0 && i + 1 < materials.size()) ImGui::SameLine();
     }
+    ImGui::EndChild();
+    const float width = textWidth(area);
     const auto& cur = controls.palette[t.material];
-    ImGui::Text("material: %s%s", cur.name.c_str(), cur.emissive() ? " (light)" : "");
+    textEntries({"material: " + cur.name + (cur.emissive() ? " (light)" : "")}, width);
     if (stats.target.hit) {
         const auto& hit = controls.palette[stats.target.material];
-        ImGui::Text("target (%d, %d, %d) %s, %.1f away", stats.target.voxel.x, stats.target.voxel.y, stats.target.voxel.z,
-                    hit.name.c_str(), stats.target.distance);
+        textEntries({fmt::format("target ({}, {}, {}) {}", stats.target.voxel.x, stats.target.voxel.y, stats.target.voxel.z,
+                                 hit.name),
+                     fmt::format("{:.1f} away", stats.target.distance)},
+                    width);
     } else {
         ImGui::TextUnformatted("target: sky");
     }
-    if (t.dragging()) ImGui::TextUnformatted("box: release to apply, Esc to cancel");
+    if (t.dragging()) textEntries({"box: release to apply", "Esc to cancel"}, width);
     ImGui::End();
 }
 
-void Hud::drawKeys() {
-    ImGuiIO& io = ImGui::GetIO();
-    ImGui::SetNextWindowPos(ImVec2(8, io.DisplaySize.y - 8), ImGuiCond_Always, ImVec2(0.0f, 1.0f));
+void Hud::drawKeys(const HudRect& area, bool compact) {
+    placeWindow(area);
     ImGui::SetNextWindowBgAlpha(0.55f);
-    ImGui::Begin("Keys (F1)", nullptr, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoFocusOnAppearing);
-    if (ImGui::BeginTable("keys", 2)) {
+    ImGui::Begin("Keys (F1)", nullptr, kPanelFlags | (compact ? ImGuiWindowFlags_NoTitleBar : 0));
+    // The description column wraps to what is left of the panel; the list scrolls.
+    if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_SizingFixedFit, ImVec2(textWidth(area), 0.0f))) {
+        ImGui::TableSetupColumn("key", ImGuiTableColumnFlags_WidthFixed);
+        ImGui::TableSetupColumn("what", ImGuiTableColumnFlags_WidthStretch);
         for (const auto& [key, what] : keyBindings()) {
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
             ImGui::TextUnformatted(key);
             ImGui::TableNextColumn();
-            ImGui::TextUnformatted(what);
+            ImGui::TextWrapped("%s", what);
         }
         ImGui::EndTable();
     }

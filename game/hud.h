@@ -2,7 +2,9 @@
 // bricks and memory, undo memory, lighting settings, the edit tool and material palette, the
 // keys, a crosshair with an outline of the voxels the next edit touches, messages, and the
 // unsaved-changes prompt. It reads a snapshot of the sandbox (HudStats), changes settings
-// through HudControls, and reports button presses as HudActions.
+// through HudControls, and reports button presses as HudActions. Where each panel goes, and
+// how much it may take, comes from layoutHud (game/hud_layout.h): side by side, or one compact
+// strip on small windows; text wraps between entries and long lists scroll.
 #pragma once
 
 #include <optional>
@@ -12,6 +14,7 @@
 
 #include "game/camera_controller.h"
 #include "game/edit_tools.h"
+#include "game/hud_layout.h"
 #include "game/lighting_panel.h"
 #include "game/undo_history.h"
 #include "lighting/lighting_settings.h"
@@ -74,11 +77,14 @@ public:
 
 private:
     void drawCrosshair(const HudStats& stats);
-    void drawStats(const HudStats& stats, HudControls& controls, HudActions& actions);
-    void drawTools(const HudStats& stats, HudControls& controls);
-    void drawKeys();
+    void drawCompact(const HudStats& stats, HudControls& controls, const HudRect& area);
+    void drawStats(const HudStats& stats, HudControls& controls, HudActions& actions, const HudRect& area);
+    void drawTools(const HudStats& stats, HudControls& controls, const HudRect& area);
+    void drawKeys(const HudRect& area, bool compact);
+    void drawMessage(const std::string& message, const HudRect& area);
 
     LightingPanel mLightingPanel;
+    engine::world::MaterialId mShownMaterial = 0;  // the palette scrolls to a newly chosen one
 };
 
 }  // namespace game

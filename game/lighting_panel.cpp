@@ -92,7 +92,7 @@ bool drawKnob(const Knob& k, LightingSettings& s) {
 
 }  // namespace
 
-bool LightingPanel::draw(LightingSettings& settings) {
+bool LightingPanel::draw(LightingSettings& settings, float width) {
     LightingSettings edited = settings;
     bool changed = false;
     for (const engine::lighting::KnobGroup& g : engine::lighting::knobGroups()) {
@@ -116,7 +116,11 @@ bool LightingPanel::draw(LightingSettings& settings) {
             mRefused = merged.error().message;
         }
     }
-    if (!mRefused.empty()) ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "not applied: %s", mRefused.c_str());
+    if (!mRefused.empty()) {
+        ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + width);
+        ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.4f, 1.0f), "not applied: %s", mRefused.c_str());
+        ImGui::PopTextWrapPos();
+    }
     return changed && mRefused.empty();
 }
 
