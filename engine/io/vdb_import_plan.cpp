@@ -35,7 +35,6 @@ void countStreamedCells(ImportState& im) {
 Status estimate(ImportState& im, const world::Scene* target) {
     VdbImportPlan& plan = im.plan;
     const SourceTopology& topology = im.topology;
-    constexpr std::uint64_t kBrickBytes = sizeof(world::BrickVoxels) + sizeof(world::BrickMask) + 1;
     const glm::u64vec3 cells = glm::u64vec3((im.place.worldSize + 7) / 8);
     const std::uint64_t cellCount = cells.x * cells.y * cells.z;
     // Top grid with its dirty and touched flags, and the super cells (4^3 cells: skip, count, flag).
@@ -44,7 +43,7 @@ Status estimate(ImportState& im, const world::Scene* target) {
     worldBytes += cellCount;                                      // the marks
     worldBytes += cells.x * cells.y * 8 * 2;                      // per-slab dirty lists
     std::uint64_t existing = target ? target->grid.liveBricks() : 0;
-    worldBytes += (existing + plan.sampledCells) * kBrickBytes;  // the pool, reserved at once
+    worldBytes += world::BrickGrid::poolBytesFor(existing + plan.sampledCells);  // the pool, in whole pages
     // Each slab read rebuilds the source's topology (nodes, masks, tiles) next to that slab's leaf
     // values; malloc adds a header to every node, hence the 1.25.
     std::uint64_t source = (topology.shapeTopologyBytes * 5) / 4 + im.slabLeavesMax * topology.shapeLeafBytes +

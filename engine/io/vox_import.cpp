@@ -114,14 +114,13 @@ Result<Placed> place(const fs::path& path, const VoxImportOptions& options, cons
                          "cells",
                          name, r.worldSize.x, r.worldSize.y, r.worldSize.z, world::kMaxTopGridCells);
     // Top grid, super grid and dirty flags, plus at most one brick per placed voxel.
-    constexpr std::uint64_t kBrickBytes = sizeof(world::BrickVoxels) + sizeof(world::BrickMask) + 1;
     const std::uint64_t bricks = std::min(r.placedVoxels, cellCount);
     std::uint64_t largestModel = 0;  // the dense box one instance is placed through
     for (const VoxModel& m : p.file.models)
         largestModel = std::max(largestModel, std::uint64_t(m.size.x) * std::uint64_t(m.size.y) * std::uint64_t(m.size.z));
     std::error_code ec;
     const std::uint64_t fileBytes = fs::file_size(path, ec);  // read whole while the chunks are parsed
-    r.estimateBytes = (target ? 0 : cellCount * 6) + bricks * kBrickBytes + p.file.models.size() * 64 +
+    r.estimateBytes = (target ? 0 : cellCount * 6) + world::BrickGrid::poolBytesFor(bricks) + p.file.models.size() * 64 +
                       largestModel * sizeof(world::MaterialId) + (ec ? 0 : fileBytes);
     for (const VoxModel& m : p.file.models) r.estimateBytes += m.voxels.size() * sizeof(VoxVoxel);
     if (r.estimateBytes > options.memoryBudgetBytes)

@@ -91,6 +91,12 @@ public:
     std::uint32_t liveBricks() const { return brickCapacity() - static_cast<std::uint32_t>(mFreeBricks.size()); }
     std::uint32_t homogeneousCells() const;  // solid homogeneous cells (no storage)
     std::uint64_t solidVoxels() const;
+    // Heap bytes of a pool of n bricks (voxels, masks, dirty flag), whole pages: what an importer
+    // plans for its bricks.
+    static std::uint64_t poolBytesFor(std::uint64_t bricks) {
+        const std::uint64_t pages = (bricks + shared::BRICK_PAGE_BRICKS - 1) / shared::BRICK_PAGE_BRICKS;
+        return pages * shared::BRICK_PAGE_BRICKS * (sizeof(BrickVoxels) + sizeof(BrickMask)) + bricks;
+    }
     // Reserves bookkeeping for n bricks (the pool itself grows by pages and never regrows).
     void reserveBricks(std::uint32_t n);
 

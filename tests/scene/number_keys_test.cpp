@@ -147,8 +147,9 @@ const GeneratorTable kGenerators[] = {
     {"apartment", "min = [2, 0, 2]\nsize = [16, 12, 16]\nwall = \"stone\"\nslab = \"stone\"\nwindows = [\"lamp\"]\n"},
     {"bridge", "min = [2, 2, 2]\nmax = [20, 4, 8]\ndeck = \"stone\"\n"},
 };
-// Types this test cannot run: vdb needs a .vdb payload (its keys: tests/io/vdb_bad_input_test.cpp).
-const std::set<std::string> kNotHere = {"vdb"};
+// Types this test cannot run: vdb and vox need a payload file (their keys: tests/io/vdb_bad_input_test.cpp,
+// tests/io/vox_import_test.cpp).
+const std::set<std::string> kNotHere = {"vdb", "vox"};
 
 // A step into the TOML tree: a key of a table or an index of an array.
 using Step = std::variant<std::string, std::size_t>;
