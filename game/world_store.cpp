@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "io/vdb_import.h"
+#include "io/vox_import.h"
 #include "scene/generators/vdb_keys.h"
 #include "scene/scene_file.h"
 #include "scene/world_pair.h"
@@ -41,6 +43,10 @@ public:
     }
 
     engine::Result<engine::world::Scene> load(const fs::path& sceneFile) override {
+        // A volume or a MagicaVoxel model stands for itself, imported with the defaults (like
+        // vox render X.vdb); Ctrl+S then saves it as a world under saves/.
+        if (sceneFile.extension() == ".vdb") return engine::io::importVdb(sceneFile);
+        if (sceneFile.extension() == ".vox") return engine::io::importVox(sceneFile);
         return engine::scene::loadSceneFile(sceneFile);
     }
 

@@ -14,7 +14,9 @@
 #include "core/hash.h"
 #include "game/autosave.h"
 #include "game/world_store.h"
+#include "io/vdb_export.h"
 #include "io/vdb_import.h"
+#include "io/vox_export.h"
 #include "world/random_worlds.h"
 #include "scene/scene_equality.h"
 #include "scene/scene_file.h"
@@ -438,4 +440,20 @@ TEST(WorldStore, AFullDiskAtAnyStepOfASaveKeepsThePreviousSave) {
     auto loaded = game::makeWorldStore()->load(file);
     ASSERT_TRUE(loaded.ok()) << loaded.error().message;
     expectSameWorld(second, *loaded, "after the disk had room again");
+}
+
+// vox play X.vox (or X.vdb) plays the file as a world instead of reading it as a scene file
+// ("invalid utf-8 sequence"); a save then writes a world of its own.
+TEST(WorldStore, LoadsVoxAndVdbFilesAsWorlds) {
+    TempDir dir;
+    Scene scene = makeScene(3);
+    ASSERT_TRUE(engine::io::exportVox(scene, dir.path() / "model.vox").ok());
+    ASSERT_TRUE(engine::io::exportVdb(scene, dir.path() / "model.vdb").ok());
+    auto store = game::makeWorldStore();
+    for (const char* name : {"model.vox", "model.vdb"}) {
+        auto loaded = store->load(dir.path() / name);
+        ASSERT_TRUE(loaded.ok()) << name << ": " << loaded.error().message;
+        EXPECT_EQ(loaded->grid.solidVoxels(), scene.grid.solidVoxels()) << name;
+        EXPECT_FALSE(store->isSave(dir.path() / name));
+    }
 }
