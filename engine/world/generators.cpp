@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/hash.h"
+#include "core/progress.h"
 #include "world/height_field.h"
 #include "world/value_noise.h"
 #include "world/world_edits.h"
@@ -94,6 +95,7 @@ void generateLamps(BrickGrid& grid, const LampsParams& p) {
     Rng rng(p.seed);
     const glm::ivec3 size = grid.sizeInVoxels();
     for (int i = 0; i < p.count; ++i) {
+        if ((i & 4095) == 0) reportProgress("lamps", std::uint64_t(i), std::uint64_t(p.count));
         int x = rng.uniformInt(p.margin, size.x - 1 - p.margin);
         int z = rng.uniformInt(p.margin, size.z - 1 - p.margin);
         int ground = groundHeight(grid, x, z);
@@ -103,6 +105,7 @@ void generateLamps(BrickGrid& grid, const LampsParams& p) {
         fillBox(grid, Box{{x - half, top, z - half}, {x - half + p.lampSize, top + p.lampSize, z - half + p.lampSize}},
                 p.light);
     }
+    reportProgress("lamps", std::uint64_t(p.count), std::uint64_t(p.count));
 }
 
 }  // namespace engine::world

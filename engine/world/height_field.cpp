@@ -4,6 +4,8 @@
 #include <array>
 #include <cstdlib>
 
+#include "core/progress.h"
+
 namespace engine::world {
 
 void fillHeightField(BrickGrid& grid, const std::function<int(int, int)>& heightAt,
@@ -14,6 +16,7 @@ void fillHeightField(BrickGrid& grid, const std::function<int(int, int)>& height
     std::array<int, 10 * 10> heights{};
     auto h = [&](int x, int z) -> int& { return heights[std::size_t(x + 1 + 10 * (z + 1))]; };
     for (int cz = 0; cz < cells.z; ++cz) {
+        reportProgress("height field", std::uint64_t(cz), std::uint64_t(cells.z));
         for (int cx = 0; cx < cells.x; ++cx) {
             int minH = 1 << 30, maxH = 0;
             for (int z = -1; z <= 8; ++z)
@@ -61,6 +64,7 @@ void fillHeightField(BrickGrid& grid, const std::function<int(int, int)>& height
             }
         }
     }
+    reportProgress("height field", std::uint64_t(cells.z), std::uint64_t(cells.z));
 }
 
 }  // namespace engine::world

@@ -9,6 +9,7 @@
 #include "core/log.h"
 #include "core/memory_budget.h"
 #include "core/symbol_table_pages.h"
+#include "generator_progress.h"
 #include "io/vdb_import.h"
 #include "io/vox_import.h"
 #include "number_options.h"
@@ -100,6 +101,7 @@ int fail(const engine::Error& error) {
 
 int main(int argc, char** argv) {
     engine::log::init();
+    vox::showLongProgress();
     // libopenvdb's symbol tables were read once by the dynamic linker; 26 MB nobody reads again.
     engine::releaseSymbolTablePages();
     CLI::App app{"vox: voxel engine tool (play, edit, render, capture, inspect, compare, import, export and benchmark brick-grid worlds)", "vox"};
