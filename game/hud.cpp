@@ -10,6 +10,17 @@ namespace game {
 
 namespace {
 
+// Ctrl+click lets a slider take typed text: keep the value finite and within the slider's range
+// (the lighting knobs' sliders go through the number check in lighting_panel.cpp).
+bool checkedSlider(const char* label, float* value, float min, float max, const char* format,
+                   ImGuiSliderFlags flags = ImGuiSliderFlags_None) {
+    const float before = *value;
+    const bool changed = ImGui::SliderFloat(label, value, min, max, format, flags | ImGuiSliderFlags_AlwaysClamp);
+    if (std::isfinite(*value)) return changed;
+    *value = before;
+    return false;
+}
+
 std::string megabytes(std::uint64_t bytes) {
     if (bytes < (1u << 20)) return fmt::format("{:.1f} KiB", double(bytes) / 1024.0);
     return fmt::format("{:.1f} MiB", double(bytes) / (1024.0 * 1024.0));
@@ -214,7 +225,7 @@ void Hud::drawStats(const HudStats& stats, HudControls& controls, HudActions& ac
                  fmt::format("window {}x{}", stats.windowSize.x, stats.windowSize.y)},
                 width);
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
-    ImGui::SliderFloat("render scale", &controls.renderScale, 1.0f / 16.0f, 1.0f, "%.3f");
+    checkedSlider("render scale", &controls.renderScale, 1.0f / 16.0f, 1.0f, "%.3f");
     ImGui::SameLine();
     ImGui::Checkbox("auto", &controls.autoScale);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("adapt the render scale to keep the frame responsive");
@@ -255,14 +266,14 @@ void Hud::drawStats(const HudStats& stats, HudControls& controls, HudActions& ac
     }
     mLightingPanel.draw(l, width);
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
-    ImGui::SliderFloat("exposure", &controls.exposure, 0.05f, 8.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
+    checkedSlider("exposure", &controls.exposure, 0.05f, 8.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
     glm::vec3 d = controls.sky.sunDirection;
     float elevation = glm::degrees(std::asin(std::clamp(d.y, -1.0f, 1.0f)));
     float azimuth = glm::degrees(std::atan2(d.x, d.z));
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
-    bool changed = ImGui::SliderFloat("sun elevation", &elevation, -10.0f, 90.0f, "%.0f deg");
+    bool changed = checkedSlider("sun elevation", &elevation, -10.0f, 90.0f, "%.0f deg");
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
-    changed |= ImGui::SliderFloat("sun azimuth", &azimuth, -180.0f, 180.0f, "%.0f deg");
+    changed |= checkedSlider("sun azimuth", &azimuth, -180.0f, 180.0f, "%.0f deg");
     if (changed) {
         float e = glm::radians(elevation), a = glm::radians(azimuth);
         controls.sky.sunDirection = {std::cos(e) * std::sin(a), std::sin(e), std::cos(e) * std::cos(a)};
@@ -293,7 +304,7 @@ void Hud::drawTools(const HudStats& stats, HudControls& controls, const HudRect&
     t.brush = static_cast<Brush>(brush);
     if (t.brush == Brush::Sphere) {
         ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
-        ImGui::SliderFloat("radius", &t.radius, 0.5f, 32.0f, "%.1f");
+        checkedSlider("radius", &t.radius, 0.5f, 32.0f, "%.1f");
     }
 
     // The palette: emissive materials (lights) get a bright frame and a star. It scrolls in a
