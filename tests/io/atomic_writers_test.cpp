@@ -11,6 +11,7 @@
 #include "core/atomic_file.h"
 #include "io/image_io.h"
 #include "io/vdb_export.h"
+#include "io/vox_export.h"
 #include "scene/generators/vdb_keys.h"
 #include "scene/scene_file.h"
 #include "scene/world_pair.h"
@@ -95,6 +96,17 @@ TEST(AtomicWriters, VdbOnAFullDiskKeepsThePreviousFile) {
     const fs::path file = dir / "w.vdb";
     std::ofstream(file) << "previous contents";
     const int failures = failEveryOperationInTurn(dir.path(), file, [&] { return io::exportVdb(*scene, file); });
+    EXPECT_GE(failures, 2);
+    EXPECT_NE(bytesOf(file), "previous contents");
+}
+
+TEST(AtomicWriters, VoxOnAFullDiskKeepsThePreviousFile) {
+    ScratchDir dir("vox");
+    auto scene = scene::loadSceneFile(fs::path(VOX_SOURCE_DIR) / "worlds" / "cornell.toml");
+    ASSERT_TRUE(scene.ok());
+    const fs::path file = dir / "w.vox";
+    std::ofstream(file) << "previous contents";
+    const int failures = failEveryOperationInTurn(dir.path(), file, [&] { return io::exportVox(*scene, file); });
     EXPECT_GE(failures, 2);
     EXPECT_NE(bytesOf(file), "previous contents");
 }
