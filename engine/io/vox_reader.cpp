@@ -133,13 +133,20 @@ void addNode(VoxFile& file, int id, VoxNode node, const Cursor& c) {
     if (!file.nodes.emplace(id, std::move(node)).second) c.fail(fmt::format("node id {} appears twice", id));
 }
 
-void readTransform(VoxFile& file, Cursor& c, std::size_t chunk) {
-    VoxNode n;
+// What every scene-graph node chunk (nTRN, nGRP, nSHP) starts with: its id and attributes.
+int readNodeHeader(VoxNode& n, VoxNode::Kind kind, Cursor& c, std::size_t chunk) {
+    n.kind = kind;
     n.offset = chunk;
     const int id = c.i32("node id");
     Dict attributes = c.dict("node attributes");
     n.hidden = hidden(attributes);
     n.name = nameOf(attributes);
+    return id;
+}
+
+void readTransform(VoxFile& file, Cursor& c, std::size_t chunk) {
+    VoxNode n;
+    const int id = readNodeHeader(n, VoxNode::Kind::Transform, c, chunk);
     n.child = c.i32("child node id");
     c.i32("reserved id");
     n.layer = c.i32("layer id");
@@ -167,12 +174,7 @@ void readTransform(VoxFile& file, Cursor& c, std::size_t chunk) {
 
 void readGroup(VoxFile& file, Cursor& c, std::size_t chunk) {
     VoxNode n;
-    n.kind = VoxNode::Kind::Group;
-    n.offset = chunk;
-    const int id = c.i32("node id");
-    Dict attributes = c.dict("node attributes");
-    n.hidden = hidden(attributes);
-    n.name = nameOf(attributes);
+    const int id = readNodeHeader(n, VoxNode::Kind::Group, c, chunk);
     const std::size_t children = c.count("child count", 4);
     n.children.reserve(children);
     for (std::size_t i = 0; i < children; ++i) n.children.push_back(c.i32("child node id"));
@@ -181,12 +183,7 @@ void readGroup(VoxFile& file, Cursor& c, std::size_t chunk) {
 
 void readShape(VoxFile& file, Cursor& c, std::size_t chunk) {
     VoxNode n;
-    n.kind = VoxNode::Kind::Shape;
-    n.offset = chunk;
-    const int id = c.i32("node id");
-    Dict attributes = c.dict("node attributes");
-    n.hidden = hidden(attributes);
-    n.name = nameOf(attributes);
+    const int id = readNodeHeader(n, VoxNode::Kind::Shape, c, chunk);
     const std::size_t models = c.count("model count", 8);
     if (models == 0) c.fail("shape node without models");
     for (std::size_t i = 0; i < models; ++i) {
