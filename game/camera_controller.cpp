@@ -40,12 +40,15 @@ glm::vec3 CameraController::right() const {
     return {-std::cos(yaw), 0.0f, std::sin(yaw)};
 }
 
+void CameraController::look(const InputState& input, bool mouseLook) {
+    if (!mouseLook) return;
+    glm::vec2 d = input.mouseDelta() * mSettings.degreesPerPixel;
+    mYaw = std::fmod(mYaw - d.x, 360.0f);
+    mPitch = std::clamp(mPitch - d.y, -kMaxPitch, kMaxPitch);
+}
+
 void CameraController::update(const InputState& input, float dt, bool mouseLook) {
-    if (mouseLook) {
-        glm::vec2 d = input.mouseDelta() * mSettings.degreesPerPixel;
-        mYaw = std::fmod(mYaw - d.x, 360.0f);
-        mPitch = std::clamp(mPitch - d.y, -kMaxPitch, kMaxPitch);
-    }
+    look(input, mouseLook);
     if (input.ctrl()) return;  // Ctrl+S saves, it does not step back
     glm::vec3 move(0.0f);
     glm::vec3 f = forward(), r = right();

@@ -28,6 +28,9 @@ public:
 
     // Moves with the held keys over `dt` seconds; turns with the mouse when `mouseLook`.
     void update(const InputState& input, float dt, bool mouseLook);
+    // Turns with the mouse only (walk mode moves the camera itself: game/walk_controller.h).
+    void look(const InputState& input, bool mouseLook);
+    void setPosition(glm::vec3 position) { mPosition = position; }
 
     glm::vec3 position() const { return mPosition; }
     glm::vec3 forward() const;

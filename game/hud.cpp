@@ -100,6 +100,8 @@ const std::vector<std::pair<const char*, const char*>>& keyBindings() {
         {"W A S D", "fly forward, left, back, right"},
         {"Q / E", "fly down / up"},
         {"Shift / Alt", "fast / slow"},
+        {"F", "walk / fly: walking has gravity and collision"},
+        {"Space or E / Q", "walk mode: jump / crouch (Shift runs)"},
         {"Left click", "apply the tool (box: press at one corner, release at the other)"},
         {"Right click", "remove with the current brush"},
         {"Middle click, I", "eyedropper: take the material under the crosshair"},
@@ -198,6 +200,7 @@ void Hud::drawCompact(const HudStats& stats, HudControls& controls, const HudRec
     if (stats.target.hit)
         entries.push_back(fmt::format("target {} {} {}", stats.target.voxel.x, stats.target.voxel.y, stats.target.voxel.z));
     if (stats.unsaved) entries.push_back("unsaved");
+    if (!stats.movement.empty()) entries.push_back(stats.movement);
     entries.push_back(showKeys ? "F1: hide keys" : "F1: keys");
     // Only whole lines: the strip has no scrollbar, so what does not fit is left out.
     const ImGuiStyle& style = ImGui::GetStyle();
@@ -221,6 +224,11 @@ void Hud::drawStats(const HudStats& stats, HudControls& controls, HudActions& ac
     std::vector<std::string> passes;
     for (const auto& [name, ms] : stats.passMs) passes.push_back(fmt::format("{} {:.2f}", name, ms));
     textEntries(passes, width);
+    if (!stats.movement.empty()) {
+        ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + width);
+        ImGui::TextUnformatted(stats.movement.c_str());
+        ImGui::PopTextWrapPos();
+    }
     textEntries({fmt::format("render {}x{}", stats.renderSize.x, stats.renderSize.y),
                  fmt::format("window {}x{}", stats.windowSize.x, stats.windowSize.y)},
                 width);

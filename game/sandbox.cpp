@@ -23,6 +23,7 @@
 #include "game/render_scale_controller.h"
 #include "game/script_player.h"
 #include "game/undo_history.h"
+#include "game/walk_controller.h"
 #include "game/window.h"
 #include "game/world_store.h"
 #include "gpu/context.h"
@@ -53,7 +54,8 @@ constexpr const char* kSavedViewName = "saved view";
 
 class Sandbox {
 public:
-    explicit Sandbox(const PlayOptions& options) : mOptions(options), mUndo(options.undoMegabytes << 20),
+    explicit Sandbox(const PlayOptions& options) : mOptions(options), mWalk(options.player),
+                                                   mUndo(options.undoMegabytes << 20),
                                                    mAutosave(options.autosaveMinutes * 60.0) {}
     int run();
 
@@ -95,6 +97,7 @@ private:
     std::optional<ScriptPlayer> mScript;
     InputState mInput;
     CameraController mCamera;
+    WalkController mWalk;
     EditTools mTools;
     UndoHistory mUndo;
     Autosave mAutosave;
@@ -104,6 +107,8 @@ private:
     std::ofstream mEditLog;
     engine::AtomicFile mFrameLogFile;
     std::ostream* mFrameLog = nullptr;
+    engine::AtomicFile mWalkLogFile;
+    std::ostream* mWalkLog = nullptr;
 
     std::uint64_t mFrame = 0;
     double mTime = 0.0;  // seconds: the script clock, or wall clock since start
@@ -192,6 +197,11 @@ engine::Status Sandbox::init() {
         // render_call: Renderer::render alone; gpu: its passes' GPU time, present included.
         *mFrameLog << "frame,wall_ms,render_call_ms,gpu_ms,present_gpu_ms,render_width,render_height\n";
     }
+    if (!mOptions.walkLogPath.empty()) {
+        if (engine::Status s = mWalkLogFile.open(mOptions.walkLogPath); !s) return s;
+        mWalkLog = &mWalkLogFile.stream();
+        *mWalkLog << WalkController::logHeader() << "\n";
+    }
 
     WindowOptions windowOptions;
     windowOptions.size = mOptions.windowSize;
@@ -226,6 +236,7 @@ engine::Status Sandbox::init() {
     std::fflush(stdout);
     // Live play starts looking around; a script's mouse is logical (never grabs a real one).
     setMouseLook(true);
+    if (mOptions.walk) message(mWalk.toggle(mScene, mCamera));
     return {};
 }
 
@@ -246,8 +257,9 @@ int Sandbox::run() {
     mLastFrameStart = std::chrono::steady_clock::now();
     while (!mQuit) frame();
     int exitCode = 0;
-    if (mFrameLog) {
-        if (engine::Status c = mFrameLogFile.commit(); !c) {
+    for (auto [log, file] : {std::pair{mFrameLog, &mFrameLogFile}, std::pair{mWalkLog, &mWalkLogFile}}) {
+        if (!log) continue;
+        if (engine::Status c = file->commit(); !c) {
             std::fprintf(stderr, "vox play: %s\n", c.error().message.c_str());
             exitCode = 1;
         }
@@ -374,6 +386,7 @@ void Sandbox::frame() {
         *mFrameLog << fmt::format("{},{:.3f},{:.3f},{:.3f},{:.3f},{},{}\n", mFrame, wallMs, renderCallMs,
                                  result.totalMs(), result.passMsOf("present"), renderedSize.x, renderedSize.y);
     }
+    if (mWalkLog) *mWalkLog << mWalk.logRow(mFrame, mTime) << "\n";
     ++mFrame;
     if (mOptions.maxFrames && mFrame >= mOptions.maxFrames) {
         if (!mQuit) message(fmt::format("stopping after {} frames (--frames)", mOptions.maxFrames));
@@ -406,7 +419,12 @@ void Sandbox::handleInput(float dt) {
         clickCaptured = true;
     }
 
-    mCamera.update(mInput, dt, mMouseLook);
+    if (!mInput.ctrl() && mInput.pressed(GLFW_KEY_F)) message(mWalk.toggle(mScene, mCamera));
+    if (mWalk.active()) {
+        if (std::string m = mWalk.update(mInput, dt, mTime, mMouseLook, mScene, mCamera); !m.empty()) message(m);
+    } else {
+        mCamera.update(mInput, dt, mMouseLook);
+    }
     mTarget = pick(mScene.grid, mCamera.position(), mCamera.forward());
 
     if (mMouseLook && !clickCaptured) {
@@ -467,6 +485,7 @@ void Sandbox::handleInput(float dt) {
     if (mInput.pressed(GLFW_KEY_C) && !mScene.cameras.empty()) {
         mCameraIndex = (mCameraIndex + 1) % mScene.cameras.size();
         mCamera.setFromPreset(mScene.cameras[mCameraIndex]);
+        if (mWalk.active()) mWalk.placeAtCamera(mScene, mCamera);
         message("camera: " + mScene.cameras[mCameraIndex].name);
     }
     if (mInput.pressed(GLFW_KEY_TAB)) mHud.visible = !mHud.visible;
@@ -514,6 +533,10 @@ void Sandbox::requestQuit() {
 }
 
 void Sandbox::applyEdit(const EditOp& op) {
+    if (std::string why = mWalk.refusal(op, mScene.grid); !why.empty()) {
+        message(op.describe(mScene.palette) + ": refused: " + why);
+        return;
+    }
     EditRecord rec = mUndo.record(mScene.grid, op.region(), op.describe(mScene.palette),
                                   [&](world::BrickGrid& grid) { game::applyEdit(grid, op); });
     if (rec.changedCells == 0) {
@@ -695,6 +718,7 @@ HudStats Sandbox::hudStats() {
     settings.height = s.renderSize.y;
     s.view = engine::render::makeFrameParams(mCamera.preset(), mScene.sky, settings);
     s.message = mMessage;
+    s.movement = mWalk.hudText();
     return s;
 }
 

@@ -13,6 +13,7 @@
 #include <glm/glm.hpp>
 
 #include "lighting/lighting_knobs.h"
+#include "world/player_body.h"
 
 namespace game {
 
@@ -28,6 +29,9 @@ struct PlayOptions {
     std::uint64_t maxFrames = 0;  // quit after this many frames; 0: no limit
     std::string editLogPath;    // write every edit, undo, redo, save and screenshot view here
     std::string frameLogPath;   // CSV, one row per frame: wall, render call and GPU ms, render size
+    std::string walkLogPath;    // CSV, one row per frame: walk or fly, the player's box (game/walk_controller.h)
+    bool walk = false;          // start in walk mode (F toggles it)
+    engine::world::PlayerSettings player;  // the walking player's size (scale), speeds, gravity
     double autosaveMinutes = 3.0;  // 0: off
     std::size_t undoMegabytes = 256;
     // The command line's lighting knobs, merged over the world's own settings

@@ -28,6 +28,13 @@ void addPlayCommand(CLI::App& app, int& exitCode) {
     cmd->add_option("--edit-log", o->editLogPath, "Write every edit, undo, redo, save and screenshot to FILE");
     cmd->add_option("--frame-log", o->frameLogPath,
                     "Write per-frame times to FILE.csv (frame, wall ms, render call ms, GPU ms, render size)");
+    cmd->add_option("--walk-log", o->walkLogPath,
+                    "Write per-frame walk state to FILE.csv (mode, the player's box in voxels, collision ms)");
+    cmd->add_flag("--walk", o->walk, "Start in walk mode (F toggles walking and flying)");
+    cmd->add_option("--player-scale", o->player.scale,
+                    "Size of the walking player: its 0.6 x 1.8 x 0.6 voxel box, step, jump and speeds times S")
+        ->capture_default_str()
+        ->check(numberIn(engine::closedRange(0.05, 64.0)));
     cmd->add_option("--autosave-minutes", o->autosaveMinutes, "Autosave interval to SAVE.autosave.toml (0: off)")
         ->capture_default_str()
         ->check(numberIn(engine::closedRange(0.0, 24.0 * 60.0, "minutes")));
