@@ -30,8 +30,8 @@ public:
     // One frame of walk mode at scene time `time`: poses the objects, moves the body with the
     // held keys over `dt` seconds and puts the camera at its eye (the mouse turns it). Returns a
     // message when the body had to be lifted out of solid voxels (an undo, an object), else "".
-    std::string update(const InputState& input, double dt, double time, bool mouseLook, engine::world::Scene& scene,
-                       CameraController& camera);
+    std::string update(const InputState& input, double dt, double time, bool mouseLook,
+                       engine::world::Scene& scene, CameraController& camera);
     // Why `op` must not be applied in walk mode (it would put solid voxels inside the body), or
     // "" when it may.
     std::string refusal(const EditOp& op, const engine::world::BrickGrid& grid) const;

@@ -10,7 +10,10 @@ PlayerBox PlayerBody::boxAt(glm::dvec3 feet, double height) const {
 }
 
 glm::dvec3 PlayerBody::eye() const {
-    return mFeet + glm::dvec3(0.0, (mCrouching ? mSettings.crouchEyeHeight : mSettings.eyeHeight) * mSettings.scale, 0.0);
+    return mFeet + glm::dvec3(0.0,
+                              (mCrouching ? mSettings.crouchEyeHeight : mSettings.eyeHeight) *
+                                  mSettings.scale,
+                              0.0);
 }
 
 void PlayerBody::place(const CollisionWorld& world, glm::dvec3 feet) {
@@ -47,7 +50,8 @@ glm::dvec2 PlayerBody::moveHorizontally(const CollisionWorld& world, glm::dvec2 
         // onto whatever is there. Taken only if it got further and ended higher: a real step.
         PlayerBox raised = box();
         const double up = sweepAxis(world, raised, 1, mSettings.stepHeight * mSettings.scale);
-        const glm::dvec2 across(sweepAxis(world, raised, 0, delta.x), sweepAxis(world, raised, 2, delta.y));
+        const glm::dvec2 across(sweepAxis(world, raised, 0, delta.x),
+                                sweepAxis(world, raised, 2, delta.y));
         const double down = sweepAxis(world, raised, 1, -up);
         if (glm::dot(across, across) > glm::dot(moved, moved) && up + down > kSkin) {
             mFeet += glm::dvec3(across.x, up + down, across.y);
@@ -102,14 +106,18 @@ void PlayerBody::tick(const CollisionWorld& world, const PlayerIntent& intent) {
     }
     glm::dvec2 direction = intent.move;
     if (glm::dot(direction, direction) > 1.0) direction = glm::normalize(direction);
-    const double speed = (mCrouching ? mSettings.crouchSpeed : intent.run ? mSettings.runSpeed : mSettings.walkSpeed) * scale;
+    const double speed = (mCrouching   ? mSettings.crouchSpeed
+                          : intent.run ? mSettings.runSpeed
+                                       : mSettings.walkSpeed) *
+                         scale;
     mVelocity.x = direction.x * speed;
     mVelocity.z = direction.y * speed;
     if (intent.jump && mOnGround) {
         mVelocity.y = std::sqrt(2.0 * mSettings.gravity * mSettings.jumpHeight) * scale;
         mOnGround = false;
     }
-    mVelocity.y = std::max(mVelocity.y - mSettings.gravity * scale * dt, -mSettings.maxFallSpeed * scale);
+    mVelocity.y =
+        std::max(mVelocity.y - mSettings.gravity * scale * dt, -mSettings.maxFallSpeed * scale);
 
     moveHorizontally(world, glm::dvec2(mVelocity.x, mVelocity.z) * dt);
     PlayerBox b = box();
@@ -125,13 +133,15 @@ void PlayerBody::tick(const CollisionWorld& world, const PlayerIntent& intent) {
     findSupport(world);
 }
 
-PlayerFrameReport PlayerBody::advance(const CollisionWorld& world, const PlayerIntent& intent, double dt) {
+PlayerFrameReport PlayerBody::advance(const CollisionWorld& world, const PlayerIntent& intent,
+                                      double dt) {
     PlayerFrameReport report;
     if (mSupport && world.dynamic && *mSupport < world.dynamic->instances.size()) {
         // Ride along: the feet move as the object's material point under them moved, from its
         // pose last frame to this frame's.
         const DynamicInstance& object = world.dynamic->instances[*mSupport];
-        const glm::dmat4 currentFromPrevious = object.worldFromModel * glm::inverse(object.prevWorldFromModel);
+        const glm::dmat4 currentFromPrevious =
+            object.worldFromModel * glm::inverse(object.prevWorldFromModel);
         const glm::dvec3 to(currentFromPrevious * glm::dvec4(mFeet, 1.0));
         report.carried = moveBy(world, to - mFeet);
     }

@@ -11,9 +11,8 @@
 #pragma once
 
 #include <algorithm>
-#include <optional>
-
 #include <glm/glm.hpp>
+#include <optional>
 
 #include "world/player_collision.h"
 
@@ -23,12 +22,12 @@ namespace engine::world {
 // smaller voxels wants a larger player). Proportions after Minecraft's player.
 struct PlayerSettings {
     double scale = 1.0;
-    double width = 0.6;          // x and z
+    double width = 0.6;  // x and z
     double height = 1.8;
     double crouchHeight = 1.5;
-    double eyeHeight = 1.62;     // above the feet
+    double eyeHeight = 1.62;  // above the feet
     double crouchEyeHeight = 1.32;
-    double stepHeight = 1.0;     // climbed without a jump; one voxel, never two
+    double stepHeight = 1.0;  // climbed without a jump; one voxel, never two
     double walkSpeed = 4.3;
     double runSpeed = 8.6;
     double crouchSpeed = 1.3;
@@ -36,7 +35,7 @@ struct PlayerSettings {
     double gravity = 32.0;       // voxels / s^2
     double maxFallSpeed = 78.4;  // terminal speed: the fastest the body ever moves
     double tickSeconds = 1.0 / 120.0;
-    int maxTicksPerFrame = 12;   // a frame longer than this drops the rest (a stall is not a leap)
+    int maxTicksPerFrame = 12;  // a frame longer than this drops the rest (a stall is not a leap)
 
     double maxSpeed() const { return std::max(maxFallSpeed, runSpeed) * scale; }
 };

@@ -11,7 +11,8 @@ Box overlappedVoxels(const PlayerBox& box) {
 
 bool CollisionWorld::solid(glm::ivec3 v) const {
     const glm::ivec3 size = grid.sizeInVoxels();
-    if (v.x < 0 || v.z < 0 || v.x >= size.x || v.z >= size.z || v.y < 0) return true;  // the world's walls
+    if (v.x < 0 || v.z < 0 || v.x >= size.x || v.z >= size.z || v.y < 0)
+        return true;                         // the world's walls
     if (grid.get(v) != kEmpty) return true;  // above the top get() is empty: sky
     return dynamicAt(v);
 }

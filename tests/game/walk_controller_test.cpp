@@ -1,11 +1,11 @@
 // Walk mode's hooks into the sandbox (game/walk_controller.h): entering puts the body's eye at
 // the camera, held keys walk along the view's heading, and place edits that would fill a voxel
 // the body stands in are refused whatever the brush, while others go through.
-#include <gtest/gtest.h>
+#include "game/walk_controller.h"
 
 #include <GLFW/glfw3.h>
+#include <gtest/gtest.h>
 
-#include "game/walk_controller.h"
 #include "world/world_edits.h"
 
 using namespace engine::world;
@@ -68,12 +68,15 @@ TEST(WalkController, RefusesPlaceEditsThatWouldEncloseThePlayer) {
     view.target = {20.5f, 5.62f, 40.0f};
     camera.setFromPreset(view);
     game::WalkController walk;
-    EXPECT_EQ(walk.refusal(placeBox({{20, 4, 20}, {21, 5, 21}}), scene.grid), "") << "fly mode refuses nothing";
+    EXPECT_EQ(walk.refusal(placeBox({{20, 4, 20}, {21, 5, 21}}), scene.grid), "")
+        << "fly mode refuses nothing";
     walk.toggle(scene, camera);
     // The body spans x, z 20.2..20.8 and y 4..5.8: voxels (20, 4..5, 20).
     EXPECT_NE(walk.refusal(placeBox({{20, 4, 20}, {21, 5, 21}}), scene.grid), "");
-    EXPECT_NE(walk.refusal(placeBox({{20, 5, 20}, {21, 6, 21}}), scene.grid), "") << "at head height";
-    EXPECT_NE(walk.refusal(placeBox({{10, 0, 10}, {30, 30, 30}}), scene.grid), "") << "a box around it";
+    EXPECT_NE(walk.refusal(placeBox({{20, 5, 20}, {21, 6, 21}}), scene.grid), "")
+        << "at head height";
+    EXPECT_NE(walk.refusal(placeBox({{10, 0, 10}, {30, 30, 30}}), scene.grid), "")
+        << "a box around it";
     game::EditOp sphere;
     sphere.tool = game::Tool::Place;
     sphere.brush = game::Brush::Sphere;
@@ -83,8 +86,10 @@ TEST(WalkController, RefusesPlaceEditsThatWouldEncloseThePlayer) {
     EXPECT_NE(walk.refusal(sphere, scene.grid), "") << "a sphere reaching it";
     sphere.center = {24.0f, 5.0f, 20.5f};
     EXPECT_EQ(walk.refusal(sphere, scene.grid), "") << "a sphere beside it";
-    EXPECT_EQ(walk.refusal(placeBox({{21, 4, 20}, {22, 5, 21}}), scene.grid), "") << "the voxel beside it";
-    EXPECT_EQ(walk.refusal(placeBox({{20, 6, 20}, {21, 7, 21}}), scene.grid), "") << "the voxel over its head";
+    EXPECT_EQ(walk.refusal(placeBox({{21, 4, 20}, {22, 5, 21}}), scene.grid), "")
+        << "the voxel beside it";
+    EXPECT_EQ(walk.refusal(placeBox({{20, 6, 20}, {21, 7, 21}}), scene.grid), "")
+        << "the voxel over its head";
     game::EditOp remove = placeBox({{20, 4, 20}, {21, 5, 21}});
     remove.tool = game::Tool::Remove;
     EXPECT_EQ(walk.refusal(remove, scene.grid), "");

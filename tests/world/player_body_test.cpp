@@ -1,6 +1,8 @@
 // The walking player's physics (world/player_body.h, world/player_collision.h) against the CPU
 // grid: never inside a solid voxel, no tunnelling at any speed, one-voxel steps climbed and
 // two-voxel ones not, carried by a moving platform, crouching, replayed exactly.
+#include "world/player_body.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,10 +10,9 @@
 #include <tuple>
 
 #include "core/hash.h"
-#include "world/dynamic_grid.h"
-#include "world/player_body.h"
-#include "world/world_edits.h"
 #include "random_worlds.h"
+#include "world/dynamic_grid.h"
+#include "world/world_edits.h"
 
 using namespace engine::world;
 
@@ -21,7 +22,8 @@ constexpr MaterialId kStone = 1;
 
 // An independent check, voxel by voxel through BrickGrid::get and DynamicGrid::get: the first
 // solid voxel the box's interior overlaps, if any.
-std::optional<glm::ivec3> solidInside(const BrickGrid& grid, const DynamicGrid* dyn, const PlayerBox& b) {
+std::optional<glm::ivec3> solidInside(const BrickGrid& grid, const DynamicGrid* dyn,
+                                      const PlayerBox& b) {
     for (int z = int(std::floor(b.min.z)); z < b.max.z; ++z)
         for (int y = int(std::floor(b.min.y)); y < b.max.y; ++y)
             for (int x = int(std::floor(b.min.x)); x < b.max.x; ++x) {
@@ -47,8 +49,10 @@ PlayerIntent walk(glm::dvec2 direction) {
 }
 
 // Runs `seconds` of 1/30 s frames.
-void run(PlayerBody& body, const CollisionWorld& world, const PlayerIntent& intent, double seconds) {
-    for (int f = 0; f < int(std::lround(seconds * 30.0)); ++f) body.advance(world, intent, 1.0 / 30.0);
+void run(PlayerBody& body, const CollisionWorld& world, const PlayerIntent& intent,
+         double seconds) {
+    for (int f = 0; f < int(std::lround(seconds * 30.0)); ++f)
+        body.advance(world, intent, 1.0 / 30.0);
 }
 
 }  // namespace
@@ -86,8 +90,8 @@ TEST(PlayerCollision, WorldSidesAndFloorAreSolidTheSkyIsNot) {
 
 TEST(PlayerBody, CannotPassAOneVoxelWallAtTheHighestSpeed) {
     BrickGrid grid = flatWorld();
-    fillBox(grid, Box{{40, 4, 0}, {41, 8, 64}}, kStone);     // a wall at x = 40
-    fillBox(grid, Box{{0, 20, 0}, {30, 21, 64}}, kStone);    // a one-voxel slab over x < 30
+    fillBox(grid, Box{{40, 4, 0}, {41, 8, 64}}, kStone);   // a wall at x = 40
+    fillBox(grid, Box{{0, 20, 0}, {30, 21, 64}}, kStone);  // a one-voxel slab over x < 30
     CollisionWorld world{grid};
     // Running at the body's highest speed (its terminal fall speed), and far beyond it.
     for (double speed : {PlayerSettings{}.maxSpeed(), 1e4}) {
@@ -134,25 +138,30 @@ TEST(PlayerBody, NeverInsideASolidVoxelOnRandomWalksThroughRandomWorlds) {
                 const glm::dvec3 before = body.feet();
                 if (t % 30 == 0) {  // a new whim every quarter second
                     double a = rng.uniform(0.0f, 6.2831853f);
-                    intent.move = glm::dvec2(std::cos(a), std::sin(a)) * double(rng.uniform(0.0f, 1.0f));
+                    intent.move =
+                        glm::dvec2(std::cos(a), std::sin(a)) * double(rng.uniform(0.0f, 1.0f));
                     intent.run = rng.uniform(0.0f, 1.0f) < 0.5f;
                     intent.jump = rng.uniform(0.0f, 1.0f) < 0.3f;
                     intent.crouch = rng.uniform(0.0f, 1.0f) < 0.2f;
                 }
                 body.tick(world, intent);
                 auto inside = solidInside(grid, nullptr, body.box());
-                ASSERT_FALSE(inside) << testing_worlds::kindName(kind) << " seed " << seed << " tick " << t << ": voxel "
-                                     << inside->x << " " << inside->y << " " << inside->z;
+                ASSERT_FALSE(inside)
+                    << testing_worlds::kindName(kind) << " seed " << seed << " tick " << t
+                    << ": voxel " << inside->x << " " << inside->y << " " << inside->z;
                 travelled += glm::length(body.feet() - before);
             }
-            EXPECT_GT(travelled, 40.0) << "the walk went somewhere: " << testing_worlds::kindName(kind) << " seed " << seed;
+            EXPECT_GT(travelled, 40.0)
+                << "the walk went somewhere: " << testing_worlds::kindName(kind) << " seed "
+                << seed;
         }
     }
 }
 
 TEST(PlayerBody, ClimbsAOneVoxelStepButNotATwoVoxelOne) {
     BrickGrid grid = flatWorld();
-    fillBox(grid, Box{{20, 4, 0}, {64, 5, 64}}, kStone);  // from x = 20 the ground is one voxel higher
+    fillBox(grid, Box{{20, 4, 0}, {64, 5, 64}},
+            kStone);  // from x = 20 the ground is one voxel higher
     fillBox(grid, Box{{40, 5, 0}, {64, 7, 64}}, kStone);  // from x = 40 two more
     CollisionWorld world{grid};
     PlayerBody body;
