@@ -44,6 +44,7 @@ struct HudStats {
     std::optional<engine::world::Box> preview;
     shared::FrameParams view{};  // to project the outline and crosshair
     std::string message;         // latest status line, empty for none
+    std::string objectTool;      // the object tool's status while it is on (game/object_tools.h)
 };
 
 struct HudControls {
