@@ -104,7 +104,7 @@ const std::vector<std::pair<const char*, const char*>>& keyBindings() {
         {"Right click", "remove with the current brush"},
         {"Middle click, I", "eyedropper: take the material under the crosshair"},
         {"1 / 2 / 3", "tool: place / remove / paint"},
-        {"4", "object tool: left click places the model (M: next), right click or N selects"},
+        {"4", "object tool: left click places the model (M: next) or drags the selected one; right click or N selects"},
         {"Arrows, Home / End", "object: move along X and Z, up / down (Shift: 8 voxels)"},
         {"R / Shift+R, [ / ]", "object: turn 90 degrees / 5 degrees about Y"},
         {"K, L, Backspace", "object: key at the current time, loop on/off, clear the path"},

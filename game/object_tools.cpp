@@ -256,6 +256,19 @@ ObjectResult deleteObject(world::Scene& scene, UndoHistory& undo, std::size_t in
     return {true, label};
 }
 
+bool dragObject(world::DynamicObject& object, const Pick& target, double time) {
+    if (!target.hit) return false;
+    ObjectPose pose = editPose(object, time);
+    const glm::dvec3 half = halfExtent(object.modelSize, pose.yawDegrees);
+    const glm::ivec3 extent(glm::round(half * 2.0));
+    const glm::ivec3 corner = target.adjacent() - extent / 2;
+    const glm::dvec3 to(corner.x + half.x, pose.position.y, corner.z + half.z);
+    if (to == pose.position) return false;
+    pose.position = to;
+    setPose(object, time, pose, false);
+    return true;
+}
+
 std::optional<std::size_t> pickObject(const world::Scene& scene, glm::vec3 origin, glm::vec3 direction) {
     const float finite = glm::dot(origin, origin) + glm::dot(direction, direction);
     if (!std::isfinite(finite) || glm::dot(direction, direction) == 0.0f) return std::nullopt;
@@ -285,7 +298,14 @@ ObjectResult ObjectTools::handle(const InputState& input, bool mouseLook, const 
         r.changed |= x.changed;
         if (!x.message.empty()) r.message = std::move(x.message);
     };
-    if (mouseLook && input.buttonPressed(GLFW_MOUSE_BUTTON_LEFT)) {
+    if (mDrag && !input.buttonHeld(GLFW_MOUSE_BUTTON_LEFT)) add(finishDrag(scene, undo));
+    if (mDrag && mDrag->index < scene.objects.size() && dragObject(scene.objects[mDrag->index], target, mDrag->time))
+        refreshObjects(scene, time);
+    const bool onSelected = selected && pickObject(scene, origin, direction) == selected;
+    if (mouseLook && input.buttonPressed(GLFW_MOUSE_BUTTON_LEFT) && onSelected) {
+        mDrag = Drag{*selected, scene.objects[*selected], time};
+        add({false, "dragging " + scene.objects[*selected].name + " (release to drop)"});
+    } else if (mouseLook && input.buttonPressed(GLFW_MOUSE_BUTTON_LEFT)) {
         if (models.empty()) {
             add({false, "no model to place: start vox play with --model FILE.vox|FILE.vdb|WORLD.toml"});
         } else {
@@ -331,6 +351,20 @@ ObjectResult ObjectTools::handle(const InputState& input, bool mouseLook, const 
         selected.reset();
     }
     return r;
+}
+
+ObjectResult ObjectTools::finishDrag(world::Scene& scene, UndoHistory& undo) {
+    if (!mDrag) return {};
+    Drag drag = std::move(*mDrag);
+    mDrag.reset();
+    if (drag.index >= scene.objects.size()) return {};
+    const world::DynamicObject& o = scene.objects[drag.index];
+    const ObjectPose from = editPose(drag.before, drag.time), to = editPose(o, drag.time);
+    if (from.position == to.position) return {false, "drag: " + o.name + " stayed where it was"};
+    const glm::ivec3 d(glm::round(to.position - from.position));
+    std::string label = fmt::format("drag {} by {} {} {} ({})", o.name, d.x, d.y, d.z, describe(o));
+    const bool undoable = undo.recordObject(drag.index, std::move(drag.before), true, label);
+    return {true, label + (undoable ? "" : " - too large to undo within the budget")};
 }
 
 void ObjectTools::objectsChanged(const world::Scene& scene) {

@@ -80,6 +80,11 @@ struct ObjectPose {
 };
 ObjectPose editPose(const engine::world::DynamicObject& object, double time);
 
+// Drags the object over the ground: its box's lowest corner follows the voxel in front of the face
+// under the crosshair along X and Z (centred on it, height kept), changing the key at `time` as
+// a move does. No undo step (ObjectTools records one per drag). False if it did not move.
+bool dragObject(engine::world::DynamicObject& object, const Pick& target, double time);
+
 // The object whose voxel the view ray hits first (static voxels in front hide it).
 std::optional<std::size_t> pickObject(const engine::world::Scene& scene, glm::vec3 origin, glm::vec3 direction);
 
@@ -94,13 +99,24 @@ public:
     std::vector<ObjectModel> models;
     std::size_t model = 0;
 
-    // Clicks (left: place, right: select) only when `mouseLook`; returns what the frame did.
+    // Clicks only when `mouseLook`: left places, or, pressed on the selected object, drags it
+    // until the release (one undo step); right selects. Returns what the frame did.
     ObjectResult handle(const InputState& input, bool mouseLook, const Pick& target, glm::vec3 origin,
                         glm::vec3 direction, engine::world::Scene& scene, UndoHistory& undo, double time);
+    // Ends a drag as one undo step (at the release; the sandbox calls it before undo and redo).
+    ObjectResult finishDrag(engine::world::Scene& scene, UndoHistory& undo);
     // After undo/redo: drops a selection that no longer exists.
     void objectsChanged(const engine::world::Scene& scene);
     // One line for the HUD: model, selection, keys.
     std::string status(const engine::world::Scene& scene) const;
+
+private:
+    struct Drag {
+        std::size_t index = 0;
+        engine::world::DynamicObject before;  // for the undo step
+        double time = 0.0;                    // the key a drag changes: at its press
+    };
+    std::optional<Drag> mDrag;
 };
 
 }  // namespace game

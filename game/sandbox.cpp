@@ -559,6 +559,7 @@ void Sandbox::handleObjects(bool clicks) {
 }
 
 void Sandbox::undo() {
+    if (mObjects.finishDrag(mScene, mUndo).changed) ++mWorldVersion;
     std::string label = mUndo.undo(mScene.grid, mScene.objects);
     mObjects.objectsChanged(mScene);
     refreshObjects(mScene, mTime);
@@ -572,6 +573,7 @@ void Sandbox::undo() {
 }
 
 void Sandbox::redo() {
+    if (mObjects.finishDrag(mScene, mUndo).changed) ++mWorldVersion;
     std::string label = mUndo.redo(mScene.grid, mScene.objects);
     mObjects.objectsChanged(mScene);
     refreshObjects(mScene, mTime);

@@ -9,8 +9,10 @@
 #include <filesystem>
 #include <fstream>
 
+#include <GLFW/glfw3.h>
 #include <fmt/format.h>
 
+#include "game/input.h"
 #include "game/object_tools.h"
 #include "game/world_store.h"
 #include "io/vdb_export.h"
@@ -364,4 +366,42 @@ TEST(ObjectTools, PlacedObjectsSaveAndLoadEqual) {
     auto empty = store->load(file);
     ASSERT_TRUE(empty.ok()) << empty.error().message;
     EXPECT_TRUE(empty->objects.empty());
+}
+
+TEST(ObjectTools, DraggingTheSelectedObjectFollowsTheCrosshairAndUndoesInOneStep) {
+    TempDir dir;
+    Scene scene = floorScene();
+    game::UndoHistory undo(64 << 20);
+    game::ObjectTools tools;
+    tools.active = true;
+    tools.models.push_back(crateModel(dir));
+    game::InputState input;
+    // One frame looking straight down at (x, z), the left button going down/up or held as it is.
+    auto frame = [&](std::optional<bool> left, float x, float z) {
+        input.beginFrame();
+        if (left) input.apply({game::InputEventType::MouseButton, GLFW_MOUSE_BUTTON_LEFT, *left, {}});
+        const glm::vec3 origin(x, 30.0f, z), down(0.0f, -1.0f, 0.0f);
+        return tools.handle(input, true, game::pick(scene.grid, origin, down), origin, down, scene, undo, 1.0);
+    };
+    ASSERT_TRUE(frame(true, 20.5f, 20.5f).changed);  // places crate_1 (lowest corner 19 4 19), selected
+    frame(false, 20.5f, 20.5f);
+    ASSERT_EQ(tools.selected, std::optional<std::size_t>(0));
+    const std::string placed = dynamicVoxels(scene);
+
+    // Pressed on the selected object: a drag, not a second placement.
+    EXPECT_NE(frame(true, 20.5f, 20.5f).message.find("dragging crate_1"), std::string::npos);
+    frame(std::nullopt, 25.5f, 20.5f);
+    frame(std::nullopt, 30.5f, 24.5f);
+    game::ObjectResult dropped = frame(false, 30.5f, 24.5f);
+    ASSERT_TRUE(dropped.changed) << dropped.message;
+    EXPECT_NE(dropped.message.find("drag crate_1 by 10 0 4"), std::string::npos) << dropped.message;
+    ASSERT_EQ(scene.objects.size(), 1u);
+    EXPECT_EQ(scene.objects[0].path.keys().size(), 1u);
+    EXPECT_EQ(scene.dynamic.get({29, 4, 23}), *scene.palette.find("crate"));
+    EXPECT_EQ(lines(dynamicVoxels(scene)), 13u);
+    // The whole drag is one step.
+    EXPECT_EQ(undo.stats().undoSteps, 2u);
+    ASSERT_FALSE(undo.undo(scene.grid, scene.objects).empty());
+    game::refreshObjects(scene, 1.0);
+    EXPECT_EQ(dynamicVoxels(scene), placed);
 }
