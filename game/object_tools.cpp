@@ -301,11 +301,11 @@ ObjectResult ObjectTools::handle(const InputState& input, bool mouseLook, const 
     if (mDrag && !input.buttonHeld(GLFW_MOUSE_BUTTON_LEFT)) add(finishDrag(scene, undo));
     if (mDrag && mDrag->index < scene.objects.size() && dragObject(scene.objects[mDrag->index], target, mDrag->time))
         refreshObjects(scene, time);
-    const bool onSelected = selected && pickObject(scene, origin, direction) == selected;
-    if (mouseLook && input.buttonPressed(GLFW_MOUSE_BUTTON_LEFT) && onSelected) {
+    const bool leftPressed = mouseLook && input.buttonPressed(GLFW_MOUSE_BUTTON_LEFT);
+    if (leftPressed && selected && pickObject(scene, origin, direction) == selected) {
         mDrag = Drag{*selected, scene.objects[*selected], time};
         add({false, "dragging " + scene.objects[*selected].name + " (release to drop)"});
-    } else if (mouseLook && input.buttonPressed(GLFW_MOUSE_BUTTON_LEFT)) {
+    } else if (leftPressed) {
         if (models.empty()) {
             add({false, "no model to place: start vox play with --model FILE.vox|FILE.vdb|WORLD.toml"});
         } else {
