@@ -106,6 +106,11 @@ const std::vector<std::pair<const char*, const char*>>& keyBindings() {
         {"Right click", "remove with the current brush"},
         {"Middle click, I", "eyedropper: take the material under the crosshair"},
         {"1 / 2 / 3", "tool: place / remove / paint"},
+        {"4", "object tool: left click places the model (M: next) or drags the selected one; right click or N selects"},
+        {"Arrows, Home / End", "object: move along X and Z, up / down (Shift: 8 voxels)"},
+        {"R / Shift+R, [ / ]", "object: turn 90 degrees / 5 degrees about Y"},
+        {"K, L, Backspace", "object: key at the current time, loop on/off, clear the path"},
+        {"Delete", "object: delete"},
         {"B", "brush: voxel, box, sphere"},
         {"- / =", "sphere radius"},
         {"Wheel, , / .", "previous / next material"},
@@ -197,6 +202,15 @@ void Hud::drawCompact(const HudStats& stats, HudControls& controls, const HudRec
         fmt::format("{:.1f} ms", stats.cpuFrameMs), fps(stats.cpuFrameMs), fmt::format("GPU {:.1f} ms", gpuTotal(stats)),
         fmt::format("{} {}", toolName(t.tool), brushName(t.brush)), mat.name + (mat.emissive() ? " (light)" : ""),
     };
+    if (!stats.objectTool.empty()) {  // the object tool instead, one entry per "; " part to wrap between
+        entries.erase(entries.begin() + 3);
+        std::size_t at = 3;
+        for (std::size_t from = 0; from <= stats.objectTool.size();) {
+            std::size_t end = std::min(stats.objectTool.find("; ", from), stats.objectTool.size());
+            entries.insert(entries.begin() + std::ptrdiff_t(at++), stats.objectTool.substr(from, end - from));
+            from = end + 2;
+        }
+    }
     if (stats.target.hit)
         entries.push_back(fmt::format("target {} {} {}", stats.target.voxel.x, stats.target.voxel.y, stats.target.voxel.z));
     if (stats.unsaved) entries.push_back("unsaved");
@@ -302,6 +316,7 @@ void Hud::drawTools(const HudStats& stats, HudControls& controls, const HudRect&
     ImGui::SameLine();
     ImGui::RadioButton("paint", &tool, 2);
     t.tool = static_cast<Tool>(tool);
+    if (!stats.objectTool.empty()) ImGui::TextWrapped("%s (1-3: back to voxels)", stats.objectTool.c_str());
     int brush = static_cast<int>(t.brush);
     ImGui::RadioButton("voxel", &brush, 0);
     ImGui::SameLine();

@@ -45,6 +45,7 @@ struct HudStats {
     shared::FrameParams view{};  // to project the outline and crosshair
     std::string message;         // latest status line, empty for none
     std::string movement;        // fly or walk, and the walk's state and collision cost
+    std::string objectTool;      // the object tool's status while it is on (game/object_tools.h)
 };
 
 struct HudControls {

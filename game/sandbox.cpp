@@ -20,6 +20,7 @@
 #include "game/hud.h"
 #include "game/imgui_platform.h"
 #include "game/input.h"
+#include "game/object_tools.h"
 #include "game/render_scale_controller.h"
 #include "game/script_player.h"
 #include "game/undo_history.h"
@@ -65,6 +66,7 @@ private:
     void handleInput(float dt);
     void handleQuitPrompt();
     void applyEdit(const EditOp& op);
+    void handleObjects(bool clicks);
     void undo();
     void redo();
     engine::Status save(const fs::path& path, bool autosave);
@@ -99,6 +101,7 @@ private:
     CameraController mCamera;
     WalkController mWalk;
     EditTools mTools;
+    ObjectTools mObjects;
     UndoHistory mUndo;
     Autosave mAutosave;
     Hud mHud;
@@ -178,6 +181,13 @@ engine::Status Sandbox::init() {
         if (mScene.cameras[i].name == mCamera.preset().name) mCameraIndex = i;
     }
     if (mScene.palette.size() > 1) mTools.material = 1;
+    for (const std::string& m : mOptions.models) {
+        auto modelPath = engine::scene::resolveWorldPath(m);
+        if (!modelPath) return modelPath.error();
+        auto model = loadObjectModel(*modelPath);
+        if (!model) return engine::makeError("--model {}", model.error().message);
+        mObjects.models.push_back(std::move(*model));
+    }
     if (!mOptions.savePath.empty()) {
         mSavePath = mOptions.savePath;
     } else if (mStore->isSave(mWorldPath)) {
@@ -427,7 +437,7 @@ void Sandbox::handleInput(float dt) {
     }
     mTarget = pick(mScene.grid, mCamera.position(), mCamera.forward());
 
-    if (mMouseLook && !clickCaptured) {
+    if (mMouseLook && !clickCaptured && !mObjects.active) {
         // A press or release that edits nothing says why (the sky, a ray that is not finite).
         auto use = [&](bool pressed) {
             bool wasDragging = mTools.dragging();
@@ -462,6 +472,13 @@ void Sandbox::handleInput(float dt) {
     if (mInput.pressed(GLFW_KEY_1)) mTools.tool = Tool::Place;
     if (mInput.pressed(GLFW_KEY_2)) mTools.tool = Tool::Remove;
     if (mInput.pressed(GLFW_KEY_3)) mTools.tool = Tool::Paint;
+    if (mInput.pressed(GLFW_KEY_1) || mInput.pressed(GLFW_KEY_2) || mInput.pressed(GLFW_KEY_3)) mObjects.active = false;
+    if (mInput.pressed(GLFW_KEY_4)) {
+        mObjects.active = true;
+        mTools.cancelDrag();
+        message(mObjects.status(mScene));
+    }
+    if (mObjects.active) handleObjects(mMouseLook && !clickCaptured);
     if (mInput.pressed(GLFW_KEY_B)) {
         mTools.cancelDrag();
         mTools.brush = static_cast<Brush>((static_cast<int>(mTools.brush) + 1) % 3);
@@ -558,8 +575,17 @@ void Sandbox::applyEdit(const EditOp& op) {
                         rec.undoable ? "" : " - too large to undo within the budget"));
 }
 
+void Sandbox::handleObjects(bool clicks) {
+    ObjectResult r = mObjects.handle(mInput, clicks, mTarget, mCamera.position(), mCamera.forward(), mScene, mUndo, mTime);
+    if (r.changed) ++mWorldVersion;
+    if (!r.message.empty()) message(r.message);
+}
+
 void Sandbox::undo() {
-    std::string label = mUndo.undo(mScene.grid);
+    if (mObjects.finishDrag(mScene, mUndo).changed) ++mWorldVersion;
+    std::string label = mUndo.undo(mScene.grid, mScene.objects);
+    mObjects.objectsChanged(mScene);
+    refreshObjects(mScene, mTime);
     if (label.empty()) {
         message("nothing to undo");
         return;
@@ -570,7 +596,10 @@ void Sandbox::undo() {
 }
 
 void Sandbox::redo() {
-    std::string label = mUndo.redo(mScene.grid);
+    if (mObjects.finishDrag(mScene, mUndo).changed) ++mWorldVersion;
+    std::string label = mUndo.redo(mScene.grid, mScene.objects);
+    mObjects.objectsChanged(mScene);
+    refreshObjects(mScene, mTime);
     if (label.empty()) {
         message("nothing to redo");
         return;
@@ -712,7 +741,8 @@ HudStats Sandbox::hudStats() {
     s.unsaved = unsaved();
     s.mouseLook = mMouseLook;
     s.target = mTarget;
-    s.preview = mTools.preview(mTarget);
+    s.preview = mObjects.active ? std::nullopt : mTools.preview(mTarget);
+    if (mObjects.active) s.objectTool = mObjects.status(mScene);
     engine::render::FrameSettings settings;
     settings.width = s.renderSize.x;
     settings.height = s.renderSize.y;

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -34,6 +35,8 @@ struct PlayOptions {
     engine::world::PlayerSettings player;  // the walking player's size (scale), speeds, gravity
     double autosaveMinutes = 3.0;  // 0: off
     std::size_t undoMegabytes = 256;
+    // Models the object tool (key 4) places: scene files, .vdb or .vox (game/object_tools.h).
+    std::vector<std::string> models;
     // The command line's lighting knobs, merged over the world's own settings
     // (scene/scene_lighting.h: the same merge as vox render); switchable live in the HUD.
     std::vector<engine::lighting::KnobValue> lighting;

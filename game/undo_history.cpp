@@ -1,14 +1,25 @@
 #include "game/undo_history.h"
 
+#include <stdexcept>
 #include <utility>
 
 namespace game {
 
 namespace world = engine::world;
 
+namespace {
+
+std::size_t objectBytes(const world::DynamicObject& o) {
+    world::GridMemory m = o.model.memory();
+    return sizeof(o) + m.topGridBytes + m.superGridBytes + m.brickPoolBytes + m.bookkeepingBytes +
+           o.path.keys().capacity() * sizeof(world::ObjectKey);
+}
+
+}  // namespace
+
 std::size_t UndoHistory::Step::bytes() const {
     return sizeof(Step) + label.capacity() + cells.capacity() * sizeof(CellState) +
-           bricks.capacity() * sizeof(world::BrickVoxels);
+           bricks.capacity() * sizeof(world::BrickVoxels) + (objectOther ? objectBytes(*objectOther) : 0);
 }
 
 void UndoHistory::capture(const world::BrickGrid& grid, glm::ivec3 cell, Step& step, CellState& state) {
@@ -67,6 +78,12 @@ EditRecord UndoHistory::record(world::BrickGrid& grid, const world::Box& region,
     step.cells.shrink_to_fit();
     step.bricks.shrink_to_fit();
 
+    result.undoable = step.bytes() <= mMaxBytes;
+    push(std::move(step));
+    return result;
+}
+
+void UndoHistory::push(Step step) {
     // A new edit forks history: the redo steps are gone.
     while (mSteps.size() > mCursor) {
         mBytes -= mSteps.back().bytes();
@@ -75,14 +92,39 @@ EditRecord UndoHistory::record(world::BrickGrid& grid, const world::Box& region,
     std::size_t bytes = step.bytes();
     if (bytes > mMaxBytes) {
         ++mDropped;
-        return result;  // too large to keep: applied, not undoable
+        return;  // too large to keep: applied, not undoable
     }
     mSteps.push_back(std::move(step));
     mBytes += bytes;
     mCursor = mSteps.size();
     enforceBudget();
-    result.undoable = true;
-    return result;
+}
+
+bool UndoHistory::recordObject(std::size_t index, std::optional<world::DynamicObject> before, bool existsNow,
+                               std::string label) {
+    Step step;
+    step.label = std::move(label);
+    step.isObject = true;
+    step.objectIndex = index;
+    step.objectInScene = existsNow;
+    step.objectOther = std::move(before);
+    bool undoable = step.bytes() <= mMaxBytes;
+    push(std::move(step));
+    return undoable;
+}
+
+void UndoHistory::swapObject(std::vector<world::DynamicObject>& objects, Step& step) {
+    const std::size_t i = step.objectIndex;
+    if (i > objects.size() || (step.objectInScene && i >= objects.size()))
+        throw std::logic_error("undo: an object step does not match the scene's objects");
+    std::optional<world::DynamicObject> now;
+    if (step.objectInScene) {
+        now = std::move(objects[i]);
+        objects.erase(objects.begin() + std::ptrdiff_t(i));
+    }
+    if (step.objectOther) objects.insert(objects.begin() + std::ptrdiff_t(i), std::move(*step.objectOther));
+    step.objectInScene = step.objectOther.has_value();
+    step.objectOther = std::move(now);
 }
 
 void UndoHistory::swap(world::BrickGrid& grid, Step& step) {
@@ -113,21 +155,33 @@ void UndoHistory::swap(world::BrickGrid& grid, Step& step) {
 }
 
 std::string UndoHistory::undo(world::BrickGrid& grid) {
+    std::vector<world::DynamicObject> none;
+    return undo(grid, none);
+}
+
+std::string UndoHistory::redo(world::BrickGrid& grid) {
+    std::vector<world::DynamicObject> none;
+    return redo(grid, none);
+}
+
+std::string UndoHistory::undo(world::BrickGrid& grid, std::vector<world::DynamicObject>& objects) {
     if (!canUndo()) return {};
     Step& step = mSteps[--mCursor];
     mBytes -= step.bytes();
-    swap(grid, step);
+    if (step.isObject) swapObject(objects, step);
+    else swap(grid, step);
     mBytes += step.bytes();
     std::string label = step.label;
     enforceBudget();
     return label;
 }
 
-std::string UndoHistory::redo(world::BrickGrid& grid) {
+std::string UndoHistory::redo(world::BrickGrid& grid, std::vector<world::DynamicObject>& objects) {
     if (!canRedo()) return {};
     Step& step = mSteps[mCursor++];
     mBytes -= step.bytes();
-    swap(grid, step);
+    if (step.isObject) swapObject(objects, step);
+    else swap(grid, step);
     mBytes += step.bytes();
     std::string label = step.label;
     enforceBudget();

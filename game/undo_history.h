@@ -1,7 +1,9 @@
-// Undo/redo for world edits. A step stores, for each top-grid cell the edit changed, that
+// Undo/redo for world edits and dynamic-object changes. A step stores, for each top-grid cell the edit changed, that
 // cell's other state: a material for a uniform (or empty) cell, or a copy of its 8^3 brick.
 // Undo and redo swap the stored state with the world's, so one copy serves both directions
-// and the history costs what the edits touched, never a copy of the world.
+// and the history costs what the edits touched, never a copy of the world. An object step
+// (game/object_tools.h) stores the one object it changed the same way: its other state, or
+// its absence, swapped with the scene's list.
 //
 // Memory is bounded: after each edit the oldest steps are dropped until the history fits in
 // maxBytes; an edit that alone exceeds the budget is applied but cannot be undone (reported).
@@ -11,10 +13,12 @@
 #include <cstdint>
 #include <deque>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "world/brick_grid.h"
+#include "world/dynamic_object.h"
 
 namespace game {
 
@@ -41,7 +45,16 @@ public:
     EditRecord record(engine::world::BrickGrid& grid, const engine::world::Box& region, std::string label,
                       const std::function<void(engine::world::BrickGrid&)>& edit);
 
+    // Records a change the caller has just made to objects[index] as one step: `before` is the
+    // object before it (nullopt: the change placed it), `existsNow` false when it deleted it.
+    // Clears the redo steps. Returns false when the step exceeded the budget (not undoable).
+    bool recordObject(std::size_t index, std::optional<engine::world::DynamicObject> before, bool existsNow,
+                      std::string label);
+
     // Each returns the step's label, or an empty string when there is nothing to undo/redo.
+    std::string undo(engine::world::BrickGrid& grid, std::vector<engine::world::DynamicObject>& objects);
+    std::string redo(engine::world::BrickGrid& grid, std::vector<engine::world::DynamicObject>& objects);
+    // For histories of grid edits only (an object step there is a logic error).
     std::string undo(engine::world::BrickGrid& grid);
     std::string redo(engine::world::BrickGrid& grid);
 
@@ -63,12 +76,20 @@ private:
         std::string label;
         std::vector<CellState> cells;
         std::vector<engine::world::BrickVoxels> bricks;
+        // An object step: object `objectIndex`'s other state (nullopt: absent there), and
+        // whether the scene's list holds it now.
+        bool isObject = false;
+        std::size_t objectIndex = 0;
+        bool objectInScene = false;
+        std::optional<engine::world::DynamicObject> objectOther;
         std::size_t bytes() const;
     };
 
     static void capture(const engine::world::BrickGrid& grid, glm::ivec3 cell, Step& step, CellState& state);
     // Writes the step's states into the grid and keeps the grid's previous states in their place.
     static void swap(engine::world::BrickGrid& grid, Step& step);
+    static void swapObject(std::vector<engine::world::DynamicObject>& objects, Step& step);
+    void push(Step step);
     void enforceBudget();
 
     std::size_t mMaxBytes;

@@ -1,11 +1,13 @@
 #include "game/world_store.h"
 
+#include <algorithm>
 #include <cctype>
 #include <fstream>
 #include <string>
 
 #include <fmt/format.h>
 
+#include "io/vdb_export.h"
 #include "io/vdb_import.h"
 #include "io/vox_import.h"
 #include "scene/generators/vdb_keys.h"
@@ -19,6 +21,35 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr const char* kSaveMarker = "Saved by vox play";
+
+// A model's name for its payload: FNV-1a over its size, voxel ids and their material names, so
+// an unchanged model keeps its file from save to save.
+std::uint64_t modelHash(const engine::world::DynamicObject& o, const engine::world::Palette& palette) {
+    std::uint64_t h = 1469598103934665603ull;
+    auto mix = [&](std::uint64_t v) {
+        for (int b = 0; b < 8; ++b) h = (h ^ ((v >> (8 * b)) & 0xff)) * 1099511628211ull;
+    };
+    mix(std::uint64_t(o.modelSize.x) | std::uint64_t(o.modelSize.y) << 21 | std::uint64_t(o.modelSize.z) << 42);
+    std::vector<bool> used(palette.size(), false);
+    for (int z = 0; z < o.modelSize.z; ++z)
+        for (int y = 0; y < o.modelSize.y; ++y)
+            for (int x = 0; x < o.modelSize.x; ++x) {
+                const engine::world::MaterialId m = o.model.get({x, y, z});
+                mix(m);
+                if (m < used.size()) used[m] = true;
+            }
+    for (std::size_t m = 0; m < used.size(); ++m) {
+        if (!used[m]) continue;
+        for (char c : palette[engine::world::MaterialId(m)].name) mix(std::uint8_t(c));
+    }
+    return h;
+}
+
+bool isObjectPayloadOf(const fs::path& file, const std::string& stem) {
+    const std::string name = file.filename().string(), prefix = stem + ".object-";
+    return name.size() > prefix.size() + 4 && name.compare(0, prefix.size(), prefix) == 0 &&
+           name.compare(name.size() - 4, 4, ".vdb") == 0;
+}
 
 class VdbWorldStore final : public WorldStore {
 public:
@@ -35,11 +66,46 @@ public:
         // rule "ids": our own file's material grid, mapped by name onto the palette listed above
         // it, which is the same palette in the same order; so every id comes back unchanged.
         // Everything else (objects with their generators, [indirect], [path]) is written as loaded.
+        // Each object's model goes to a payload of its own, STEM.object-HASH.vdb (same layout and
+        // rule), written before the pair; the pair's commit makes them current, and the ones no
+        // save names any more go after it. Named by content, an unchanged model is not rewritten.
+        const std::string stem = sceneFile.stem().string();
+        std::vector<std::vector<engine::world::GeneratorRecord>> objectGenerators;
+        std::vector<std::string> named;
+        std::vector<fs::path> written;
+        for (const engine::world::DynamicObject& o : scene.objects) {
+            const std::string name = fmt::format("{}.object-{:016x}.vdb", stem, modelHash(o, scene.palette));
+            const fs::path file = dir / name;
+            if (!fs::exists(file, ec)) {
+                engine::world::Scene model;
+                model.name = o.name;
+                model.voxelSize = scene.voxelSize;
+                model.palette = scene.palette;
+                model.grid = o.model;
+                if (engine::Status s = engine::io::exportVdb(model, file); !s) {
+                    for (const fs::path& w : written) fs::remove(w, ec);
+                    return s;
+                }
+                written.push_back(file);
+            }
+            named.push_back(name);
+            objectGenerators.push_back({engine::scene::vdbPayloadGenerator(name, /*ids=*/true)});
+        }
         auto text = [&](const std::string& payloadName) {
             std::vector<engine::world::GeneratorRecord> generators{engine::scene::vdbPayloadGenerator(payloadName, /*ids=*/true)};
-            return engine::scene::sceneText(scene, {.headerComment = kSaveMarker, .generators = &generators});
+            return engine::scene::sceneText(scene, {.headerComment = kSaveMarker, .generators = &generators,
+                                                    .objectGenerators = &objectGenerators});
         };
-        return engine::scene::writeWorldPair(scene, sceneFile, text, {.beforeCommit = mFaults.beforeCommit});
+        engine::Status s = engine::scene::writeWorldPair(scene, sceneFile, text, {.beforeCommit = mFaults.beforeCommit});
+        if (!s) {
+            for (const fs::path& w : written) fs::remove(w, ec);
+            return s;
+        }
+        for (const fs::directory_entry& e : fs::directory_iterator(dir.empty() ? "." : dir, ec)) {
+            if (isObjectPayloadOf(e.path(), stem) && std::find(named.begin(), named.end(), e.path().filename().string()) == named.end())
+                fs::remove(e.path(), ec);
+        }
+        return {};
     }
 
     engine::Result<engine::world::Scene> load(const fs::path& sceneFile) override {

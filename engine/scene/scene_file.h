@@ -26,6 +26,9 @@ struct SceneWriteOptions {
     std::string_view headerComment;  // "# " before each line, above everything
     // Write these instead of scene.generators (a save whose grid was edited names a payload).
     const std::vector<world::GeneratorRecord>* generators = nullptr;
+    // Write these instead of each object's generators, one list per object in scene order (a
+    // save writes each object's model as a payload of its own).
+    const std::vector<std::vector<world::GeneratorRecord>>* objectGenerators = nullptr;
 };
 
 // The one writer: every table, so that loading the text gives back the same scene (palette,

@@ -27,14 +27,15 @@ void writeMaterials(const world::Palette& palette, TomlWriter& out) {
     }
 }
 
-void writeObject(const world::DynamicObject& object, const world::Palette& palette,
-                 TomlWriter& out) {
+void writeObject(const world::DynamicObject& object,
+                 const std::vector<world::GeneratorRecord>& generators,
+                 const world::Palette& palette, TomlWriter& out) {
     using Given = world::ObjectKey::Given;
     out.arrayTable("object");
     out.key("name", object.name);
     out.key("size", object.modelSize);
     out.key("loop", object.path.loop());
-    for (const world::GeneratorRecord& g : object.generators)
+    for (const world::GeneratorRecord& g : generators)
         writeGenerator(g, "object.generator", out, palette);
     for (const world::ObjectKey& key : object.path.keys()) {
         out.arrayTable("object.key");
@@ -62,8 +63,12 @@ std::string sceneText(const Scene& scene, const SceneWriteOptions& options) {
     for (const world::GeneratorRecord& g :
          options.generators ? *options.generators : scene.generators)
         writeGenerator(g, "generator", out, scene.palette);
-    for (const world::DynamicObject& object : scene.objects)
-        writeObject(object, scene.palette, out);
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const world::DynamicObject& object = scene.objects[i];
+        writeObject(object,
+                    options.objectGenerators ? (*options.objectGenerators)[i] : object.generators,
+                    scene.palette, out);
+    }
     for (const world::CameraPreset& c : scene.cameras) {
         out.arrayTable("camera");
         out.key("name", c.name);

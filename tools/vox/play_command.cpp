@@ -41,6 +41,9 @@ void addPlayCommand(CLI::App& app, int& exitCode) {
     cmd->add_option("--undo-mb", o->undoMegabytes, "Memory budget of the undo history in MiB")
         ->capture_default_str()
         ->check(numberIn(engine::wholeRange(1, 1 << 20, "MiB")));
+    cmd->add_option("--model", o->models,
+                    "A model the object tool (key 4) places: WORLD.toml, FILE.vdb or FILE.vox, at most 16384 "
+                    "solid voxels (repeat for more; M cycles them)");
     cmd->add_flag("!--no-hud", o->hud, "Start with the HUD hidden (Tab shows it)");
     addLightingOptions(*cmd, *lighting);
     cmd->callback([o, size, lighting, cmd, &exitCode] {
