@@ -51,6 +51,14 @@ SweepPoint measureSetting(engine::gpu::Context& gpu, engine::world::Scene& scene
                           LightingSettings lighting, std::uint32_t frames, const std::vector<glm::vec4>& reference,
                           std::string label) {
     engine::render::Renderer renderer(gpu);
+    return measureSetting(renderer, scene, camera, frame, lighting, frames, reference, std::move(label));
+}
+
+SweepPoint measureSetting(engine::render::Renderer& renderer, engine::world::Scene& scene,
+                          const engine::world::CameraPreset& camera, const engine::render::FrameSettings& frame,
+                          LightingSettings lighting, std::uint32_t frames, const std::vector<glm::vec4>& reference,
+                          std::string label) {
+    renderer.resetHistory();
     std::map<std::string, std::vector<double>> times;
     std::vector<double> totals;
     SweepPoint p;

@@ -18,6 +18,9 @@
 namespace engine::gpu {
 class Context;
 }
+namespace engine::render {
+class Renderer;
+}
 
 namespace vox {
 
@@ -35,6 +38,14 @@ struct SweepPoint {
 // Renders `frames` frames of a still camera; measures the second half (temporal history first).
 // The reference method restarts every frame: its point is one frame's worth of samples.
 SweepPoint measureSetting(engine::gpu::Context& gpu, engine::world::Scene& scene,
+                          const engine::world::CameraPreset& camera, const engine::render::FrameSettings& frame,
+                          engine::lighting::LightingSettings lighting, std::uint32_t frames,
+                          const std::vector<glm::vec4>& reference, std::string label);
+
+// The same on a renderer kept across measurements, so its pipelines are built once (on lavapipe
+// that is most of a short measurement's time); its history is reset first. Its frame counter runs
+// on, so a point depends on the measurements before it on that renderer, repeatably.
+SweepPoint measureSetting(engine::render::Renderer& renderer, engine::world::Scene& scene,
                           const engine::world::CameraPreset& camera, const engine::render::FrameSettings& frame,
                           engine::lighting::LightingSettings lighting, std::uint32_t frames,
                           const std::vector<glm::vec4>& reference, std::string label);
