@@ -3,9 +3,10 @@
 // so every row is rendered with N seeds and reported as the median and spread (min–max; the JSON
 // also has the quartiles) of its MSE, MAE and mean ratio, and compared with ReSTIR by the median
 // of per-seed ratios. Equal time: the baselines (uniform: shadow rays; RIS: candidates) get as
-// many as fit in ReSTIR's median frame time, from a linear fit of their own timings, once per
-// scene; then every seed renders them at that count. Rows are lighting knobs, so new modes are
-// rows without code: --variant "NAME:--knob value ..." and --sampling LIST.
+// many as fit in ReSTIR's frame time, from a linear fit of their own timings, once per scene,
+// each timing taken next to one of ReSTIR's (other work on a shared machine slows both alike);
+// then each seed renders every row back to back. Rows are lighting knobs, so new modes are rows
+// without code: --variant "NAME:--knob value ..." and --sampling LIST.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -173,15 +174,17 @@ engine::Result<std::vector<std::size_t>> versusOf(const RestirBenchOptions& o, c
     return out;
 }
 
-// The knobs that differ from the defaults, as options: what a row is, in the JSON and the table.
-std::string settingsText(const LightingSettings& l) {
+// The method, the knob scaled to equal time (`also`, may be empty) and the knobs that differ from
+// the defaults, as options: what a row is, in the JSON and the CSV.
+std::string settingsText(const LightingSettings& l, std::string_view also = {}) {
     const LightingSettings defaults;
     std::string out;
     for (const engine::lighting::KnobGroup& g : engine::lighting::knobGroups()) {
         for (const engine::lighting::Knob& k : g.knobs) {
-            if (!engine::lighting::knobRelevant(k, l) && k.name != "method") continue;
+            const bool always = k.name == "method" || k.name == also;
+            if (!engine::lighting::knobRelevant(k, l) && !always) continue;
             std::string value = knobText(k, l);
-            if (value == knobText(k, defaults) && k.name != "method") continue;
+            if (value == knobText(k, defaults) && !always) continue;
             out += fmt::format("{}{} {}", out.empty() ? "" : " ", knobOption(g, k), value);
         }
     }
@@ -287,10 +290,54 @@ int runRestirBench(RestirBenchOptions o) {
         std::vector<RowResult> results(rows->size());
         engine::render::Renderer renderer(gpu);  // one per scene: pipelines built once
         std::uint32_t emitters = 0;
-        auto measureSeeds = [&](std::size_t i, const LightingSettings& base) {
-            for (std::uint32_t seed = 0; seed < o.seeds; ++seed) {
-                LightingSettings l = base;
-                l.seed = base.seed + seed * 104729u;  // far apart: memoryless rows step the seed per frame
+        // Equal time first: each scaled row's count is fitted to the yardstick's time (the first
+        // versus row), the two measured back to back so that other work on the machine slows both.
+        const std::size_t timed = (*versus)[0];
+        std::vector<LightingSettings> settings;
+        for (const Row& row : *rows) settings.push_back(row.lighting);
+        auto timeOf = [&](const LightingSettings& l) {
+            return measureSetting(renderer, scene, camera, fs, l, o.frames, reference, "").totalMs;
+        };
+        for (std::size_t i = 0; i < rows->size(); ++i) {
+            const Row& row = (*rows)[i];
+            if (row.scale == EqualTime::None) continue;
+            LightingSettings& l = settings[i];
+            std::uint32_t& n = row.scale == EqualTime::ShadowRays ? l.shadowRays : l.restir.candidates;
+            const std::uint32_t maxN = row.scale == EqualTime::ShadowRays ? 4096u : 1024u;  // the knobs' ranges
+            std::fprintf(stderr, "  %s: %s: fitting its time to %s's\n", scene.name.c_str(), row.name.c_str(),
+                         (*rows)[timed].name.c_str());
+            // Fit time = base + slope x n from n = 1 and 8, pick n for the yardstick's time, then up
+            // to three correction steps until within 10 % (timings are noisy and not quite linear).
+            double target = timeOf(settings[timed]);
+            n = 1;
+            double t1 = timeOf(l);
+            n = 8;
+            double t8 = timeOf(l);
+            double slope = std::max((t8 - t1) / 7.0, 1e-6);
+            double base = t1 - slope;
+            auto countFor = [&](double perUnit) {
+                return std::clamp<std::uint32_t>(std::uint32_t(std::lround((target - base) / perUnit)), 1u, maxN);
+            };
+            std::fprintf(stderr, "    %s: 1: %.2f ms, 8: %.2f ms; %s: %.2f ms\n", row.name.c_str(), t1, t8,
+                         (*rows)[timed].name.c_str(), target);
+            n = countFor(slope);
+            for (int step = 0; step < 3; ++step) {
+                double tn = timeOf(l);
+                std::fprintf(stderr, "    %s: %u: %.2f ms against %.2f ms\n", row.name.c_str(), n, tn, target);
+                if (std::abs(tn - target) < 0.1 * target) break;
+                std::uint32_t next = countFor(std::max((tn - base) / double(n), 1e-6));
+                if (next == n) break;
+                n = next;
+                target = timeOf(settings[timed]);
+            }
+            results[i].scaledTo = n;
+        }
+        // Then the seeds, every row of a seed back to back: the per-seed time ratios compare
+        // measurements close in time.
+        for (std::uint32_t seed = 0; seed < o.seeds; ++seed) {
+            for (std::size_t i = 0; i < rows->size(); ++i) {
+                LightingSettings l = settings[i];
+                l.seed += seed * 104729u;  // far apart: memoryless rows step the seed per frame
                 std::fprintf(stderr, "  [%zu/%zu] %s: %s, seed %u/%u\n", ++done, total, scene.name.c_str(),
                              (*rows)[i].name.c_str(), seed + 1, o.seeds);
                 SweepPoint p = measureSetting(renderer, scene, camera, fs, l, o.frames, reference, (*rows)[i].name);
@@ -300,44 +347,8 @@ int runRestirBench(RestirBenchOptions o) {
                 results[i].mae.push_back(p.mae);
                 results[i].meanRatio.push_back(p.meanRatio);
             }
-        };
-        // The unscaled rows first: their median time is the time the scaled rows get.
-        for (std::size_t i = 0; i < rows->size(); ++i) {
-            if ((*rows)[i].scale == EqualTime::None) measureSeeds(i, (*rows)[i].lighting);
         }
-        const std::size_t timed = (*versus)[0];
-        double targetMs = engine::metrics::summarize(results[timed].ms).median;
-        for (std::size_t i = 0; i < rows->size(); ++i) {
-            const Row& row = (*rows)[i];
-            if (row.scale == EqualTime::None) continue;
-            LightingSettings l = row.lighting;
-            std::uint32_t& n = row.scale == EqualTime::ShadowRays ? l.shadowRays : l.restir.candidates;
-            const std::uint32_t maxN = row.scale == EqualTime::ShadowRays ? 4096u : 1024u;  // the knobs' ranges
-            // Fit time = base + slope x n from n = 1 and 8, pick n for the target, then up to three
-            // correction steps until within 10 % (timings are noisy and not quite linear).
-            std::fprintf(stderr, "  %s: %s: fitting its time to %s's %.2f ms\n", scene.name.c_str(), row.name.c_str(),
-                         (*rows)[timed].name.c_str(), targetMs);
-            auto timeOf = [&] { return measureSetting(renderer, scene, camera, fs, l, o.frames, reference, "").totalMs; };
-            n = 1;
-            double t1 = timeOf();
-            n = 8;
-            double t8 = timeOf();
-            double slope = std::max((t8 - t1) / 7.0, 1e-6);
-            double base = t1 - slope;
-            auto countFor = [&](double perUnit) {
-                return std::clamp<std::uint32_t>(std::uint32_t(std::lround((targetMs - base) / perUnit)), 1u, maxN);
-            };
-            n = countFor(slope);
-            for (int step = 0; step < 3; ++step) {
-                double tn = timeOf();
-                if (std::abs(tn - targetMs) < 0.1 * targetMs) break;
-                std::uint32_t next = countFor(std::max((tn - base) / double(n), 1e-6));
-                if (next == n) break;
-                n = next;
-            }
-            results[i].scaledTo = n;
-            measureSeeds(i, l);
-        }
+        const double targetMs = engine::metrics::summarize(results[timed].ms).median;
 
         // Per scene: JSON and table rows.
         json << fmt::format("  {{\"scene\": {}, \"emitters\": {}, \"equal_time_ms\": {}, \"rows\": [\n",
@@ -355,7 +366,10 @@ int runRestirBench(RestirBenchOptions o) {
                 "    {{\"name\": {}, \"settings\": {}, \"sampling\": {}, \"equal_time\": {}, \"ms\": {}, \"mse\": {}, "
                 "\"mae\": {}, \"mean_ratio\": {}, \"per_seed\": {{\"ms\": {}, \"mse\": {}, \"mae\": {}, \"mean_ratio\": {}}}, "
                 "\"versus\": {{",
-                jsonString(row.name), jsonString(settingsText(shown)), jsonString(row.sampling),
+                jsonString(row.name),
+                jsonString(settingsText(shown, row.scale == EqualTime::ShadowRays   ? "shadow_rays"
+                                               : row.scale == EqualTime::Candidates ? "candidates"
+                                                                                     : "")), jsonString(row.sampling),
                 row.scale == EqualTime::None ? "null" : fmt::format("{{\"{}\": {}}}", row.scale == EqualTime::ShadowRays ? "shadow_rays" : "candidates", r.scaledTo),
                 jsonSummary(ms), jsonSummary(mse), jsonSummary(mae), jsonSummary(mean), jsonArray(r.ms), jsonArray(r.mse),
                 jsonArray(r.mae), jsonArray(r.meanRatio));
@@ -372,7 +386,7 @@ int runRestirBench(RestirBenchOptions o) {
             }
             std::printf("  %-28s %-9s %7.2f ms  MSE %s  MAE %s  mean %s", row.name.c_str(), scaledText(row, r).c_str(), ms.median,
                         cell(mse, "{:.2e}").c_str(), cell(mae, "{:.2e}").c_str(), cell(mean, "{:.2f}").c_str());
-            const double timeRatio = ms.median / std::max(engine::metrics::summarize(results[timed].ms).median, 1e-9);
+            const double timeRatio = engine::metrics::summarize(engine::metrics::perSeedRatios(r.ms, results[timed].ms)).median;
             table += fmt::format("| {} | {} | {} | {} | {:.2f} ({:.2f}×) | {} | {} | {} |", scene.name, emitters, row.name,
                                  scaledText(row, r), ms.median, timeRatio, cell(mse, "{:.2e}"), cell(mae, "{:.2e}"),
                                  cell(mean, "{:.2f}"));
@@ -442,7 +456,7 @@ void addBenchRestirCommand(CLI::App& bench, int& exitCode) {
     cmd->add_option("--versus", o->versus,
                     "Rows the others are divided by, comma-separated (default: the restir rows); the first one's time "
                     "is the equal time");
-    cmd->add_flag("--quick", o->quick, "64x40, 8 frames, 256 spp reference: a first look");
+    cmd->add_flag("--quick", o->quick, "A first look: 64x40, 8 frames, 256 spp reference (over --size, --frames, --ref-spp)");
     cmd->add_option("-o,--output", o->output, "JSON results file")->capture_default_str();
     cmd->add_option("--markdown", o->markdown, "Also write the table as markdown here");
     cmd->callback([o, &exitCode] { exitCode = runRestirBench(*o); });
