@@ -1,12 +1,13 @@
 // vox bench restir: ReSTIR's error at equal time against uniform light sampling and against RIS
 // without reuse, per scene, over several seeds. One run's MSE is decided by a few outlier pixels,
 // so every row is rendered with N seeds and reported as the median and spread (min–max; the JSON
-// also has the quartiles) of its MSE, MAE and mean ratio, and compared with ReSTIR by the median
-// of per-seed ratios. Equal time: the baselines (uniform: shadow rays; RIS: candidates) get as
-// many as fit in ReSTIR's frame time, from a linear fit of their own timings, once per scene,
-// each timing taken next to one of ReSTIR's (other work on a shared machine slows both alike);
-// then each seed renders every row back to back. Rows are lighting knobs, so new modes are rows
-// without code: --variant "NAME:--knob value ..." and --sampling LIST.
+// also has the quartiles) of its MSE, MAE, mean ratio and time, and compared with ReSTIR by the
+// median of per-seed ratios. A run's time is its fastest measured frame: on a shared machine the
+// median frame carries other processes' work. Equal time: the baselines (uniform: shadow rays;
+// RIS: candidates) get as many as fit in ReSTIR's frame time, from a linear fit of their own
+// timings, once per scene, each timing taken next to one of ReSTIR's; then each seed renders every
+// row back to back. Rows are lighting knobs, so new modes are rows without code:
+// --variant "NAME:--knob value ..." and --sampling LIST.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -296,7 +297,7 @@ int runRestirBench(RestirBenchOptions o) {
         std::vector<LightingSettings> settings;
         for (const Row& row : *rows) settings.push_back(row.lighting);
         auto timeOf = [&](const LightingSettings& l) {
-            return measureSetting(renderer, scene, camera, fs, l, o.frames, reference, "").totalMs;
+            return measureSetting(renderer, scene, camera, fs, l, o.frames, reference, "").fastestMs;
         };
         for (std::size_t i = 0; i < rows->size(); ++i) {
             const Row& row = (*rows)[i];
@@ -306,19 +307,20 @@ int runRestirBench(RestirBenchOptions o) {
             const std::uint32_t maxN = row.scale == EqualTime::ShadowRays ? 4096u : 1024u;  // the knobs' ranges
             std::fprintf(stderr, "  %s: %s: fitting its time to %s's\n", scene.name.c_str(), row.name.c_str(),
                          (*rows)[timed].name.c_str());
-            // Fit time = base + slope x n from n = 1 and 8, pick n for the yardstick's time, then up
-            // to three correction steps until within 10 % (timings are noisy and not quite linear).
+            // Fit time = base + slope x n from n = 1 and 16, pick n for the yardstick's time, then
+            // up to three correction steps until within 10 % (timings are noisy and not quite
+            // linear). Times are each measurement's fastest frame, the least disturbed one.
             double target = timeOf(settings[timed]);
             n = 1;
             double t1 = timeOf(l);
-            n = 8;
-            double t8 = timeOf(l);
-            double slope = std::max((t8 - t1) / 7.0, 1e-6);
+            n = 16;
+            double t16 = timeOf(l);
+            double slope = std::max((t16 - t1) / 15.0, 1e-3 * std::max(t1, 1e-3));
             double base = t1 - slope;
-            auto countFor = [&](double perUnit) {
-                return std::clamp<std::uint32_t>(std::uint32_t(std::lround((target - base) / perUnit)), 1u, maxN);
+            auto countFor = [&](double perUnit) {  // at least 1: the target may be below the fitted base
+                return std::uint32_t(std::clamp(std::round((target - base) / perUnit), 1.0, double(maxN)));
             };
-            std::fprintf(stderr, "    %s: 1: %.2f ms, 8: %.2f ms; %s: %.2f ms\n", row.name.c_str(), t1, t8,
+            std::fprintf(stderr, "    %s: 1: %.2f ms, 16: %.2f ms; %s: %.2f ms\n", row.name.c_str(), t1, t16,
                          (*rows)[timed].name.c_str(), target);
             n = countFor(slope);
             for (int step = 0; step < 3; ++step) {
@@ -342,7 +344,7 @@ int runRestirBench(RestirBenchOptions o) {
                              (*rows)[i].name.c_str(), seed + 1, o.seeds);
                 SweepPoint p = measureSetting(renderer, scene, camera, fs, l, o.frames, reference, (*rows)[i].name);
                 emitters = p.emitters;
-                results[i].ms.push_back(p.totalMs);
+                results[i].ms.push_back(p.fastestMs);
                 results[i].mse.push_back(p.mse);
                 results[i].mae.push_back(p.mae);
                 results[i].meanRatio.push_back(p.meanRatio);

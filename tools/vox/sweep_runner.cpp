@@ -90,6 +90,7 @@ SweepPoint measureSetting(engine::render::Renderer& renderer, engine::world::Sce
     }
     for (auto& [name, v] : times) p.passMs[name] = median(v);
     p.totalMs = median(totals);
+    p.fastestMs = totals.empty() ? 0.0 : *std::min_element(totals.begin(), totals.end());
     p.mae /= std::max(counted, 1);
     p.mse /= std::max(counted, 1);
     p.rmae /= std::max(counted, 1);

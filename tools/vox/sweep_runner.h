@@ -30,6 +30,7 @@ struct SweepPoint {
     std::string method;
     std::map<std::string, double> passMs;  // median per pass over the measured frames
     double totalMs = 0.0;                  // median frame time, upload excluded
+    double fastestMs = 0.0;                // the fastest measured frame: the least slowed by other work on a shared machine
     double mae = 0.0, mse = 0.0, rmae = 0.0;
     double meanRatio = 0.0;  // mean luminance of non-emitting surface pixels / the reference's: bias at a glance
     std::uint32_t emitters = 0;
