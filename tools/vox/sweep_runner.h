@@ -31,6 +31,10 @@ struct SweepPoint {
     std::map<std::string, double> passMs;  // median per pass over the measured frames
     double totalMs = 0.0;                  // median frame time, upload excluded
     double fastestMs = 0.0;                // the fastest measured frame: the least slowed by other work on a shared machine
+    // Median CPU time of this process per frame (rendering only, readback excluded). On a CPU
+    // device (lavapipe) that is the device's work plus the host's, and other processes taking the
+    // cores do not lengthen it as they lengthen the GPU timestamps.
+    double cpuMs = 0.0;
     double mae = 0.0, mse = 0.0, rmae = 0.0;
     double meanRatio = 0.0;  // mean luminance of non-emitting surface pixels / the reference's: bias at a glance
     std::uint32_t emitters = 0;
