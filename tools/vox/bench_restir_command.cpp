@@ -27,6 +27,8 @@ struct RestirBenchOptions {
     std::uint32_t frames = 16;
     std::uint32_t referenceSpp = 1024;
     std::string output = "out/bench_restir.json";
+    std::string sampling = "power";    // ReSTIR's and RIS's candidates: power or regir
+    std::uint32_t candidates = 32;     // ReSTIR's M
 };
 
 int runRestirBench(const RestirBenchOptions& o) {
@@ -46,7 +48,8 @@ int runRestirBench(const RestirBenchOptions& o) {
     engine::AtomicFile jsonFile;
     if (engine::Status s = jsonFile.open(out); !s) return fail(s.error());
     std::ostream& json = jsonFile.stream();
-    json << "{\"size\": [" << fs.width << ", " << fs.height << "], \"device\": \"" << gpu.info().name
+    json << "{\"size\": [" << fs.width << ", " << fs.height << "], \"sampling\": \"" << o.sampling
+         << "\", \"candidates\": " << o.candidates << ", \"device\": \"" << gpu.info().name
          << "\", \"reference_spp\": " << o.referenceSpp << ", \"scenes\": [\n";
 
     std::printf("\n%-12s %9s %11s | %9s %5s %11s %7s | %9s %5s %11s %7s\n", "scene", "restir ms", "restir MSE",
@@ -64,6 +67,8 @@ int runRestirBench(const RestirBenchOptions& o) {
         };
 
         LightingSettings restir;  // defaults: biased, area, power, M = 32, temporal, spatial 5 x 30 px
+        restir.restir.candidates = o.candidates;
+        restir.regir.enabled = o.sampling == "regir" ? 1u : 0u;
         SweepPoint r = measure(restir, o.frames);
 
         // Fit time = base + slope x n for each baseline, then pick n for ReSTIR's time.
@@ -95,6 +100,7 @@ int runRestirBench(const RestirBenchOptions& o) {
         LightingSettings ris;
         ris.method = Method::Ris;
         ris.restir.temporal = ris.restir.spatial = ris.restir.candidateVisibility = false;
+        ris.regir.enabled = restir.regir.enabled;
         SweepPoint s = equalTime(ris, candidates, [](LightingSettings& x) -> std::uint32_t& { return x.restir.candidates; });
 
         std::printf("%-12s %9.2f %11.3e | %9.2f %5u %11.3e %6.1fx | %9.2f %5u %11.3e %6.1fx\n", scene->name.c_str(), r.totalMs,
@@ -125,6 +131,10 @@ void addBenchRestirCommand(CLI::App& bench, int& exitCode) {
     cmd->add_option("--ref-spp", o->referenceSpp, "Reference samples per pixel")->capture_default_str()
         ->check(numberIn(kSamplesRange));
     cmd->add_option("-o,--output", o->output, "JSON results file")->capture_default_str();
+    cmd->add_option("--sampling", o->sampling, "ReSTIR's and RIS's candidates: power | regir")->capture_default_str()
+        ->check(CLI::IsMember({"power", "regir"}));
+    cmd->add_option("--candidates", o->candidates, "ReSTIR's candidates per pixel (M)")->capture_default_str()
+        ->check(numberIn(engine::wholeRange(1, 1024, "candidates")));
     cmd->callback([o, &exitCode] { exitCode = runRestirBench(*o); });
 }
 
