@@ -47,7 +47,16 @@ bool isUniform(const LightingSettings& s) { return s.method == Method::Uniform; 
 bool isReference(const LightingSettings& s) { return s.method == Method::Reference; }
 bool usesCache(const LightingSettings& s) { return s.indirect == Indirect::Cache && s.method != Method::Reference; }
 bool drawsLightsByPower(const LightingSettings& s) { return s.byPower && (resamples(s) || usesCache(s)); }
+bool usesRegir(const LightingSettings& s) { return s.regir.enabled != 0u && resamples(s); }
 bool usesPath(const LightingSettings& s) { return s.indirect == Indirect::Path && s.method != Method::Reference; }
+
+// --sampling: uniform, power (alias table) or regir (ReGIR's grid for ReSTIR and RIS, whose cells
+// draw by power; the other methods take power).
+double getSampling(const LightingSettings& s) { return s.regir.enabled ? 2.0 : s.byPower ? 1.0 : 0.0; }
+void setSampling(LightingSettings& s, double v) {
+    s.byPower = v >= 1.0;
+    s.regir.enabled = v >= 2.0 ? 1u : 0u;
+}
 
 // --method: the methods by name, and restir-unbiased for ReSTIR with the unbiased normalisation.
 Status parseMethodKnob(LightingSettings& s, std::string_view text) {
@@ -93,7 +102,7 @@ constexpr std::array<std::string_view, 6> kMethods{"preview", "restir", "ris", "
 // In the order of enum Indirect.
 constexpr std::array<std::string_view, 4> kIndirect{"none", "cache", "path", "reference"};
 constexpr std::array<std::string_view, 2> kModes{"point", "area"};
-constexpr std::array<std::string_view, 2> kSampling{"uniform", "power"};
+constexpr std::array<std::string_view, 3> kSampling{"uniform", "power", "regir"};
 constexpr std::array<std::string_view, 2> kPixelFilters{"box", "centre"};
 
 using S = LightingSettings;
@@ -119,8 +128,10 @@ const Knob kLighting[] = {
 const Knob kEmitters[] = {
     {.name = "mode", .help = "Emitters as point or area lights", .kind = KnobKind::Choice, .choices = kModes,
      .get = getField<&S::area>, .set = setField<&S::area>, .relevant = samplesEmitters},
-    {.name = "sampling", .help = "Candidate emitters: uniform or by power (alias table)", .kind = KnobKind::Choice,
-     .choices = kSampling, .get = getField<&S::byPower>, .set = setField<&S::byPower>, .relevant = samplesEmitters},
+    {.name = "sampling",
+     .help = "Candidate emitters: uniform, by power (alias table), or regir (ReSTIR/RIS: from a world-space grid of "
+             "lights resampled per cell by power and distance; other methods by power)",
+     .kind = KnobKind::Choice, .choices = kSampling, .get = getSampling, .set = setSampling, .relevant = samplesEmitters},
     {.name = "brick_lights", .help = "Uniform emissive bricks as one light", .kind = KnobKind::Switch,
      .get = getField<&S::brickLights>, .set = setField<&S::brickLights>, .relevant = samplesEmitters},
 };
@@ -203,10 +214,21 @@ const Knob kPath[] = {
      .get = getPartField<&S::path, &P::accumulate>, .set = setPartField<&S::path, &P::accumulate>, .relevant = usesPath},
 };
 
+// ReGIR's world-space grid (render/regir/), with sampling regir.
+using G = shared::RegirKnobs;
+const Knob kRegir[] = {
+    {.name = "regir_cell", .help = "regir: smallest cell size in voxels (grown until the world fits in 4096 cells)",
+     .kind = KnobKind::Real, .min = 1, .max = 256, .get = getPartField<&S::regir, &G::cellSize>,
+     .set = setPartField<&S::regir, &G::cellSize>, .relevant = usesRegir},
+    {.name = "regir_candidates", .help = "regir: power-drawn candidates resampled into each cell entry per frame",
+     .kind = KnobKind::Count, .min = 1, .max = 256, .get = getPartField<&S::regir, &G::buildCandidates>,
+     .set = setPartField<&S::regir, &G::buildCandidates>, .relevant = usesRegir},
+};
+
 const KnobGroup kGroups[] = {
     {"lighting", "", kLighting}, {"emitters", "", kEmitters},   {"restir", "", kRestir},
     {"baselines", "", kBaselines}, {"reference", "", kReference}, {"cache", "cache-", kCache},
-    {"path", "", kPath},
+    {"path", "", kPath}, {"regir", "", kRegir},
 };
 
 // Rules between knobs that no single range expresses.
