@@ -111,7 +111,8 @@ using R = shared::RestirKnobs;
 
 const Knob kLighting[] = {
     {.name = "method",
-     .help = "Lighting: restir | restir-unbiased | ris | uniform | bruteforce | reference | preview",
+     .help = "Lighting: restir | restir-unbiased | ris | uniform | bruteforce | reference | preview (restir: "
+             "M-weighted reuse, unbiased for a still camera; restir-unbiased: pairwise MIS, unbiased when it moves)",
      .kind = KnobKind::Custom,
      .choices = kMethods,
      .parse = parseMethodKnob,
@@ -144,7 +145,7 @@ const Knob kRestir[] = {
      .set = setPartField<&S::restir, &R::temporal>, .relevant = isRestir},
     {.name = "spatial", .help = "Spatial reuse taps,radius in pixels (0 = off)", .kind = KnobKind::Custom,
      .relevant = isRestir, .parse = parseSpatialKnob, .format = formatSpatialKnob, .check = checkSpatialKnob},
-    {.name = "unbiased", .help = "Visibility-aware 1/Z normalisation (restir-unbiased)", .kind = KnobKind::Switch,
+    {.name = "unbiased", .help = "Pairwise MIS in spatial reuse, balance heuristic with last frame's visibility in temporal reuse (restir-unbiased)", .kind = KnobKind::Switch,
      .get = getPartField<&S::restir, &R::unbiased>, .set = setPartField<&S::restir, &R::unbiased>, .relevant = isRestir},
     {.name = "temporal_cap", .help = "Last frame's M is capped at this times M", .kind = KnobKind::Real, .min = 1, .max = 1000,
      .get = getPartField<&S::restir, &R::temporalCap>, .set = setPartField<&S::restir, &R::temporalCap>, .relevant = isRestir},
