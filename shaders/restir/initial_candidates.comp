@@ -38,12 +38,14 @@ void main() {
     uint run = tiles ? lightTileRunStart(rng) : 0u;
     // ReGIR: the first entry of the surface's cell (a surface outside the grid draws by power).
     bool regir = regirReady(gFrame);
-    RegirGridBuffer grid;
+    // The header member by member from a pointer set up front: one struct load through a pointer
+    // assigned in a branch read values that put every pixel outside the grid on lavapipe.
+    RegirGridBuffer grid = regirGrid(gFrame);  // dereferenced only when regir
     uint cellEntries = 0u;
     if (regir) {
-        grid = regirGrid(gFrame);
-        uint cell = regirSurfaceCell(grid.info, s);
-        regir = cell < grid.info.dims.w;
+        RegirGridInfo info = RegirGridInfo(grid.info.origin, grid.info.dims, grid.info.build);
+        uint cell = regirSurfaceCell(info, s);
+        regir = cell < info.dims.w;
         cellEntries = cell * REGIR_CELL_ENTRIES;
     }
 
