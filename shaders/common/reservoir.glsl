@@ -86,7 +86,8 @@ float balanceShare(float confidenceA, float targetA, float confidenceB, float ta
 }
 
 // The combined reservoir: W = wSum / (normaliser x target), where the normaliser is the total M
-// (biased) or the M of the inputs that could have produced the chosen sample (unbiased).
+// (the default mode), the M of the inputs that could have produced the chosen sample (Bitterli et
+// al. 2020 Alg. 6), or 1 when the inputs were added with explicit MIS weights (the unbiased mode).
 Reservoir combinerFinish(Combiner c, float normaliser) {
     Reservoir r = c.chosen;
     float W = (c.chosenTarget > 0.0 && normaliser > 0.0) ? c.wSum / (normaliser * c.chosenTarget) : 0.0;

@@ -14,8 +14,8 @@
 // Samples occluded here contribute nothing when shaded, whatever their weight.
 //
 // The unbiased mode weighs the same inputs by pairwise MIS instead (see pairwiseReuse): same
-// target evaluations, no shadow ray, less noise where the neighbours' targets differ from this
-// pixel's.
+// target evaluations, no shadow ray, bounded weights for a neighbour's sample that is worth far
+// more here than there (docs/ACCURACY.md measures what that buys).
 #extension GL_GOOGLE_include_directive : require
 
 #include "common/reservoir.glsl"
