@@ -47,7 +47,16 @@ bool isUniform(const LightingSettings& s) { return s.method == Method::Uniform; 
 bool isReference(const LightingSettings& s) { return s.method == Method::Reference; }
 bool usesCache(const LightingSettings& s) { return s.indirect == Indirect::Cache && s.method != Method::Reference; }
 bool drawsLightsByPower(const LightingSettings& s) { return s.byPower && (resamples(s) || usesCache(s)); }
+bool usesRegir(const LightingSettings& s) { return s.regir.enabled != 0u && resamples(s); }
 bool usesPath(const LightingSettings& s) { return s.indirect == Indirect::Path && s.method != Method::Reference; }
+
+// --sampling: uniform, power (alias table) or regir (ReGIR's grid for ReSTIR and RIS, whose cells
+// draw by power; the other methods take power).
+double getSampling(const LightingSettings& s) { return s.regir.enabled ? 2.0 : s.byPower ? 1.0 : 0.0; }
+void setSampling(LightingSettings& s, double v) {
+    s.byPower = v >= 1.0;
+    s.regir.enabled = v >= 2.0 ? 1u : 0u;
+}
 
 // --method: the methods by name, and restir-unbiased for ReSTIR with the unbiased normalisation.
 Status parseMethodKnob(LightingSettings& s, std::string_view text) {
@@ -93,7 +102,7 @@ constexpr std::array<std::string_view, 6> kMethods{"preview", "restir", "ris", "
 // In the order of enum Indirect.
 constexpr std::array<std::string_view, 4> kIndirect{"none", "cache", "path", "reference"};
 constexpr std::array<std::string_view, 2> kModes{"point", "area"};
-constexpr std::array<std::string_view, 2> kSampling{"uniform", "power"};
+constexpr std::array<std::string_view, 3> kSampling{"uniform", "power", "regir"};
 constexpr std::array<std::string_view, 2> kPixelFilters{"box", "centre"};
 
 using S = LightingSettings;
@@ -102,7 +111,8 @@ using R = shared::RestirKnobs;
 
 const Knob kLighting[] = {
     {.name = "method",
-     .help = "Lighting: restir | restir-unbiased | ris | uniform | bruteforce | reference | preview",
+     .help = "Lighting: restir | restir-unbiased | ris | uniform | bruteforce | reference | preview (restir: "
+             "M-weighted reuse, unbiased for a still camera; restir-unbiased: pairwise MIS, unbiased when it moves)",
      .kind = KnobKind::Custom,
      .choices = kMethods,
      .parse = parseMethodKnob,
@@ -119,8 +129,10 @@ const Knob kLighting[] = {
 const Knob kEmitters[] = {
     {.name = "mode", .help = "Emitters as point or area lights", .kind = KnobKind::Choice, .choices = kModes,
      .get = getField<&S::area>, .set = setField<&S::area>, .relevant = samplesEmitters},
-    {.name = "sampling", .help = "Candidate emitters: uniform or by power (alias table)", .kind = KnobKind::Choice,
-     .choices = kSampling, .get = getField<&S::byPower>, .set = setField<&S::byPower>, .relevant = samplesEmitters},
+    {.name = "sampling",
+     .help = "Candidate emitters: uniform, by power (alias table), or regir (ReSTIR/RIS: from a world-space grid of "
+             "lights resampled per cell by power and distance; other methods by power)",
+     .kind = KnobKind::Choice, .choices = kSampling, .get = getSampling, .set = setSampling, .relevant = samplesEmitters},
     {.name = "brick_lights", .help = "Uniform emissive bricks as one light", .kind = KnobKind::Switch,
      .get = getField<&S::brickLights>, .set = setField<&S::brickLights>, .relevant = samplesEmitters},
 };
@@ -133,7 +145,7 @@ const Knob kRestir[] = {
      .set = setPartField<&S::restir, &R::temporal>, .relevant = isRestir},
     {.name = "spatial", .help = "Spatial reuse taps,radius in pixels (0 = off)", .kind = KnobKind::Custom,
      .relevant = isRestir, .parse = parseSpatialKnob, .format = formatSpatialKnob, .check = checkSpatialKnob},
-    {.name = "unbiased", .help = "Visibility-aware 1/Z normalisation (restir-unbiased)", .kind = KnobKind::Switch,
+    {.name = "unbiased", .help = "Pairwise MIS in spatial reuse, balance heuristic with last frame's visibility in temporal reuse (restir-unbiased)", .kind = KnobKind::Switch,
      .get = getPartField<&S::restir, &R::unbiased>, .set = setPartField<&S::restir, &R::unbiased>, .relevant = isRestir},
     {.name = "temporal_cap", .help = "Last frame's M is capped at this times M", .kind = KnobKind::Real, .min = 1, .max = 1000,
      .get = getPartField<&S::restir, &R::temporalCap>, .set = setPartField<&S::restir, &R::temporalCap>, .relevant = isRestir},
@@ -203,10 +215,21 @@ const Knob kPath[] = {
      .get = getPartField<&S::path, &P::accumulate>, .set = setPartField<&S::path, &P::accumulate>, .relevant = usesPath},
 };
 
+// ReGIR's world-space grid (render/regir/), with sampling regir.
+using G = shared::RegirKnobs;
+const Knob kRegir[] = {
+    {.name = "regir_cell", .help = "regir: smallest cell size in voxels (grown until the world fits in 4096 cells)",
+     .kind = KnobKind::Real, .min = 1, .max = 256, .get = getPartField<&S::regir, &G::cellSize>,
+     .set = setPartField<&S::regir, &G::cellSize>, .relevant = usesRegir},
+    {.name = "regir_candidates", .help = "regir: power-drawn candidates resampled into each cell entry per frame",
+     .kind = KnobKind::Count, .min = 1, .max = 256, .get = getPartField<&S::regir, &G::buildCandidates>,
+     .set = setPartField<&S::regir, &G::buildCandidates>, .relevant = usesRegir},
+};
+
 const KnobGroup kGroups[] = {
     {"lighting", "", kLighting}, {"emitters", "", kEmitters},   {"restir", "", kRestir},
     {"baselines", "", kBaselines}, {"reference", "", kReference}, {"cache", "cache-", kCache},
-    {"path", "", kPath},
+    {"path", "", kPath}, {"regir", "", kRegir},
 };
 
 // Rules between knobs that no single range expresses.

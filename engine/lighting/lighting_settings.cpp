@@ -30,12 +30,13 @@ std::string LightingSettings::describe() const {
         case Method::Restir:
             s += fmt::format(" {} {} M={} {} {}{}{}", restir.unbiased ? "unbiased" : "biased", area ? "area" : "point",
                              restir.candidates,
-                             byPower ? "power" : "uniform", brickLights ? "bricks" : "voxels",
+                             regir.enabled ? "regir" : byPower ? "power" : "uniform", brickLights ? "bricks" : "voxels",
                              restir.temporal ? " temporal" : "",
                              restir.spatial ? fmt::format(" spatial {}x{:.0f}px", restir.spatialTaps, restir.spatialRadius) : "");
             break;
         case Method::Ris:
-            s += fmt::format(" {} M={} {} {}", area ? "area" : "point", restir.candidates, byPower ? "power" : "uniform",
+            s += fmt::format(" {} M={} {} {}", area ? "area" : "point", restir.candidates,
+                             regir.enabled ? "regir" : byPower ? "power" : "uniform",
                              brickLights ? "bricks" : "voxels");
             break;
         case Method::Uniform:

@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "lighting/irradiance_cache_settings.h"
 #include "lighting/path_indirect_settings.h"
+#include "shared/regir.h"
 #include "shared/restir.h"
 
 namespace engine::lighting {
@@ -35,6 +36,7 @@ struct LightingSettings {
     Method method = Method::Restir;
     bool area = true;            // area lights (else point lights at the centres of their exposed surfaces)
     bool byPower = true;         // candidates from the alias table over power (else uniform)
+    shared::RegirKnobs regir;    // ReGIR's world-space candidates (sampling regir: regir.enabled, by power too)
     bool brickLights = true;
     shared::RestirKnobs restir;  // ReSTIR's knobs and their defaults (M also drives RIS)
     std::uint32_t shadowRays = 1;        // Uniform: samples (and shadow rays) per pixel

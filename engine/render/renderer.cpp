@@ -57,6 +57,7 @@ Renderer::Renderer(gpu::Context& ctx)
       mTonemap(ctx),
       mCache(ctx),
       mLightTiles(ctx),
+      mRegir(ctx),
       mPathIndirect(ctx) {
     mFrameParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::FrameParams), "frame.params");
     mRestirParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::RestirParams), "restir.params");
@@ -163,6 +164,10 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
     if (lightTilesUsed(lighting)) {
         params.lightTiles = mLightTiles.frameField();
         mLightTiles.writeParams(mUploader, mFrameIndex, lighting.seed);
+    }
+    if (regirUsed(lighting)) {
+        mRegir.prepare(mUploader, scene.grid.sizeInVoxels(), lighting.regir, mFrameIndex, lighting.seed);
+        params.regirGrid = mRegir.frameField();
     }
     mUploader.write(mFrameParams, 0, &params, sizeof(params));
     writeMethodParams(lighting);
@@ -291,6 +296,7 @@ void Renderer::recordLighting(gpu::CommandList& cmd, const lighting::LightingSet
     const SceneBindings scene{mWorld, mGpuEmitters};
     gpu::Buffer& gbuffer = mGBuffers[mCurrent];
     if (lightTilesUsed(lighting)) mLightTiles.record(cmd, scene);  // before ReSTIR and the cache read them
+    if (regirUsed(lighting)) mRegir.record(cmd, scene, mFrameParams, gbuffer, mSize);  // before the candidates
     switch (lighting.method) {
         case Method::Preview:
             mPreview.record(cmd, {mWorld, mFrameParams, gbuffer, mRadiance, mRayStats}, mSize);

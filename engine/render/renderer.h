@@ -34,6 +34,7 @@
 #include "render/passes/sun_shade_pass.h"
 #include "render/passes/tonemap_pass.h"
 #include "render/reference/reference_pass.h"
+#include "render/regir/regir_grid.h"
 #include "render/restir/restir_initial_pass.h"
 #include "render/restir/restir_shade_pass.h"
 #include "render/restir/restir_spatial_pass.h"
@@ -94,6 +95,7 @@ public:
     const lighting::EmitterList& emitters() const { return mEmitters; }
     const IrradianceCache& irradianceCache() const { return mCache; }
     const LightTiles& lightTiles() const { return mLightTiles; }
+    const RegirGrid& regirGrid() const { return mRegir; }
 
 private:
     void resize(std::uint32_t width, std::uint32_t height);
@@ -120,6 +122,7 @@ private:
     TonemapPass mTonemap;
     IrradianceCache mCache;
     LightTiles mLightTiles;
+    RegirGrid mRegir;
     PathIndirect mPathIndirect;
 
     glm::uvec2 mSize{0};

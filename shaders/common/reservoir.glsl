@@ -1,4 +1,4 @@
-// Reservoir helpers for temporal and spatial reuse (Bitterli et al. 2020 Alg. 4 and 6).
+// Reservoir helpers for temporal and spatial reuse (Bitterli et al. 2020 Alg. 4 and 6; Lin et al. 2022).
 #ifndef COMMON_RESERVOIR_GLSL
 #define COMMON_RESERVOIR_GLSL
 
@@ -61,8 +61,33 @@ bool combinerAdd(inout Combiner c, Reservoir r, float target, float u) {
     return false;
 }
 
+// Adds reservoir r with an explicit MIS weight m(y) for its sample y (generalized RIS, Lin et al.
+// 2022, "Generalized resampled importance sampling"): its resampling weight is
+// m x target x W, and combinerFinish(c, 1.0) gives W = wSum / target. Unbiased when the weights of
+// the inputs that can produce a sample sum to one wherever the integrand is not zero.
+bool combinerAddWeighted(inout Combiner c, Reservoir r, float target, float m, float u) {
+    float w = m * target * r.weights.x;
+    c.wSum += w;
+    c.M += r.weights.y;
+    if (w > 0.0 && u * c.wSum < w) {
+        c.chosen = r;
+        c.chosenTarget = target;
+        return true;
+    }
+    return false;
+}
+
+// The balance heuristic between two inputs a and b with confidences (their M): a's share of a
+// sample whose target is targetA at a's pixel and targetB at b's; 0 when neither can produce it.
+float balanceShare(float confidenceA, float targetA, float confidenceB, float targetB) {
+    float a = confidenceA * targetA;
+    float sum = a + confidenceB * targetB;
+    return sum > 0.0 ? a / sum : 0.0;
+}
+
 // The combined reservoir: W = wSum / (normaliser x target), where the normaliser is the total M
-// (biased) or the M of the inputs that could have produced the chosen sample (unbiased).
+// (the default mode), the M of the inputs that could have produced the chosen sample (Bitterli et
+// al. 2020 Alg. 6), or 1 when the inputs were added with explicit MIS weights (the unbiased mode).
 Reservoir combinerFinish(Combiner c, float normaliser) {
     Reservoir r = c.chosen;
     float W = (c.chosenTarget > 0.0 && normaliser > 0.0) ? c.wSum / (normaliser * c.chosenTarget) : 0.0;

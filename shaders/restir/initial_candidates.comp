@@ -5,10 +5,13 @@
 // The weight W stays the unshadowed one (spatial neighbours reuse it as is); the shadow test's
 // answer goes to weights.w, which only this pixel's own reuse applies. With light tiles (by power),
 // the candidates are consecutive entries of one random presampled tile: the same probabilities,
-// read in order instead of drawn from the alias table.
+// read in order instead of drawn from the alias table. With ReGIR (sampling regir), each candidate
+// is a uniformly drawn entry of the world-space cell the surface lies in, weighted by the entry's
+// contribution weight in place of 1 / probability (RIS inside RIS; regir/regir.glsl).
 #extension GL_GOOGLE_include_directive : require
 
 #include "light_tiles/light_tiles.glsl"
+#include "regir/regir.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -33,6 +36,18 @@ void main() {
     uint rng = rngInit(pixel, gRestir.frameIndex, 1u, gRestir.seed);
     bool tiles = byPower && gRestir.knobs.lightTiles != 0u && lightTilesReady(gFrame);
     uint run = tiles ? lightTileRunStart(rng) : 0u;
+    // ReGIR: the first entry of the surface's cell (a surface outside the grid draws by power).
+    bool regir = regirReady(gFrame);
+    // The header member by member from a pointer set up front: one struct load through a pointer
+    // assigned in a branch read values that put every pixel outside the grid on lavapipe.
+    RegirGridBuffer grid = regirGrid(gFrame);  // dereferenced only when regir
+    uint cellEntries = 0u;
+    if (regir) {
+        RegirGridInfo info = RegirGridInfo(grid.info.origin, grid.info.dims, grid.info.build);
+        uint cell = regirSurfaceCell(info, s);
+        regir = cell < info.dims.w;
+        cellEntries = cell * REGIR_CELL_ENTRIES;
+    }
 
     float wSum = 0.0;
     float chosenTarget = 0.0;
@@ -40,7 +55,13 @@ void main() {
         uint slot;
         GpuEmitter e;
         float pdf;
-        if (tiles) {
+        if (regir) {
+            RegirEntry entry = grid.entries[cellEntries + min(uint(rngNext(rng) * float(REGIR_CELL_ENTRIES)), REGIR_CELL_ENTRIES - 1u)];
+            if (entry.slot == RESERVOIR_EMPTY) continue;  // no light reaches this cell: a zero-weight candidate
+            slot = entry.slot;
+            e = gEmitters[slot];
+            pdf = 1.0 / entry.weight;
+        } else if (tiles) {
             LightTileSample t = lightTileSample(gFrame, lightTileRunEntry(run, i));
             slot = t.info.z;
             e = lightTileEmitter(t);

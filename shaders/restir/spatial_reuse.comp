@@ -12,6 +12,10 @@
 // of the inputs whose target is positive for the chosen sample (Bitterli et al. 2020, Alg. 6)
 // gives an unbiased weight for every sample visible here, without a shadow ray per neighbour.
 // Samples occluded here contribute nothing when shaded, whatever their weight.
+//
+// The unbiased mode weighs the same inputs by pairwise MIS instead (see pairwiseReuse): same
+// target evaluations, no shadow ray, bounded weights for a neighbour's sample that is worth far
+// more here than there (docs/ACCURACY.md measures what that buys).
 #extension GL_GOOGLE_include_directive : require
 
 #include "common/reservoir.glsl"
@@ -26,6 +30,47 @@ layout(set = 0, binding = RESTIR_SPATIAL_BINDING_CANDIDATES, std430) readonly bu
 layout(set = 0, binding = RESTIR_SPATIAL_BINDING_OUT, std430) writeonly buffer Out { Reservoir gOut[]; };
 
 const uint kMaxTaps = 16u;
+
+// Pairwise MIS with confidence weights (Bitterli's 2022 thesis, "Correlations and reuse for fast
+// and accurate physically based light transport", eq. 9.10; Lin et al. 2022; Wyman et al. 2023,
+// "A gentle introduction to ReSTIR", pairwise MIS): this pixel's own reservoir is the canonical
+// input c, whose support is every sample visible here. Its confidence M_c is split into k equal
+// parts, one per neighbour i; the pair (i, c) gets the share (M_i + M_c/k) / (M_c + sum M_j) and
+// divides it by the balance heuristic between M_i p_i and (M_c/k) p_c. The weights of every sample
+// then sum to one (each pair's two weights sum to its share; a pair whose neighbour cannot produce
+// the sample gives its whole share to c), and where the targets agree they are M_i / sum M, as in
+// the default mode. Each neighbour costs two target evaluations (its sample here, the canonical
+// sample there) and no shadow ray: neighbours' candidate reservoirs are unshadowed, so their
+// support is exactly where their target is positive, and nothing about visibility at a
+// neighbour enters the weights. (Reusing shadow-tested reservoirs would need it.)
+Reservoir pairwiseReuse(Surface s, Reservoir own, float ownChooser, uint neighbours[kMaxTaps], float choosers[kMaxTaps],
+                        uint k) {
+    if (k == 0u) return own;
+    float ownM = own.weights.y;
+    float total = ownM;
+    for (uint i = 0u; i < k; ++i) total += gCandidates[neighbours[i]].weights.y;
+    if (!(total > 0.0)) return own;
+    float ownShare = ownM / float(k);  // the canonical's confidence in each pair
+    bool ownSample = reservoirHasLight(own) && own.weights.x > 0.0;
+    float ownTarget = ownSample ? own.weights.z : 0.0;  // evaluated here by the earlier passes
+
+    Combiner c = combinerStart();
+    float ownWeight = 0.0;
+    for (uint i = 0u; i < k; ++i) {
+        Reservoir r = gCandidates[neighbours[i]];
+        float m = r.weights.y;
+        float pairShare = (m + ownShare) / total;
+        float targetThere = reservoirHasLight(r) ? r.weights.z : 0.0;  // its sample at its own pixel
+        float targetHere = targetAt(s, r);
+        combinerAddWeighted(c, r, targetHere, pairShare * balanceShare(m, targetThere, ownShare, targetHere), choosers[i]);
+        if (ownSample) {
+            float ownTargetThere = targetAt(surfaceFrom(gGBuffer[neighbours[i]]), own);
+            ownWeight += pairShare * balanceShare(ownShare, ownTarget, m, ownTargetThere);
+        }
+    }
+    combinerAddWeighted(c, own, ownTarget, ownWeight, ownChooser);
+    return combinerFinish(c, 1.0);
+}
 
 void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;
@@ -45,11 +90,14 @@ void main() {
     float radius = gRestir.knobs.spatialRadius;
     float tolerance = gRestir.knobs.depthTolerance;
 
+    bool pairwise = gRestir.knobs.unbiased != 0u;
     Combiner c = combinerStart();
     // weights.z already holds the own sample's target here (the candidate and temporal passes
     // evaluated it at this surface this frame): no need to evaluate it again.
-    combinerAdd(c, own, reservoirHasLight(own) ? own.weights.z : 0.0, rngNext(rng));
+    float ownChooser = rngNext(rng);
+    if (!pairwise) combinerAdd(c, own, reservoirHasLight(own) ? own.weights.z : 0.0, ownChooser);
     uint neighbours[kMaxTaps];
+    float choosers[kMaxTaps];
     uint accepted = 0u;
     for (uint i = 0u; i < taps; ++i) {
         float angle = 2.0 * PI * rngNext(rng);
@@ -60,9 +108,16 @@ void main() {
         uint qi = uint(q.x) + uint(q.y) * gFrame.imageSize.x;
         GBufferTexel ng = gGBuffer[qi];
         if (uint(ng.voxel.w) != s.face || abs(gbufferDistance(ng) - depth) > tolerance * depth) continue;
-        Reservoir r = gCandidates[qi];
-        combinerAdd(c, r, targetAt(s, r), u);
+        if (!pairwise) {
+            Reservoir r = gCandidates[qi];
+            combinerAdd(c, r, targetAt(s, r), u);
+        }
+        choosers[accepted] = u;
         neighbours[accepted++] = qi;
+    }
+    if (pairwise) {
+        gOut[index] = pairwiseReuse(s, own, ownChooser, neighbours, choosers, accepted);
+        return;
     }
 
     // This pixel could have produced any sample with a positive target here (every chosen one);

@@ -4,6 +4,9 @@
 // within the tolerance, same face normal); last frame's M is capped at `cap` x this frame's.
 // The result is this pixel's own reservoir for spatial reuse; the candidates stay untouched, since
 // neighbours reuse them as they were drawn (see spatial_reuse.comp).
+// The default mode normalises by the M of both inputs, which is right while last frame's surface is
+// this one's (a still camera); the unbiased mode weighs them by the balance heuristic (see
+// balancedReuse), which stays right when the camera moves.
 #extension GL_GOOGLE_include_directive : require
 
 #include "common/reservoir.glsl"
@@ -32,6 +35,35 @@ bool previousReservoir(uvec2 pixel, GBufferTexel g, Surface s, out Reservoir pre
     return !reservoirStale(previous);  // a light that is gone: drop it
 }
 
+// The unbiased mode: generalized RIS over this pixel's candidates c and last frame's reservoir p,
+// weighted by the balance heuristic with their confidences (pairwise MIS with one neighbour; Lin et
+// al. 2022): m_c(y) = M_c p_c(y) / (M_c p_c(y) + M_p p_p(y) V_p(y)) and m_p = 1 - m_c. Last frame's
+// reservoir only holds samples visible from its surface (shade.comp zeroes the others), hence V_p:
+// the candidates' own sample needs one shadow ray from last frame's surface, unless that surface is
+// this one (the same point: a still camera), where it sees what this pixel sees. Last frame's
+// sample needs none: it was visible there, and if it is occluded here it is shaded as zero.
+// (V_p is tested in this frame's world: an occluder that moved since then is the one residual.)
+Reservoir balancedReuse(Surface s, GBufferTexel g, Reservoir current, Reservoir previous, GBufferTexel pg, float uCurrent,
+                        float uPrevious) {
+    Surface prevSurface = surfaceFrom(pg);
+    float mCurrent = current.weights.y, mPrevious = previous.weights.y;
+    float currentTarget = reservoirHasLight(current) ? current.weights.z : 0.0;
+    float currentWeight = 0.0;
+    if (currentTarget > 0.0 && current.weights.x > 0.0) {
+        float targetThere = targetAt(prevSurface, current);
+        bool samePoint = all(equal(pg.position.xyz, g.position.xyz)) && pg.voxel.w == g.voxel.w;
+        if (targetThere > 0.0 && !samePoint && !visibleAt(prevSurface, current)) targetThere = 0.0;
+        currentWeight = balanceShare(mCurrent, currentTarget, mPrevious, targetThere);
+    }
+    // Last frame's sample at its own surface (stored there) and here.
+    float previousThere = reservoirHasLight(previous) ? previous.weights.z : 0.0;
+    float previousHere = targetAt(s, previous);
+    Combiner c = combinerStart();
+    combinerAddWeighted(c, current, currentTarget, currentWeight, uCurrent);
+    combinerAddWeighted(c, previous, previousHere, balanceShare(mPrevious, previousThere, mCurrent, previousHere), uPrevious);
+    return combinerFinish(c, 1.0);
+}
+
 void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;
     if (any(greaterThanEqual(pixel, gFrame.imageSize.xy))) return;
@@ -50,20 +82,15 @@ void main() {
     previous.weights.y = min(previous.weights.y, gRestir.knobs.temporalCap * float(gRestir.knobs.candidates));
 
     uint rng = rngInit(pixel, gRestir.frameIndex, 2u, gRestir.seed);
+    if (gRestir.knobs.unbiased != 0u) {
+        float uCurrent = rngNext(rng);
+        gOwn[index] = balancedReuse(s, g, current, previous, pg, uCurrent, rngNext(rng));
+        return;
+    }
     Combiner c = combinerStart();
     float targetCurrent = reservoirHasLight(current) ? current.weights.z : 0.0;
     combinerAdd(c, current, targetCurrent, rngNext(rng));
     combinerAdd(c, previous, targetAt(s, previous), rngNext(rng));
 
-    float normaliser = c.M;
-    if (gRestir.knobs.unbiased != 0u) {
-        // Count only the inputs whose pixel could have produced the chosen sample: its target
-        // there is positive and, for the other pixel, the sample is visible from it.
-        Surface prevSurface = surfaceFrom(pg);
-        // This pixel always could (the chosen sample has a positive target here).
-        normaliser = current.weights.y;
-        if (reservoirHasLight(c.chosen) && targetAt(prevSurface, c.chosen) > 0.0 && visibleAt(prevSurface, c.chosen))
-            normaliser += previous.weights.y;
-    }
-    gOwn[index] = combinerFinish(c, normaliser);
+    gOwn[index] = combinerFinish(c, c.M);
 }

@@ -23,8 +23,11 @@ struct FrameParams {
     // This frame's presampled light tiles (shared/light_tiles.h): xy the buffer's device address
     // (low, high word), 0 when the frame drew none; zw unused.
     uvec4 lightTiles;
+    // This frame's ReGIR grid (shared/regir.h): xy its buffer's device address, 0 when the frame
+    // filled none; zw unused.
+    uvec4 regirGrid;
 };
-SHARED_ASSERT_SIZE(FrameParams, 224);
+SHARED_ASSERT_SIZE(FrameParams, 240);
 
 SHARED_END
 

@@ -115,3 +115,23 @@ TEST(LightingKnobs, PathIndirectKnobsFromSceneAndCommandLine) {
     ASSERT_FALSE(bad.ok());
     EXPECT_EQ(bad.error().message.rfind("--path-spp: ", 0), 0u) << bad.error().message;
 }
+
+// --sampling regir is ReGIR's switch beside drawing by power (its cells draw by power); uniform and
+// power turn it off again, and describe() names it.
+TEST(LightingKnobs, SamplingChoosesUniformPowerOrRegir) {
+    LightingSettings s;
+    const Knob& sampling = *knobForOption("sampling");
+    ASSERT_TRUE(setKnob(sampling, s, "regir").ok());
+    EXPECT_TRUE(s.byPower);
+    EXPECT_EQ(s.regir.enabled, 1u);
+    EXPECT_EQ(knobText(sampling, s), "regir");
+    EXPECT_NE(s.describe().find("regir"), std::string::npos);
+    ASSERT_TRUE(setKnob(sampling, s, "uniform").ok());
+    EXPECT_FALSE(s.byPower);
+    EXPECT_EQ(s.regir.enabled, 0u);
+    ASSERT_TRUE(setKnob(sampling, s, "power").ok());
+    EXPECT_TRUE(s.byPower);
+    EXPECT_EQ(s.regir.enabled, 0u);
+    EXPECT_FALSE(setKnob(sampling, s, "tree").ok());
+    EXPECT_FALSE(setKnob(*knobForOption("regir-cell"), s, "0").ok());
+}

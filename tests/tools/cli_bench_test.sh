@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # vox bench recommend picks the cheapest swept setting under the target error, and says so when
 # none reaches it; the indirect-light series (errors against the multi-bounce reference) are
-# chosen from only with --indirect, and tools/plot_sweep.py charts them apart.
+# chosen from only with --indirect, and tools/plot_sweep.py charts them apart; with --sampling it
+# picks ReSTIR's candidate sampling per scene from vox bench restir's table.
 set -u
 vox="$1"
 tmp=$(mktemp -d)
@@ -34,6 +35,30 @@ out=$("$vox" bench recommend cornell --indirect --target-mae 0.025 --sweep "$tmp
 if [ $rc -ne 0 ] || ! grep -q "'indirect cache K=128' (MAE 2.000e-02, 60.00 ms" <<<"$out"; then echo "FAIL: $out"; fail=1; else echo "ok: $out"; fi
 err=$("$vox" bench recommend letters --indirect --target-mae 0.1 --sweep "$tmp/sweep.csv" 2>&1 >/dev/null); rc=$?
 if [ $rc -eq 0 ] || ! grep -q "no indirect-light rows for scene 'letters'" <<<"$err"; then echo "FAIL: $err"; fail=1; else echo "ok: $err"; fi
+# --sampling: ReSTIR's candidate sampling per scene from vox bench restir's medians over seeds,
+# among the rows that differ only by sampling (not the unbiased or point-light rows), scenes by
+# emitter count; overlapping spreads are said.
+cat > "$tmp/restir.csv" <<'CSV'
+scene,emitters,row,method,sampling,base,equal_time,ms,mse,mse_min,mse_max,mae,mae_min,mae_max,mean_ratio
+mountain,9408,"restir sampling=uniform",restir,uniform,"--method restir",0,45,0.05,0.04,0.06,0.02,0.019,0.021,0.9
+mountain,9408,"restir sampling=power",restir,power,"--method restir",0,30,0.10,0.05,0.2,0.03,0.02,0.04,0.8
+mountain,9408,"restir-unbiased sampling=uniform",restir-unbiased,uniform,"--method restir --unbiased on",0,40,0.001,0.001,0.001,0.001,0.001,0.001,1
+mountain,9408,"ris sampling=uniform",ris,uniform,"",22,30,0.001,0.001,0.001,0.001,0.001,0.001,1
+cornell,256,"restir sampling=uniform",restir,uniform,"--method restir",0,18,4e-3,3e-3,5e-3,1e-2,1e-2,1e-2,1
+cornell,256,"restir sampling=power",restir,power,"--method restir",0,18,1e-3,0.9e-3,1.1e-3,5e-3,5e-3,5e-3,1
+cornell,256,"restir-point",restir,power,"--method restir --mode point",0,18,1e-5,1e-5,1e-5,1e-5,1e-5,1e-5,1
+letters,1256,"restir",restir,power,"--method restir",0,18,1e-5,1e-5,1e-5,1e-5,1e-5,1e-5,1
+CSV
+out=$("$vox" bench recommend --sampling --restir "$tmp/restir.csv"); rc=$?
+want_cornell="cornell (256 emitters): --sampling power (MSE 1.000e-03, 4.00x lower than uniform; MAE 5.000e-03 vs 1.000e-02; 1.00x its time)"
+want_mountain="mountain (9408 emitters): --sampling uniform (MSE 5.000e-02, 2.00x lower than power; MAE 2.000e-02 vs 3.000e-02; 1.50x its time); the seeds' spreads overlap"
+if [ $rc -ne 0 ] || [ "$out" != "$want_cornell"$'\n'"$want_mountain" ]; then echo "FAIL: --sampling: $out"; fail=1; else echo "ok: $out"; fi
+out=$("$vox" bench recommend mountain --sampling --restir "$tmp/restir.csv"); rc=$?
+if [ $rc -ne 0 ] || [ "$out" != "$want_mountain" ]; then echo "FAIL: --sampling mountain: $out"; fail=1; else echo "ok: $out"; fi
+err=$("$vox" bench recommend letters --sampling --restir "$tmp/restir.csv" 2>&1 >/dev/null); rc=$?
+if [ $rc -eq 0 ] || ! grep -q "no scene 'letters' with ReSTIR rows for two sampling values" <<<"$err"; then echo "FAIL: $err"; fail=1; else echo "ok: $err"; fi
+err=$("$vox" bench recommend 2>&1 >/dev/null); rc=$?
+if [ $rc -eq 0 ] || ! grep -q "a WORLD is needed" <<<"$err"; then echo "FAIL: $err"; fail=1; else echo "ok: $err"; fi
 # The chart: direct points on sweep_<scene>.png, the indirect series on sweep_indirect_<scene>.png.
 if [ -x /usr/bin/python3 ] && /usr/bin/python3 -c 'import matplotlib' 2>/dev/null; then
     out=$(/usr/bin/python3 "$(dirname "$0")/../../tools/plot_sweep.py" "$tmp/sweep.csv" "$tmp" 2>&1)

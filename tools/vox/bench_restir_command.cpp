@@ -1,16 +1,29 @@
 // vox bench restir: ReSTIR's error at equal time against uniform light sampling and against RIS
-// without reuse, per scene, in one run. Equal time: the baselines get as many shadow rays (or
-// candidates) as fit in ReSTIR's measured frame time, from a linear fit of their own timings.
+// without reuse, per scene, over several seeds. One run's MSE is decided by a few outlier pixels,
+// so every row is rendered with N seeds and reported as the median and spread (min–max; the JSON
+// also has the quartiles) of its MSE, MAE, mean ratio and time, and compared with ReSTIR by the
+// median of per-seed ratios. A run's time is, on a CPU device (lavapipe), the process's CPU time
+// per frame, else its fastest frame's GPU time: on a shared machine, wall-clock and GPU
+// timestamps also count the waits for a core. Equal time: the baselines (uniform: shadow rays;
+// RIS: candidates) get as many as fit in ReSTIR's frame time, from a linear fit of their own
+// timings, once per scene, each timing taken next to one of ReSTIR's; then each seed renders every
+// row back to back. Rows are lighting knobs, so new modes are rows without code:
+// --variant "NAME:--knob value ..." and --sampling LIST.
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
 
 #include "core/atomic_file.h"
 #include "commands.h"
-#include "number_options.h"
 #include "gpu/context.h"
-#include "metrics/image_metrics.h"
+#include "lighting/lighting_knobs.h"
+#include "metrics/seed_statistics.h"
+#include "number_options.h"
 #include "render/renderer.h"
 #include "sweep_runner.h"
 
@@ -18,27 +31,233 @@ namespace vox {
 
 namespace {
 
+using engine::lighting::KnobValue;
 using engine::lighting::LightingSettings;
 using engine::lighting::Method;
+using engine::metrics::SeedSummary;
 
 struct RestirBenchOptions {
     std::vector<std::string> worlds{"cornell", "mountain", "letters", "apartments"};
-    std::string size = "128x72";
-    std::uint32_t frames = 16;
-    std::uint32_t referenceSpp = 1024;
-    std::string output = "out/bench_restir.json";
+    std::string size = "96x64";
+    std::uint32_t frames = 12;
+    std::uint32_t referenceSpp = 512;
+    std::uint32_t seeds = 5;
+    std::string rows = "restir,restir-unbiased,ris,uniform";
+    std::string sampling;  // empty: the sampling knob's default
+    std::vector<std::string> variants;
+    std::string versus;  // empty: every ReSTIR row at defaults (one per --sampling value)
+    std::string clock = "auto";  // gpu: fastest frame's GPU timestamps; cpu: the process's CPU time; auto: cpu on a CPU device
+    bool quick = false;
+    std::string output = "out/bench_restir.json";  // and the summary CSV beside it (.csv), for vox bench recommend
+    std::string markdown;
 };
 
-int runRestirBench(const RestirBenchOptions& o) {
+// Which knob a row scales to ReSTIR's frame time.
+enum class EqualTime { None, ShadowRays, Candidates };
+
+struct Row {
+    std::string name;
+    LightingSettings lighting;
+    EqualTime scale = EqualTime::None;
+    std::string sampling;  // the sampling knob's value, for the recommendation
+};
+
+struct RowResult {
+    std::vector<double> ms, mse, mae, meanRatio;  // one per seed
+    std::uint32_t scaledTo = 0;                   // shadow rays or candidates (scaled rows)
+};
+
+std::vector<std::string> splitOn(const std::string& s, char separator) {
+    std::vector<std::string> out;
+    std::stringstream in(s);
+    std::string item;
+    while (std::getline(in, item, separator)) {
+        if (!item.empty()) out.push_back(item);
+    }
+    return out;
+}
+
+const engine::lighting::Knob& knob(std::string_view option) { return *engine::lighting::knobForOption(option); }
+
+// "--method ris --sampling power" as knob values; `where` names the source in messages.
+engine::Result<std::vector<KnobValue>> knobValuesOf(const std::string& text, const std::string& where) {
+    std::vector<std::string> words = splitOn(text, ' ');
+    std::vector<KnobValue> out;
+    for (std::size_t i = 0; i < words.size(); i += 2) {
+        const std::string& option = words[i];
+        const engine::lighting::Knob* k =
+            option.rfind("--", 0) == 0 ? engine::lighting::knobForOption(option.substr(2)) : nullptr;
+        if (!k) return engine::makeError("{}: '{}' is not a lighting option (vox render --help lists them)", where, option);
+        if (i + 1 >= words.size()) return engine::makeError("{}: {} needs a value", where, option);
+        out.push_back({k, words[i + 1], fmt::format("{} {}", where, option)});
+    }
+    return out;
+}
+
+// The scaled knob follows the method, unless the row fixes it itself.
+EqualTime scaleOf(const LightingSettings& l, const std::vector<KnobValue>& given) {
+    auto gives = [&](std::string_view option) {
+        return std::any_of(given.begin(), given.end(), [&](const KnobValue& v) { return v.knob == &knob(option); });
+    };
+    if (l.method == Method::Uniform && !gives("shadow-rays")) return EqualTime::ShadowRays;
+    if (l.method == Method::Ris && !gives("candidates")) return EqualTime::Candidates;
+    return EqualTime::None;
+}
+
+engine::Result<Row> makeRow(std::string name, const std::vector<KnobValue>& values) {
+    auto l = engine::lighting::mergeLighting(LightingSettings{}, values);
+    if (!l) return engine::makeError("{}: {}", name, l.error().message);
+    return Row{std::move(name), *l, scaleOf(*l, values), knobText(knob("sampling"), *l)};
+}
+
+// The rows: the default rows (per --sampling value for those that resample), then the variants.
+engine::Result<std::vector<Row>> rowsOf(const RestirBenchOptions& o) {
+    std::vector<std::string> samplings = splitOn(o.sampling, ',');
+    if (samplings.empty()) samplings.push_back("");
+    std::vector<Row> rows;
+    for (const std::string& name : splitOn(o.rows, ',')) {
+        if (name == "uniform") {  // uniform light sampling: no candidates, lights drawn uniformly
+            auto row = makeRow(name, {{&knob("method"), "uniform", "--rows"}, {&knob("sampling"), "uniform", "--rows"}});
+            if (!row) return row.error();
+            rows.push_back(*row);
+            continue;
+        }
+        if (name != "restir" && name != "restir-unbiased" && name != "ris")
+            return engine::makeError("--rows: '{}' is not restir, restir-unbiased, ris or uniform", name);
+        for (const std::string& sampling : samplings) {
+            std::vector<KnobValue> values{{&knob("method"), name, "--rows"}};
+            if (!sampling.empty()) values.push_back({&knob("sampling"), sampling, "--sampling"});
+            auto row = makeRow(sampling.empty() ? name : fmt::format("{} sampling={}", name, sampling), values);
+            if (!row) return row.error();
+            rows.push_back(*row);
+        }
+    }
+    for (const std::string& v : o.variants) {
+        std::size_t colon = v.find(':');
+        if (colon == std::string::npos || colon == 0)
+            return engine::makeError("--variant '{}': expected NAME:--knob value ...", v);
+        auto values = knobValuesOf(v.substr(colon + 1), fmt::format("--variant {}", v.substr(0, colon)));
+        if (!values) return values.error();
+        auto row = makeRow(v.substr(0, colon), *values);
+        if (!row) return row.error();
+        rows.push_back(*row);
+    }
+    if (rows.empty()) return engine::makeError("--rows: no rows to measure");
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        for (std::size_t j = 0; j < i; ++j) {
+            if (rows[i].name == rows[j].name) return engine::makeError("two rows named '{}'", rows[i].name);
+        }
+    }
+    return rows;
+}
+
+// The rows the others are divided by: --versus, else the ReSTIR rows at defaults.
+engine::Result<std::vector<std::size_t>> versusOf(const RestirBenchOptions& o, const std::vector<Row>& rows) {
+    std::vector<std::size_t> out;
+    auto indexOf = [&](const std::string& name) {
+        for (std::size_t i = 0; i < rows.size(); ++i) {
+            if (rows[i].name == name) return i;
+        }
+        return rows.size();
+    };
+    for (const std::string& name : splitOn(o.versus, ',')) {
+        std::size_t i = indexOf(name);
+        if (i == rows.size()) return engine::makeError("--versus: no row named '{}'", name);
+        out.push_back(i);
+    }
+    if (o.versus.empty()) {
+        for (std::size_t i = 0; i < rows.size(); ++i) {
+            if (rows[i].name == "restir" || rows[i].name.rfind("restir sampling=", 0) == 0) out.push_back(i);
+        }
+        if (out.empty()) out.push_back(0);
+    }
+    if (rows[out[0]].scale != EqualTime::None)  // the yardstick of equal time cannot be scaled to itself
+        return engine::makeError("--versus: '{}' is scaled to equal time itself; put an unscaled row first",
+                                 rows[out[0]].name);
+    return out;
+}
+
+// The method, the knob scaled to equal time (`also`, may be empty) and the knobs that differ from
+// the defaults, as options: what a row is, in the JSON and the CSV.
+std::string settingsText(const LightingSettings& l, std::string_view also = {}) {
+    const LightingSettings defaults;
+    std::string out;
+    for (const engine::lighting::KnobGroup& g : engine::lighting::knobGroups()) {
+        for (const engine::lighting::Knob& k : g.knobs) {
+            const bool always = k.name == "method" || k.name == also;
+            if (!engine::lighting::knobRelevant(k, l) && !always) continue;
+            std::string value = knobText(k, l);
+            if (value == knobText(k, defaults) && !always) continue;
+            out += fmt::format("{}{} {}", out.empty() ? "" : " ", knobOption(g, k), value);
+        }
+    }
+    return out;
+}
+
+// The method as the --method knob names it (restir-unbiased apart).
+std::string methodName(const LightingSettings& l) {
+    return l.method == Method::Restir && l.restir.unbiased ? "restir-unbiased" : engine::lighting::methodName(l.method);
+}
+
+std::string jsonSummary(const SeedSummary& s) {
+    return fmt::format("{{\"median\": {}, \"q1\": {}, \"q3\": {}, \"min\": {}, \"max\": {}, \"count\": {}}}", s.median,
+                       s.q1, s.q3, s.min, s.max, s.count);
+}
+std::string jsonArray(const std::vector<double>& v) {
+    std::string out;
+    for (double x : v) out += fmt::format("{}{}", out.empty() ? "" : ", ", x);
+    return "[" + out + "]";
+}
+std::string jsonString(const std::string& s) {
+    std::string out;
+    for (char c : s) out += (c == '"' || c == '\\') ? std::string("\\") + c : std::string(1, c);
+    return "\"" + out + "\"";
+}
+
+// "1.23e-03 (1.01e-03–2.50e-03)": median (min–max).
+std::string cell(const SeedSummary& s, const char* format) {
+    return fmt::format(fmt::runtime(std::string(format) + " ({}–{})"), s.median, fmt::format(fmt::runtime(format), s.min),
+                       fmt::format(fmt::runtime(format), s.max));
+}
+
+std::string scaledText(const Row& row, const RowResult& r) {
+    if (row.scale == EqualTime::ShadowRays) return fmt::format("{} rays", r.scaledTo);
+    if (row.scale == EqualTime::Candidates) return fmt::format("M = {}", r.scaledTo);
+    return "";
+}
+
+int runRestirBench(RestirBenchOptions o) {
+    if (o.quick) {  // a look in about a minute: small images, short history, a light reference
+        o.size = "64x40";
+        o.frames = 8;
+        o.referenceSpp = 256;
+    }
     auto size = parseSize(o.size, "--size");
     if (!size) return fail(size.error());
+    auto rows = rowsOf(o);
+    if (!rows) return fail(rows.error());
+    auto versus = versusOf(o, *rows);
+    if (!versus) return fail(versus.error());
+    std::vector<engine::world::Scene> scenes;
+    for (const std::string& name : o.worlds) {  // every world read before the first frame: a typo costs nothing
+        auto scene = loadWorld(name);
+        if (!scene) return fail(scene.error());
+        scenes.push_back(std::move(*scene));
+    }
     auto ctx = engine::gpu::Context::create({});
     if (!ctx) return fail(ctx.error());
     engine::gpu::Context& gpu = **ctx;
     std::printf("device   %s (%s)\n", gpu.info().name.c_str(), gpu.info().driver.c_str());
+    // A frame's time. On lavapipe the device is this process's threads on cores other sessions
+    // share: its CPU time is the work done, where GPU timestamps also count the waits for a core.
+    const bool cpuClock = o.clock == "cpu" || (o.clock == "auto" && gpu.info().type == "CPU");
+    auto timeOfPoint = [cpuClock](const SweepPoint& p) { return cpuClock ? p.cpuMs : p.fastestMs; };
+    std::printf("time     %s\n", cpuClock ? "CPU time of the process per frame (median): the CPU device's work and the host's"
+                                           : "GPU timestamps of the fastest measured frame");
     engine::render::FrameSettings fs;
     fs.width = (*size).x;
     fs.height = (*size).y;
+    const auto started = std::chrono::steady_clock::now();
 
     std::filesystem::path out(o.output);
     std::error_code ec;
@@ -46,85 +265,215 @@ int runRestirBench(const RestirBenchOptions& o) {
     engine::AtomicFile jsonFile;
     if (engine::Status s = jsonFile.open(out); !s) return fail(s.error());
     std::ostream& json = jsonFile.stream();
-    json << "{\"size\": [" << fs.width << ", " << fs.height << "], \"device\": \"" << gpu.info().name
-         << "\", \"reference_spp\": " << o.referenceSpp << ", \"scenes\": [\n";
+    json << fmt::format(
+        "{{\"size\": [{}, {}], \"device\": {}, \"clock\": \"{}\", \"reference_spp\": {}, \"frames\": {}, \"seeds\": {}, "
+        "\"statistics\": \"median, quartiles (type 7) and min-max over seeds; ratios: per-seed ratio row / versus row, "
+        "then their median and spread\", \"scenes\": [\n",
+        fs.width, fs.height, jsonString(gpu.info().name), cpuClock ? "cpu" : "gpu", o.referenceSpp, o.frames, o.seeds);
 
-    std::printf("\n%-12s %9s %11s | %9s %5s %11s %7s | %9s %5s %11s %7s\n", "scene", "restir ms", "restir MSE",
-                "unif. ms", "rays", "uniform MSE", "ratio", "ris ms", "M", "ris MSE", "ratio");
-    for (std::size_t w = 0; w < o.worlds.size(); ++w) {
-        auto scene = loadWorld(o.worlds[w]);
-        if (!scene) return fail(scene.error());
-        engine::world::CameraPreset camera = scene->camera();
+    std::filesystem::path csvPath = std::filesystem::path(out).replace_extension(".csv");
+    engine::AtomicFile csvFile;
+    if (engine::Status s = csvFile.open(csvPath); !s) return fail(s.error());
+    std::ostream& csv = csvFile.stream();
+    // One line per scene and row, medians over seeds: `vox bench recommend --sampling` reads it.
+    // base = the row's settings without the sampling knob: rows that differ only by sampling share it.
+    csv << "scene,emitters,row,method,sampling,base,equal_time,ms,mse,mse_min,mse_max,mae,mae_min,mae_max,mean_ratio\n";
 
-        auto cached = cachedReference(gpu, *scene, camera, fs, o.referenceSpp, 0, std::filesystem::path(o.output).parent_path() / "cache");
+    std::string table = fmt::format("| scene | emitters | row | equal time | ms (÷ {}) | MSE | MAE | mean ratio |",
+                                    (*rows)[(*versus)[0]].name);
+    std::string rule = "| --- | ---: | --- | ---: | ---: | ---: | ---: | ---: |";
+    for (std::size_t v : *versus) {
+        table += fmt::format(" MSE ÷ {0} | MAE ÷ {0} |", (*rows)[v].name);
+        rule += " ---: | ---: |";
+    }
+    table += "\n" + rule + "\n";
+
+    const std::size_t total = scenes.size() * rows->size() * o.seeds;
+    std::size_t done = 0;
+    for (std::size_t w = 0; w < scenes.size(); ++w) {
+        engine::world::Scene& scene = scenes[w];
+        engine::world::CameraPreset camera = scene.camera();
+        auto cached = cachedReference(gpu, scene, camera, fs, o.referenceSpp, 0, out.parent_path() / "cache");
         if (!cached) return fail(cached.error());
         const std::vector<glm::vec4>& reference = *cached;
-        auto measure = [&](const LightingSettings& l, std::uint32_t frames) {
-            return measureSetting(gpu, *scene, camera, fs, l, frames, reference, "");
+        std::vector<RowResult> results(rows->size());
+        engine::render::Renderer renderer(gpu);  // one per scene: pipelines built once
+        std::uint32_t emitters = 0;
+        // Equal time first: each scaled row's count is fitted to the yardstick's time (the first
+        // versus row), the two measured back to back so that other work on the machine slows both.
+        const std::size_t timed = (*versus)[0];
+        std::vector<LightingSettings> settings;
+        for (const Row& row : *rows) settings.push_back(row.lighting);
+        auto timeOf = [&](const LightingSettings& l) {
+            return timeOfPoint(measureSetting(renderer, scene, camera, fs, l, o.frames, reference, ""));
         };
-
-        LightingSettings restir;  // defaults: biased, area, power, M = 32, temporal, spatial 5 x 30 px
-        SweepPoint r = measure(restir, o.frames);
-
-        // Fit time = base + slope x n for each baseline, then pick n for ReSTIR's time.
-        auto equalTime = [&](LightingSettings l, std::uint32_t& n, std::uint32_t& (*knobOf)(LightingSettings&)) {
-            std::uint32_t& knob = knobOf(l);
-            knob = 1;
-            double t1 = measure(l, 6).totalMs;
-            knob = 8;
-            double t8 = measure(l, 6).totalMs;
-            double slope = std::max((t8 - t1) / 7.0, 1e-6);
+        for (std::size_t i = 0; i < rows->size(); ++i) {
+            const Row& row = (*rows)[i];
+            if (row.scale == EqualTime::None) continue;
+            LightingSettings& l = settings[i];
+            std::uint32_t& n = row.scale == EqualTime::ShadowRays ? l.shadowRays : l.restir.candidates;
+            const std::uint32_t maxN = row.scale == EqualTime::ShadowRays ? 4096u : 1024u;  // the knobs' ranges
+            std::fprintf(stderr, "  %s: %s: fitting its time to %s's\n", scene.name.c_str(), row.name.c_str(),
+                         (*rows)[timed].name.c_str());
+            // Fit time = base + slope x n from n = 1 and 16, pick n for the yardstick's time, then
+            // up to three correction steps until within 10 % (timings are noisy and not quite
+            // linear). Times are each measurement's fastest frame, the least disturbed one.
+            double target = timeOf(settings[timed]);
+            n = 1;
+            double t1 = timeOf(l);
+            n = 16;
+            double t16 = timeOf(l);
+            double slope = std::max((t16 - t1) / 15.0, 1e-3 * std::max(t1, 1e-3));
             double base = t1 - slope;
-            n = std::clamp<std::uint32_t>(std::uint32_t(std::lround((r.totalMs - base) / slope)), 1u, 4096u);
-            knob = n;
-            SweepPoint m = measure(l, 8);
-            // One correction step: timings are noisy and not quite linear.
-            double perUnit = std::max((m.totalMs - base) / double(n), 1e-6);
-            std::uint32_t corrected =
-                std::clamp<std::uint32_t>(std::uint32_t(std::lround((r.totalMs - base) / perUnit)), 1u, 4096u);
-            if (corrected == n) return m;
-            n = corrected;
-            knob = n;
-            return measure(l, 8);
-        };
-        LightingSettings uniform;
-        uniform.method = Method::Uniform;
-        uniform.byPower = false;
-        std::uint32_t rays = 1, candidates = 1;
-        SweepPoint u = equalTime(uniform, rays, [](LightingSettings& x) -> std::uint32_t& { return x.shadowRays; });
-        LightingSettings ris;
-        ris.method = Method::Ris;
-        ris.restir.temporal = ris.restir.spatial = ris.restir.candidateVisibility = false;
-        SweepPoint s = equalTime(ris, candidates, [](LightingSettings& x) -> std::uint32_t& { return x.restir.candidates; });
+            auto countFor = [&](double perUnit) {  // at least 1: the target may be below the fitted base
+                return std::uint32_t(std::clamp(std::round((target - base) / perUnit), 1.0, double(maxN)));
+            };
+            std::fprintf(stderr, "    %s: 1: %.2f ms, 16: %.2f ms; %s: %.2f ms\n", row.name.c_str(), t1, t16,
+                         (*rows)[timed].name.c_str(), target);
+            n = countFor(slope);
+            for (int step = 0; step < 3; ++step) {
+                double tn = timeOf(l);
+                std::fprintf(stderr, "    %s: %u: %.2f ms against %.2f ms\n", row.name.c_str(), n, tn, target);
+                if (std::abs(tn - target) < 0.1 * target) break;
+                std::uint32_t next = countFor(std::max((tn - base) / double(n), 1e-6));
+                if (next == n) break;
+                n = next;
+                target = timeOf(settings[timed]);
+            }
+            results[i].scaledTo = n;
+        }
+        // Then the seeds, every row of a seed back to back: the per-seed time ratios compare
+        // measurements close in time.
+        for (std::uint32_t seed = 0; seed < o.seeds; ++seed) {
+            for (std::size_t i = 0; i < rows->size(); ++i) {
+                LightingSettings l = settings[i];
+                l.seed += seed * 104729u;  // far apart: memoryless rows step the seed per frame
+                std::fprintf(stderr, "  [%zu/%zu] %s: %s, seed %u/%u\n", ++done, total, scene.name.c_str(),
+                             (*rows)[i].name.c_str(), seed + 1, o.seeds);
+                SweepPoint p = measureSetting(renderer, scene, camera, fs, l, o.frames, reference, (*rows)[i].name);
+                emitters = p.emitters;
+                results[i].ms.push_back(timeOfPoint(p));
+                results[i].mse.push_back(p.mse);
+                results[i].mae.push_back(p.mae);
+                results[i].meanRatio.push_back(p.meanRatio);
+            }
+        }
+        const double targetMs = engine::metrics::summarize(results[timed].ms).median;
 
-        std::printf("%-12s %9.2f %11.3e | %9.2f %5u %11.3e %6.1fx | %9.2f %5u %11.3e %6.1fx\n", scene->name.c_str(), r.totalMs,
-                    r.mse, u.totalMs, rays, u.mse, u.mse / r.mse, s.totalMs, candidates, s.mse, s.mse / r.mse);
-        json << "  {\"scene\": \"" << scene->name << "\", \"emitters\": " << r.emitters
-             << ", \"restir\": {\"ms\": " << r.totalMs << ", \"mse\": " << r.mse << ", \"mae\": " << r.mae << "}"
-             << ", \"uniform\": {\"rays\": " << rays << ", \"ms\": " << u.totalMs << ", \"mse\": " << u.mse
-             << ", \"mae\": " << u.mae << "}, \"ris\": {\"candidates\": " << candidates << ", \"ms\": " << s.totalMs
-             << ", \"mse\": " << s.mse << ", \"mae\": " << s.mae << "}, \"mse_ratio_uniform\": " << u.mse / r.mse
-             << ", \"mse_ratio_ris\": " << s.mse / r.mse << "}" << (w + 1 < o.worlds.size() ? "," : "") << "\n";
+        // Per scene: JSON and table rows.
+        json << fmt::format("  {{\"scene\": {}, \"emitters\": {}, \"equal_time_ms\": {}, \"rows\": [\n",
+                            jsonString(scene.name), emitters, targetMs);
+        std::printf("\n%s (%u emitters; median over %u seeds, min–max in brackets)\n", scene.name.c_str(), emitters, o.seeds);
+        for (std::size_t i = 0; i < rows->size(); ++i) {
+            const Row& row = (*rows)[i];
+            const RowResult& r = results[i];
+            SeedSummary ms = engine::metrics::summarize(r.ms), mse = engine::metrics::summarize(r.mse),
+                        mae = engine::metrics::summarize(r.mae), mean = engine::metrics::summarize(r.meanRatio);
+            LightingSettings shown = row.lighting;
+            if (row.scale == EqualTime::ShadowRays) shown.shadowRays = r.scaledTo;
+            if (row.scale == EqualTime::Candidates) shown.restir.candidates = r.scaledTo;
+            json << fmt::format(
+                "    {{\"name\": {}, \"settings\": {}, \"sampling\": {}, \"equal_time\": {}, \"ms\": {}, \"mse\": {}, "
+                "\"mae\": {}, \"mean_ratio\": {}, \"per_seed\": {{\"ms\": {}, \"mse\": {}, \"mae\": {}, \"mean_ratio\": {}}}, "
+                "\"versus\": {{",
+                jsonString(row.name),
+                jsonString(settingsText(shown, row.scale == EqualTime::ShadowRays   ? "shadow_rays"
+                                               : row.scale == EqualTime::Candidates ? "candidates"
+                                                                                     : "")), jsonString(row.sampling),
+                row.scale == EqualTime::None ? "null" : fmt::format("{{\"{}\": {}}}", row.scale == EqualTime::ShadowRays ? "shadow_rays" : "candidates", r.scaledTo),
+                jsonSummary(ms), jsonSummary(mse), jsonSummary(mae), jsonSummary(mean), jsonArray(r.ms), jsonArray(r.mse),
+                jsonArray(r.mae), jsonArray(r.meanRatio));
+            LightingSettings base = shown;
+            (void)setKnob(knob("sampling"), base, knobText(knob("sampling"), LightingSettings{}));  // the default is valid
+            if (row.scale == EqualTime::None) {  // the scaled knob is no part of what the row is
+                csv << fmt::format("{},{},\"{}\",{},{},\"{}\",{},{},{},{},{},{},{},{},{}\n", scene.name, emitters, row.name,
+                                   methodName(shown), row.sampling, settingsText(base), r.scaledTo, ms.median, mse.median,
+                                   mse.min, mse.max, mae.median, mae.min, mae.max, mean.median);
+            } else {
+                csv << fmt::format("{},{},\"{}\",{},{},\"\",{},{},{},{},{},{},{},{},{}\n", scene.name, emitters, row.name,
+                                   methodName(shown), row.sampling, r.scaledTo, ms.median, mse.median, mse.min, mse.max,
+                                   mae.median, mae.min, mae.max, mean.median);
+            }
+            std::printf("  %-28s %-9s %7.2f ms  MSE %s  MAE %s  mean %s", row.name.c_str(), scaledText(row, r).c_str(), ms.median,
+                        cell(mse, "{:.2e}").c_str(), cell(mae, "{:.2e}").c_str(), cell(mean, "{:.2f}").c_str());
+            const double timeRatio = engine::metrics::summarize(engine::metrics::perSeedRatios(r.ms, results[timed].ms)).median;
+            table += fmt::format("| {} | {} | {} | {} | {:.2f} ({:.2f}×) | {} | {} | {} |", scene.name, emitters, row.name,
+                                 scaledText(row, r), ms.median, timeRatio, cell(mse, "{:.2e}"), cell(mae, "{:.2e}"),
+                                 cell(mean, "{:.2f}"));
+            for (std::size_t k = 0; k < versus->size(); ++k) {
+                const RowResult& d = results[(*versus)[k]];
+                SeedSummary mseRatio = engine::metrics::summarize(engine::metrics::perSeedRatios(r.mse, d.mse));
+                SeedSummary maeRatio = engine::metrics::summarize(engine::metrics::perSeedRatios(r.mae, d.mae));
+                SeedSummary msRatio = engine::metrics::summarize(engine::metrics::perSeedRatios(r.ms, d.ms));
+                json << fmt::format("{}{}: {{\"mse_ratio\": {}, \"mae_ratio\": {}, \"ms_ratio\": {}}}", k ? ", " : "",
+                                    jsonString((*rows)[(*versus)[k]].name), jsonSummary(mseRatio), jsonSummary(maeRatio),
+                                    jsonSummary(msRatio));
+                if ((*versus)[k] == i) {
+                    table += " — | — |";
+                    continue;
+                }
+                table += fmt::format(" **{:.2f}×** ({:.2f}–{:.2f}) | {:.2f}× ({:.2f}–{:.2f}) |", mseRatio.median, mseRatio.min,
+                                     mseRatio.max, maeRatio.median, maeRatio.min, maeRatio.max);
+                std::printf("  ÷%s MSE %.2fx MAE %.2fx", (*rows)[(*versus)[k]].name.c_str(), mseRatio.median, maeRatio.median);
+            }
+            std::printf("\n");
+            table += "\n";
+            json << "}}" << (i + 1 < rows->size() ? "," : "") << "\n";
+        }
+        json << "  ]}" << (w + 1 < scenes.size() ? "," : "") << "\n";
     }
-    json << "]}\n";
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    json << fmt::format("], \"wall_seconds\": {}}}\n", seconds);
     if (engine::Status s = jsonFile.commit(); !s) return fail(s.error());
-    std::printf("\nratio = baseline MSE / ReSTIR MSE at equal GPU time per frame (higher is better for ReSTIR)\n");
-    std::printf("wrote    %s\n", out.string().c_str());
+    if (engine::Status s = csvFile.commit(); !s) return fail(s.error());
+    std::printf("\nratio = row / versus row per seed, median (min–max): above 1 favours the versus row (ReSTIR)\n");
+    std::printf("wall time %.0f s (references included; cached ones are read back)\n", seconds);
+    std::printf("wrote    %s\nwrote    %s\n", out.string().c_str(), csvPath.string().c_str());
+    if (!o.markdown.empty()) {
+        std::filesystem::path md(o.markdown);
+        if (md.has_parent_path()) std::filesystem::create_directories(md.parent_path(), ec);
+        engine::AtomicFile mdFile;
+        if (engine::Status s = mdFile.open(md); !s) return fail(s.error());
+        mdFile.stream() << table;
+        if (engine::Status s = mdFile.commit(); !s) return fail(s.error());
+        std::printf("wrote    %s\n", md.string().c_str());
+    }
     return 0;
 }
 
 }  // namespace
 
 void addBenchRestirCommand(CLI::App& bench, int& exitCode) {
-    auto* cmd = bench.add_subcommand("restir", "ReSTIR's MSE at equal time vs uniform light sampling and RIS");
+    auto* cmd = bench.add_subcommand("restir", "ReSTIR's MSE and MAE at equal time vs uniform light sampling and RIS, over seeds");
     auto o = std::make_shared<RestirBenchOptions>();
     cmd->add_option("worlds", o->worlds, "Worlds (default: the four thesis scenes)");
     cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
     cmd->add_option("--frames", o->frames, "Frames of ReSTIR history (the last half are measured)")->capture_default_str()
         ->check(numberIn(engine::wholeRange(4, 1000, "frames")));
-    cmd->add_option("--ref-spp", o->referenceSpp, "Reference samples per pixel")->capture_default_str()
+    cmd->add_option("--ref-spp", o->referenceSpp, "Reference samples per pixel (cached on disk beside the JSON)")
+        ->capture_default_str()
         ->check(numberIn(kSamplesRange));
+    cmd->add_option("--seeds", o->seeds, "Seeds per row: medians and spreads are over these")->capture_default_str()
+        ->check(numberIn(engine::wholeRange(1, 1000, "seeds")));
+    cmd->add_option("--rows", o->rows, "Default rows: restir, restir-unbiased, ris (equal time), uniform (equal time)")
+        ->capture_default_str();
+    cmd->add_option("--sampling", o->sampling,
+                    "Values of the sampling knob (comma-separated): one restir, restir-unbiased and ris row each")
+        ->capture_default_str();
+    cmd->add_option("--variant", o->variants,
+                    "Another row: \"NAME:--knob value ...\" (any lighting option); a ris or uniform row that does not "
+                    "fix --candidates / --shadow-rays gets ReSTIR's time");
+    cmd->add_option("--versus", o->versus,
+                    "Rows the others are divided by, comma-separated (default: the restir rows); the first one's time "
+                    "is the equal time");
+    cmd->add_option("--clock", o->clock,
+                    "Time of a frame for equal time: gpu (fastest frame's timestamps), cpu (the process's CPU time), "
+                    "auto (cpu on a CPU device such as lavapipe)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"auto", "gpu", "cpu"}));
+    cmd->add_flag("--quick", o->quick, "A first look: 64x40, 8 frames, 256 spp reference (over --size, --frames, --ref-spp)");
     cmd->add_option("-o,--output", o->output, "JSON results file")->capture_default_str();
+    cmd->add_option("--markdown", o->markdown, "Also write the table as markdown here");
     cmd->callback([o, &exitCode] { exitCode = runRestirBench(*o); });
 }
 

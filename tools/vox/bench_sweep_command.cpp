@@ -1,7 +1,8 @@
 // vox bench sweep: lighting methods x settings on each scene, each point's time and error from
 // the same run, written as CSV/JSON and charted (error against milliseconds, Pareto front joined,
 // tools/plot_sweep.py). vox bench recommend: the cheapest setting a sweep found that meets a
-// target error on a scene — model no more than the scene needs.
+// target error on a scene — model no more than the scene needs; with --sampling, ReSTIR's
+// candidate sampling per scene from `vox bench restir`'s seeds.
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -220,9 +221,83 @@ struct RecommendOptions {
     double targetMae = 0.0;
     std::string sweep = "out/sweep/sweep.csv";
     bool indirect = false;  // choose among the indirect-light series (else the direct-light points)
+    bool sampling = false;  // choose ReSTIR's candidate sampling from `vox bench restir`'s table
+    std::string restir = "out/bench_restir.csv";
 };
 
+// One CSV line into fields; a quoted field may hold commas ("--spatial 5,30").
+std::vector<std::string> csvFields(const std::string& line) {
+    std::vector<std::string> out(1);
+    bool quoted = false;
+    for (char c : line) {
+        if (c == '"') quoted = !quoted;
+        else if (c == ',' && !quoted) out.emplace_back();
+        else out.back() += c;
+    }
+    return out;
+}
+
+// ReSTIR's candidate sampling per scene, from measurement: among the ReSTIR rows of
+// `vox bench restir --sampling A,B,...` that differ only by the sampling knob (at its other
+// defaults), the one with the lowest median MSE over the seeds. When that row's worst seed is not
+// better than the runner-up's best one the spreads overlap, and it says so: the seeds do not
+// separate them. Scenes are listed by emitter count, the quantity that decides it.
+int runRecommendSampling(const RecommendOptions& o) {
+    std::string only;
+    if (!o.world.empty()) {
+        auto scene = loadWorld(o.world);
+        if (!scene) return fail(scene.error());
+        only = scene->name;
+    }
+    std::ifstream in(o.restir);
+    if (!in) return fail(engine::makeError("{}: no results; run `vox bench restir --sampling uniform,power` first", o.restir));
+    std::string line;
+    std::getline(in, line);
+    std::vector<std::string> header = csvFields(line);
+    auto column = [&](const char* name) { return std::size_t(std::find(header.begin(), header.end(), name) - header.begin()); };
+    const std::size_t cScene = column("scene"), cEmitters = column("emitters"), cSampling = column("sampling"),
+                      cBase = column("base"), cMs = column("ms"), cMse = column("mse"), cMin = column("mse_min"), cMax = column("mse_max"),
+                      cMae = column("mae");
+    if (cMae >= header.size()) return fail(engine::makeError("{}: not a `vox bench restir` table", o.restir));
+    struct Choice {
+        std::string sampling;
+        double ms, mse, mseMin, mseMax, mae;
+    };
+    std::map<std::string, std::pair<std::uint32_t, std::vector<Choice>>> scenes;  // by name: emitters, choices
+    while (std::getline(in, line)) {
+        std::vector<std::string> f = csvFields(line);
+        if (f.size() < header.size() || f[cBase] != "--method restir" || (!only.empty() && f[cScene] != only)) continue;
+        auto& [emitters, choices] = scenes[f[cScene]];
+        emitters = std::uint32_t(std::atol(f[cEmitters].c_str()));
+        choices.push_back({f[cSampling], std::atof(f[cMs].c_str()), std::atof(f[cMse].c_str()), std::atof(f[cMin].c_str()), std::atof(f[cMax].c_str()),
+                           std::atof(f[cMae].c_str())});
+    }
+    std::vector<std::pair<std::uint32_t, std::string>> order;
+    for (const auto& [name, entry] : scenes) {
+        if (entry.second.size() >= 2) order.push_back({entry.first, name});
+    }
+    if (order.empty())
+        return fail(engine::makeError("{}: no scene{} with ReSTIR rows for two sampling values; run `vox bench restir{} "
+                                      "--sampling uniform,power`",
+                                      o.restir, only.empty() ? "" : " '" + only + "'", only.empty() ? "" : " " + o.world));
+    std::sort(order.begin(), order.end());
+    for (const auto& [emitters, name] : order) {
+        std::vector<Choice> c = scenes[name].second;
+        std::sort(c.begin(), c.end(), [](const Choice& a, const Choice& b) { return a.mse < b.mse; });
+        const bool separated = c[0].mseMax < c[1].mseMin;
+        // The rows are not scaled to equal time: the time ratio says what the lower error costs.
+        std::printf("%s (%u emitters): --sampling %s (MSE %.3e, %.2fx lower than %s; MAE %.3e vs %.3e; %.2fx its time)%s\n",
+                    name.c_str(), emitters, c[0].sampling.c_str(), c[0].mse, c[1].mse / std::max(c[0].mse, 1e-30),
+                    c[1].sampling.c_str(), c[0].mae, c[1].mae, c[0].ms / std::max(c[1].ms, 1e-9),
+                    separated ? "" : "; the seeds' spreads overlap");
+    }
+    return 0;
+}
+
 int runRecommend(const RecommendOptions& o) {
+    if (o.sampling) return runRecommendSampling(o);
+    if (o.world.empty()) return fail(engine::makeError("bench recommend: a WORLD is needed (or --sampling)"));
+    if (o.targetMae <= 0.0) return fail(engine::makeError("bench recommend: --target-mae is needed (or --sampling)"));
     auto scene = loadWorld(o.world);
     if (!scene) return fail(scene.error());
     std::ifstream in(o.sweep);
@@ -295,12 +370,15 @@ void addBenchSweepCommand(CLI::App& bench, int& exitCode) {
 
     auto* rec = bench.add_subcommand("recommend", "The cheapest swept setting that meets a target MAE on a scene");
     auto r = std::make_shared<RecommendOptions>();
-    rec->add_option("world", r->world, "World name or scene file")->required();
-    rec->add_option("--target-mae", r->targetMae, "Target MAE against the reference")->required()
+    rec->add_option("world", r->world, "World name or scene file (with --sampling: all scenes when left out)");
+    rec->add_option("--target-mae", r->targetMae, "Target MAE against the reference (needed without --sampling)")
         ->check(numberIn(engine::aboveRange(0.0, 1e6)));
     rec->add_option("--sweep", r->sweep, "Sweep results (CSV from vox bench sweep)")->capture_default_str();
     rec->add_flag("--indirect", r->indirect,
                   "Choose among the indirect-light series (error against the multi-bounce reference)");
+    rec->add_flag("--sampling", r->sampling,
+                  "Choose ReSTIR's candidate sampling per scene from `vox bench restir --sampling A,B` (lowest median MSE)");
+    rec->add_option("--restir", r->restir, "vox bench restir's CSV (for --sampling)")->capture_default_str();
     rec->callback([r, &exitCode] { exitCode = runRecommend(*r); });
 }
 

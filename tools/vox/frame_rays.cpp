@@ -15,9 +15,10 @@ std::uint64_t rayBound(const engine::lighting::LightingSettings& l, const engine
         case Method::Preview: perSurface = sun; break;  // counted on the GPU instead; for completeness
         case Method::Restir:
             // initial candidates (the chosen one's visibility), the unbiased mode's visibility
-            // test of the temporal input and of each spatial tap, shading: sun + chosen light.
+            // test from last frame's surface (only where it moved; spatial reuse traces none),
+            // shading: sun + chosen light.
             perSurface = (l.restir.candidateVisibility ? 1 : 0) + (l.restir.unbiased && l.restir.temporal ? 1 : 0) +
-                         (l.restir.unbiased && l.restir.spatial ? l.restir.spatialTaps : 0) + sun + 1;
+                         sun + 1;
             break;
         case Method::Ris: perSurface = sun + 1; break;
         case Method::Uniform: perSurface = sun + l.shadowRays; break;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <ctime>
 #include <fstream>
 #include <sstream>
 
@@ -39,6 +40,13 @@ double nonEmitterMeanRatio(const engine::render::FrameImages& img, const std::ve
     return b > 0.0 ? a / b : 0.0;
 }
 
+// CPU time of the whole process, all threads (lavapipe's included), in milliseconds.
+double processCpuMs() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
+}
+
 std::uint32_t hashBytes(const std::string& s, std::uint32_t h) {
     for (unsigned char c : s) h = engine::hashCombine(h, c);
     return h;
@@ -51,8 +59,16 @@ SweepPoint measureSetting(engine::gpu::Context& gpu, engine::world::Scene& scene
                           LightingSettings lighting, std::uint32_t frames, const std::vector<glm::vec4>& reference,
                           std::string label) {
     engine::render::Renderer renderer(gpu);
+    return measureSetting(renderer, scene, camera, frame, lighting, frames, reference, std::move(label));
+}
+
+SweepPoint measureSetting(engine::render::Renderer& renderer, engine::world::Scene& scene,
+                          const engine::world::CameraPreset& camera, const engine::render::FrameSettings& frame,
+                          LightingSettings lighting, std::uint32_t frames, const std::vector<glm::vec4>& reference,
+                          std::string label) {
+    renderer.resetHistory();
     std::map<std::string, std::vector<double>> times;
-    std::vector<double> totals;
+    std::vector<double> totals, cpuTimes;
     SweepPoint p;
     p.scene = scene.name;
     p.label = std::move(label);
@@ -63,11 +79,14 @@ SweepPoint measureSetting(engine::gpu::Context& gpu, engine::world::Scene& scene
         // The path tracer as a method: each frame is its own estimate (samplesPerFrame samples),
         // not the accumulation of all frames so far, so its time and error belong together.
         if (lighting.method == Method::Reference) renderer.resetHistory();
+        const double cpuBefore = processCpuMs();
         engine::render::FrameResult r = renderer.render(scene, camera, frame, lighting);
+        const double cpu = processCpuMs() - cpuBefore;
         p.emitters = r.emitters;
         if (i < frames / 2) continue;
         for (const auto& [name, ms] : r.passMs) times[name].push_back(ms);
         totals.push_back(r.totalMs() - r.passMsOf("upload"));
+        cpuTimes.push_back(cpu);
         engine::render::FrameImages img = renderer.readback();
         auto e = engine::metrics::compareImages({img.radiance, frame.width, frame.height},
                                                 {reference, frame.width, frame.height});
@@ -82,6 +101,8 @@ SweepPoint measureSetting(engine::gpu::Context& gpu, engine::world::Scene& scene
     }
     for (auto& [name, v] : times) p.passMs[name] = median(v);
     p.totalMs = median(totals);
+    p.cpuMs = median(cpuTimes);
+    p.fastestMs = totals.empty() ? 0.0 : *std::min_element(totals.begin(), totals.end());
     p.mae /= std::max(counted, 1);
     p.mse /= std::max(counted, 1);
     p.rmae /= std::max(counted, 1);

@@ -1,0 +1,62 @@
+// ReGIR, world-space light candidates (Boksansky et al., Ray Tracing Gems II ch. 23; RTXDI's
+// ReGIR): a grid of cells over the world, each holding REGIR_CELL_ENTRIES lights resampled every
+// frame from power-drawn candidates with a target that favours lights near the cell and turned
+// towards it (layout: shaders/shared/regir.h). ReSTIR's and RIS's candidates draw entries of the
+// cell their surface lies in (shaders/restir/initial_candidates.comp) and find the grid through
+// FrameParams::regirGrid, a device address.
+//
+// Two passes per frame: "regir.mark" marks the cells this frame's G-buffer surfaces lie in and
+// "regir.build" fills only those, so the cost follows the view. The grid spans the world (cell
+// size from the knob, grown until the world fits in REGIR_MAX_CELLS), so its memory follows the
+// world. It keeps nothing between frames: an edit of the lights changes the emitter list and its
+// alias table (incremental, render/gpu_emitter_list.h) and the next frame's build sees it.
+#pragma once
+
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "gpu/buffer.h"
+#include "lighting/lighting_settings.h"
+#include "render/passes/lit_pass.h"
+#include "shared/regir.h"
+
+namespace engine::gpu {
+class CommandList;
+class Uploader;
+}  // namespace engine::gpu
+
+namespace engine::render {
+
+// Does a frame lit with `l` fill and read the grid? ReSTIR and RIS with sampling regir.
+bool regirUsed(const lighting::LightingSettings& l);
+
+// The grid over a world of `worldVoxels`: cells of at least `cellSize` voxels, as few more as
+// keep the count within REGIR_MAX_CELLS.
+shared::RegirGridInfo regirGridFor(glm::ivec3 worldVoxels, const shared::RegirKnobs& knobs);
+
+class RegirGrid {
+public:
+    explicit RegirGrid(gpu::Context& ctx);
+
+    // Sizes the grid for the world and queues this frame's header (grid, candidates, randomness).
+    void prepare(gpu::Uploader& uploader, glm::ivec3 worldVoxels, const shared::RegirKnobs& knobs,
+                 std::uint32_t frameIndex, std::uint32_t seed);
+    // Clears the marks, then the two passes; record after the G-buffer and before the candidates.
+    void record(gpu::CommandList& cmd, const SceneBindings& scene, const gpu::Buffer& frameParams,
+                const gpu::Buffer& gbuffer, glm::uvec2 imageSize);
+    // FrameParams::regirGrid for a frame that fills the grid.
+    glm::uvec4 frameField() const;
+    const shared::RegirGridInfo& info() const { return mInfo; }
+    // The grid buffer (RegirGridInfo, then RegirEntry per cell x entry), for tests.
+    const gpu::Buffer& grid() const { return mGrid; }
+    std::uint64_t deviceBytes() const { return mGrid.size() + mMarks.size(); }
+
+private:
+    gpu::Context& mCtx;
+    LitPass mMark, mBuild;
+    gpu::Buffer mGrid, mMarks;
+    shared::RegirGridInfo mInfo{};
+};
+
+}  // namespace engine::render
