@@ -11,7 +11,7 @@
 layout(local_size_x = 64) in;
 
 // Largest angle between a texel's centre direction and any direction in it (radians); a texel of
-// the 8x8 hemi-octahedral map spans at most ~0.30 rad from its centre (dvf_directions.cpp checks).
+// the 8x8 hemi-octahedral map spans at most ~0.303 rad from its centre (DvfDirections.TexelsSpanLessThanTheInvalidationMargin).
 const float kTexelRadius = 0.32;
 
 void main() {

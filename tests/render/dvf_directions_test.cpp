@@ -1,6 +1,7 @@
 // The DVF sky's direction map and weights on the host (render/dvf_sky/dvf_directions.h).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "render/dvf_sky/dvf_directions.h"
@@ -34,6 +35,22 @@ TEST(DvfDirections, TexelOfDirectionInvertsTheMap) {
             EXPECT_NEAR(glm::length(dir), 1.0f, 1e-5f);
             EXPECT_GT(glm::dot(dir, n), 0.0f) << "face " << face << " texel " << d;
             EXPECT_EQ(dvfTexel(face, dir), d) << "face " << face;
+        }
+    }
+}
+
+// dvf.invalidate widens an edit's cone by 0.32 rad for the texel's extent: no direction of a
+// texel is further than that from its centre (the largest is ~0.303, at the diamond's corners).
+TEST(DvfDirections, TexelsSpanLessThanTheInvalidationMargin) {
+    for (std::uint32_t face = 0; face < 6; ++face) {
+        for (std::uint32_t d = 0; d < 64; ++d) {
+            const glm::vec3 centre = dvfDirection(face, glm::vec2((float(d % 8u) + 0.5f) / 8.0f, (float(d / 8u) + 0.5f) / 8.0f));
+            for (int j = 0; j <= 16; ++j) {
+                for (int i = 0; i <= 16; ++i) {
+                    const glm::vec3 p = dvfDirection(face, glm::vec2((float(d % 8u) + i / 16.0f) / 8.0f, (float(d / 8u) + j / 16.0f) / 8.0f));
+                    EXPECT_LE(std::acos(std::clamp(glm::dot(p, centre), -1.0f, 1.0f)), 0.32f) << "face " << face << " texel " << d;
+                }
+            }
         }
     }
 }
