@@ -268,6 +268,13 @@ void Hud::drawStats(const HudStats& stats, HudControls& controls, HudActions& ac
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("entries updated this frame within the ray budget (--cache-budget); waiting: visible ones left for later frames");
     }
+    if (stats.skyUsed) {
+        textEntries({fmt::format("sky masks {} ({} waiting)", stats.sky.usedSlots, stats.sky.queued),
+                     fmt::format("{} traced, {:.0f}k rays", stats.sky.tracedMasks, static_cast<double>(stats.sky.tracedRays) / 1000.0)},
+                    width);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("DVF sky light: visibility masks per 8^3 cell and face the camera has seen; an edit re-traces only the directions through it");
+    }
     textEntries({fmt::format("undo {} / redo {} steps", stats.undo.undoSteps, stats.undo.redoSteps),
                  fmt::format("{} of {}", megabytes(stats.undo.bytes), megabytes(stats.undo.maxBytes))},
                 width);

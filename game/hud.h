@@ -19,6 +19,7 @@
 #include "game/undo_history.h"
 #include "lighting/lighting_settings.h"
 #include "render/gpu_world.h"
+#include "render/dvf_sky/dvf_sky.h"
 #include "render/irradiance_cache/irradiance_cache.h"
 #include "shared/frame_params.h"
 #include "world/scene.h"
@@ -36,6 +37,8 @@ struct HudStats {
     engine::render::GpuWorldMemory gpuMemory;
     bool cacheUsed = false;
     engine::render::IrradianceCacheStats cache;
+    bool skyUsed = false;  // the DVF sky term (or its reference) was added
+    engine::render::DvfSkyStats sky;
     UndoStats undo;
     std::string worldName, savePath;
     bool unsaved = false;

@@ -735,6 +735,8 @@ HudStats Sandbox::hudStats() {
     s.gpuMemory = mRenderer->gpuWorld().memory();
     s.cacheUsed = mLastFrame.cacheUsed;
     s.cache = mLastFrame.cache;
+    s.skyUsed = mLastFrame.skyUsed;
+    s.sky = mLastFrame.sky;
     s.undo = mUndo.stats();
     s.worldName = mScene.name;
     s.savePath = mSavePath.string();

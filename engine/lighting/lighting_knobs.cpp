@@ -101,6 +101,8 @@ void setBudgetMb(LightingSettings& s, double mb) { s.cache.budgetBytes = static_
 constexpr std::array<std::string_view, 6> kMethods{"preview", "restir", "ris", "uniform", "bruteforce", "reference"};
 // In the order of enum Indirect.
 constexpr std::array<std::string_view, 4> kIndirect{"none", "cache", "path", "reference"};
+// In the order of enum Sky.
+constexpr std::array<std::string_view, 3> kSky{"none", "dvf", "reference"};
 constexpr std::array<std::string_view, 2> kModes{"point", "area"};
 constexpr std::array<std::string_view, 3> kSampling{"uniform", "power", "regir"};
 constexpr std::array<std::string_view, 2> kPixelFilters{"box", "centre"};
@@ -124,6 +126,11 @@ const Knob kLighting[] = {
              "G-buffer, accumulated while still) | reference (the path tracer replaces the method); a scene's "
              "[indirect] mode, else none",
      .kind = KnobKind::Choice, .choices = kIndirect, .get = getField<&S::indirect>, .set = setField<&S::indirect>},
+    {.name = "sky",
+     .help = "Sky light: none | dvf (discrete visibility fields: per-cell masks of the sky directions) | reference "
+             "(cosine rays per pixel, accumulated while still); added without an indirect method, whose rays see the "
+             "sky already, and not to preview or reference",
+     .kind = KnobKind::Choice, .choices = kSky, .get = getField<&S::sky>, .set = setField<&S::sky>},
 };
 
 const Knob kEmitters[] = {

@@ -32,6 +32,13 @@ enum class ReferenceFilter { Box, PixelCentre };
 // the pixel centre instead of radiance (shared/reference.h describes the layout).
 enum class ReferenceProbe { None, EmitterShape, EmitterPower };
 
+// Sky light for the real-time methods (render/dvf_sky/). Dvf: discrete visibility fields (masks
+// per cell and face over 64 sky directions); Reference: brute-force cosine rays per pixel, the
+// sky's direct light (the ground truth the DVF term is tested against); None: the sky lights a
+// scene only through an indirect method's bounces. Added to every method but Preview (its own
+// ambient) and Reference, and only without an indirect method (whose rays already see the sky).
+enum class Sky { None, Dvf, Reference };
+
 struct LightingSettings {
     Method method = Method::Restir;
     bool area = true;            // area lights (else point lights at the centres of their exposed surfaces)
@@ -49,6 +56,12 @@ struct LightingSettings {
     Indirect indirect = Indirect::None;  // Cache and Path add their term to any method but Reference
     IrradianceCacheSettings cache;
     PathIndirectSettings path;
+    Sky sky = Sky::None;
+
+    // Whether the frame adds a sky term (see Sky).
+    bool skyTermUsed() const {
+        return sky != Sky::None && method != Method::Preview && method != Method::Reference && indirect == Indirect::None;
+    }
 
     bool operator==(const LightingSettings&) const = default;
     std::string describe() const;

@@ -1,5 +1,7 @@
 #include "render/memory_plan.h"
 
+#include "render/dvf_sky/dvf_sky.h"
+
 #include <algorithm>
 #include <bit>
 
@@ -30,6 +32,8 @@ MemoryPlan planMemory(const world::Scene& scene, glm::uvec2 frameSize, const lig
     plan.upload = std::min<std::uint64_t>(gpu::Uploader::kChunkBytes, std::bit_ceil(plan.gpuWorld));  // one chunk at most
     plan.frame = std::uint64_t(frameSize.x) * frameSize.y * Renderer::frameBytesPerPixel();
     if (lighting.indirect == lighting::Indirect::Cache) plan.cache = lighting.cache.budgetBytes;
+    // The sky term's per-pixel buffer and (DVF) its fixed table.
+    if (lighting.skyTermUsed()) plan.frame += DvfSky::deviceBytes(frameSize);
     return plan;
 }
 

@@ -1,6 +1,7 @@
 #include "render/renderer.h"
 
 #include <chrono>
+#include <cmath>
 #include <cstring>
 
 #include "core/memory_budget.h"
@@ -58,7 +59,8 @@ Renderer::Renderer(gpu::Context& ctx)
       mCache(ctx),
       mLightTiles(ctx),
       mRegir(ctx),
-      mPathIndirect(ctx) {
+      mPathIndirect(ctx),
+      mDvfSky(ctx) {
     mFrameParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::FrameParams), "frame.params");
     mRestirParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::RestirParams), "restir.params");
     mLightSamplingParams =
@@ -150,6 +152,27 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
     } else if (useCache) {
         mCache.clear();  // a new world
     }
+    const bool useSky = lighting.skyTermUsed() && DvfSky::supports(scene.grid.sizeInCells());
+    if (!useSky) mDvfSky.suspend();
+    DvfSky::FrameInput skyInput;
+    if (useSky) {
+        // Regions whose voxels changed: the touched cells, and the objects' old and new bounds.
+        skyInput.newWorld = result.upload.full;
+        const glm::ivec3 cells = scene.grid.sizeInCells();
+        for (std::uint32_t c : scene.grid.touchedCells()) {
+            const glm::ivec3 cell(c % cells.x, (c / cells.x) % cells.y, c / (cells.x * cells.y));
+            skyInput.edits.push_back(glm::vec4(glm::vec3(cell * 8) + 4.0f, 4.0f * std::sqrt(3.0f)));
+        }
+        if (result.upload.dynamicBytes || (mPrevDynamicBounds && !scene.dynamic.present())) {
+            if (mPrevDynamicBounds) skyInput.edits.push_back(*mPrevDynamicBounds);
+            mPrevDynamicBounds.reset();
+            if (scene.dynamic.present()) {
+                const glm::vec3 size(scene.dynamic.grid.sizeInVoxels());
+                mPrevDynamicBounds = glm::vec4(glm::vec3(scene.dynamic.origin) + size * 0.5f, glm::length(size) * 0.5f);
+                skyInput.edits.push_back(*mPrevDynamicBounds);
+            }
+        }
+    }
     scene.grid.clearDirty();
     EmitterUploadStats lightUpload = mGpuEmitters.sync(mEmitters, mUploader);
     const bool worldChanged = result.upload.bricks || result.upload.cells || result.upload.dynamicBytes ||
@@ -196,6 +219,14 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
     // What the accumulating estimators restart on (besides new settings, which drop the history).
     const bool viewOrWorldChanged = worldChanged || !mPrevCamera || !sameView(*mPrevCamera, camera);
     if (usePath) mPathIndirect.prepare(lighting, mSize, mFrameIndex, !mHistoryValid || viewOrWorldChanged, mUploader);
+    if (useSky) {
+        skyInput.mode = lighting.sky;
+        skyInput.size = mSize;
+        skyInput.frameIndex = mFrameIndex;
+        skyInput.seed = lighting.seed;
+        skyInput.viewOrWorldChanged = !mHistoryValid || viewOrWorldChanged;
+        mDvfSky.prepare(skyInput, mUploader);
+    }
     mUploader.record(cmd);
     if (lighting.method == lighting::Method::Reference && (mAccumulatedSamples == 0 || viewOrWorldChanged)) {
         cmd.fillBuffer(mAccumulation, 0);
@@ -220,6 +251,7 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
         rest = &late;
     }
     recordLighting(*rest, lighting, mHistoryValid);
+    if (useSky) mDvfSky.record(*rest, {mWorld, mGpuEmitters}, {mFrameParams, mGBuffers[mCurrent], mRadiance});
     if (usePath)
         mPathIndirect.record(*rest, {mWorld, mGpuEmitters}, {mFrameParams, mGBuffers[mCurrent], mRadiance, mIndirect});
     if (useCache) {
@@ -244,6 +276,11 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
         mGBufferHostValid = false;
     }
     mPrevSky = scene.sky;
+    if (useSky) {
+        mDvfSky.collect();
+        result.skyUsed = true;
+        result.sky = mDvfSky.stats();
+    }
 
     if (lighting.method == lighting::Method::Reference) mAccumulatedSamples += std::max(lighting.samplesPerFrame, 1u);
     result.referenceSamples = mAccumulatedSamples;

@@ -27,6 +27,7 @@
 #include "render/camera.h"
 #include "render/gpu_world.h"
 #include "render/baselines/light_sampling_pass.h"
+#include "render/dvf_sky/dvf_sky.h"
 #include "render/irradiance_cache/irradiance_cache.h"
 #include "render/light_tiles/light_tiles.h"
 #include "render/passes/primary_ray_pass.h"
@@ -59,6 +60,8 @@ struct FrameResult {
     bool cacheSplitFrame = false;  // the cache had no visible set yet: two submissions, the G-buffer read in between
     double cachePrepareMs = 0.0;   // CPU time of the cache's directory and uploads
     IrradianceCacheStats cache;
+    bool skyUsed = false;  // a sky term (DVF or its reference) was added
+    DvfSkyStats sky;       // DVF: masks held, queued and traced this frame
     double totalMs() const;
     double passMsOf(const std::string& name) const;
 };
@@ -96,6 +99,7 @@ public:
     const IrradianceCache& irradianceCache() const { return mCache; }
     const LightTiles& lightTiles() const { return mLightTiles; }
     const RegirGrid& regirGrid() const { return mRegir; }
+    DvfSky& dvfSky() { return mDvfSky; }
 
 private:
     void resize(std::uint32_t width, std::uint32_t height);
@@ -124,6 +128,8 @@ private:
     LightTiles mLightTiles;
     RegirGrid mRegir;
     PathIndirect mPathIndirect;
+    DvfSky mDvfSky;
+    std::optional<glm::vec4> mPrevDynamicBounds;  // the objects' last bounding sphere, for the sky's masks
 
     glm::uvec2 mSize{0};
     gpu::Buffer mFrameParams, mRadiance, mLdr, mRayStats, mCandidates, mOwnReservoirs, mAccumulation, mIndirect;

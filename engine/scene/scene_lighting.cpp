@@ -14,6 +14,10 @@ std::vector<lighting::KnobValue> sceneLightingValues(const world::Scene& scene) 
     for (const auto& [key, text] : scene.indirect) {
         if (const lighting::Knob* k = indirectKnob(key)) values.push_back({k, text, where});
     }
+    if (!scene.sky.lightMode.empty()) {
+        const std::string skyWhere = fmt::format("{} [sky]", scene.sourcePath.empty() ? scene.name : scene.sourcePath);
+        values.push_back({lighting::knobForOption("sky"), scene.sky.lightMode, skyWhere});
+    }
     return values;
 }
 

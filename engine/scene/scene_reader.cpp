@@ -9,6 +9,7 @@
 #include "core/allocation_budget.h"
 #include "core/memory_budget.h"
 #include "scene/generator_registry.h"
+#include "lighting/lighting_knobs.h"
 #include "scene/indirect_keys.h"
 #include "scene/path_table.h"
 #include "scene/scene_file.h"
@@ -247,6 +248,14 @@ private:
             std::abs(glm::length(dir) - 1.0f) > 1e-6f ? glm::normalize(dir) : dir;
         scene.sky.sunRadiance = sky.vec3("sun_radiance", scene.sky.sunRadiance, kRadianceRange);
         scene.sky.skyRadiance = sky.vec3("sky_radiance", scene.sky.skyRadiance, kRadianceRange);
+        if (sky.has("sky_light")) {
+            const toml::node* at = sky.node("sky_light");
+            const lighting::Knob* knob = lighting::knobForOption("sky");
+            lighting::LightingSettings s;
+            if (Status ok = lighting::setKnob(*knob, s, sky.string("sky_light")); !ok)
+                fail(at, "sky_light: {}", ok.error().message);
+            scene.sky.lightMode = lighting::knobText(*knob, s);
+        }
     }
 
     std::string mSource;

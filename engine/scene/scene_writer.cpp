@@ -80,6 +80,7 @@ std::string sceneText(const Scene& scene, const SceneWriteOptions& options) {
     out.key("sun_direction", scene.sky.sunDirection);
     out.key("sun_radiance", scene.sky.sunRadiance);
     out.key("sky_radiance", scene.sky.skyRadiance);
+    if (!scene.sky.lightMode.empty()) out.key("sky_light", scene.sky.lightMode);
     writeIndirect(scene, out);
     if (scene.path) writePath(*scene.path, out);
     return out.text();

@@ -42,6 +42,10 @@ struct SkyLight {
     glm::vec3 sunDirection = glm::normalize(glm::vec3(0.4f, 1.0f, 0.3f));  // towards the sun
     glm::vec3 sunRadiance{3.0f, 2.85f, 2.6f};
     glm::vec3 skyRadiance{0.35f, 0.45f, 0.6f};
+    // [sky] sky_light: how the real-time methods get sky light, as the `sky` lighting knob's text
+    // ("none", "dvf", "reference"; empty = the scene does not say). Read through the knob
+    // (scene/scene_lighting.h); the command line overrides it.
+    std::string lightMode;
 };
 
 struct Scene {

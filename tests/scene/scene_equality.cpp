@@ -77,7 +77,7 @@ std::string sceneDifference(const Scene& a, const Scene& b) {
             return fmt::format("camera '{}' differs", x.name);
     }
     if (a.sky.sunDirection != b.sky.sunDirection || a.sky.sunRadiance != b.sky.sunRadiance ||
-        a.sky.skyRadiance != b.sky.skyRadiance)
+        a.sky.skyRadiance != b.sky.skyRadiance || a.sky.lightMode != b.sky.lightMode)
         return "sky";
     if (a.indirect != b.indirect) return "[indirect] settings";
     if (bool(a.path) != bool(b.path))

@@ -183,3 +183,18 @@ TEST(SceneFile, ObjectErrorsNameTheLine) {
     e = errorOf(base.substr(0, base.find("[[object.key]]\ntime = 2.0")));
     EXPECT_EQ(e, "test.toml:13: a looping path needs at least two keys");
 }
+
+// [sky] sky_light is the `sky` lighting knob: read through it (a bad value names the key and
+// the choices), written back, and merged under the command line's --sky.
+TEST(SceneFile, SkyLightKeyIsTheSkyKnob) {
+    const std::string text = std::string(kMinimal) + "[sky]\nsky_light = \"dvf\"\n";
+    auto scene = loadSceneText(text, "test.toml");
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    EXPECT_EQ(scene->sky.lightMode, "dvf");
+    auto again = loadSceneText(sceneText(*scene), "again.toml");
+    ASSERT_TRUE(again.ok()) << again.error().message;
+    EXPECT_EQ(again->sky.lightMode, "dvf");
+    const std::string error = errorOf(std::string(kMinimal) + "[sky]\nsky_light = \"bright\"\n");
+    EXPECT_NE(error.find("sky_light"), std::string::npos) << error;
+    EXPECT_NE(error.find("dvf"), std::string::npos) << error;
+}

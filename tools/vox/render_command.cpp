@@ -104,6 +104,11 @@ int runRender(const RenderOptions& o) {
                     c.visibleStatic, c.visibleDynamic, c.updated, c.waiting, c.entries, double(c.bytes) / 1048576.0,
                     static_cast<unsigned long long>(c.raysTraced), frame.cachePrepareMs);
     }
+    if (frame.skyUsed && l.sky == engine::lighting::Sky::Dvf) {
+        std::printf("sky      %u DVF masks (%u waiting), %u traced with %u rays in the last frame, %.2f MiB GPU table\n",
+                    frame.sky.usedSlots, frame.sky.queued, frame.sky.tracedMasks, frame.sky.tracedRays,
+                    double(frame.sky.tableBytes) / 1048576.0);
+    }
     if (!o.timings.empty()) {
         engine::AtomicFile file;
         if (engine::Status s = file.open(o.timings); !s) return fail(s.error());

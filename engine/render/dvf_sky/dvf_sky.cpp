@@ -1,0 +1,149 @@
+#include "render/dvf_sky/dvf_sky.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include "gpu/command_list.h"
+#include "render/dvf_sky/dvf_directions.h"
+
+namespace engine::render {
+namespace {
+
+// All edits as one sphere around their union: conservative when a frame has more than fit.
+glm::vec4 boundingSphere(const std::vector<glm::vec4>& spheres) {
+    glm::vec3 lo(1e30f), hi(-1e30f);
+    for (const glm::vec4& s : spheres) {
+        lo = glm::min(lo, glm::vec3(s) - s.w);
+        hi = glm::max(hi, glm::vec3(s) + s.w);
+    }
+    return glm::vec4((lo + hi) * 0.5f, glm::length(hi - lo) * 0.5f);
+}
+
+template <class T>
+std::vector<T> readBuffer(gpu::Context& ctx, const gpu::Buffer& src, std::uint64_t bytes) {
+    gpu::Buffer host(ctx, gpu::BufferKind::Readback, bytes, "dvf.readback");
+    gpu::CommandList cmd(ctx);
+    cmd.begin();
+    cmd.copyBuffer(src, host, {{0, 0, bytes}});
+    cmd.barrier();
+    cmd.submitAndWait();
+    std::vector<T> out(bytes / sizeof(T));
+    std::memcpy(out.data(), host.mapped(), bytes);
+    return out;
+}
+
+}  // namespace
+
+DvfSky::DvfSky(gpu::Context& ctx)
+    : mCtx(ctx),
+      mInvalidate(ctx, "dvf.invalidate", "dvf_sky/invalidate_masks"),
+      mTakeBatch(ctx, "dvf.take_batch", "dvf_sky/take_batch"),
+      mBuild(ctx, "dvf.build", "dvf_sky/build_masks"),
+      mShade(ctx, "dvf.shade", "dvf_sky/shade_sky"),
+      mReference(ctx, "sky.reference", "dvf_sky/sky_reference") {
+}
+
+std::uint64_t DvfSky::deviceBytes(glm::uvec2 frameSize) {
+    return std::uint64_t(shared::DVF_CAPACITY) * (sizeof(shared::DvfSlot) + sizeof(std::uint32_t)) +
+           6 * shared::DVF_DIRECTIONS * sizeof(float) + sizeof(shared::DvfHeader) + sizeof(shared::DvfParams) +
+           2ull * frameSize.x * frameSize.y * sizeof(glm::vec4);
+}
+
+bool DvfSky::supports(glm::ivec3 cells) {
+    return cells.x <= int(shared::DVF_MAX_CELLS_XZ) && cells.z <= int(shared::DVF_MAX_CELLS_XZ) &&
+           cells.y <= int(shared::DVF_MAX_CELLS_Y);
+}
+
+void DvfSky::prepare(const FrameInput& input, gpu::Uploader& uploader) {
+    if (mSlots.size() == 0) {  // first use
+        using gpu::BufferKind;
+        mParams = gpu::Buffer(mCtx, BufferKind::Storage, sizeof(shared::DvfParams), "dvf.params");
+        mHeader = gpu::Buffer(mCtx, BufferKind::Storage, sizeof(shared::DvfHeader), "dvf.header");
+        mHeaderHost = gpu::Buffer(mCtx, BufferKind::Readback, sizeof(shared::DvfHeader), "dvf.headerHost");
+        mSlots = gpu::Buffer(mCtx, BufferKind::Storage, std::uint64_t(shared::DVF_CAPACITY) * sizeof(shared::DvfSlot), "dvf.slots");
+        mQueue = gpu::Buffer(mCtx, BufferKind::Storage, std::uint64_t(shared::DVF_CAPACITY) * sizeof(std::uint32_t), "dvf.queue");
+        mWeights = gpu::Buffer(mCtx, BufferKind::Storage, 6 * shared::DVF_DIRECTIONS * sizeof(float), "dvf.weights");
+        mStats.tableBytes = mSlots.size() + mQueue.size() + mWeights.size() + mHeader.size();
+        mClear = true;
+    }
+    if (input.size != mSize) {
+        mSize = input.size;
+        // The term per pixel, then (the reference's) running sum per pixel.
+        mSky = gpu::Buffer(mCtx, gpu::BufferKind::Storage, 2ull * mSize.x * mSize.y * sizeof(glm::vec4), "sky.term");
+    }
+    if (!mWeightsUploaded) {
+        const auto weights = dvfSkyWeights();
+        uploader.write(mWeights, 0, weights.data(), sizeof(weights));
+        mWeightsUploaded = true;
+    }
+    // A new world, or a table three-quarters full (shade_sky.comp stops inserting there): start
+    // again from an empty table, which the view refills within a few frames.
+    // A frame without the term (edits then went unseen) or with the reference before it: the same.
+    if (input.newWorld || mStats.usedSlots >= shared::DVF_CAPACITY - shared::DVF_CAPACITY / 4u || mMode != input.mode)
+        mClear = true;
+    const bool restart = input.viewOrWorldChanged || mMode != input.mode;
+    mMode = input.mode;
+
+    shared::DvfParams p{};
+    p.budget = kMasksPerFrame;
+    p.frame = input.frameIndex;
+    p.seed = input.seed;
+    p.flags = restart ? shared::DVF_FLAG_RESTART : 0u;
+    p.samples = kReferenceRaysPerFrame;
+    if (!mClear && !input.edits.empty()) {
+        if (input.edits.size() <= shared::DVF_MAX_EDITS) {
+            std::copy(input.edits.begin(), input.edits.end(), p.edits);
+            p.editCount = static_cast<std::uint32_t>(input.edits.size());
+        } else {
+            p.edits[0] = boundingSphere(input.edits);
+            p.editCount = 1;
+        }
+    }
+    mEditCount = p.editCount;
+    uploader.write(mParams, 0, &p, sizeof(p));
+}
+
+void DvfSky::record(gpu::CommandList& cmd, const SceneBindings& scene, const Io& io) {
+    const DvfSkyIo all{io.frameParams, mParams, mHeader, mSlots, mQueue, mWeights, io.gbuffer, io.radiance, mSky};
+    if (mMode == lighting::Sky::Reference) {
+        mReference.record(cmd, scene, all, screenGroups(mSize));
+        return;
+    }
+    if (mClear) {
+        cmd.fillBuffer(mSlots, 0);  // every key DVF_EMPTY_KEY, every state 0
+        cmd.fillBuffer(mHeader, 0);
+        cmd.barrier();
+        mClear = false;
+        mStats.queued = 0;
+        mStats.usedSlots = 0;
+    }
+    if (mEditCount) mInvalidate.record(cmd, scene, all, {shared::DVF_CAPACITY / 64u, 1});
+    mTakeBatch.record(cmd, scene, all, {1, 1});
+    // The batch is min(queue, budget); the queue is what the last frame left, unless this frame's
+    // edits add to it — then the whole budget, whose surplus workgroups return at once.
+    const std::uint32_t buildGroups = mEditCount ? kMasksPerFrame : std::min(kMasksPerFrame, mStats.queued);
+    mBuild.record(cmd, scene, all, {buildGroups, 1});
+    mShade.record(cmd, scene, all, screenGroups(mSize));
+    cmd.copyBuffer(mHeader, mHeaderHost, {{0, 0, mHeader.size()}});
+    cmd.barrier();
+}
+
+void DvfSky::collect() {
+    if (mMode != lighting::Sky::Dvf) return;
+    shared::DvfHeader h{};
+    std::memcpy(&h, mHeaderHost.mapped(), sizeof(h));
+    mStats.usedSlots = h.used;
+    mStats.queued = h.tail - h.head;
+    mStats.tracedMasks = h.batchCount;
+    mStats.tracedRays = h.tracedRays;
+}
+
+std::vector<shared::DvfSlot> DvfSky::readSlots() {
+    return readBuffer<shared::DvfSlot>(mCtx, mSlots, mSlots.size());
+}
+
+std::vector<glm::vec4> DvfSky::readSkyTerm() {
+    return readBuffer<glm::vec4>(mCtx, mSky, std::uint64_t(mSize.x) * mSize.y * sizeof(glm::vec4));
+}
+
+}  // namespace engine::render

@@ -1,0 +1,204 @@
+// Sky light from discrete visibility fields (`--sky dvf`, render/dvf_sky/) against its ground
+// truth, the sky's direct light by brute-force cosine rays per pixel (`--sky reference`): the
+// mean on two worlds, the per-pixel spread, a roof opened by an edit, and the masks against
+// directions traced on the CPU.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "core/hash.h"
+#include "gpu/gpu_test_setup.h"
+#include "render/dvf_sky/dvf_directions.h"
+#include "world/scene_trace.h"
+#include "world/world_edits.h"
+
+using namespace engine::world;
+using namespace gpu_testing;
+using engine::lighting::Sky;
+
+namespace {
+
+constexpr std::uint32_t kSize = 64;
+
+LightingSettings skyLighting(Sky sky) {
+    LightingSettings l;
+    l.method = Method::Uniform;  // no emitter in these tests' terms: the sky term is read alone
+    l.sky = sky;
+    return l;
+}
+
+// The sky term per pixel after `frames` frames.
+std::vector<glm::vec4> skyTerm(Renderer& r, Scene& scene, Sky sky, int frames) {
+    renderFrames(r, scene, skyLighting(sky), frame(kSize), frames);
+    return r.dvfSky().readSkyTerm();
+}
+
+// The reference: 16 rays per pixel and frame, 16 frames = 256 rays per pixel.
+std::vector<glm::vec4> referenceSky(Scene& scene) {
+    Renderer r(context());
+    return skyTerm(r, scene, Sky::Reference, 16);
+}
+
+struct Agreement {
+    double meanDvf = 0.0, meanRef = 0.0;
+    double withinTolerance = 0.0;  // fraction of lit pixels within the per-pixel tolerance
+};
+
+// Per-pixel tolerance: |dvf - ref| <= 0.25 ref + 0.02 in luminance (the reference's own noise at
+// 256 rays is ~4 %; the rest is a mask shared by a cell's faces and 64 directions).
+Agreement compare(const std::vector<glm::vec4>& dvf, const std::vector<glm::vec4>& ref) {
+    Agreement a;
+    std::size_t n = 0, ok = 0;
+    for (std::size_t i = 0; i < dvf.size(); ++i) {
+        const double d = luminance(dvf[i]), r = luminance(ref[i]);
+        a.meanDvf += d;
+        a.meanRef += r;
+        if (r > 0.0 || d > 0.0) {
+            ++n;
+            if (std::abs(d - r) <= 0.25 * r + 0.02) ++ok;
+        }
+    }
+    a.meanDvf /= double(dvf.size());
+    a.meanRef /= double(ref.size());
+    a.withinTolerance = n ? double(ok) / double(n) : 1.0;
+    std::printf("sky term: dvf mean %.5f, reference mean %.5f (%+.2f %%), %.1f %% of %zu pixels within tolerance\n",
+                a.meanDvf, a.meanRef, 100.0 * (a.meanDvf / a.meanRef - 1.0), 100.0 * a.withinTolerance, n);
+    return a;
+}
+
+// A room of 24 x 12 x 24 inside, walls and roof two voxels thick, on a ground slab, with a
+// window in one wall: what sees the sky inside sees it through the window only.
+Scene roomWithWindow(bool window, bool roof) {
+    Scene scene = paletteScene({48, 24, 48}, {Material{"white", glm::vec3(0.7f)}, Material{"red", glm::vec3(0.7f, 0.2f, 0.15f)}},
+                               false);
+    fillBox(scene.grid, Box{{0, 0, 0}, {48, 2, 48}}, 1);
+    fillBox(scene.grid, Box{{10, 2, 10}, {38, 16, 38}}, 2);
+    fillBox(scene.grid, Box{{12, 2, 12}, {36, 14, 36}}, kEmpty);
+    if (!roof) fillBox(scene.grid, Box{{12, 14, 12}, {36, 16, 36}}, kEmpty);
+    if (window) fillBox(scene.grid, Box{{18, 5, 10}, {30, 11, 12}}, kEmpty);
+    scene.sky.sunRadiance = glm::vec3(0.0f);  // the sky alone
+    // Inside, looking at the floor and the far walls from above the window wall.
+    scene.cameras.push_back(CameraPreset{"inside", {24.0f, 12.0f, 13.0f}, {24.0f, 3.0f, 30.0f}, 80.0f});
+    scene.grid.clearDirty();
+    return scene;
+}
+
+}  // namespace
+
+class DvfSky : public GpuTest {};
+
+// Sandbox terrain (hills, buildings with overhanging roofs): the DVF term's mean within 5 % of the
+// reference's, and most pixels within the per-pixel tolerance.
+TEST_F(DvfSky, TermMatchesReferenceOnSandbox) {
+    Scene scene = loadWorld("sandbox");
+    scene.sky.sunRadiance = glm::vec3(0.0f);
+    Renderer r(context());
+    const auto dvf = skyTerm(r, scene, Sky::Dvf, 4);
+    const Agreement a = compare(dvf, referenceSky(scene));
+    EXPECT_GT(a.meanRef, 0.01);
+    EXPECT_NEAR(a.meanDvf / a.meanRef, 1.0, 0.05);
+    EXPECT_GE(a.withinTolerance, 0.85);
+}
+
+// A room lit by the sky through a window only: DVF's hard case. The window covers one or two of
+// a mask's 64 texels, and a bit is a dithered yes/no, so the few cells that see it carry a large
+// quantisation noise: the mean is unbiased over many cells, but this view has few. Measured
+// +15 % (docs/SKY.md); the test pins it within 30 % and the per-pixel tolerance.
+TEST_F(DvfSky, TermInRoomWithWindowWithinItsKnownBound) {
+    Scene scene = roomWithWindow(true, true);
+    Renderer r(context());
+    const auto dvf = skyTerm(r, scene, Sky::Dvf, 4);
+    const auto ref = referenceSky(scene);
+    const Agreement a = compare(dvf, ref);
+    EXPECT_GT(a.meanRef, 0.005);
+    EXPECT_NEAR(a.meanDvf / a.meanRef, 1.0, 0.30);
+    EXPECT_GE(a.withinTolerance, 0.85);
+}
+
+// A closed room has no sky term inside; an edit that removes the roof lets the sky onto the
+// floor in the edit's own frame (dvf.invalidate marks the directions towards the roof before
+// dvf.build re-traces them, within the per-frame budget; no new slots are needed), and the term agrees
+// with the reference of the opened room.
+TEST_F(DvfSky, OpeningTheRoofLetsTheSkyIn) {
+    Scene scene = roomWithWindow(false, true);
+    Renderer r(context());
+    const auto closed = skyTerm(r, scene, Sky::Dvf, 4);
+    double closedMax = 0.0;
+    for (const glm::vec4& p : closed) closedMax = std::max(closedMax, luminance(p));
+    EXPECT_EQ(closedMax, 0.0) << "a closed room sees no sky";
+
+    fillBox(scene.grid, Box{{12, 14, 12}, {36, 16, 36}}, kEmpty);
+    const std::uint32_t slotsBefore = r.dvfSky().stats().usedSlots;
+    const auto firstFrame = skyTerm(r, scene, Sky::Dvf, 1);  // the edit's frame: masks re-traced
+    const std::uint32_t tracedMasks = r.dvfSky().stats().tracedMasks;
+    const auto opened = skyTerm(r, scene, Sky::Dvf, 1);
+    EXPECT_GT(meanLuminance(firstFrame), 0.0) << "the sky reaches the floor in the edit's own frame";
+    std::printf("roof edit: %u of %u masks re-traced\n", tracedMasks, slotsBefore);
+    EXPECT_LE(tracedMasks, slotsBefore);
+    const Agreement a = compare(opened, referenceSky(scene));
+    EXPECT_NEAR(a.meanDvf / a.meanRef, 1.0, 0.05);
+}
+
+// Every traced mask against the same directions traced on the CPU (world/scene_trace.h) from the
+// same origins (random points of the cell's faces of the slot's orientation on the anchor's side,
+// as build_masks.comp picks them): a bit is one dithered ray, so where every CPU ray through a
+// texel is blocked the bit must be clear, where every one escapes it must be set, and over all
+// texels the GPU's set bits must match the CPU's visible fraction (unweighted here, the GPU's
+// weighted by cos x solid angle within a texel: equal within 5 % over many texels).
+TEST_F(DvfSky, MasksMatchCpuTracedDirections) {
+    Scene scene = loadWorld("sandbox");
+    Renderer r(context());
+    renderFrames(r, scene, skyLighting(Sky::Dvf), frame(48), 2);
+    const auto slots = r.dvfSky().readSlots();
+    const glm::ivec3 size = scene.grid.sizeInVoxels();
+    auto inside = [&](glm::ivec3 v) { return glm::all(glm::greaterThanEqual(v, glm::ivec3(0))) && glm::all(glm::lessThan(v, size)); };
+    engine::Rng rng(5);
+    std::size_t masks = 0, clear = 0, clearAgreed = 0;
+    double gpuBits = 0.0, cpuFraction = 0.0;
+    for (const shared::DvfSlot& s : slots) {
+        if (s.key == shared::DVF_EMPTY_KEY || !(s.state & shared::DVF_STATE_VALID)) continue;
+        if (++masks > 150) break;
+        const std::uint32_t face = (s.key - 1u) >> 29u;  // keys are the packed (cell, face) + 1
+        const std::uint32_t axis = face >> 1u;
+        glm::ivec3 n(0);
+        n[axis] = (face & 1u) ? 1 : -1;
+        const glm::ivec3 anchor(s.anchor);
+        const glm::ivec3 cellMin = glm::clamp(anchor >> 3, glm::ivec3(0), scene.grid.sizeInCells() - 1) * 8;
+        // 16 origins as build_masks.comp's dvfOrigin picks them.
+        std::vector<glm::vec3> origins;
+        for (int i = 0; i < 16; ++i) {
+            glm::ivec3 c = anchor;
+            c[(axis + 1) % 3] = cellMin[(axis + 1) % 3] + rng.uniformInt(0, 7);
+            c[(axis + 2) % 3] = cellMin[(axis + 2) % 3] + rng.uniformInt(0, 7);
+            bool onFace = inside(c) && inside(c - n) && scene.grid.get(c) == kEmpty && scene.grid.get(c - n) != kEmpty;
+            if (onFace && c != anchor) {
+                const glm::vec3 from = glm::vec3(anchor) + 0.5f, to = glm::vec3(c) + 0.5f;
+                const float dist = glm::length(to - from);
+                onFace = !traceScene(scene.grid, nullptr, from, (to - from) / dist, dist).hit;
+            }
+            origins.push_back(glm::vec3(onFace ? c : anchor) + 0.5f - 0.5f * glm::vec3(n) + glm::vec3(n) * 1e-3f);
+        }
+        for (std::uint32_t d = 0; d < shared::DVF_DIRECTIONS; ++d) {
+            int escaped = 0;
+            for (std::size_t i = 0; i < origins.size(); ++i) {
+                const glm::vec2 uv((float(d % 8u) + (float(i % 4) + 0.5f) / 4.0f) / 8.0f,
+                                   (float(d / 8u) + (float(i / 4) + 0.5f) / 4.0f) / 8.0f);
+                if (!traceScene(scene.grid, nullptr, origins[i], engine::render::dvfDirection(face, uv), 1e30f).hit) ++escaped;
+            }
+            const bool gpu = ((d < 32u ? s.maskDirty.x : s.maskDirty.y) >> (d & 31u)) & 1u;
+            gpuBits += gpu ? 1.0 : 0.0;
+            cpuFraction += escaped / 16.0;
+            if (escaped == 0 || escaped == 16) {
+                ++clear;
+                if (gpu == (escaped == 16)) ++clearAgreed;
+            }
+        }
+    }
+    std::printf("masks: %zu, %zu of %zu clear texels agree; set bits %.0f, CPU visible texels %.1f\n", masks, clearAgreed,
+                clear, gpuBits, cpuFraction);
+    ASSERT_GT(masks, 20u);
+    EXPECT_GE(double(clearAgreed), 0.98 * double(clear));
+    EXPECT_NEAR(gpuBits / cpuFraction, 1.0, 0.05);
+}
