@@ -274,9 +274,10 @@ TEST_F(IrradianceCache, FarSurfacesShareCoarseEntries) {
                 100.0 * (lodMean / fineMean - 1.0), 100.0 * err);
     EXPECT_EQ(fineCoarse, 0u);
     EXPECT_GT(lodCoarse, 100u);
-    EXPECT_LT(lodEntries, fineEntries * 9 / 10);
-    EXPECT_NEAR(lodMean / fineMean, 1.0, 0.05);
-    EXPECT_LT(err, 0.15);
+    // Measured: 0.55x the entries, mean -0.0 %, MAE 0.7 % of the mean.
+    EXPECT_LT(lodEntries, fineEntries * 3 / 4);
+    EXPECT_NEAR(lodMean / fineMean, 1.0, 0.03);
+    EXPECT_LT(err, 0.05);
 }
 
 // A sealed, unlit room wider than 250 voxels (cornell's interior is 256): every ray of the cache
