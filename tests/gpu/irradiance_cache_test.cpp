@@ -139,9 +139,11 @@ std::vector<glm::vec4> average(const std::vector<glm::vec4>& a, const std::vecto
 
 // The converged cache (one bounce, defaults but K) with the lighting seed `seed`.
 std::vector<glm::vec4> cacheIndirectSeeded(Scene& scene, const engine::world::CameraPreset& camera, std::uint32_t size,
-                                           int frames, std::uint32_t directions, std::uint32_t seed, float maxRay = 0.0f) {
+                                           int frames, std::uint32_t directions, std::uint32_t seed, float maxRay = 0.0f,
+                                           float lodDistance = 0.0f) {
     LightingSettings l = cacheLighting(1);
     l.cache.directions = directions;
+    l.cache.lodDistance = lodDistance;
     if (maxRay > 0.0f) l.cache.maxRayLength = maxRay;
     l.seed = seed;
     Renderer r(gpu_testing::context());
@@ -772,6 +774,7 @@ TEST_F(IrradianceCache, DISABLED_MeasureScenes) {
     const std::uint32_t size = envOr("VOX_MEASURE_SIZE", 64), frames = envOr("VOX_MEASURE_FRAMES", 64);
     const std::uint32_t spp = envOr("VOX_MEASURE_SPP", 1024), k = envOr("VOX_MEASURE_K", 128);
     const float maxRay = float(envOr("VOX_MEASURE_MAX_RAY", 0));
+    const float lod = float(envOr("VOX_MEASURE_LOD", 0));  // the cache's lod_distance
     std::vector<std::string> worlds{"cornell", "mountain", "letters", "apartments", "thin_wall"};
     if (const char* w = std::getenv("VOX_MEASURE_WORLD")) worlds = {w};
     for (const std::string& name : worlds) {
@@ -805,8 +808,8 @@ TEST_F(IrradianceCache, DISABLED_MeasureScenes) {
         // The reference's own noise: seed 2 against seed 1, halved for the average of both (1/sqrt 2
         // per seed, 1/sqrt 2 again for the average).
         IndirectError noise = indirectError(r2, r1, size, size);
-        std::vector<glm::vec4> c1 = cacheIndirectSeeded(scene, camera, size, int(frames), k, 1, maxRay);
-        std::vector<glm::vec4> c2 = cacheIndirectSeeded(scene, camera, size, int(frames), k, 2, maxRay);
+        std::vector<glm::vec4> c1 = cacheIndirectSeeded(scene, camera, size, int(frames), k, 1, maxRay, lod);
+        std::vector<glm::vec4> c2 = cacheIndirectSeeded(scene, camera, size, int(frames), k, 2, maxRay, lod);
         IndirectError e1 = indirectError(c1, ref, size, size), e2 = indirectError(c2, ref, size, size);
         IndirectError ea = indirectError(average(c1, c2), ref, size, size);
         // With the mean's error taken out: what is left is the per-pixel structure.
@@ -835,6 +838,7 @@ TEST_F(IrradianceCache, DISABLED_MeasureScenes) {
             raw(c1, "cache");
         }
         std::printf("MEASURE %s mean-corrected seed1 rmae %.4f mae/mean %.4f\n", name.c_str(), es.rmae, es.relativeMae);
+        std::printf("MEASURE lod_distance %g\n", lod);
         std::printf("MEASURE %s K=%u frames=%u size=%u spp=2x%u ref-mean=%.5f | ref noise (seed 2 vs 1) rmae %.4f mae/mean %.4f | "
                     "cache seed1 rmae %.4f mae/mean %.4f mean %.4f | seed2 rmae %.4f mae/mean %.4f mean %.4f | "
                     "avg rmae %.4f mae/mean %.4f\n",
