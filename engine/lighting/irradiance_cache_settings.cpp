@@ -24,7 +24,8 @@ Result<Indirect> parseIndirect(std::string_view name) {
 std::string IrradianceCacheSettings::describe() const {
     return fmt::format("cache K={} S={} bounces={} alpha={:g} N={} {} budget={}", directions, raysPerUpdate, bounces, alpha,
                        neighbourhood, filter ? "filtered" : "unfiltered",
-                       rayBudget ? fmt::format("{} rays", rayBudget) : std::string("none"));
+                       rayBudget ? fmt::format("{} rays", rayBudget) : std::string("none")) +
+           (lodDistance > 0.0f ? fmt::format(" lod={:g}", lodDistance) : std::string());
 }
 
 }  // namespace engine::lighting

@@ -34,6 +34,9 @@ struct IrradianceCacheSettings {
     // Rays per frame the cache's updates may trace, spent by priority (new and edited entries,
     // moving objects, changed light, then the most stale); 0: update every visible entry each frame.
     std::uint32_t rayBudget = 150000;
+    // Static faces at least this far along the view ray (voxels) share a coarse entry per open,
+    // coplanar 2x2 patch (render/irradiance_cache/cache_lod.h); 0: every voxel its own entry.
+    float lodDistance = 0.0f;
     bool fullRetrace = false;          // tests: the static set traces the whole world every update
 
     bool operator==(const IrradianceCacheSettings&) const = default;

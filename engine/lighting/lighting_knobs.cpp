@@ -207,6 +207,9 @@ const Knob kCache[] = {
     {.name = "budget", .help = "cache: rays per frame, spent on new, edited, moving and stale entries first; 0 = all every frame",
      .kind = KnobKind::Count, .min = 0, .max = 100000000, .get = getPartField<&S::cache, &C::rayBudget>,
      .set = setPartField<&S::cache, &C::rayBudget>, .relevant = usesCache},
+    {.name = "lod_distance", .help = "cache: static faces this far (voxels) share an entry per open 2x2 patch; 0 = off",
+     .kind = KnobKind::Real, .min = 0, .max = 100000, .get = getPartField<&S::cache, &C::lodDistance>,
+     .set = setPartField<&S::cache, &C::lodDistance>, .relevant = usesCache},
 };
 
 // Path-traced indirect light beside the direct method (render/path_indirect/). The names carry

@@ -205,6 +205,7 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
         cacheInput.timeSeconds = settings.timeSeconds;
         cacheInput.frameIndex = mFrameIndex;
         cacheInput.seed = lighting.seed;
+        cacheInput.grid = &scene.grid;
         cacheInput.editedCellMins = editedCells;
         cacheInput.lightsChanged = (!lightEdit.full && (lightEdit.added || lightEdit.removed || lightEdit.changed)) ||
                                    (mPrevSky && !sameSky(*mPrevSky, scene.sky));

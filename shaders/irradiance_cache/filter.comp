@@ -1,7 +1,8 @@
 #version 460
 // Irradiance cache, smoothing (§4.7): a 3^3 binomial (Gaussian-like) filter over the same face of
 // the neighbouring entries of the same set. Empty neighbours and unexposed faces take no part, so
-// values never cross a one-voxel wall (its two sides are different faces).
+// values never cross a one-voxel wall (its two sides are different faces). A coarse entry (one
+// face of an open 2x2 patch) filters over the neighbouring patches of its plane.
 #extension GL_GOOGLE_include_directive : require
 
 #include "irradiance_cache/irradiance_cache.glsl"
@@ -23,6 +24,27 @@ void main() {
     }
     vec3 sum = vec3(0.0);
     float weights = 0.0;
+    if (entry.coarse != 0u) {
+        // A coarse entry: 3x3 over the neighbouring patches of its plane and face. Two open patches
+        // side by side share an open front, so no one-voxel wall stands between them.
+        uint axis = face >> 1u, ua = (axis + 1u) % 3u, va = (axis + 2u) % 3u;
+        for (int y = -1; y <= 1; ++y) {
+            for (int x = -1; x <= 1; ++x) {
+                ivec3 v = entry.voxel.xyz;
+                v[ua] += 2 * x;
+                v[va] += 2 * y;
+                uint n = x == 0 && y == 0 ? slot : cacheLookupKey(v, CACHE_SET_STATIC, entry.coarse);
+                if (n == ~0u) continue;
+                vec4 c = gIrradiance[n * CACHE_FACES + face];
+                if (c.w == 0.0) continue;
+                float w = float((2 - abs(x)) * (2 - abs(y)));
+                sum += w * c.rgb;
+                weights += w;
+            }
+        }
+        gFiltered[index] = vec4(sum / weights, 1.0);
+        return;
+    }
     for (int z = -1; z <= 1; ++z) {
         for (int y = -1; y <= 1; ++y) {
             for (int x = -1; x <= 1; ++x) {

@@ -3,12 +3,40 @@
 // set's entries (static pixels the static set only: dynamic objects never leak into static
 // surfaces), bilinearly across the neighbouring voxels in the face's plane. Neighbours without a
 // value drop out and the weights renormalise: the padding of §4.7 without storing padded voxels.
-// Adds albedo/pi * E to the frame's radiance.
+// Adds albedo/pi * E to the frame's radiance. Far static faces read coarse entries (2x2 patches)
+// the same way, between patch centres.
 #extension GL_GOOGLE_include_directive : require
 
 #include "irradiance_cache/irradiance_cache.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
+
+// Bilinear over the entries around point `p` of the face's plane: voxels' entries (coarse = 0)
+// at voxel centres, or coarse entries at 2x2 patch centres. Returns the weighted sum, weights in w.
+vec4 gatherLevel(ivec3 voxel, uint face, uint set, vec3 p, uint coarse) {
+    uint axis = face >> 1u, ua = (axis + 1u) % 3u, va = (axis + 2u) % 3u;
+    float cell = coarse != 0u ? 2.0 : 1.0;
+    vec2 uv = vec2(p[ua], p[va]) / cell - 0.5;
+    ivec2 base = ivec2(floor(uv));
+    vec2 f = uv - vec2(base);
+    vec3 sum = vec3(0.0);
+    float weights = 0.0;
+    for (int j = 0; j <= 1; ++j) {
+        for (int i = 0; i <= 1; ++i) {
+            ivec3 v = voxel;
+            v[ua] = (base.x + i) * int(cell);
+            v[va] = (base.y + j) * int(cell);
+            uint slot = cacheLookupKey(v, set, coarse);
+            if (slot == ~0u) continue;
+            vec4 e = gFiltered[slot * CACHE_FACES + face];
+            if (e.w == 0.0) continue;
+            float w = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y) + 1e-6;
+            sum += w * e.rgb * cacheFade(slot);
+            weights += w;
+        }
+    }
+    return vec4(sum, weights);
+}
 
 void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;
@@ -19,28 +47,16 @@ void main() {
     vec3 indirect = vec3(0.0);
     if (face < 6u) {
         uint set = (g.data.w & GBUFFER_FLAG_DYNAMIC) != 0u ? CACHE_SET_DYNAMIC : CACHE_SET_STATIC;
-        uint axis = face >> 1u, ua = (axis + 1u) % 3u, va = (axis + 2u) % 3u;
-        vec3 p = g.position.xyz;
-        vec2 uv = vec2(p[ua], p[va]) - 0.5;
-        ivec2 base = ivec2(floor(uv));
-        vec2 f = uv - vec2(base);
-        vec3 sum = vec3(0.0);
-        float weights = 0.0;
-        for (int j = 0; j <= 1; ++j) {
-            for (int i = 0; i <= 1; ++i) {
-                ivec3 v = g.voxel.xyz;
-                v[ua] = base.x + i;
-                v[va] = base.y + j;
-                uint slot = cacheLookup(v, set);
-                if (slot == ~0u) continue;
-                vec4 e = gFiltered[slot * CACHE_FACES + face];
-                if (e.w == 0.0) continue;
-                float w = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y) + 1e-6;
-                sum += w * e.rgb * cacheFade(slot);
-                weights += w;
-            }
-        }
-        if (weights > 0.0) indirect = gMaterials[g.data.x].albedo.rgb / PI * (sum / weights);
+        // Level of detail (cache_lod.h): far static faces read their open patch's coarse entries.
+        // The host chose from the previous frame's pixels, so where this frame's level has no
+        // entry yet the other level (if the patch is open) stands in.
+        uint coarse = 0u;
+        ivec3 patchBase;
+        if (set == CACHE_SET_STATIC && gCache.lodDistance > 0.0) coarse = cacheCoarsePatch(g.voxel.xyz, face, patchBase);
+        bool far = uintBitsToFloat(g.data.y) >= gCache.lodDistance;
+        vec4 r = gatherLevel(g.voxel.xyz, face, set, g.position.xyz, far ? coarse : 0u);
+        if (r.w == 0.0 && coarse != 0u) r = gatherLevel(g.voxel.xyz, face, set, g.position.xyz, far ? 0u : coarse);
+        if (r.w > 0.0) indirect = gMaterials[g.data.x].albedo.rgb / PI * (r.rgb / r.w);
     }
     gIndirect[index] = vec4(indirect, 1.0);
     gRadiance[index] += vec4(indirect, 0.0);

@@ -30,10 +30,16 @@ uint cacheThread() { return gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * 
 // Which of the rotated direction sets entry (voxel, set) uses, and how it is mirrored: a hash of
 // the key and the lighting seed, so neighbours' finite sets err independently and a run repeats
 // exactly. IrradianceCache::directionRotation is the host's copy.
-uint cacheRotation(ivec3 voxel, uint set) {
-    uvec2 key = uvec2(uint(voxel.x) | (uint(voxel.y) << 16u), uint(voxel.z) | (set << 31u));
+// The hash table's key words of (voxel, set, coarse): IrradianceCacheDirectory's keyWords.
+uvec2 cacheKeyWords(ivec3 voxel, uint set, uint coarse) {
+    return uvec2(uint(voxel.x) | (uint(voxel.y) << 16u), uint(voxel.z) | (coarse << CACHE_KEY_COARSE_SHIFT) | (set << 31u));
+}
+
+uint cacheRotation(ivec3 voxel, uint set, uint coarse) {
+    uvec2 key = cacheKeyWords(voxel, set, coarse);
     return pcgHash(key.x ^ pcgHash(key.y ^ pcgHash(gCache.seed ^ 0x9E3779B9u)));
 }
+uint cacheEntryRotation(CacheEntry e) { return cacheRotation(e.voxel.xyz, uint(e.voxel.w), e.coarse); }
 
 // Direction k of face `face` of an entry with rotation `rotation`, in world space. The set comes
 // from the host's table; the mirror (swap, negations) and the face frame only permute and negate
@@ -56,6 +62,18 @@ vec3 cacheRayOrigin(ivec3 voxel, uint face) {
     vec3 o = vec3(voxel) + 0.5;
     uint axis = face >> 1u;
     o[axis] += (face & 1u) != 0u ? CACHE_RAY_OFFSET : -CACHE_RAY_OFFSET;
+    return o;
+}
+
+// A coarse entry's rays start at the centre of its 2x2 patch (the corner its four voxels share),
+// just outside the face, in the open space in front of the patch.
+vec3 cacheEntryRayOrigin(CacheEntry e, uint face) {
+    vec3 o = cacheRayOrigin(e.voxel.xyz, face);
+    if (e.coarse != 0u) {
+        uint axis = face >> 1u;
+        o[(axis + 1u) % 3u] += 0.5;
+        o[(axis + 2u) % 3u] += 0.5;
+    }
     return o;
 }
 
@@ -86,10 +104,39 @@ bool cacheFaceExposed(ivec3 voxel, uint face, uint set) {
     return set == CACHE_SET_STATIC || dynamicVoxelMaterial(n) == 0u;
 }
 
-// Slot of (voxel, set), or ~0u. Same hash and probing as IrradianceCacheDirectory::buildTable.
-uint cacheLookup(ivec3 voxel, uint set) {
+// The coarse key (cacheKeyWords' `coarse` = 1 + face, at the patch's lowest voxel) of `face` of
+// static voxel `voxel` when its 2x2 patch is open — four static voxels in one plane, aligned to
+// even coordinates, the four voxels in front of them empty — else 0. The host's rule:
+// render/irradiance_cache/cache_lod.cpp, coarsePatchKey.
+uint cacheCoarsePatch(ivec3 voxel, uint face, out ivec3 base) {
+    uint axis = face >> 1u, ua = (axis + 1u) % 3u, va = (axis + 2u) % 3u;
+    base = voxel;
+    base[ua] &= ~1;
+    base[va] &= ~1;
+    ivec3 n = faceNormal(face);
+    for (int j = 0; j < 2; ++j) {
+        for (int i = 0; i < 2; ++i) {
+            ivec3 v = base;
+            v[ua] += i;
+            v[va] += j;
+            if (staticVoxelMaterial(v) == 0u || staticVoxelMaterial(v + n) != 0u) return 0u;
+        }
+    }
+    return 1u + face;
+}
+
+// Whether an entry's face is worth updating: a voxel's exposed faces; a coarse entry's one face
+// while its patch is still open (an edit may have closed it).
+bool cacheEntryFaceExposed(CacheEntry e, uint face) {
+    if (e.coarse == 0u) return cacheFaceExposed(e.voxel.xyz, face, uint(e.voxel.w));
+    ivec3 base;
+    return e.coarse == 1u + face && cacheCoarsePatch(e.voxel.xyz, face, base) == e.coarse;
+}
+
+// Slot of (voxel, set, coarse), or ~0u. Same hash and probing as IrradianceCacheDirectory::buildTable.
+uint cacheLookupKey(ivec3 voxel, uint set, uint coarse) {
     if (any(lessThan(voxel, ivec3(0))) || any(greaterThan(voxel, ivec3(0xFFFF)))) return ~0u;
-    uvec2 key = uvec2(uint(voxel.x) | (uint(voxel.y) << 16u), uint(voxel.z) | (set << 31u));
+    uvec2 key = cacheKeyWords(voxel, set, coarse);
     uint mask = gCache.tableMask;
     uint b = pcgHash(key.x ^ pcgHash(key.y)) & mask;
     for (uint i = 0u; i <= mask; ++i) {
@@ -100,6 +147,7 @@ uint cacheLookup(ivec3 voxel, uint set) {
     }
     return ~0u;
 }
+uint cacheLookup(ivec3 voxel, uint set) { return cacheLookupKey(voxel, set, 0u); }
 
 // A dynamic entry's irradiance dims linearly to zero over the fade time after its last update.
 float cacheFade(uint slot) {

@@ -44,14 +44,14 @@ void main() {
     CacheEntry entry = gEntries[slot];
     ivec3 voxel = entry.voxel.xyz;
     uint index = slot * CACHE_FACES + face;
-    if (!cacheFaceExposed(voxel, face, uint(entry.voxel.w))) {
+    if (!cacheEntryFaceExposed(entry, face)) {
         gIrradiance[index] = vec4(0.0);
         return;
     }
     uint rng = rngInit(uvec2(slot, face), gCache.frameIndex, 11u, gCache.seed);
-    vec3 o = cacheRayOrigin(voxel, face);
+    vec3 o = cacheEntryRayOrigin(entry, face);
     vec3 sum = vec3(0.0);
-    uint rotation = cacheRotation(voxel, uint(entry.voxel.w));  // the directions its hits were traced along
+    uint rotation = cacheEntryRotation(entry);  // the directions its hits were traced along
     for (uint j = 0u; j < S; ++j) {
         vec3 d = cacheDirection(rotation, face, cacheDirectionIndex(entry.phase, j));
         sum += lightLeaving(voxel, face, o, d, gSelectedHits[(item * CACHE_FACES + face) * S + j], rng);

@@ -17,9 +17,9 @@ void main() {
     uint slot = gLists[gCache.capacity + item];
     CacheEntry entry = gEntries[slot];
     ivec3 voxel = entry.voxel.xyz;
-    bool exposed = cacheFaceExposed(voxel, face, CACHE_SET_STATIC);
-    uint rotation = cacheRotation(voxel, CACHE_SET_STATIC);
-    vec3 o = cacheRayOrigin(voxel, face);
+    bool exposed = cacheEntryFaceExposed(entry, face);
+    uint rotation = cacheEntryRotation(entry);
+    vec3 o = cacheEntryRayOrigin(entry, face);
     for (uint j = 0u; j < S; ++j) {
         uint k = cacheDirectionIndex(entry.phase, j);
         uint packed = CACHE_HIT_MISS;

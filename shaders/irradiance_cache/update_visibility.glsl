@@ -16,10 +16,9 @@ layout(local_size_x = CACHE_GROUP_SIZE) in;
 
 // The selected hit of ray j of `face` of a static entry, or of a dynamic entry; `traced` counts
 // the rays actually traced (divide and win traces none while no dynamic object exists).
-uint selectHit(uint slot, ivec3 voxel, uint set, uint rotation, uint phase, uint face, uint j, inout uint traced) {
+uint selectHit(uint slot, ivec3 voxel, vec3 o, uint rotation, uint phase, uint face, uint j, inout uint traced) {
     uint K = gCache.directions;
     uint k = cacheDirectionIndex(phase, j);
-    vec3 o = cacheRayOrigin(voxel, face);
     vec3 d = cacheDirection(rotation, face, k);
     float maxLength = gCache.maxRayLength;
 #if !defined(VISIBILITY_MODE)
@@ -54,13 +53,13 @@ void main() {
     uint slot = gLists[item];
     CacheEntry entry = gEntries[slot];
     ivec3 voxel = entry.voxel.xyz;
-    uint set = uint(entry.voxel.w);
-    bool exposed = cacheFaceExposed(voxel, face, set);
-    uint rotation = cacheRotation(voxel, set);
+    bool exposed = cacheEntryFaceExposed(entry, face);
+    uint rotation = cacheEntryRotation(entry);
+    vec3 o = cacheEntryRayOrigin(entry, face);
     uint traced = 0u;
     for (uint j = 0u; j < S; ++j) {
         gSelectedHits[(item * CACHE_FACES + face) * S + j] =
-            exposed ? selectHit(slot, voxel, set, rotation, entry.phase, face, j, traced) : CACHE_HIT_MISS;
+            exposed ? selectHit(slot, voxel, o, rotation, entry.phase, face, j, traced) : CACHE_HIT_MISS;
     }
     if (traced > 0u) atomicAdd(gCounters[CACHE_COUNTER_RAYS], traced);
 }

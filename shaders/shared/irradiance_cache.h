@@ -52,7 +52,8 @@ struct CacheParams {
     float maxRayLength;  // voxels
     float time;          // scene time (s)
     float fadeSeconds;   // dynamic entries fade over this long without an update
-    uint pad0, pad1, pad2;
+    float lodDistance;   // static faces at least this far (view distance, voxels) use 2x2 patch entries; 0: off
+    uint pad1, pad2;
 };
 SHARED_ASSERT_SIZE(CacheParams, 80);
 
@@ -68,13 +69,18 @@ struct CacheEntry {
     float updatedAt;   // scene time of its last update (s)
     uint flags;        // CACHE_ENTRY_*, this frame
     uint phase;        // which S of the K directions this update uses: j * (K / S) + phase
-    uint pad;
+    uint coarse;       // 0: a voxel's entry (six faces); 1 + face: a coarse entry, one face of an open 2x2 patch
 };
 SHARED_ASSERT_SIZE(CacheEntry, 32);
 
-// One hash-table bucket: the key (voxel, set) and its slot. Key x = CACHE_TABLE_EMPTY: unused.
+// Level of detail: a coarse entry covers one face of a 2x2 patch of static voxels in one plane,
+// aligned to even coordinates, whose four voxels in front are empty (render/irradiance_cache/
+// cache_lod.h). Its key is the patch's lowest voxel with `coarse` = 1 + face in key bits 27..29.
+SHARED_CONST uint CACHE_KEY_COARSE_SHIFT = 27u;
+
+// One hash-table bucket: the key (voxel, set, coarse) and its slot. Key x = CACHE_TABLE_EMPTY: unused.
 struct CacheBucket {
-    uvec4 keySlot;  // x: voxel.x | voxel.y << 16, y: voxel.z | set << 31, z: slot, w: unused
+    uvec4 keySlot;  // x: voxel.x | voxel.y << 16, y: voxel.z | coarse << 27 | set << 31, z: slot, w: unused
 };
 SHARED_ASSERT_SIZE(CacheBucket, 16);
 

@@ -12,6 +12,7 @@
 #include "gpu/gpu_test_setup.h"
 #include "io/image_io.h"
 #include "metrics/image_metrics.h"
+#include "render/irradiance_cache/cache_lod.h"
 #include "scene/scene_file.h"
 #include "world/scene_trace.h"
 #include "world/world_edits.h"
@@ -138,9 +139,11 @@ std::vector<glm::vec4> average(const std::vector<glm::vec4>& a, const std::vecto
 
 // The converged cache (one bounce, defaults but K) with the lighting seed `seed`.
 std::vector<glm::vec4> cacheIndirectSeeded(Scene& scene, const engine::world::CameraPreset& camera, std::uint32_t size,
-                                           int frames, std::uint32_t directions, std::uint32_t seed, float maxRay = 0.0f) {
+                                           int frames, std::uint32_t directions, std::uint32_t seed, float maxRay = 0.0f,
+                                           float lodDistance = 0.0f) {
     LightingSettings l = cacheLighting(1);
     l.cache.directions = directions;
+    l.cache.lodDistance = lodDistance;
     if (maxRay > 0.0f) l.cache.maxRayLength = maxRay;
     l.seed = seed;
     Renderer r(gpu_testing::context());
@@ -193,8 +196,17 @@ TEST_F(IrradianceCache, MultiBounceApproachesMultiBounceReference) {
 }
 
 // A sealed, unlit room behind a one-voxel wall, with the sun and a lamp outside: no light may
-// reach its inside surfaces through the cache's filter or interpolation.
-TEST_F(IrradianceCache, ThinWallDoesNotLeak) {
+// reach its inside surfaces through the cache's filter or interpolation — with every voxel its own
+// entry, and with level of detail forced on everywhere (lod_distance 1: every face whose 2x2
+// patch is open shares a coarse entry).
+namespace {
+
+struct ThinWallResult {
+    double outsideMean = 0.0;
+    float insideMax = 0.0f;
+    std::uint32_t coarseEntries = 0;
+};
+ThinWallResult thinWall(float lodDistance) {
     Scene scene = makeScene({48, 32, 48});
     fillBox(scene.grid, Box{{0, 0, 0}, {48, 4, 48}}, kWhite);
     // The room: x in [24, 40), z in [8, 40), walls one voxel thick, a roof.
@@ -208,19 +220,66 @@ TEST_F(IrradianceCache, ThinWallDoesNotLeak) {
 
     Renderer r(gpu_testing::context());
     LightingSettings l = cacheLighting(1);
+    l.cache.lodDistance = lodDistance;
+    ThinWallResult out;
     // Both views every frame, so the inside and outside entries are both live and neighbours.
     for (int i = 0; i < 24; ++i) {
         r.render(scene, scene.camera("outside"), frame(48), l);
+        out.coarseEntries = std::max(out.coarseEntries, r.irradianceCache().stats().coarseEntries);
         r.render(scene, scene.camera("inside"), frame(48), l);
+        out.coarseEntries = std::max(out.coarseEntries, r.irradianceCache().stats().coarseEntries);
     }
     std::vector<glm::vec4> inside = r.readback().indirect;
     r.render(scene, scene.camera("outside"), frame(48), l);
-    std::vector<glm::vec4> outside = r.readback().indirect;
-    float insideMax = 0.0f;
-    for (const glm::vec4& p : inside) insideMax = std::max({insideMax, p.x, p.y, p.z});
-    std::printf("thin wall: indirect outside mean %.4f; inside max %.3g\n", meanOf(outside), insideMax);
-    EXPECT_GT(meanOf(outside), 0.02);  // the cache works on the lit side
-    EXPECT_EQ(insideMax, 0.0f);        // and nothing crosses the wall
+    out.outsideMean = meanOf(r.readback().indirect);
+    for (const glm::vec4& p : inside) out.insideMax = std::max({out.insideMax, p.x, p.y, p.z});
+    std::printf("thin wall (lod_distance %g): indirect outside mean %.4f; inside max %.3g; coarse entries %u\n",
+                lodDistance, out.outsideMean, out.insideMax, out.coarseEntries);
+    return out;
+}
+
+}  // namespace
+
+TEST_F(IrradianceCache, ThinWallDoesNotLeak) {
+    const ThinWallResult fine = thinWall(0.0f);
+    EXPECT_GT(fine.outsideMean, 0.02);  // the cache works on the lit side
+    EXPECT_EQ(fine.insideMax, 0.0f);    // and nothing crosses the wall
+    EXPECT_EQ(fine.coarseEntries, 0u);
+    const ThinWallResult coarse = thinWall(1.0f);
+    EXPECT_GT(coarse.coarseEntries, 100u);  // the floors and walls are mostly coarse
+    EXPECT_GT(coarse.outsideMean, 0.02);
+    EXPECT_EQ(coarse.insideMax, 0.0f);
+}
+
+// Level of detail: on the courtyard's wide view, faces farther than 40 voxels along the view ray
+// share coarse entries (one face of an open 2x2 patch): fewer entries, and an indirect term close
+// to the fine cache's (same seed, both converged).
+TEST_F(IrradianceCache, FarSurfacesShareCoarseEntries) {
+    Scene scene = courtyard();
+    const std::uint32_t size = 64;
+    auto run = [&](float lodDistance, std::uint32_t& entries, std::uint32_t& coarse) {
+        LightingSettings l = cacheLighting(1);
+        l.cache.lodDistance = lodDistance;
+        Renderer r(gpu_testing::context());
+        for (int i = 0; i < 40; ++i) r.render(scene, scene.camera(), frame(size), l);
+        entries = r.irradianceCache().stats().entries;
+        coarse = r.irradianceCache().stats().coarseEntries;
+        return r.readback().indirect;
+    };
+    std::uint32_t fineEntries = 0, lodEntries = 0, fineCoarse = 0, lodCoarse = 0;
+    std::vector<glm::vec4> fine = run(0.0f, fineEntries, fineCoarse);
+    std::vector<glm::vec4> lod = run(40.0f, lodEntries, lodCoarse);
+    const double fineMean = meanOf(fine), lodMean = meanOf(lod), err = mae(lod, fine) / fineMean;
+    std::printf("lod: entries %u fine, %u with lod_distance 40 (%u coarse, %.2fx); indirect mean %.4f vs %.4f (%+.1f %%), "
+                "MAE %.1f %% of the mean\n",
+                fineEntries, lodEntries, lodCoarse, double(lodEntries) / fineEntries, fineMean, lodMean,
+                100.0 * (lodMean / fineMean - 1.0), 100.0 * err);
+    EXPECT_EQ(fineCoarse, 0u);
+    EXPECT_GT(lodCoarse, 100u);
+    // Measured: 0.55x the entries, mean -0.0 %, MAE 0.7 % of the mean.
+    EXPECT_LT(lodEntries, fineEntries * 3 / 4);
+    EXPECT_NEAR(lodMean / fineMean, 1.0, 0.03);
+    EXPECT_LT(err, 0.05);
 }
 
 // A sealed, unlit room wider than 250 voxels (cornell's interior is 256): every ray of the cache
@@ -416,11 +475,13 @@ std::uint32_t packHit(glm::ivec3 origin, glm::vec3 d, const SceneHit& h) {
 
 // Divide and win is exact: for every ray the cache traced this frame, "cached static hit + the
 // dynamic grid traced alone" selects the same hit (voxel, face, set) as tracing both worlds from
-// scratch — on the GPU in full-re-trace mode and on the CPU reference.
-TEST_F(IrradianceCache, DivideAndWinSelectsTheSameHitAsAFullRetrace) {
+// scratch — on the GPU in full-re-trace mode and on the CPU reference. With every voxel its own
+// entry, and with coarse entries everywhere their patch is open (lod_distance 1).
+void expectDivideAndWinExact(float lodDistance) {
     Scene a = loadWorld("thin_wall.toml"), b = loadWorld("thin_wall.toml");
     Renderer divide(gpu_testing::context()), full(gpu_testing::context());
     LightingSettings ld = cacheLighting(1), lf = cacheLighting(1);
+    ld.cache.lodDistance = lf.cache.lodDistance = lodDistance;
     lf.cache.fullRetrace = true;
     // The crate slides to the wall over these frames: static rays cached early see it arrive.
     const double times[] = {0.0, 0.6, 1.2, 1.8, 2.4};
@@ -436,10 +497,11 @@ TEST_F(IrradianceCache, DivideAndWinSelectsTheSameHitAsAFullRetrace) {
     const std::size_t rays = cd.updateList().size() * shared::CACHE_FACES * S;
     std::vector<std::uint32_t> hd = readUints(cd.selectedHits()), hf = readUints(cf.selectedHits());
 
-    std::size_t traced = 0, dynamicHits = 0, gpuMismatch = 0, cpuMismatch = 0;
+    std::size_t traced = 0, dynamicHits = 0, gpuMismatch = 0, cpuMismatch = 0, coarse = 0;
     for (std::size_t item = 0; item < cd.updateList().size(); ++item) {
         const shared::CacheEntry& e = cd.directory().entry(cd.updateList()[item]);
         const glm::ivec3 v(e.voxel);
+        coarse += e.coarse != 0;
         for (std::uint32_t face = 0; face < 6; ++face) {
             glm::ivec3 n = v;
             n[face >> 1] += (face & 1u) ? 1 : -1;
@@ -448,13 +510,19 @@ TEST_F(IrradianceCache, DivideAndWinSelectsTheSameHitAsAFullRetrace) {
                 glm::ivec3 local = n - a.dynamic.origin;
                 exposed = !a.dynamic.grid.contains(local) || a.dynamic.grid.get(local) == kEmpty;
             }
+            glm::vec3 o = rayOrigin(v, face);
+            if (e.coarse != 0) {  // one face of an open 2x2 patch; its rays start at the patch's centre
+                exposed = e.coarse == 1 + face && engine::render::coarsePatchKey(a.grid, v, face).has_value();
+                o[((face >> 1) + 1) % 3] += 0.5f;
+                o[((face >> 1) + 2) % 3] += 0.5f;
+            }
             for (std::uint32_t j = 0; j < S; ++j) {
                 const std::size_t at = (item * shared::CACHE_FACES + face) * S + j;
                 if (hd[at] != hf[at]) ++gpuMismatch;
                 std::uint32_t expected = shared::CACHE_HIT_MISS;
                 if (exposed) {
-                    glm::vec3 o = rayOrigin(v, face);
-                    glm::vec3 d = cd.rayDirection(v, std::uint32_t(e.voxel.w), face, cd.directionIndex(cd.updateList()[item], j));
+                    glm::vec3 d = cd.rayDirection(v, std::uint32_t(e.voxel.w), face,
+                                                  cd.directionIndex(cd.updateList()[item], j), e.coarse);
                     SceneHit h = traceScene(a.grid, &a.dynamic, o, d, shared::CACHE_MAX_RAY_LENGTH);
                     expected = packHit(v, d, h);
                     ++traced;
@@ -464,12 +532,18 @@ TEST_F(IrradianceCache, DivideAndWinSelectsTheSameHitAsAFullRetrace) {
             }
         }
     }
-    std::printf("divide and win: %zu rays of %zu entries, %zu traced (exposed faces), %zu hit the crate; "
-                "%zu differ from the GPU full re-trace, %zu from the CPU traceScene\n",
-                rays, cd.updateList().size(), traced, dynamicHits, gpuMismatch, cpuMismatch);
-    EXPECT_GT(dynamicHits, 100u);
+    std::printf("divide and win (lod_distance %g): %zu rays of %zu entries (%zu coarse), %zu traced (exposed faces), "
+                "%zu hit the crate; %zu differ from the GPU full re-trace, %zu from the CPU traceScene\n",
+                lodDistance, rays, cd.updateList().size(), coarse, traced, dynamicHits, gpuMismatch, cpuMismatch);
+    EXPECT_GT(dynamicHits, lodDistance > 0.0f ? 20u : 100u);
+    if (lodDistance > 0.0f) EXPECT_GT(coarse, 100u);
     EXPECT_EQ(gpuMismatch, 0u);
     EXPECT_EQ(cpuMismatch, 0u);
+}
+
+TEST_F(IrradianceCache, DivideAndWinSelectsTheSameHitAsAFullRetrace) {
+    expectDivideAndWinExact(0.0f);
+    expectDivideAndWinExact(1.0f);
 }
 
 namespace {
@@ -700,6 +774,7 @@ TEST_F(IrradianceCache, DISABLED_MeasureScenes) {
     const std::uint32_t size = envOr("VOX_MEASURE_SIZE", 64), frames = envOr("VOX_MEASURE_FRAMES", 64);
     const std::uint32_t spp = envOr("VOX_MEASURE_SPP", 1024), k = envOr("VOX_MEASURE_K", 128);
     const float maxRay = float(envOr("VOX_MEASURE_MAX_RAY", 0));
+    const float lod = float(envOr("VOX_MEASURE_LOD", 0));  // the cache's lod_distance
     std::vector<std::string> worlds{"cornell", "mountain", "letters", "apartments", "thin_wall"};
     if (const char* w = std::getenv("VOX_MEASURE_WORLD")) worlds = {w};
     for (const std::string& name : worlds) {
@@ -733,8 +808,8 @@ TEST_F(IrradianceCache, DISABLED_MeasureScenes) {
         // The reference's own noise: seed 2 against seed 1, halved for the average of both (1/sqrt 2
         // per seed, 1/sqrt 2 again for the average).
         IndirectError noise = indirectError(r2, r1, size, size);
-        std::vector<glm::vec4> c1 = cacheIndirectSeeded(scene, camera, size, int(frames), k, 1, maxRay);
-        std::vector<glm::vec4> c2 = cacheIndirectSeeded(scene, camera, size, int(frames), k, 2, maxRay);
+        std::vector<glm::vec4> c1 = cacheIndirectSeeded(scene, camera, size, int(frames), k, 1, maxRay, lod);
+        std::vector<glm::vec4> c2 = cacheIndirectSeeded(scene, camera, size, int(frames), k, 2, maxRay, lod);
         IndirectError e1 = indirectError(c1, ref, size, size), e2 = indirectError(c2, ref, size, size);
         IndirectError ea = indirectError(average(c1, c2), ref, size, size);
         // With the mean's error taken out: what is left is the per-pixel structure.
@@ -763,6 +838,7 @@ TEST_F(IrradianceCache, DISABLED_MeasureScenes) {
             raw(c1, "cache");
         }
         std::printf("MEASURE %s mean-corrected seed1 rmae %.4f mae/mean %.4f\n", name.c_str(), es.rmae, es.relativeMae);
+        std::printf("MEASURE lod_distance %g\n", lod);
         std::printf("MEASURE %s K=%u frames=%u size=%u spp=2x%u ref-mean=%.5f | ref noise (seed 2 vs 1) rmae %.4f mae/mean %.4f | "
                     "cache seed1 rmae %.4f mae/mean %.4f mean %.4f | seed2 rmae %.4f mae/mean %.4f mean %.4f | "
                     "avg rmae %.4f mae/mean %.4f\n",

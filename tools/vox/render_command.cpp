@@ -103,6 +103,7 @@ int runRender(const RenderOptions& o) {
                     "%.2f MiB GPU, %llu rays traced, %.2f ms CPU\n",
                     c.visibleStatic, c.visibleDynamic, c.updated, c.waiting, c.entries, double(c.bytes) / 1048576.0,
                     static_cast<unsigned long long>(c.raysTraced), frame.cachePrepareMs);
+        if (c.coarseEntries) std::printf("cache    level of detail: %u of the visible static entries are coarse (2x2 patches)\n", c.coarseEntries);
     }
     if (frame.skyUsed && l.sky == engine::lighting::Sky::Dvf) {
         std::printf("sky      %u DVF masks (%u waiting), %u traced with %u rays in the last frame, %.2f MiB GPU table\n",

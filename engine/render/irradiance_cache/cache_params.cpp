@@ -23,6 +23,7 @@ shared::CacheParams cacheParams(const lighting::IrradianceCacheSettings& s, cons
     p.maxRayLength = std::min(s.maxRayLength, shared::CACHE_MAX_RAY_LENGTH);
     p.time = static_cast<float>(f.timeSeconds);
     p.fadeSeconds = s.fadeSeconds;
+    p.lodDistance = s.lodDistance;
     return p;
 }
 

@@ -11,6 +11,7 @@
 #include "core/hash.h"
 #include "gpu/command_list.h"
 #include "gpu/uploader.h"
+#include "render/irradiance_cache/cache_lod.h"
 #include "render/irradiance_cache/cache_params.h"
 #include "shared/irradiance_cache.h"
 
@@ -117,14 +118,15 @@ std::uint64_t IrradianceCache::bytesPerSlot(const lighting::IrradianceCacheSetti
            + shared::CACHE_FACES * s.raysPerUpdate * 4ull;                           // selected hits
 }
 
-std::uint32_t IrradianceCache::directionRotation(glm::ivec3 voxel, std::uint32_t set, std::uint32_t seed) {
+std::uint32_t IrradianceCache::directionRotation(glm::ivec3 voxel, std::uint32_t set, std::uint32_t seed, std::uint32_t coarse) {
     const std::uint32_t x = static_cast<std::uint32_t>(voxel.x) | (static_cast<std::uint32_t>(voxel.y) << 16);
-    const std::uint32_t y = static_cast<std::uint32_t>(voxel.z) | (set << 31);
+    const std::uint32_t y = static_cast<std::uint32_t>(voxel.z) | (coarse << shared::CACHE_KEY_COARSE_SHIFT) | (set << 31);
     return pcgHash(x ^ pcgHash(y ^ pcgHash(seed ^ 0x9E3779B9u)));
 }
 
-glm::vec3 IrradianceCache::rayDirection(glm::ivec3 voxel, std::uint32_t set, std::uint32_t face, std::uint32_t k) const {
-    const std::uint32_t rotation = directionRotation(voxel, set, mSeed);
+glm::vec3 IrradianceCache::rayDirection(glm::ivec3 voxel, std::uint32_t set, std::uint32_t face, std::uint32_t k,
+                                        std::uint32_t coarse) const {
+    const std::uint32_t rotation = directionRotation(voxel, set, mSeed, coarse);
     glm::vec3 local(mDirections[std::size_t(rotation % shared::CACHE_DIRECTION_SETS) * mSettings.directions + k]);
     const std::uint32_t mirror = rotation >> 29;
     if (mirror & 1u) std::swap(local.x, local.y);
@@ -198,16 +200,21 @@ void IrradianceCache::prepare(const lighting::IrradianceCacheSettings& settings,
     // Visible voxels, from the G-buffer; an N^3 neighbourhood around the dynamic ones so the
     // values a moving object interpolates are ready before it gets there (§4.4).
     std::unordered_set<std::uint64_t> seenStatic, seenDynamic;
+    // A static pixel far enough away reads a coarse entry where its face's 2x2 patch is open.
     std::vector<CacheKey> visible;
     std::vector<glm::ivec3> dynamicVoxels;
+    const bool lod = settings.lodDistance > 0.0f && frameIn.grid != nullptr;
     for (const shared::GBufferTexel& g : frameIn.gbuffer) {
-        if (static_cast<std::uint32_t>(g.voxel.w) >= 6u) continue;
+        const auto face = static_cast<std::uint32_t>(g.voxel.w);
+        if (face >= 6u) continue;
         glm::ivec3 v(g.voxel);
         if ((g.data.w & shared::GBUFFER_FLAG_DYNAMIC) != 0u) {
             if (seenDynamic.insert(packCacheKey({v, shared::CACHE_SET_DYNAMIC})).second) dynamicVoxels.push_back(v);
-        } else if (seenStatic.insert(packCacheKey({v, shared::CACHE_SET_STATIC})).second) {
-            visible.push_back({v, shared::CACHE_SET_STATIC});
+            continue;
         }
+        const CacheKey key = lod ? staticKeyFor(*frameIn.grid, v, face, std::bit_cast<float>(g.data.y), settings.lodDistance)
+                                 : CacheKey{v, shared::CACHE_SET_STATIC};
+        if (seenStatic.insert(packCacheKey(key)).second) visible.push_back(key);
     }
     mStats.visibleStatic = static_cast<std::uint32_t>(seenStatic.size());
     mStats.visibleDynamic = static_cast<std::uint32_t>(dynamicVoxels.size());
@@ -253,6 +260,7 @@ void IrradianceCache::prepare(const lighting::IrradianceCacheSettings& settings,
     mStats.traced = static_cast<std::uint32_t>(mTrace.size());
     mStats.waiting = lists.waiting;
     mStats.entries = mDirectory.liveEntries();
+    for (const CacheKey& key : visible) mStats.coarseEntries += key.coarse != 0 && mDirectory.slotOf(key) != ~0u;
     mStats.dropped = lists.dropped;
     mStats.evicted = lists.evicted;
     mStats.rays = lists.rays;

@@ -24,6 +24,7 @@
 #include "lighting/irradiance_cache_settings.h"
 #include "render/irradiance_cache/irradiance_cache_directory.h"
 #include "render/passes/lit_pass.h"
+#include "world/brick_grid.h"
 #include "shared/gbuffer.h"
 
 namespace engine::gpu {
@@ -34,13 +35,14 @@ class Uploader;
 namespace engine::render {
 
 struct IrradianceCacheStats {
-    std::uint32_t visibleStatic = 0;   // distinct static voxels seen by the camera
+    std::uint32_t visibleStatic = 0;   // distinct static keys seen by the camera (voxels; with LOD, also 2x2 patches)
     std::uint32_t visibleDynamic = 0;  // distinct dynamic voxels seen by the camera
     std::uint32_t updated = 0;         // entries updated this frame (with the neighbourhoods)
     std::uint32_t dynamicEntries = 0;  // of them, dynamic-set entries
     std::uint32_t traced = 0;          // static entries that traced static rays this frame
     std::uint32_t waiting = 0;         // visible entries the ray budget left for later frames
     std::uint32_t entries = 0;         // live entries
+    std::uint32_t coarseEntries = 0;   // of them, coarse ones seen this frame (one face of a 2x2 patch, cache_lod.h)
     std::uint32_t dropped = 0, evicted = 0, invalidated = 0;
     std::uint64_t rays = 0;            // rays this frame's updates may trace (what the budget counts)
     std::uint64_t raysTraced = 0;      // rays the GPU traced (counted by the shaders; excluding shadow rays)
@@ -50,6 +52,7 @@ struct IrradianceCacheStats {
 // What prepare() needs of the frame.
 struct CacheFrameInput {
     std::span<const shared::GBufferTexel> gbuffer;  // whose visible voxels are kept up to date
+    const world::BrickGrid* grid = nullptr;         // the static world, for the coarse entries' rule (cache_lod.h)
     glm::uvec2 size{0};                             // this frame's image
     double timeSeconds = 0.0;
     std::uint32_t frameIndex = 0;
@@ -90,8 +93,9 @@ public:
     // The host's copy of the shaders' per-entry directions (irradiance_cache.glsl), bit for bit:
     // which set and mirror entry (voxel, set) uses under a lighting seed, and its direction k on
     // `face` in world space under the current seed.
-    static std::uint32_t directionRotation(glm::ivec3 voxel, std::uint32_t set, std::uint32_t seed);
-    glm::vec3 rayDirection(glm::ivec3 voxel, std::uint32_t set, std::uint32_t face, std::uint32_t k) const;
+    static std::uint32_t directionRotation(glm::ivec3 voxel, std::uint32_t set, std::uint32_t seed, std::uint32_t coarse = 0);
+    glm::vec3 rayDirection(glm::ivec3 voxel, std::uint32_t set, std::uint32_t face, std::uint32_t k,
+                           std::uint32_t coarse = 0) const;
     static std::uint64_t bytesPerSlot(const lighting::IrradianceCacheSettings& settings);
 
 private:

@@ -11,7 +11,7 @@ namespace {
 
 glm::uvec2 keyWords(const CacheKey& key) {
     return {static_cast<std::uint32_t>(key.voxel.x) | (static_cast<std::uint32_t>(key.voxel.y) << 16),
-            static_cast<std::uint32_t>(key.voxel.z) | (key.set << 31)};
+            static_cast<std::uint32_t>(key.voxel.z) | (key.coarse << shared::CACHE_KEY_COARSE_SHIFT) | (key.set << 31)};
 }
 
 }  // namespace
@@ -63,7 +63,8 @@ std::uint32_t IrradianceCacheDirectory::allocate(const CacheKey& key, std::uint6
     s.live = true;
     s.lastSeen = frame;
     s.lastUpdate = time;
-    mEntries[slot] = shared::CacheEntry{glm::ivec4(key.voxel, static_cast<int>(key.set)), static_cast<float>(time), 0u, 0u, 0u};
+    mEntries[slot] = shared::CacheEntry{glm::ivec4(key.voxel, static_cast<int>(key.set)), static_cast<float>(time), 0u, 0u,
+                                        key.coarse};
     mIndex.emplace(packCacheKey(key), slot);
     lists.tableChanged = true;
     return slot;
@@ -142,12 +143,16 @@ CacheFrameLists IrradianceCacheDirectory::beginFrame(std::span<const CacheKey> v
     const auto order = [](std::uint64_t cls, std::uint64_t lastUpdate) {
         return cls << 56 | (lastUpdate & ((1ull << 56) - 1));
     };
-    const std::uint32_t update = work.raysPerUpdate;
+    // A coarse entry traces one face, a voxel's entry up to six.
+    const auto updateCost = [&](const CacheKey& key) {
+        return key.coarse != 0 ? work.raysPerUpdate / shared::CACHE_FACES : work.raysPerUpdate;
+    };
     std::vector<Candidate> candidates;
     candidates.reserve(seen.size() + fresh.size());
     for (std::uint32_t slot : seen) {
         const Slot& s = mSlots[slot];
         std::uint64_t cls;
+        const std::uint32_t update = updateCost(s.key);
         std::uint32_t cost = update;
         if (s.key.set == shared::CACHE_SET_DYNAMIC) {
             cls = 1;
@@ -170,6 +175,7 @@ CacheFrameLists IrradianceCacheDirectory::beginFrame(std::span<const CacheKey> v
     const auto firstFresh = static_cast<std::uint32_t>(mSlots.size());
     for (std::uint32_t i = 0; i < fresh.size(); ++i) {
         const bool dynamic = fresh[i].set == shared::CACHE_SET_DYNAMIC;
+        const std::uint32_t update = updateCost(fresh[i]);
         candidates.push_back({order(dynamic ? 1 : 0, 0), packCacheKey(fresh[i]), firstFresh + i, dynamic ? update : 2 * update});
     }
     std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {

@@ -23,6 +23,7 @@ namespace engine::render {
 struct CacheKey {
     glm::ivec3 voxel{0};
     std::uint32_t set = shared::CACHE_SET_STATIC;
+    std::uint32_t coarse = 0;  // 0: the voxel's entry; 1 + face: one face of an open 2x2 patch (cache_lod.h)
     bool operator==(const CacheKey&) const = default;
 };
 
@@ -45,7 +46,7 @@ std::uint32_t cacheKeyHash(const CacheKey& key);
 // Without a budget (rayBudget 0) every visible entry is updated every frame.
 struct CacheWork {
     std::uint64_t rayBudget = 0;         // rays per frame; 0: no limit
-    std::uint32_t raysPerUpdate = 96;    // S rays on each of the six faces
+    std::uint32_t raysPerUpdate = 96;    // S rays on each of the six faces (a coarse entry traces one face: S)
     std::uint32_t phases = 8;            // K / S: the updates a (re)trace takes
     std::uint32_t convergedAfter = 33;   // about 1 / alpha
     std::uint32_t refreshFrames = 30;
