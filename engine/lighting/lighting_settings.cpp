@@ -48,6 +48,7 @@ std::string LightingSettings::describe() const {
     }
     if (indirect == Indirect::Cache && method != Method::Reference) s += " + " + cache.describe();
     if (indirect == Indirect::Path && method != Method::Reference) s += " + " + path.describe();
+    if (indirect == Indirect::Vct && method != Method::Reference) s += " + " + vct.describe();
     return s;
 }
 

@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "lighting/irradiance_cache_settings.h"
 #include "lighting/path_indirect_settings.h"
+#include "lighting/vct_settings.h"
 #include "shared/restir.h"
 
 namespace engine::lighting {
@@ -44,9 +45,10 @@ struct LightingSettings {
     bool referenceMis = true;            // Reference: MIS of light and cosine sampling (false: light sampling only)
     ReferenceProbe referenceProbe = ReferenceProbe::None;
     std::uint32_t seed = 1;
-    Indirect indirect = Indirect::None;  // Cache and Path add their term to any method but Reference
+    Indirect indirect = Indirect::None;  // Cache, Path and Vct add their term to any method but Reference
     IrradianceCacheSettings cache;
     PathIndirectSettings path;
+    VctSettings vct;
 
     bool operator==(const LightingSettings&) const = default;
     std::string describe() const;

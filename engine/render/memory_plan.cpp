@@ -7,6 +7,7 @@
 
 #include "gpu/uploader.h"
 #include "render/renderer.h"
+#include "render/vct/voxel_cone_tracing.h"
 #include "shared/brick_grid.h"
 #include "shared/material.h"
 
@@ -30,6 +31,7 @@ MemoryPlan planMemory(const world::Scene& scene, glm::uvec2 frameSize, const lig
     plan.upload = std::min<std::uint64_t>(gpu::Uploader::kChunkBytes, std::bit_ceil(plan.gpuWorld));  // one chunk at most
     plan.frame = std::uint64_t(frameSize.x) * frameSize.y * Renderer::frameBytesPerPixel();
     if (lighting.indirect == lighting::Indirect::Cache) plan.cache = lighting.cache.budgetBytes;
+    if (lighting.indirect == lighting::Indirect::Vct) plan.cache = 2 * VoxelConeTracing::volumeBytes();  // fixed: two volumes
     return plan;
 }
 
