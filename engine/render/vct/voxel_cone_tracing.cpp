@@ -2,10 +2,22 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <glm/common.hpp>
 
 namespace engine::render {
+
+namespace {
+
+// The union of two boxes (max exclusive); an empty box (min == max) adds nothing.
+std::pair<glm::ivec3, glm::ivec3> unionOf(glm::ivec3 aMin, glm::ivec3 aMax, glm::ivec3 bMin, glm::ivec3 bMax) {
+    if (aMin == aMax) return {bMin, bMax};
+    if (bMin == bMax) return {aMin, aMax};
+    return {glm::min(aMin, bMin), glm::max(aMax, bMax)};
+}
+
+}  // namespace
 
 VoxelConeTracing::VoxelConeTracing(gpu::Context& ctx) : mCtx(ctx), mInject(ctx), mCones(ctx) {
     mParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::VctParams), "vct.params");
@@ -33,23 +45,17 @@ void VoxelConeTracing::prepare(const lighting::LightingSettings& lighting, const
         p.prevOrigin[l] = mPrevOrigins[l];
     }
     p.levels = levels;
+    // Last frame's volume still holds this frame's light: nothing changed, the same settings.
+    const bool previousValid = mPrepared && frame.frameIndex == mLastFrame + 1 && !frame.changed &&
+                               mPrevSettings == lighting.vct && mPrevSeed == lighting.seed;
     p.flags = (lighting.vct.leakMitigation ? shared::VCT_LEAK_MITIGATION : 0u) |
-              (lighting.vct.extraBounce ? shared::VCT_EXTRA_BOUNCE : 0u) |
-              (mPrepared && frame.frameIndex == mLastFrame + 1 && !frame.changed && mPrevSettings == lighting.vct && mPrevSeed == lighting.seed
-                   ? shared::VCT_PREVIOUS_VALID
-                   : 0u);
+              (lighting.vct.extraBounce ? shared::VCT_EXTRA_BOUNCE : 0u) | (previousValid ? shared::VCT_PREVIOUS_VALID : 0u);
     p.seed = lighting.seed;
     p.startOffset = lighting.vct.startOffset;
-    // The objects' bounds now and last frame: where they left and where they are.
-    p.dynamicMin = glm::ivec4(glm::min(frame.dynamicMin, mPrevDynamicMin), 0);
-    p.dynamicMax = glm::ivec4(glm::max(frame.dynamicMax, mPrevDynamicMax), 0);
-    if (frame.dynamicMin == frame.dynamicMax) {
-        p.dynamicMin = glm::ivec4(mPrevDynamicMin, 0);
-        p.dynamicMax = glm::ivec4(mPrevDynamicMax, 0);
-    } else if (mPrevDynamicMin == mPrevDynamicMax) {
-        p.dynamicMin = glm::ivec4(frame.dynamicMin, 0);
-        p.dynamicMax = glm::ivec4(frame.dynamicMax, 0);
-    }
+    // The objects' bounds now and last frame: where they are and where they left.
+    const auto [dynamicMin, dynamicMax] = unionOf(frame.dynamicMin, frame.dynamicMax, mPrevDynamicMin, mPrevDynamicMax);
+    p.dynamicMin = glm::ivec4(dynamicMin, 0);
+    p.dynamicMax = glm::ivec4(dynamicMax, 0);
     p.refreshPeriod = std::max(lighting.vct.refreshPeriod, 1u);
     p.frame = frame.frameIndex;
     uploader.write(mParams, 0, &p, sizeof(p));
