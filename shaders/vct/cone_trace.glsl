@@ -32,13 +32,17 @@ uint vctTexelBase(uint level, ivec3 worldTexel) {
     return (level * VCT_TEXELS_PER_LEVEL + p.x + VCT_RES * (p.y + VCT_RES * p.z)) * VCT_SLOTS;
 }
 
-// One texel (c: in the level's window) seen by a cone travelling along `dir`: its axis slots
-// weighted by dir^2 (they sum to 1). rgb premultiplied by coverage; zero outside the level.
+// One texel (c: in the level's window) seen by a cone travelling along `dir`: its axis slots'
+// radiance weighted by dir^2 (they sum to 1), premultiplied by coverage; zero outside the level.
 vec4 vctTexel(uint level, ivec3 c, vec3 w, uvec3 slot) {
     if (any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, ivec3(int(VCT_RES))))) return vec4(0.0);
     ivec4 o = VCT_ORIGIN(level);
     uint base = vctTexelBase(level, o.xyz / o.w + c);
-    return w.x * VCT_VOLUME[base + slot.x] + w.y * VCT_VOLUME[base + slot.y] + w.z * VCT_VOLUME[base + slot.z];
+    vec4 x = VCT_VOLUME[base + slot.x], y = VCT_VOLUME[base + slot.y], z = VCT_VOLUME[base + slot.z];
+    // Opacity: the largest of the axis coverages, not their weighted mean — a diagonal cone
+    // crossing a one-voxel wall is stopped by it, not let through half-strength (the leak the
+    // mean gave). Isotropic texels have one value in every slot, so it changes nothing there.
+    return vec4(w.x * x.rgb + w.y * y.rgb + w.z * z.rgb, max(x.a, max(y.a, z.a)));
 }
 
 // Trilinear over the level's texel centres.

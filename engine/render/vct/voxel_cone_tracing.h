@@ -1,8 +1,8 @@
 // VoxelConeTracing: the leaky indirect term meant to be cheap (`--indirect vct`; the Wicked
 // Engine's voxel GI, after Crassin et al. 2011). A camera-centred clipmap of up to four 32^3
-// levels, texels 2-16 voxels wide, injected from direct light (texels that stay in view re-
-// injected in turn; shaders/vct/inject_radiance.comp), then six diffuse cones per pixel from the G-buffer's surface
-// (trace_cones.comp). A clipmap rather than sparse bricks: its memory is fixed (4 x 32^3 texels
+// levels, texels 2-16 voxels wide, injected from direct light (those that stay in view in
+// turn; shaders/vct/inject_radiance.comp), then six diffuse cones per pixel from the G-buffer's
+// surface (trace_cones.comp). A clipmap rather than sparse bricks: its memory is fixed (4 x 32^3 texels
 // x 6 directions x 16 bytes = 12 MiB per volume, two with the extra bounce's previous frame)
 // whatever the world's size, and a cone reads it with plain index arithmetic — no page table
 // walk per sample; the price is resolution far from the camera, which is where cones are wide.
