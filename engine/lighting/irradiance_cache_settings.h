@@ -17,6 +17,9 @@ enum class Indirect {
     // while camera and world stay still (render/path_indirect/)
     Path,
     Reference,  // the path tracer's bounces (the method becomes the reference)
+    // Voxel cone tracing: a radiance clipmap injected from direct light, six cones per pixel
+    // (render/vct/); cheap and leaky
+    Vct,
 };
 
 struct IrradianceCacheSettings {

@@ -49,6 +49,8 @@ bool usesCache(const LightingSettings& s) { return s.indirect == Indirect::Cache
 bool drawsLightsByPower(const LightingSettings& s) { return s.byPower && (resamples(s) || usesCache(s)); }
 bool usesRegir(const LightingSettings& s) { return s.regir.enabled != 0u && resamples(s); }
 bool usesPath(const LightingSettings& s) { return s.indirect == Indirect::Path && s.method != Method::Reference; }
+bool usesVct(const LightingSettings& s) { return s.indirect == Indirect::Vct && s.method != Method::Reference; }
+bool vctMitigates(const LightingSettings& s) { return usesVct(s) && s.vct.leakMitigation; }
 
 // --sampling: uniform, power (alias table) or regir (ReGIR's grid for ReSTIR and RIS, whose cells
 // draw by power; the other methods take power).
@@ -100,9 +102,9 @@ void setBudgetMb(LightingSettings& s, double mb) { s.cache.budgetBytes = static_
 
 constexpr std::array<std::string_view, 6> kMethods{"preview", "restir", "ris", "uniform", "bruteforce", "reference"};
 // In the order of enum Indirect.
-constexpr std::array<std::string_view, 4> kIndirect{"none", "cache", "path", "reference"};
 // In the order of enum Sky.
 constexpr std::array<std::string_view, 3> kSky{"none", "dvf", "reference"};
+constexpr std::array<std::string_view, 5> kIndirect{"none", "cache", "path", "reference", "vct"};
 constexpr std::array<std::string_view, 2> kModes{"point", "area"};
 constexpr std::array<std::string_view, 3> kSampling{"uniform", "power", "regir"};
 constexpr std::array<std::string_view, 2> kPixelFilters{"box", "centre"};
@@ -123,8 +125,8 @@ const Knob kLighting[] = {
      .get = getField<&S::seed>, .set = setField<&S::seed>},
     {.name = "indirect",
      .help = "Indirect light: none | cache (voxel-face irradiance cache) | path (path-traced bounces from the "
-             "G-buffer, accumulated while still) | reference (the path tracer replaces the method); a scene's "
-             "[indirect] mode, else none",
+             "G-buffer, accumulated while still) | reference (the path tracer replaces the method) | vct (voxel cone "
+             "tracing: cheap, leaks through thin walls); a scene's [indirect] mode, else none",
      .kind = KnobKind::Choice, .choices = kIndirect, .get = getField<&S::indirect>, .set = setField<&S::indirect>},
     {.name = "sky",
      .help = "Sky light: none | dvf (discrete visibility fields: per-cell masks of the sky directions) | reference "
@@ -236,10 +238,34 @@ const Knob kRegir[] = {
      .set = setPartField<&S::regir, &G::buildCandidates>, .relevant = usesRegir},
 };
 
+// Voxel cone tracing (render/vct/; the Wicked Engine's voxel GI after Crassin et al.), prefixed
+// like the path term's knobs.
+using V = VctSettings;
+const Knob kVct[] = {
+    {.name = "vct_levels", .help = "vct: clipmap levels of 32^3 texels (2, 4, 8, 16 voxels wide; reach 64..512 voxels)",
+     .kind = KnobKind::Count, .min = 1, .max = 4, .get = getPartField<&S::vct, &V::levels>,
+     .set = setPartField<&S::vct, &V::levels>, .relevant = usesVct},
+    {.name = "vct_leak_mitigation",
+     .help = "vct: directional texels and a cone start offset (off: isotropic texels, cones from the surface)",
+     .kind = KnobKind::Switch, .get = getPartField<&S::vct, &V::leakMitigation>,
+     .set = setPartField<&S::vct, &V::leakMitigation>, .relevant = usesVct},
+    {.name = "vct_offset", .help = "vct: cone start along the normal in level-0 texels (with leak mitigation)",
+     .kind = KnobKind::Real, .min = 0, .max = 4, .get = getPartField<&S::vct, &V::startOffset>,
+     .set = setPartField<&S::vct, &V::startOffset>, .relevant = vctMitigates},
+    {.name = "vct_bounce", .help = "vct: a second bounce, injected from the last frame's volume", .kind = KnobKind::Switch,
+     .get = getPartField<&S::vct, &V::extraBounce>, .set = setPartField<&S::vct, &V::extraBounce>, .relevant = usesVct},
+    {.name = "vct_refresh",
+     .help = "vct: texels staying in view are re-injected every N frames, in turn (1 = all every frame); edits, light "
+             "changes and new texels at once",
+     .kind = KnobKind::Count, .min = 1, .max = 64, .get = getPartField<&S::vct, &V::refreshPeriod>,
+     .set = setPartField<&S::vct, &V::refreshPeriod>, .relevant = usesVct},
+};
+
 const KnobGroup kGroups[] = {
     {"lighting", "", kLighting}, {"emitters", "", kEmitters},   {"restir", "", kRestir},
     {"baselines", "", kBaselines}, {"reference", "", kReference}, {"cache", "cache-", kCache},
     {"path", "", kPath}, {"regir", "", kRegir},
+    {"vct", "", kVct},
 };
 
 // Rules between knobs that no single range expresses.

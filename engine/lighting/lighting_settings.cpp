@@ -50,6 +50,7 @@ std::string LightingSettings::describe() const {
     if (indirect == Indirect::Cache && method != Method::Reference) s += " + " + cache.describe();
     if (indirect == Indirect::Path && method != Method::Reference) s += " + " + path.describe();
     if (skyTermUsed()) s += sky == Sky::Dvf ? " + sky dvf" : " + sky reference";
+    if (indirect == Indirect::Vct && method != Method::Reference) s += " + " + vct.describe();
     return s;
 }
 

@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "lighting/irradiance_cache_settings.h"
 #include "lighting/path_indirect_settings.h"
+#include "lighting/vct_settings.h"
 #include "shared/regir.h"
 #include "shared/restir.h"
 
@@ -53,9 +54,10 @@ struct LightingSettings {
     bool referenceMis = true;            // Reference: MIS of light and cosine sampling (false: light sampling only)
     ReferenceProbe referenceProbe = ReferenceProbe::None;
     std::uint32_t seed = 1;
-    Indirect indirect = Indirect::None;  // Cache and Path add their term to any method but Reference
+    Indirect indirect = Indirect::None;  // Cache, Path and Vct add their term to any method but Reference
     IrradianceCacheSettings cache;
     PathIndirectSettings path;
+    VctSettings vct;
     Sky sky = Sky::None;
 
     // Whether the frame adds a sky term (see Sky).

@@ -9,6 +9,7 @@
 
 #include "gpu/uploader.h"
 #include "render/renderer.h"
+#include "render/vct/voxel_cone_tracing.h"
 #include "shared/brick_grid.h"
 #include "shared/material.h"
 
@@ -34,6 +35,7 @@ MemoryPlan planMemory(const world::Scene& scene, glm::uvec2 frameSize, const lig
     if (lighting.indirect == lighting::Indirect::Cache) plan.cache = lighting.cache.budgetBytes;
     // The sky term's per-pixel buffer and (DVF) its fixed table.
     if (lighting.skyTermUsed()) plan.frame += DvfSky::deviceBytes(frameSize);
+    if (lighting.indirect == lighting::Indirect::Vct) plan.cache = 2 * VoxelConeTracing::volumeBytes();  // fixed: two volumes
     return plan;
 }
 

@@ -21,7 +21,7 @@ struct MemoryPlan {
     std::uint64_t gpuWorld = 0;  // its mirror: top grid, super grid, brick pages, page table, palette
     std::uint64_t upload = 0;    // staging for one upload chunk
     std::uint64_t frame = 0;     // per-pixel buffers at frameSize
-    std::uint64_t cache = 0;     // the irradiance cache's budget, when it is on
+    std::uint64_t cache = 0;     // the irradiance cache's budget, or the cones' volumes, when on
     std::uint64_t total() const { return world + gpuWorld + upload + frame + cache; }
 };
 

@@ -60,7 +60,8 @@ Renderer::Renderer(gpu::Context& ctx)
       mLightTiles(ctx),
       mRegir(ctx),
       mPathIndirect(ctx),
-      mDvfSky(ctx) {
+      mDvfSky(ctx),
+      mVct(ctx) {
     mFrameParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::FrameParams), "frame.params");
     mRestirParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::RestirParams), "restir.params");
     mLightSamplingParams =
@@ -143,6 +144,7 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
     result.upload = mWorld.sync(scene, mUploader);
     const bool useCache = lighting.indirect == lighting::Indirect::Cache && lighting.method != lighting::Method::Reference;
     const bool usePath = lighting.indirect == lighting::Indirect::Path && lighting.method != lighting::Method::Reference;
+    const bool useVct = lighting.indirect == lighting::Indirect::Vct && lighting.method != lighting::Method::Reference;
     std::vector<glm::ivec3> editedCells;  // for the cache: static rays through them are stale
     if (useCache && !result.upload.full) {
         const glm::ivec3 cells = scene.grid.sizeInCells();
@@ -228,13 +230,25 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
         skyInput.viewOrWorldChanged = !mHistoryValid || viewOrWorldChanged;
         mDvfSky.prepare(skyInput, mUploader);
     }
+    if (useVct) {
+        VoxelConeTracing::Frame vctFrame;
+        vctFrame.cameraPosition = camera.position;
+        vctFrame.frameIndex = mFrameIndex;
+        vctFrame.changed = result.upload.full || result.upload.bricks || result.upload.cells || lightUpload.slots ||
+                           lightUpload.aliveAndAlias || (mPrevSky && !sameSky(*mPrevSky, scene.sky));
+        if (scene.dynamic.present()) {
+            vctFrame.dynamicMin = scene.dynamic.origin;
+            vctFrame.dynamicMax = scene.dynamic.origin + scene.dynamic.grid.sizeInVoxels();
+        }
+        mVct.prepare(lighting, vctFrame, mUploader);
+    }
     mUploader.record(cmd);
     if (lighting.method == lighting::Method::Reference && (mAccumulatedSamples == 0 || viewOrWorldChanged)) {
         cmd.fillBuffer(mAccumulation, 0);
         cmd.barrier();
         mAccumulatedSamples = 0;
     }
-    if (!useCache && !usePath) cmd.fillBuffer(mIndirect, 0);
+    if (!useCache && !usePath && !useVct) cmd.fillBuffer(mIndirect, 0);
     cmd.endPass();
 
     mPrimary.record(cmd, {mWorld, mFrameParams, mGBuffers[mCurrent]}, mSize);
@@ -255,6 +269,7 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
     if (useSky) mDvfSky.record(*rest, {mWorld, mGpuEmitters}, {mFrameParams, mGBuffers[mCurrent], mRadiance});
     if (usePath)
         mPathIndirect.record(*rest, {mWorld, mGpuEmitters}, {mFrameParams, mGBuffers[mCurrent], mRadiance, mIndirect});
+    if (useVct) mVct.record(*rest, {mWorld, mGpuEmitters}, {mFrameParams, mGBuffers[mCurrent], mRadiance, mIndirect}, mSize);
     if (useCache) {
         mCache.record(*rest, {mWorld, mGpuEmitters}, {mFrameParams, mGBuffers[mCurrent], mRadiance, mIndirect});
         // This frame's visible voxels, for the next frame's cache updates.

@@ -4,7 +4,8 @@
 //   -> primary_rays (G-buffer with motion vectors)
 //   -> lighting: preview shading | ReSTIR (initial, temporal, spatial, shade) | RIS | light
 //      sampling | brute force | reference path tracing (accumulates while nothing changes)
-//   -> indirect term, added to the radiance: the irradiance cache, or path-traced bounces
+//   -> indirect term, added to the radiance: the irradiance cache, path-traced bounces or voxel
+//      cone tracing (inject the radiance clipmap, then cones per pixel)
 //   -> tonemap
 // with a GPU timestamp per pass. Temporal state (G-buffers and reservoirs of the previous frame)
 // ping-pongs between two buffers; a change of image size or method drops it. Given a
@@ -32,6 +33,7 @@
 #include "render/light_tiles/light_tiles.h"
 #include "render/passes/primary_ray_pass.h"
 #include "render/path_indirect/path_indirect.h"
+#include "render/vct/voxel_cone_tracing.h"
 #include "render/passes/sun_shade_pass.h"
 #include "render/passes/tonemap_pass.h"
 #include "render/reference/reference_pass.h"
@@ -130,6 +132,7 @@ private:
     PathIndirect mPathIndirect;
     DvfSky mDvfSky;
     std::optional<glm::vec4> mPrevDynamicBounds;  // the objects' last bounding sphere, for the sky's masks
+    VoxelConeTracing mVct;
 
     glm::uvec2 mSize{0};
     gpu::Buffer mFrameParams, mRadiance, mLdr, mRayStats, mCandidates, mOwnReservoirs, mAccumulation, mIndirect;

@@ -1,5 +1,5 @@
 // The [indirect] keys of scene/indirect_keys.h: `mode` is the lighting knob `indirect`, every
-// other key a knob of the cache's or the path term's table (lighting/lighting_knobs.h), read and range-checked by
+// other key a knob of the cache's, the path term's or the cones' table (lighting/lighting_knobs.h), read and range-checked by
 // that table, so a scene file accepts exactly what the command line accepts.
 #include "scene/indirect_keys.h"
 
@@ -23,7 +23,7 @@ std::string valueText(const toml::node& n) {
 
 const lighting::Knob* indirectKnob(std::string_view key) {
     if (key == "mode") return lighting::knobForOption("indirect");
-    for (std::string_view group : {"cache", "path"}) {
+    for (std::string_view group : {"cache", "path", "vct"}) {
         for (const lighting::Knob& k : lighting::knobGroup(group).knobs) {
             if (k.name == key) return &k;
         }

@@ -135,3 +135,20 @@ TEST(LightingKnobs, SamplingChoosesUniformPowerOrRegir) {
     EXPECT_FALSE(setKnob(sampling, s, "tree").ok());
     EXPECT_FALSE(setKnob(*knobForOption("regir-cell"), s, "0").ok());
 }
+
+// Voxel cone tracing's knobs likewise: [indirect] mode = "vct" and vct_* keys, --vct-* options.
+TEST(LightingKnobs, VctKnobsFromSceneAndCommandLine) {
+    engine::world::Scene scene;
+    scene.indirect = {{"mode", "vct"}, {"vct_levels", "3"}};
+    auto s = engine::scene::lightingFor(&scene, std::vector<KnobValue>{option("vct-leak-mitigation", "off")});
+    ASSERT_TRUE(s.ok()) << s.error().message;
+    EXPECT_EQ(s->indirect, Indirect::Vct);
+    EXPECT_EQ(s->vct.levels, 3u);          // the scene's
+    EXPECT_FALSE(s->vct.leakMitigation);   // the command line's
+    EXPECT_FALSE(s->vct.extraBounce);      // the default
+    EXPECT_NE(s->describe().find("vct 3 level(s) refresh 1/8 no leak mitigation"), std::string::npos) << s->describe();
+
+    auto bad = mergeLighting(LightingSettings{}, std::vector<KnobValue>{option("vct-levels", "5")});
+    ASSERT_FALSE(bad.ok());
+    EXPECT_EQ(bad.error().message.rfind("--vct-levels: ", 0), 0u) << bad.error().message;
+}

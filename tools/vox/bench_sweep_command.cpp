@@ -39,7 +39,7 @@ struct SweepOptions {
     std::uint32_t referenceSpp = 1024;
     // Indirect-light series (docs/ACCURACY.md): ReSTIR's defaults for the direct light plus
     // none | cache-K | reference, measured against a multi-bounce reference.
-    std::string indirect = "none,cache-32,cache-128,reference";
+    std::string indirect = "none,cache-32,cache-128,reference,vct";
     std::uint32_t indirectBounces = 3;
     std::uint32_t indirectReferenceSpp = 512;
     std::string output = "out/sweep";
@@ -139,8 +139,15 @@ engine::Result<std::vector<std::pair<std::string, LightingSettings>>> indirectSe
             if (engine::Status valid = engine::lighting::validate(l); !valid)
                 return engine::makeError("--indirect {}: {}", item, valid.error().message);
             out.push_back({fmt::format("indirect cache K={}", k->front()), l});
+        } else if (item == "vct" || item == "vct-leaky") {
+            // Voxel cone tracing (one bounce; the extra bounce with 2+ reference bounces), with its
+            // leak mitigation on, or off (vct-leaky).
+            l.indirect = Indirect::Vct;
+            l.vct.leakMitigation = item == "vct";
+            l.vct.extraBounce = o.indirectBounces > 1;
+            out.push_back({item == "vct" ? "indirect vct" : "indirect vct no leak mitigation", l});
         } else {
-            return engine::makeError("--indirect: '{}' is not none, cache-K or reference", item);
+            return engine::makeError("--indirect: '{}' is not none, cache-K, vct, vct-leaky or reference", item);
         }
     }
     return out;
@@ -356,7 +363,7 @@ void addBenchSweepCommand(CLI::App& bench, int& exitCode) {
     cmd->add_option("--ref-spp", o->referenceSpp, "Reference samples per pixel (cached on disk)")->capture_default_str()
         ->check(numberIn(kSamplesRange));
     cmd->add_option("--indirect", o->indirect,
-                    "Indirect-light series: none, cache-K (K directions), reference; empty = no series")
+                    "Indirect-light series: none, cache-K (K directions), vct, vct-leaky, reference; empty = no series")
         ->capture_default_str();
     cmd->add_option("--indirect-bounces", o->indirectBounces,
                     "Bounces of the indirect reference (and of the cache and path-tracer points)")

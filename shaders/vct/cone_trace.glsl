@@ -1,0 +1,116 @@
+// Diffuse cones through the radiance clipmap (shared/vct.h): shared by the per-pixel gather
+// (trace_cones.comp) and the extra bounce (inject_radiance.comp), which read different volumes.
+// The including shader defines VCT_VOLUME (the vec4 array) and VCT_ORIGIN(l) (that volume's
+// level origins), and declares gVct.
+// Six 60-degree cones (Crassin et al., "Interactive Indirect Illumination Using Voxel Cone
+// Tracing", 2011): one along the normal, five tilted 60 degrees from it; each cone's weight is
+// its share of the cosine-weighted hemisphere (sin^2 30 = 1/4 for the normal cone), so the
+// weighted sum of the cones' radiance is the cosine-weighted mean, i.e. E / pi.
+#ifndef VCT_CONE_TRACE_GLSL
+#define VCT_CONE_TRACE_GLSL
+
+#include "shared/vct.h"
+
+const uint kVctCones = 6u;
+const float kVctConeTan = 0.57735027;  // tan 30 degrees: the cones' half-angle
+const float kVctStopOpacity = 0.95;
+
+vec3 vctConeDirection(vec3 n, uint i) {
+    if (i == 0u) return n;
+    vec3 t = abs(n.x) > 0.5 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
+    vec3 b1 = normalize(cross(n, t));
+    vec3 b2 = cross(n, b1);
+    float phi = 2.0 * PI * float(i - 1u) / 5.0;
+    return normalize(n * 0.5 + (b1 * cos(phi) + b2 * sin(phi)) * 0.8660254);
+}
+
+float vctConeWeight(uint i) { return i == 0u ? 0.25 : 0.15; }
+
+// Where a level's texel lives: its world texel coordinate modulo VCT_RES (shared/vct.h).
+uint vctTexelBase(uint level, ivec3 worldTexel) {
+    uvec3 p = uvec3(((worldTexel % int(VCT_RES)) + int(VCT_RES)) % int(VCT_RES));
+    return (level * VCT_TEXELS_PER_LEVEL + p.x + VCT_RES * (p.y + VCT_RES * p.z)) * VCT_SLOTS;
+}
+
+// One texel (c: in the level's window) seen by a cone travelling along `dir`: its axis slots'
+// radiance weighted by dir^2 (they sum to 1), premultiplied by coverage; zero outside the level.
+vec4 vctTexel(uint level, ivec3 c, vec3 w, uvec3 slot) {
+    if (any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, ivec3(int(VCT_RES))))) return vec4(0.0);
+    ivec4 o = VCT_ORIGIN(level);
+    uint base = vctTexelBase(level, o.xyz / o.w + c);
+    vec4 x = VCT_VOLUME[base + slot.x], y = VCT_VOLUME[base + slot.y], z = VCT_VOLUME[base + slot.z];
+    // Opacity: the largest of the axis coverages, not their weighted mean — a diagonal cone
+    // crossing a one-voxel wall is stopped by it, not let through half-strength (the leak the
+    // mean gave). Isotropic texels have one value in every slot, so it changes nothing there.
+    return vec4(w.x * x.rgb + w.y * y.rgb + w.z * z.rgb, max(x.a, max(y.a, z.a)));
+}
+
+// Trilinear over the level's texel centres.
+vec4 vctSample(uint level, vec3 pos, vec3 dir) {
+    ivec4 o = VCT_ORIGIN(level);
+    vec3 u = (pos - vec3(o.xyz)) / float(o.w) - 0.5;
+    ivec3 c0 = ivec3(floor(u));
+    vec3 f = u - vec3(c0);
+    vec3 w = dir * dir;
+    uvec3 slot = uvec3(0u, 2u, 4u) + uvec3(greaterThan(dir, vec3(0.0)));
+    vec4 s = vec4(0.0);
+    for (int i = 0; i < 8; ++i) {
+        ivec3 d = ivec3(i & 1, (i >> 1) & 1, i >> 2);
+        vec3 t = mix(1.0 - f, f, vec3(d));
+        s += t.x * t.y * t.z * vctTexel(level, c0 + d, w, slot);
+    }
+    return s;
+}
+
+// Inside the level, half a texel from its border (so the trilinear footprint is in it).
+bool vctInside(uint level, vec3 pos) {
+    ivec4 o = VCT_ORIGIN(level);
+    vec3 u = (pos - vec3(o.xyz)) / float(o.w);
+    return all(greaterThanEqual(u, vec3(0.5))) && all(lessThanEqual(u, vec3(float(VCT_RES) - 0.5)));
+}
+
+// Radiance arriving at `origin` from within the cone about `dir`: front-to-back accumulation of
+// the texels' premultiplied radiance and opacity (opacity corrected to the step length), level
+// chosen by the cone's diameter; what is left sees `sky`.
+vec3 vctTraceCone(vec3 origin, vec3 dir, vec3 sky) {
+    const float s0 = float(VCT_BASE_TEXEL);
+    const uint levels = clamp(gVct.levels, 1u, VCT_MAX_LEVELS);
+    float t = s0;
+    vec3 c = vec3(0.0);
+    float a = 0.0;
+    for (uint step = 0u; step < 64u && a < kVctStopOpacity; ++step) {
+        float diameter = max(s0, 2.0 * kVctConeTan * t);
+        float lod = log2(diameter / s0);
+        vec3 pos = origin + dir * t;
+        uint level = min(uint(lod), levels - 1u);
+        while (level < levels && !vctInside(level, pos)) ++level;
+        if (level >= levels) break;  // past the clipmap: the rest is sky
+        // One level per step (the finer one that holds the cone), stepped by a cone diameter:
+        // a quarter of the reads of blending two levels at half-diameter steps, which on a CPU
+        // device cost more than the rest of the frame.
+        vec4 s = vctSample(level, pos, dir);
+        float stepLength = diameter;
+        if (s.a > 1.0e-6) {
+            float texel = float(VCT_ORIGIN(level).w);
+            float alpha = 1.0 - pow(max(1.0 - min(s.a, 1.0), 0.0), stepLength / texel);
+            c += (1.0 - a) * s.rgb * (alpha / s.a);
+            a += (1.0 - a) * alpha;
+        }
+        t += stepLength;
+    }
+    return c + (1.0 - a) * sky;
+}
+
+// The cosine-weighted mean of the incoming radiance over the hemisphere about `n` at `p`
+// (times the albedo, the reflected radiance); `offset` voxels off the surface along n.
+vec3 vctGather(vec3 p, vec3 n, float offset, FrameParams frame) {
+    vec3 origin = p + n * offset;
+    vec3 sum = vec3(0.0);
+    for (uint i = 0u; i < kVctCones; ++i) {
+        vec3 dir = vctConeDirection(n, i);
+        sum += vctConeWeight(i) * vctTraceCone(origin, dir, skyBackground(frame, dir));
+    }
+    return sum;
+}
+
+#endif

@@ -1,0 +1,149 @@
+// Voxel cone tracing (`--indirect vct`, render/vct/): the cheap, leaky indirect term. Its mean
+// against the path tracer's indirect light on an open scene (loose: the cones are a coarse,
+// biased estimate), its leak through a one-voxel wall with the leak mitigation on (bounded) and
+// off (large), and its determinism.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+
+#include "gpu/gpu_test_setup.h"
+#include "world/world_edits.h"
+
+using namespace engine::world;
+using namespace gpu_testing;
+using engine::lighting::Indirect;
+
+namespace {
+
+constexpr MaterialId kWhite = 1, kRed = 2, kLamp = 3, kGreen = 4;
+
+Scene makeScene(glm::ivec3 size) {
+    return paletteScene(size,
+                        {Material{"white", glm::vec3(0.75f)}, Material{"red", glm::vec3(0.8f, 0.15f, 0.1f)},
+                         Material{"lamp", glm::vec3(0.8f), glm::vec3(1.0f, 0.85f, 0.6f), 8.0f},
+                         Material{"green", glm::vec3(0.1f, 0.7f, 0.2f)}},
+                        false);
+}
+
+// The path-indirect test's open courtyard: a floor, a red and a green wall, a pillar, a lamp,
+// under sun and sky.
+Scene courtyard() {
+    Scene scene = makeScene({32, 24, 32});
+    fillBox(scene.grid, Box{{0, 0, 0}, {32, 2, 32}}, kWhite);
+    fillBox(scene.grid, Box{{0, 2, 26}, {32, 16, 28}}, kRed);
+    fillBox(scene.grid, Box{{26, 2, 0}, {28, 16, 26}}, kGreen);
+    fillBox(scene.grid, Box{{12, 2, 12}, {15, 10, 15}}, kWhite);
+    fillBox(scene.grid, Box{{5, 6, 20}, {7, 8, 22}}, kLamp);
+    scene.sky.sunDirection = glm::normalize(glm::vec3(-0.5f, 1.0f, -0.6f));
+    scene.cameras.push_back(CameraPreset{"corner", {4.0f, 14.0f, 3.0f}, {23.0f, 3.0f, 22.0f}, 70.0f});
+    scene.grid.clearDirty();
+    return scene;
+}
+
+// The irradiance cache's thin-wall scene (IrradianceCache.ThinWallDoesNotLeak): a sealed, unlit
+// room with one-voxel walls and roof, the sun and a lamp outside.
+Scene thinWallRoom() {
+    Scene scene = makeScene({48, 32, 48});
+    fillBox(scene.grid, Box{{0, 0, 0}, {48, 4, 48}}, kWhite);
+    fillBox(scene.grid, Box{{23, 4, 7}, {41, 20, 41}}, kWhite);
+    fillBox(scene.grid, Box{{24, 4, 8}, {40, 19, 40}}, 0);
+    fillBox(scene.grid, Box{{12, 10, 20}, {14, 12, 22}}, kLamp);
+    scene.cameras.push_back(CameraPreset{"inside", {38.0f, 16.0f, 24.0f}, {24.0f, 6.0f, 24.0f}, 80.0f});
+    scene.cameras.push_back(CameraPreset{"outside", {4.0f, 16.0f, 24.0f}, {23.0f, 6.0f, 24.0f}, 80.0f});
+    scene.grid.clearDirty();
+    return scene;
+}
+
+LightingSettings vctLighting(bool leakMitigation = true) {
+    LightingSettings l;
+    l.method = Method::Preview;  // only the indirect term is compared
+    l.indirect = Indirect::Vct;
+    l.vct.leakMitigation = leakMitigation;
+    return l;
+}
+
+double meanOf(const std::vector<glm::vec4>& img) {
+    double sum = 0.0;
+    for (const glm::vec4& p : img) sum += (p.x + p.y + p.z) / 3.0;
+    return sum / double(img.size());
+}
+
+// The path tracer's one-bounce indirect light through the pixel centres: (1 bounce) - (direct).
+std::vector<glm::vec4> referenceIndirect(Scene& scene, const CameraPreset& camera, std::uint32_t size, std::uint32_t spp) {
+    auto run = [&](std::uint32_t bounces) {
+        Renderer r(gpu_testing::context());
+        LightingSettings l;
+        l.method = Method::Reference;
+        l.referenceFilter = engine::lighting::ReferenceFilter::PixelCentre;
+        l.bounces = bounces;
+        l.samplesPerFrame = 32;
+        for (std::uint32_t i = 0; i < spp / 32; ++i) r.render(scene, camera, frame(size), l);
+        return r.readback().radiance;
+    };
+    std::vector<glm::vec4> with = run(1), without = run(0);
+    for (std::size_t i = 0; i < with.size(); ++i) with[i] -= without[i];
+    return with;
+}
+
+}  // namespace
+
+class Vct : public GpuTest {};
+
+// On an open courtyard the cones' mean is between 0.5 and 1.5 times the path tracer's one-bounce
+// indirect mean (measured 0.66: the cones are dark, docs/ACCURACY.md). Loose on purpose: the
+// cones see the world through 2..16-voxel texels and wide cones occlude themselves on the
+// surface they start from; what the test pins is that the term has the right size (a lost
+// factor of pi, a missing sky or no occlusion at all would be far outside it).
+TEST_F(Vct, MeanNearPathTracerOnAnOpenScene) {
+    Scene scene = courtyard();
+    const std::uint32_t size = 24;  // small and 128 spp: the test stays within seconds
+    const std::vector<glm::vec4> ref = referenceIndirect(scene, scene.camera(), size, 128);
+    Renderer r(gpu_testing::context());
+    const std::vector<glm::vec4> vct = renderFrames(r, scene, vctLighting(), frame(size), 1).indirect;
+    const double ratio = meanOf(vct) / meanOf(ref);
+    std::printf("courtyard: vct indirect mean %.5f, path tracer %.5f (ratio %.3f), MAE %.5f\n", meanOf(vct), meanOf(ref),
+                ratio, mae(vct, ref));
+    EXPECT_GT(meanOf(ref), 0.01);
+    EXPECT_GT(ratio, 0.5);
+    EXPECT_LT(ratio, 1.5);
+}
+
+// Inside a sealed room with one-voxel walls the true indirect light is 0 (the cache's figure).
+// VCT leaks: texels 2..16 voxels wide hold both sides of the wall, and a cone's trilinear samples
+// reach past a wall before its opacity adds up. With the mitigation (directional texels, the
+// largest axis coverage as opacity, cones started off the surface) the inside's mean indirect
+// light stays under 45 % of the lit side's (measured 38 %); without it, it is over 2.5 times
+// that (measured 3.6 times).
+TEST_F(Vct, ThinWallLeakIsBoundedWithMitigationOnly) {
+    Scene scene = thinWallRoom();
+    auto indirectFrom = [&](const char* camera, bool mitigation) {
+        Renderer r(gpu_testing::context());
+        r.render(scene, scene.camera(camera), frame(48), vctLighting(mitigation));
+        return r.readback().indirect;
+    };
+    const double outside = meanOf(indirectFrom("outside", true));
+    const double leak = meanOf(indirectFrom("inside", true));
+    const double leakWithout = meanOf(indirectFrom("inside", false));
+    std::printf("thin wall: indirect outside mean %.4f; inside mean %.5f with leak mitigation (%.2f %%), %.5f without (%.2f %%)\n",
+                outside, leak, 100.0 * leak / outside, leakWithout, 100.0 * leakWithout / outside);
+    EXPECT_GT(outside, 0.02);
+    EXPECT_LT(leak, 0.45 * outside);
+    EXPECT_GT(leakWithout, 2.5 * leak);
+}
+
+// Same scene, settings and camera: the same image, from another renderer and on every still
+// frame (the injection's jitter is seeded by texel position and seed, not by the frame).
+TEST_F(Vct, DeterministicAndStillFramesAreIdentical) {
+    Scene scene = courtyard();
+    LightingSettings l = vctLighting();
+    Renderer a(gpu_testing::context()), b(gpu_testing::context());
+    const std::vector<glm::vec4> first = renderFrames(a, scene, l, frame(24), 1).indirect;
+    const std::vector<glm::vec4> third = renderFrames(a, scene, l, frame(24), 2).indirect;
+    const std::vector<glm::vec4> other = renderFrames(b, scene, l, frame(24), 1).indirect;
+    ASSERT_GT(meanOf(first), 0.0);
+    EXPECT_EQ(first, third);
+    EXPECT_EQ(first, other);
+    l.seed = 2;  // and the seed matters
+    EXPECT_NE(renderFrames(b, scene, l, frame(24), 1).indirect, first);
+}
