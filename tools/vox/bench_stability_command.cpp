@@ -33,7 +33,7 @@ using engine::world::Scene;
 struct StabilityOptions {
     std::string size = "96x64";
     std::string output = "out/stability";
-    std::string cases = "all";  // all | vct (only voxel cone tracing's rows)
+    std::string cases = "all";  // all | vct | sky (only voxel cone tracing's or DVF sky light's rows)
 };
 
 struct Context {
@@ -320,6 +320,86 @@ engine::Status vctCases(Context& c) {
     return {};
 }
 
+// Sky light from discrete visibility fields (`--sky dvf`) under the same stresses: flicker of its
+// sky term on a still camera, frames until an edit that opens a roof reaches a steady error
+// against the brute-force sky term (`--sky reference`) of the opened room, and what the sealed,
+// one-voxel-thin room of worlds/thin_wall.toml sees of the sky from inside (0 is right).
+engine::Status skyCases(Context& c) {
+    using engine::lighting::Sky;
+    auto sky = [](Sky mode) {
+        LightingSettings l;
+        l.method = Method::Uniform;  // the sky term is read alone
+        l.sky = mode;
+        return l;
+    };
+    auto skyTerm = [&](Renderer& r, Scene& scene, const engine::world::CameraPreset& camera, Sky mode) {
+        r.render(scene, camera, c.frame, sky(mode));
+        return r.dvfSky().readSkyTerm();
+    };
+    for (const char* world : {"sandbox", "mountain"}) {
+        auto scene = loadWorld(world);
+        if (!scene) return scene.error();
+        Renderer r(c.gpu);
+        std::vector<glm::vec4> prev;
+        double sum = 0.0, mean = 0.0;
+        for (int i = 0; i < 8; ++i) {
+            std::vector<glm::vec4> img = skyTerm(r, *scene, scene->camera(), Sky::Dvf);
+            if (i < 4) continue;  // the masks' first build spreads over a few frames
+            if (!prev.empty()) {
+                sum += maeOf(img, prev, c.frame);
+                mean += meanRadiance(img);
+            }
+            prev = std::move(img);
+        }
+        const double f = sum / std::max(mean, 1e-12);
+        c.rows.push_back(fmt::format("| flicker: {} | restir + sky dvf (sky term) | {:.3f} |", world, f));
+        std::printf("flicker %-12s dvf sky %.4f\n", world, f);
+    }
+    auto thinWall = loadWorld("thin_wall");
+    if (!thinWall) return thinWall.error();
+    thinWall->grid.clearDirty();
+    thinWall->objects.clear();  // the room alone
+    const engine::world::CameraPreset inside = thinWall->camera("inside");
+    const Box roof{{33, 25, 9}, {55, 26, 55}};
+    {   // The sealed room from inside: DVF and the brute-force rays both must see no sky.
+        for (Sky mode : {Sky::Dvf, Sky::Reference}) {
+            Renderer r(c.gpu);
+            std::vector<glm::vec4> in;
+            for (int i = 0; i < 4; ++i) in = skyTerm(r, *thinWall, inside, mode);
+            float insideMax = 0.0f;
+            for (const glm::vec4& p : in) insideMax = std::max({insideMax, p.x, p.y, p.z});
+            const char* name = mode == Sky::Dvf ? "restir + sky dvf" : "restir + sky reference";
+            c.rows.push_back(fmt::format("| thin wall (1 voxel), sky | {} | largest sky term inside the sealed room: {:.3g} |",
+                                         name, insideMax));
+            std::printf("thin wall %-24s largest sky term inside %.3g\n", name, insideMax);
+        }
+    }
+    {   // Response to an edit: the room's roof removed.
+        Scene opened = *thinWall;
+        fillBox(opened.grid, roof, engine::world::kEmpty);
+        opened.grid.clearDirty();
+        std::vector<glm::vec4> ref;
+        {
+            Renderer r(c.gpu);
+            for (int i = 0; i < 16; ++i) ref = skyTerm(r, opened, inside, Sky::Reference);
+        }
+        Renderer r(c.gpu);
+        Scene live = *thinWall;
+        for (int i = 0; i < 4; ++i) skyTerm(r, live, inside, Sky::Dvf);
+        fillBox(live.grid, roof, engine::world::kEmpty);
+        std::vector<double> errors;
+        for (int i = 0; i < 12; ++i) {
+            errors.push_back(maeOf(skyTerm(r, live, inside, Sky::Dvf), ref, c.frame));
+            c.curves << fmt::format("{},{},{},{}\n", "roof removed", "restir + sky dvf (sky term)", i + 1, errors.back());
+        }
+        auto [frames, steady] = framesToSteady(errors);
+        c.rows.push_back(fmt::format("| response: roof removed | restir + sky dvf (sky term vs brute-force sky rays) | {} frame(s) to within 10 % of steady state (steady MAE {:.3e}, first frame {:.3e}; reference mean {:.3e}) |",
+                                     frames, steady, errors.front(), meanRadiance(ref)));
+        std::printf("%-28s %-16s recovered after %d frame(s); steady MAE %.3e\n", "roof removed", "dvf sky", frames, steady);
+    }
+    return {};
+}
+
 int runStability(const StabilityOptions& o) {
     auto size = parseSize(o.size, "--size");
     if (!size) return fail(size.error());
@@ -353,6 +433,10 @@ int runStability(const StabilityOptions& o) {
     };
     if (o.cases == "vct") {
         if (engine::Status s = vctCases(c); !s) return fail(s.error());
+        return finish();
+    }
+    if (o.cases == "sky") {
+        if (engine::Status s = skyCases(c); !s) return fail(s.error());
         return finish();
     }
 
@@ -578,6 +662,8 @@ int runStability(const StabilityOptions& o) {
 
     // 4. Voxel cone tracing's rows.
     if (engine::Status s = vctCases(c); !s) return fail(s.error());
+    // 5. DVF sky light's rows.
+    if (engine::Status s = skyCases(c); !s) return fail(s.error());
     return finish();
 }
 
@@ -588,8 +674,8 @@ void addBenchStabilityCommand(CLI::App& bench, int& exitCode) {
     auto o = std::make_shared<StabilityOptions>();
     cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
     cmd->add_option("-o,--output", o->output, "Output folder")->capture_default_str();
-    cmd->add_option("--cases", o->cases, "all | vct (only voxel cone tracing's rows)")
-        ->check(CLI::IsMember({"all", "vct"}))
+    cmd->add_option("--cases", o->cases, "all | vct | sky (only voxel cone tracing's or DVF sky light's rows)")
+        ->check(CLI::IsMember({"all", "vct", "sky"}))
         ->capture_default_str();
     cmd->callback([o, &exitCode] { exitCode = runStability(*o); });
 }
