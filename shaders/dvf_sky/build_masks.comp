@@ -47,8 +47,10 @@ void main() {
     uint face = dvfKeyFace(key);
     uvec2 dirty = gSlots[s].maskDirty.zw;
     if (dvfMaskBit(dirty, d)) {
-        ivec3 anchor = gSlots[s].anchor.xyz;
-        uint rng = rngInit(uvec2(s, d), gDvf.frame, 21u, gDvf.seed);
+        ivec3 anchor = dvfAnchor(gSlots[s].anchor.xyz, gSlots[s].anchorRank);
+        // Seeded by what the mask is (key, anchor, direction), not by its slot or frame, which
+        // depend on the order the GPU's threads ran in.
+        uint rng = rngInit(uvec2(key, gSlots[s].anchorRank * 64u + d), 0u, 21u, gDvf.seed);
         vec3 n = vec3(faceNormal(face));
         float seen = 0.0, total = 0.0;
         for (uint r = 0u; r < DVF_RAYS_PER_DIRECTION; ++r) {

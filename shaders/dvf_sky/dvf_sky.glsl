@@ -61,6 +61,21 @@ ivec3 dvfCellOf(ivec3 openVoxel) {
     return clamp(openVoxel >> int(DVF_CELL_SHIFT), ivec3(0), gWorld.sizeInCells.xyz - 1);
 }
 
+// The anchor's place in its cell, one higher in each axis (an open voxel just outside the world
+// sits in the clamped edge cell, one step out), packed 4 bits an axis in the low 12 bits, under a
+// hash of it: the maximum over the asking pixels is a pseudo-random one of them (a fixed rule
+// such as "the lowest voxel" favours corners, which see less sky), the same whatever order the
+// threads ran in. Never 0, the value of a slot no pixel asked for yet.
+uint dvfAnchorRank(ivec3 open) {
+    ivec3 l = clamp(open - dvfCellOf(open) * int(1u << DVF_CELL_SHIFT) + 1, ivec3(0), ivec3(15));
+    uint packed = uint(l.x | (l.y << 4) | (l.z << 8));
+    return (pcgHash(packed + 0x9E3779B9u) & 0xFFFFF000u) | packed | 0x1000u * uint(packed == 0u);
+}
+ivec3 dvfAnchor(ivec3 cellMin, uint rank) {
+    uint p = rank & 0xFFFu;
+    return cellMin + ivec3(int(p & 15u), int((p >> 4u) & 15u), int(p >> 8u)) - 1;
+}
+
 uint dvfHome(uint key) { return pcgHash(key) & (DVF_CAPACITY - 1u); }
 
 bool dvfMaskBit(uvec2 mask, uint d) { return ((d < 32u ? mask.x : mask.y) >> (d & 31u) & 1u) != 0u; }

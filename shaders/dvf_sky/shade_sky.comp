@@ -24,6 +24,12 @@ bool sameSide(ivec3 a, ivec3 b) {
     return !traceScene(from, (to - from) / dist, dist).hit;
 }
 
+// A face of a slot whose mask is not traced yet: its open voxel may become the anchor.
+uint joinSlot(uint s, ivec3 open) {
+    atomicMax(gSlots[s].anchorRank, dvfAnchorRank(open));
+    return s;
+}
+
 // The slot of `key` whose anchor is on this face's side, inserting one (anchored at `open`) if
 // there is none; DVF_CAPACITY when the table is too full or the probe sequence ran out.
 uint findOrInsert(uint key, ivec3 open) {
@@ -33,8 +39,9 @@ uint findOrInsert(uint key, ivec3 open) {
         uint s = (h + i) & (DVF_CAPACITY - 1u);
         uint k = gSlots[s].key;
         if (k == key) {
-            // Taken in this frame (anchor perhaps not written yet): the same side, most likely.
-            if (gSlots[s].state == 0u || sameSide(open, gSlots[s].anchor.xyz)) return s;
+            // Not traced yet: this face joins the choice of the anchor (its mask is not read yet).
+            if ((gSlots[s].state & DVF_STATE_VALID) == 0u) return joinSlot(s, open);
+            if (sameSide(open, dvfAnchor(gSlots[s].anchor.xyz, gSlots[s].anchorRank))) return s;
             if (fallback == DVF_CAPACITY) fallback = s;
             if (++matches == kSlotsPerKey) return fallback;
             continue;
@@ -46,7 +53,8 @@ uint findOrInsert(uint key, ivec3 open) {
         if (prev == DVF_EMPTY_KEY) {
             // A zeroed slot: state 0 (not valid), so a pixel that finds it before its mask is
             // traced adds nothing.
-            gSlots[s].anchor = ivec4(open, 0);
+            gSlots[s].anchor = ivec4(dvfCellOf(open) * int(1u << DVF_CELL_SHIFT), 0);
+            atomicMax(gSlots[s].anchorRank, dvfAnchorRank(open));
             gSlots[s].maskDirty = uvec4(0u, 0u, 0xFFFFFFFFu, 0xFFFFFFFFu);
             atomicOr(gSlots[s].state, DVF_STATE_QUEUED);
             atomicAdd(gHeader.used, 1u);
@@ -54,7 +62,7 @@ uint findOrInsert(uint key, ivec3 open) {
             gQueue[at & (DVF_CAPACITY - 1u)] = s;
             return s;
         }
-        if (prev == key) return s;  // another pixel of this (cell, face) took it just now
+        if (prev == key) return joinSlot(s, open);  // another pixel of this (cell, face) took it just now
     }
     return fallback;
 }

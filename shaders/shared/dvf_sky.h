@@ -35,8 +35,12 @@ SHARED_CONST uint DVF_MAX_CELLS_Y = 512u;
 struct DvfSlot {
     uint key;       // DVF_EMPTY_KEY when free
     uint state;     // DVF_STATE_*
-    uint pad0, pad1;
-    ivec4 anchor;   // xyz the open-side voxel of the face that asked for the slot (rays start on that face)
+    uint anchorRank;  // the anchor within the cell, as dvfAnchorRank packs it: the largest rank (a
+                      // hash-chosen one) of the pixels that asked before the mask was first traced
+    uint pad1;
+    ivec4 anchor;   // xyz the cell's lowest voxel; the anchor, the open-side voxel of a face that asked
+                    // for the slot (rays start on that face), is dvfAnchor(): chosen by a maximum, not
+                    // by which pixel came first, so the masks do not depend on thread timing
     uvec4 maskDirty;  // xy the visibility mask (low, high 32 directions), zw the directions to re-trace
 };
 SHARED_ASSERT_SIZE(DvfSlot, 48);
