@@ -2,9 +2,10 @@
 // DVF sky light: per pixel, the mask of the (cell, face) on the open side of the G-buffer's face
 // times the face's precomputed weights (sky gradient x cos / pi, integrated over each direction
 // texel), times albedo and sky radiance, added to the frame's radiance and written alone. A
-// (cell, face) without a slot on this face's side (one short ray to the slot's anchor) takes one,
-// anchored at this pixel's face, and joins the trace queue: masks exist only where the camera
-// looks; until its mask is traced it adds nothing.
+// (cell, face) without a slot on this face's side (one short ray to the slot's anchor) takes one
+// and queues it; until the mask is traced every face that finds the slot joins the choice of its
+// anchor (the largest dvfAnchorRank wins, whatever the thread order). Masks exist only where the
+// camera looks; until its mask is traced a slot adds nothing.
 #extension GL_GOOGLE_include_directive : require
 
 #include "dvf_sky/dvf_sky.glsl"
