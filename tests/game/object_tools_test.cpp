@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include <GLFW/glfw3.h>
 #include <fmt/format.h>
@@ -41,29 +42,15 @@ private:
     fs::path mPath;
 };
 
-// A 3 x 3 x 2 crate with a lamp on one corner: 13 voxels, lying off the world's origin.
-constexpr const char* kCrateWorld = R"([world]
-name = "crate"
-size = [32, 32, 32]
-[[material]]
-name = "crate"
-albedo = [0.6, 0.4, 0.2]
-[[material]]
-name = "lamp"
-albedo = [1.0, 1.0, 1.0]
-emission = [1.0, 0.8, 0.5]
-strength = 3.0
-[[generator]]
-type = "box"
-min = [2, 0, 3]
-max = [5, 2, 5]
-material = "crate"
-[[generator]]
-type = "box"
-min = [4, 2, 4]
-max = [5, 3, 5]
-material = "lamp"
-)";
+// A 3 x 3 x 2 crate with a lamp on one corner: 13 voxels, lying off the world's origin
+// (tests/game/crate.toml, also the scripted run's model).
+std::string crateWorld() {
+    std::ifstream in(VOX_GAME_TEST_DIR "/crate.toml");
+    std::stringstream text;
+    text << in.rdbuf();
+    EXPECT_FALSE(text.str().empty()) << "cannot read " VOX_GAME_TEST_DIR "/crate.toml";
+    return text.str();
+}
 
 fs::path writeText(const fs::path& file, const std::string& text) {
     std::ofstream(file) << text;
@@ -71,7 +58,7 @@ fs::path writeText(const fs::path& file, const std::string& text) {
 }
 
 game::ObjectModel crateModel(const TempDir& dir) {
-    auto model = game::loadObjectModel(writeText(dir.path() / "crate.toml", kCrateWorld));
+    auto model = game::loadObjectModel(writeText(dir.path() / "crate.toml", crateWorld()));
     EXPECT_TRUE(model.ok()) << (model.ok() ? "" : model.error().message);
     return std::move(*model);
 }
@@ -150,14 +137,14 @@ TEST(ObjectTools, LoadsAModelFromASceneFileAVoxAndAVdbCroppedToItsVoxels) {
 
 TEST(ObjectTools, RefusesModelsBeyondTheCapOrEmpty) {
     TempDir dir;
-    std::string big = kCrateWorld;
+    std::string big = crateWorld();
     big += "[[generator]]\ntype = \"box\"\nmin = [0, 8, 0]\nmax = [32, 24, 32]\nmaterial = \"crate\"\n";  // 16384 more
     auto refused = game::loadObjectModel(writeText(dir.path() / "big.toml", big));
     ASSERT_FALSE(refused.ok());
     EXPECT_NE(refused.error().message.find("16397 solid voxels; a model holds at most 16384"), std::string::npos)
         << refused.error().message;
 
-    std::string empty = kCrateWorld;
+    std::string empty = crateWorld();
     empty = empty.substr(0, empty.find("[[generator]]"));
     auto none = game::loadObjectModel(writeText(dir.path() / "empty.toml", empty));
     ASSERT_FALSE(none.ok());

@@ -17,30 +17,8 @@ failures=0
 xvfb() { xvfb-run -a -n $((100 + RANDOM % 800)) -s "-screen 0 1024x768x24" "$@"; }
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 
-# A 3 x 3 x 2 crate with a lamp on one corner (13 voxels).
-cat >crate.toml <<'TOML'
-[world]
-name = "crate"
-size = [32, 32, 32]
-[[material]]
-name = "crate"
-albedo = [0.6, 0.4, 0.2]
-[[material]]
-name = "lamp"
-albedo = [1.0, 1.0, 1.0]
-emission = [1.0, 0.8, 0.5]
-strength = 3.0
-[[generator]]
-type = "box"
-min = [2, 0, 3]
-max = [5, 2, 5]
-material = "crate"
-[[generator]]
-type = "box"
-min = [4, 2, 4]
-max = [5, 3, 5]
-material = "lamp"
-TOML
+# A 3 x 3 x 2 crate with a lamp on one corner (13 voxels), the unit tests' model too.
+cp "$(dirname "$script")/crate.toml" crate.toml || exit 1
 
 xvfb "$vox" play sandbox --model crate.toml --script "$script" --size 512x288 --render-scale 0.25 \
     --method preview --save saved.toml >play.out 2>play.err
