@@ -6,6 +6,7 @@
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -40,6 +41,12 @@ public:
     void copyBuffer(const Buffer& src, const Buffer& dst, const std::vector<VkBufferCopy>& regions);
     void fillBuffer(const Buffer& dst, std::uint32_t value);
 
+    // Values of the specialization constants (by constant_id) of every pipeline this list
+    // dispatches from now on; empty (the start) leaves each constant at its default. The values
+    // are copied.
+    void setSpecialization(std::span<const std::uint32_t> values) { mSpecialization.assign(values.begin(), values.end()); }
+    std::span<const std::uint32_t> specialization() const { return mSpecialization; }
+
     // Descriptor sets allocated for this recording; freed after completion.
     void retainDescriptorSet(VkDescriptorPool pool, VkDescriptorSet set) { mDescriptorSets.emplace_back(pool, set); }
 
@@ -49,6 +56,7 @@ private:
     VkCommandBuffer mCmd = VK_NULL_HANDLE;
     bool mRecording = false;
     std::vector<std::pair<VkDescriptorPool, VkDescriptorSet>> mDescriptorSets;
+    std::vector<std::uint32_t> mSpecialization;
 };
 
 }  // namespace engine::gpu

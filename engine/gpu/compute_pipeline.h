@@ -1,5 +1,7 @@
 // gpu::ComputePipeline: one compute shader (embedded SPIR-V, by name) whose bindings are all
-// storage buffers in set 0, numbered 0..bindingCount-1.
+// storage buffers in set 0, numbered 0..bindingCount-1. Its specialization constants take their
+// values from the command list's (CommandList::setSpecialization, indexed by constant_id); one
+// pipeline is compiled per combination of the values the shader declares, when first used.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -8,6 +10,8 @@
 #include <initializer_list>
 #include <span>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace engine::gpu {
 
@@ -31,13 +35,22 @@ public:
     void dispatch(CommandList& cmd, std::span<const Buffer* const> buffers, std::uint32_t groupsX,
                   std::uint32_t groupsY = 1, std::uint32_t groupsZ = 1);
 
+    // The constant_ids the shader declares, ascending.
+    const std::vector<std::uint32_t>& specializationIds() const { return mSpecIds; }
+
 private:
+    // The pipeline for these values of the shader's constants (empty: every default).
+    VkPipeline variant(std::span<const std::uint32_t> specialization);
+
     Context& mCtx;
     std::string mName;
     std::uint32_t mBindingCount;
+    VkShaderModule mModule = VK_NULL_HANDLE;
+    std::vector<std::uint32_t> mSpecIds;
     VkDescriptorSetLayout mSetLayout = VK_NULL_HANDLE;
     VkPipelineLayout mLayout = VK_NULL_HANDLE;
-    VkPipeline mPipeline = VK_NULL_HANDLE;
+    // (values of mSpecIds, pipeline); a handful at most, so a list.
+    std::vector<std::pair<std::vector<std::uint32_t>, VkPipeline>> mVariants;
     VkDescriptorPool mPool = VK_NULL_HANDLE;
 };
 

@@ -11,6 +11,7 @@
 #include "render/memory_plan.h"
 #include "render/reference/reference_params.h"
 #include "render/restir/restir_params.h"
+#include "render/shader_features.h"
 
 namespace engine::render {
 
@@ -138,7 +139,11 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
     world::updateDynamicObjects(scene.objects, scene.dynamic, settings.timeSeconds, mPrevTime.value_or(settings.timeSeconds));
     result.dynamicUpdateMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
+    // Every pass compiled without the code of the features this frame does not use.
+    const ShaderFeatures features = shaderFeatures(lighting);
+    const std::span<const std::uint32_t> specialization = mSpecializeShaders ? std::span(features) : std::span<const std::uint32_t>();
     gpu::CommandList cmd(mCtx, &mTimer);
+    cmd.setSpecialization(specialization);
     cmd.begin();
     cmd.beginPass("upload");
     result.upload = mWorld.sync(scene, mUploader);
@@ -253,6 +258,7 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
 
     mPrimary.record(cmd, {mWorld, mFrameParams, mGBuffers[mCurrent]}, mSize);
     gpu::CommandList late(mCtx, &mLateTimer);
+    late.setSpecialization(specialization);
     gpu::CommandList* rest = &cmd;
     if (splitFrame) {
         cmd.copyBuffer(mGBuffers[mCurrent], mGBufferHost, {{0, 0, mGBuffers[mCurrent].size()}});

@@ -95,6 +95,9 @@ public:
     // A capture sets it to the capture's own frame number so a slice rendered on another
     // machine draws the same random numbers for the same frame.
     void setFrameIndex(std::uint32_t index) { mFrameIndex = index; }
+    // Off: every pass runs its generic code, nothing compiled out (render/shader_features.h);
+    // the images must be the same, which is how the tests check what is compiled out.
+    void setSpecializeShaders(bool on) { mSpecializeShaders = on; }
 
     GpuWorld& gpuWorld() { return mWorld; }
     const lighting::EmitterList& emitters() const { return mEmitters; }
@@ -144,6 +147,7 @@ private:
     gpu::Buffer mGBuffers[2], mFinalReservoirs[2];
     std::uint32_t mCurrent = 0;  // which of the ping-pong pair is this frame's
     std::uint32_t mFrameIndex = 0;
+    bool mSpecializeShaders = true;
     bool mHistoryValid = false;
     std::optional<world::CameraPreset> mPrevCamera;
     std::optional<double> mPrevTime;  // last frame's scene time, for the objects' motion vectors

@@ -8,11 +8,17 @@
 #include "common/rng.glsl"
 #include "shared/emitters.h"
 #include "shared/restir.h"
+#include "shared/shader_features.h"
 
 layout(set = 0, binding = LIGHTS_BINDING_INFO, std430) readonly buffer LightInfoBuffer { EmitterListInfo gLights; };
 layout(set = 0, binding = LIGHTS_BINDING_EMITTERS, std430) readonly buffer EmitterBuffer { GpuEmitter gEmitters[]; };
 layout(set = 0, binding = LIGHTS_BINDING_ALIVE, std430) readonly buffer AliveBuffer { uint gAlive[]; };
 layout(set = 0, binding = LIGHTS_BINDING_ALIAS, std430) readonly buffer AliasBuffer { AliasEntry gAlias[]; };
+
+// Off when no pass of the frame draws emitters uniformly / uses point mode: that code is compiled
+// out (shared/shader_features.h).
+layout(constant_id = FEATURE_UNIFORM_SAMPLING) const bool kUniformSampling = true;
+layout(constant_id = FEATURE_POINT_LIGHTS) const bool kPointLights = true;
 
 const float PI = 3.14159265358979;
 const float kRayOffset = 1.0e-3;  // shadow rays start this far off the surface, along its normal
@@ -37,12 +43,13 @@ bool emitterCurrent(uint slot, uint generation) {
 
 // Probability of choosing `slot` as a candidate.
 float emitterPdf(uint slot, bool byPower) {
-    if (byPower) return gEmitters[slot].radiance.w / gLights.power.x;
+    if (byPower || !kUniformSampling) return gEmitters[slot].radiance.w / gLights.power.x;
     return 1.0 / float(gLights.counts.x);
 }
 
 // Draws an emitter slot uniformly or by power (alias table); false when there are no lights.
 bool pickEmitter(inout uint rng, bool byPower, out uint slot) {
+    byPower = byPower || !kUniformSampling;
     uint n = gLights.counts.x;
     slot = RESERVOIR_EMPTY;
     if (n == 0u || (byPower && !(gLights.power.x > 0.0))) return false;
@@ -171,6 +178,12 @@ vec3 emitterShadowTarget(GpuEmitter e, vec3 x) {
 // to emitterShadowTarget in point mode.
 vec3 lightContribution(Surface s, GpuEmitter e, uint face, vec2 uv, out vec3 shadowDir, out float shadowDist) {
     bool point = face == LIGHT_FACE_CENTRE;
+    if (!kPointLights && point) {  // a point-mode sample while point mode is compiled out: no light
+        shadowDir = vec3(0.0, 0.0, 1.0);
+        shadowDist = 0.0;
+        return vec3(0.0);
+    }
+    point = kPointLights && point;
     vec3 y = point ? emitterPointLight(e) : emitterFacePoint(e, face, uv);
     vec3 d = y - s.position;
     float dist = length(d);

@@ -10,6 +10,7 @@
 #include "light_tiles/light_tiles.glsl"
 
 layout(local_size_x = CACHE_GROUP_SIZE) in;
+layout(constant_id = FEATURE_CACHE_MULTI_BOUNCE) const bool kMultiBounce = true;  // off: one bounce, compiled out
 
 vec3 lightLeaving(ivec3 voxel, uint face, vec3 o, vec3 d, uint packed, inout uint rng) {
     if (packed == CACHE_HIT_MISS) return skyBackground(gFrame, d);
@@ -27,7 +28,7 @@ vec3 lightLeaving(ivec3 voxel, uint face, vec3 o, vec3 d, uint packed, inout uin
     s.albedo = gMaterials[material].albedo.rgb;
     s.emission = vec3(0.0);  // emitters are the direct-light passes' job
     vec3 L = directLightFromTiles(s, gFrame, rng);
-    if (gCache.bounces > 1u) {
+    if (kMultiBounce && gCache.bounces > 1u) {
         uint hs = cacheLookup(hv, dynamicHit ? CACHE_SET_DYNAMIC : CACHE_SET_STATIC);
         if (hs != ~0u && (gEntries[hs].flags & CACHE_ENTRY_RESET) == 0u) L += s.albedo / PI * gFiltered[hs * CACHE_FACES + hf].rgb * cacheFade(hs);
     }

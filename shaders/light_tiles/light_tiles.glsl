@@ -10,13 +10,17 @@
 
 #include "common/direct_light.glsl"
 #include "shared/light_tiles.h"
+#include "shared/shader_features.h"
 
 layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer LightTileBuffer {
     LightTileSample samples[];
 };
 
-// Did this frame draw tiles? (Only the frames whose lighting reads them do.)
-bool lightTilesReady(FrameParams f) { return (f.lightTiles.x | f.lightTiles.y) != 0u; }
+layout(constant_id = FEATURE_LIGHT_TILES) const bool kLightTilesFeature = true;
+
+// Did this frame draw tiles? (Only the frames whose lighting reads them do; compiled out for the
+// others.)
+bool lightTilesReady(FrameParams f) { return kLightTilesFeature && (f.lightTiles.x | f.lightTiles.y) != 0u; }
 
 LightTileSample lightTileSample(FrameParams f, uint entry) {
     LightTileBuffer tiles = LightTileBuffer(uint64_t(f.lightTiles.x) | (uint64_t(f.lightTiles.y) << 32));

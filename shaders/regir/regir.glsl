@@ -8,14 +8,18 @@
 
 #include "common/surface.glsl"
 #include "shared/regir.h"
+#include "shared/shader_features.h"
 
 layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer RegirGridBuffer {
     RegirGridInfo info;
     RegirEntry entries[];
 };
 
-// Did this frame fill the grid? (Only the frames whose candidates read it do.)
-bool regirReady(FrameParams f) { return (f.regirGrid.x | f.regirGrid.y) != 0u; }
+layout(constant_id = FEATURE_REGIR) const bool kRegirFeature = true;
+
+// Did this frame fill the grid? (Only the frames whose candidates read it do; compiled out for
+// the others.)
+bool regirReady(FrameParams f) { return kRegirFeature && (f.regirGrid.x | f.regirGrid.y) != 0u; }
 
 RegirGridBuffer regirGrid(FrameParams f) {
     return RegirGridBuffer(uint64_t(f.regirGrid.x) | (uint64_t(f.regirGrid.y) << 32));

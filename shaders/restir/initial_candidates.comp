@@ -14,6 +14,7 @@
 #include "regir/regir.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
+layout(constant_id = FEATURE_CANDIDATE_VISIBILITY) const bool kCandidateVisibility = true;
 
 layout(set = 0, binding = RESTIR_BINDING_FRAME, std430) readonly buffer Params { FrameParams gFrame; };
 layout(set = 0, binding = RESTIR_BINDING_PARAMS, std430) readonly buffer Restir { RestirParams gRestir; };
@@ -31,7 +32,7 @@ void main() {
         gOut[index] = r;
         return;
     }
-    bool area = gRestir.area != 0u;
+    bool area = !kPointLights || gRestir.area != 0u;
     bool byPower = gRestir.byPower != 0u;
     uint rng = rngInit(pixel, gRestir.frameIndex, 1u, gRestir.seed);
     bool tiles = byPower && gRestir.knobs.lightTiles != 0u && lightTilesReady(gFrame);
@@ -93,7 +94,7 @@ void main() {
     }
     r.weights = vec4(chosenTarget > 0.0 ? wSum / (float(candidates) * chosenTarget) : 0.0, float(candidates),
                      chosenTarget, 1.0);
-    if (gRestir.knobs.candidateVisibility != 0u && r.light.x != RESERVOIR_EMPTY) {
+    if (kCandidateVisibility && gRestir.knobs.candidateVisibility != 0u && r.light.x != RESERVOIR_EMPTY) {
         GpuEmitter e = gEmitters[r.light.x];
         vec3 toLight;
         float dist;

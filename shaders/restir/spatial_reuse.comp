@@ -21,6 +21,7 @@
 #include "common/reservoir.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
+layout(constant_id = FEATURE_UNBIASED) const bool kUnbiased = true;  // pairwise MIS compiled in
 
 layout(set = 0, binding = RESTIR_BINDING_FRAME, std430) readonly buffer Params { FrameParams gFrame; };
 layout(set = 0, binding = RESTIR_BINDING_PARAMS, std430) readonly buffer Restir { RestirParams gRestir; };
@@ -90,7 +91,7 @@ void main() {
     float radius = gRestir.knobs.spatialRadius;
     float tolerance = gRestir.knobs.depthTolerance;
 
-    bool pairwise = gRestir.knobs.unbiased != 0u;
+    bool pairwise = kUnbiased && gRestir.knobs.unbiased != 0u;
     Combiner c = combinerStart();
     // weights.z already holds the own sample's target here (the candidate and temporal passes
     // evaluated it at this surface this frame): no need to evaluate it again.

@@ -12,6 +12,7 @@
 #include "common/reservoir.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
+layout(constant_id = FEATURE_UNBIASED) const bool kUnbiased = true;  // the balance heuristic compiled in
 
 layout(set = 0, binding = RESTIR_BINDING_FRAME, std430) readonly buffer Params { FrameParams gFrame; };
 layout(set = 0, binding = RESTIR_BINDING_PARAMS, std430) readonly buffer Restir { RestirParams gRestir; };
@@ -82,7 +83,7 @@ void main() {
     previous.weights.y = min(previous.weights.y, gRestir.knobs.temporalCap * float(gRestir.knobs.candidates));
 
     uint rng = rngInit(pixel, gRestir.frameIndex, 2u, gRestir.seed);
-    if (gRestir.knobs.unbiased != 0u) {
+    if (kUnbiased && gRestir.knobs.unbiased != 0u) {
         float uCurrent = rngNext(rng);
         gOwn[index] = balancedReuse(s, g, current, previous, pg, uCurrent, rngNext(rng));
         return;

@@ -1,0 +1,19 @@
+// Which optional shader code a frame needs (shaders/shared/shader_features.h): the values of the
+// specialization constants every pass of the frame is compiled with. Derived from the lighting
+// settings by the same rules that fill the frame's parameters, so a feature the frame uses is
+// never compiled out; the features it does not use cost nothing on lavapipe.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "lighting/lighting_settings.h"
+#include "shared/shader_features.h"
+
+namespace engine::render {
+
+using ShaderFeatures = std::array<std::uint32_t, FEATURE_COUNT>;
+
+ShaderFeatures shaderFeatures(const lighting::LightingSettings& l);
+
+}  // namespace engine::render
