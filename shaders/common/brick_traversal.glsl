@@ -72,6 +72,13 @@ TraceResult traceGrid(vec3 o, vec3 d, float tMax, bool hierarchical, bool dyn) {
     precise float t = tEnter;
 
     const vec3 absInv = abs(inv);
+    // Read once, not per step: llvmpipe makes every buffer read in the loop a loop over the
+    // SIMD lanes (even a read at the same address for all), and runs both sides of every branch
+    // under a lane mask. So a step's cost is set by how many reads its code holds, whichever
+    // level its lanes are on: one super cell, one cell and, in a brick, one page-table entry and
+    // two mask words (was eleven: three grid sizes, two super-cell reads, three page-table reads).
+    const ivec3 superSize = gridSizeInSuperCells(dyn);
+    const ivec3 cellSize = gridSizeInCells(dyn);
     precise vec3 tNext = vec3(0.0);
     precise vec3 tDelta = vec3(0.0);
     int level = 0;
@@ -86,39 +93,45 @@ TraceResult traceGrid(vec3 o, vec3 d, float tMax, bool hierarchical, bool dyn) {
     uint steps = 0u;
     while (!done && steps < TRAVERSAL_MAX_STEPS) {
         ++steps;
-        uint skip = hierarchical ? gridSuperCell(dyn, v >> SUPER_SHIFT) : 0u;
-        if (skip != 0u) {
+        if (hierarchical) {
             // Open air: walk empty super cells in this tight loop, one step each with the same
             // arithmetic as the general step below (hits, t and step counts do not change), so
             // lanes in the air pay neither for the finer levels' code nor for a read per super
-            // cell: the grid is read again only when the ray leaves the box `skip` says is empty.
-            if (level != 32) {
-                tNext = (vec3((v & ~31) + ivec3(positive) * 32) - o) * inv;
-                tDelta = 32.0 * absInv;
-                level = 32;
-            }
-            ivec3 boxCentre = v >> SUPER_SHIFT;
+            // cell. Its first pass reads the super cell v is in (and leaves at once if it is not
+            // empty); later passes read the grid only where the ray leaves the box `skip` says
+            // is empty. One read in its code serves both.
             bool air = true;
+            bool read = true;
+            ivec3 boxCentre = ivec3(0);
+            uint skip = 0u;
             while (air) {
-                int axis = tNext.x <= tNext.y ? (tNext.x <= tNext.z ? 0 : 2) : (tNext.y <= tNext.z ? 1 : 2);
-                float best = tNext[axis];
-                int lo = v[axis] & ~31;
-                v[axis] = positive[axis] ? lo + 32 : lo - 1;
-                done = best > tExit || v[axis] < 0 || v[axis] >= size[axis] || steps == TRAVERSAL_MAX_STEPS;
-                tNext[axis] += tDelta[axis];
-                face = uint(axis * 2 + (positive[axis] ? 0 : 1));
-                t = best;
-                air = !done;
+                if (read) {
+                    boxCentre = v >> SUPER_SHIFT;
+                    skip = gridSuperCellIn(dyn, superSize, boxCentre);
+                }
+                air = skip != 0u;
                 if (air) {
-                    ++steps;
-                    if (uint(abs((v[axis] >> SUPER_SHIFT) - boxCentre[axis])) >= skip) {
-                        boxCentre = v >> SUPER_SHIFT;
-                        skip = gridSuperCell(dyn, boxCentre);
-                        air = skip != 0u;
+                    if (level != 32) {
+                        tNext = (vec3((v & ~31) + ivec3(positive) * 32) - o) * inv;
+                        tDelta = 32.0 * absInv;
+                        level = 32;
+                    }
+                    int axis = tNext.x <= tNext.y ? (tNext.x <= tNext.z ? 0 : 2) : (tNext.y <= tNext.z ? 1 : 2);
+                    float best = tNext[axis];
+                    int lo = v[axis] & ~31;
+                    v[axis] = positive[axis] ? lo + 32 : lo - 1;
+                    done = best > tExit || v[axis] < 0 || v[axis] >= size[axis] || steps == TRAVERSAL_MAX_STEPS;
+                    tNext[axis] += tDelta[axis];
+                    face = uint(axis * 2 + (positive[axis] ? 0 : 1));
+                    t = best;
+                    exact = 32;
+                    air = !done;
+                    if (air) {
+                        ++steps;
+                        read = uint(abs((v[axis] >> SUPER_SHIFT) - boxCentre[axis])) >= skip;
                     }
                 }
             }
-            exact = 32;
             if (done) break;
         }
         int s = 1;
@@ -129,7 +142,7 @@ TraceResult traceGrid(vec3 o, vec3 d, float tMax, bool hierarchical, bool dyn) {
                 v = refineVoxel(v, exact, o, d, t, size);
                 exact = 1;
             }
-            uint cell = gridCell(dyn, v >> 3);
+            uint cell = gridCellIn(dyn, cellSize, v >> 3);
             if (cell == CELL_EMPTY) {
                 s = 8;
             } else if ((cell & CELL_HOMOGENEOUS) != 0u) {
@@ -137,17 +150,25 @@ TraceResult traceGrid(vec3 o, vec3 d, float tMax, bool hierarchical, bool dyn) {
                 material = cell & CELL_MATERIAL_MASK;
             } else {
                 uint brick = cell - 1u;
+                BrickPage masks = gridBrickMasks(dyn, brick);
                 ivec3 local = v & 7;
                 ivec3 b4 = local >> 2;
                 ivec3 b2 = local >> 1;
                 int bit2 = b2.x + 4 * b2.y + 16 * b2.z;
                 int bit = local.x + 8 * local.y + 64 * local.z;
-                if (hierarchical && ((gridMaskWord(dyn, brick, MASK_QUARTER_WORD) >> uint(b4.x + 2 * b4.y + 4 * b4.z)) & 1u) == 0u) {
-                    s = 4;
-                } else if (hierarchical &&
-                           ((gridMaskWord(dyn, brick, MASK_COARSE_WORD + uint(bit2 >> 5)) >> uint(bit2 & 31)) & 1u) == 0u) {
-                    s = 2;
-                } else if (((gridMaskWord(dyn, brick, uint(bit >> 5)) >> uint(bit & 31)) & 1u) != 0u) {
+                if (hierarchical) {
+                    // One word of the 2^3-block mask answers both coarse tests: it holds the
+                    // 4-voxel-high slab of v (bit2 >> 5 == b4.z), and a 4^3 block is empty exactly
+                    // when its eight 2^3 blocks are (bits 0,1,4,5,16,17,20,21 from its corner) —
+                    // the same answer as the CPU's 4^3-block mask, whose bits are those ORs.
+                    uint coarse = masks.words[MASK_COARSE_WORD + uint(bit2 >> 5)];
+                    if ((coarse & (0x330033u << uint(2 * b4.x + 8 * b4.y))) == 0u) {
+                        s = 4;
+                    } else if (((coarse >> uint(bit2 & 31)) & 1u) == 0u) {
+                        s = 2;
+                    }
+                }
+                if (s == 1 && ((masks.words[uint(bit >> 5)] >> uint(bit & 31)) & 1u) != 0u) {
                     hit = true;
                     hitBrick = brick;
                     hitBit = bit;

@@ -79,20 +79,43 @@ ivec3 gridSizeInVoxels(bool dyn) {
     return gWorld.sizeInVoxels.xyz;
 }
 
-uint gridSuperCell(bool dyn, ivec3 s) {
-    if (dyn) {
-        ivec3 n = gDynHeader.sizeInSuperCells.xyz;
-        return gDyn.words[gDynHeader.offsets.x + uint(s.x) + uint(n.x) * (uint(s.y) + uint(n.y) * uint(s.z))];
-    }
-    return worldSuperCell(s);
+ivec3 gridSizeInSuperCells(bool dyn) {
+    if (dyn) return gDynHeader.sizeInSuperCells.xyz;
+    return gWorld.sizeInSuperCells.xyz;
 }
 
-uint gridCell(bool dyn, ivec3 cell) {
+ivec3 gridSizeInCells(bool dyn) {
+    if (dyn) return gDynHeader.sizeInCells.xyz;
+    return gWorld.sizeInCells.xyz;
+}
+
+// Super-cell and cell reads for a caller that read the grid's size `n` once, before its loop:
+// llvmpipe turns every buffer read into a loop over the SIMD lanes, even one whose address is
+// the same for every lane, so a size read per step costs as much as the cell read itself.
+uint gridSuperCellIn(bool dyn, ivec3 n, ivec3 s) {
+    uint i = uint(s.x) + uint(n.x) * (uint(s.y) + uint(n.y) * uint(s.z));
+    if (dyn) return gDyn.words[gDynHeader.offsets.x + i];
+    return gSuperCells[i];
+}
+
+uint gridCellIn(bool dyn, ivec3 n, ivec3 cell) {
+    uint i = uint(cell.x) + uint(n.x) * (uint(cell.y) + uint(n.y) * uint(cell.z));
+    if (dyn) return gDyn.words[gDynHeader.offsets.y + i];
+    return gCells[i];
+}
+
+uint gridSuperCell(bool dyn, ivec3 s) { return gridSuperCellIn(dyn, gridSizeInSuperCells(dyn), s); }
+
+uint gridCell(bool dyn, ivec3 cell) { return gridCellIn(dyn, gridSizeInCells(dyn), cell); }
+
+// A brick's BRICK_MASK_WORDS mask words (words[0..19]), found once (one page-table read) for
+// several reads of them.
+BrickPage gridBrickMasks(bool dyn, uint brick) {
     if (dyn) {
-        ivec3 n = gDynHeader.sizeInCells.xyz;
-        return gDyn.words[gDynHeader.offsets.y + uint(cell.x) + uint(n.x) * (uint(cell.y) + uint(n.y) * uint(cell.z))];
+        // words[] follows the 96-byte header (shared/dynamic_grid.h).
+        return BrickPage(uint64_t(gDyn) + 96ul + 4ul * uint64_t(gDynHeader.offsets.z + brick * BRICK_MASK_WORDS));
     }
-    return worldCell(cell);
+    return BrickPage(gPages[brick >> BRICK_PAGE_SHIFT] + 4ul * uint64_t((brick & (BRICK_PAGE_BRICKS - 1u)) * BRICK_MASK_WORDS));
 }
 
 uint gridMaskWord(bool dyn, uint brick, uint word) {
