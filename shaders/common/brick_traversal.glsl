@@ -32,6 +32,26 @@ ivec3 refineVoxel(ivec3 v, int exact, vec3 o, vec3 d, float t, ivec3 size) {
     return clamp(ivec3(p), lo, min(lo + (exact - 1), size - 1));
 }
 
+// One DDA step out of the block [lo, lo + s) around v: to the nearest exit plane (ties go to the
+// lowest axis, as in ray_traversal.cpp), with the same arithmetic per component. Written with
+// per-component selects rather than a run-time axis index into the vectors, the form llvmpipe's
+// SIMD code takes anyway; one copy serves the open-air walk and the general step. False when the
+// ray passes tExit or leaves the world.
+bool leaveBlock(inout ivec3 v, inout vec3 tNext, vec3 tDelta, ivec3 lo, int s, bvec3 positive, ivec3 size,
+                float tExit, out float best, out uint face) {
+    bool xFirst = tNext.x <= tNext.y && tNext.x <= tNext.z;
+    bool yFirst = !(tNext.x <= tNext.y) && tNext.y <= tNext.z;
+    bvec3 axis = bvec3(xFirst, yFirst, !xFirst && !yFirst);
+    best = xFirst ? tNext.x : (yFirst ? tNext.y : tNext.z);
+    v = mix(v, mix(lo - 1, lo + s, positive), axis);
+    int c = xFirst ? v.x : (yFirst ? v.y : v.z);
+    int n = xFirst ? size.x : (yFirst ? size.y : size.z);
+    bool pos = xFirst ? positive.x : (yFirst ? positive.y : positive.z);
+    tNext = mix(tNext, tNext + tDelta, axis);
+    face = (xFirst ? 0u : (yFirst ? 2u : 4u)) + (pos ? 0u : 1u);
+    return !(best > tExit || c < 0 || c >= n);
+}
+
 TraceResult traceGrid(vec3 o, vec3 d, float tMax, bool hierarchical, bool dyn) {
     if (dyn) loadDynamicGrid();
     const ivec3 size = gridSizeInVoxels(dyn);
@@ -72,11 +92,11 @@ TraceResult traceGrid(vec3 o, vec3 d, float tMax, bool hierarchical, bool dyn) {
     precise float t = tEnter;
 
     const vec3 absInv = abs(inv);
-    // Read once, not per step: llvmpipe makes every buffer read in the loop a loop over the
-    // SIMD lanes (even a read at the same address for all), and runs both sides of every branch
-    // under a lane mask. So a step's cost is set by how many reads its code holds, whichever
-    // level its lanes are on: one super cell, one cell and, in a brick, one page-table entry and
-    // two mask words (was eleven: three grid sizes, two super-cell reads, three page-table reads).
+    // Grid sizes are read once, here: llvmpipe makes every buffer read in the loop a loop over
+    // the SIMD lanes (even a read at the same address for all) and runs both sides of every
+    // branch under a lane mask, so a step pays for every read its code holds, whichever level its
+    // lanes are on. The loop holds five: a super cell, a cell, a page-table entry and two mask
+    // words (it held eleven: three grid sizes, two super-cell reads, three page-table reads).
     const ivec3 superSize = gridSizeInSuperCells(dyn);
     const ivec3 cellSize = gridSizeInCells(dyn);
     precise vec3 tNext = vec3(0.0);
@@ -91,6 +111,18 @@ TraceResult traceGrid(vec3 o, vec3 d, float tMax, bool hierarchical, bool dyn) {
     uint hitBrick = 0u;  // a brick voxel's material is read once, after the loop
     int hitBit = -1;
     uint steps = 0u;
+    // What the last reads found, and where: a lane reads again only when it has moved to another
+    // super cell, cell, brick slab or mask word. llvmpipe still runs each read's code for the
+    // batch, but skips the memory access for every lane that does not need it.
+    ivec3 boxCentre = ivec3(-1);  // super cell of the last super-grid read (its skip distance in `skip`)
+    uint skip = 0u;
+    ivec3 cellKey = ivec3(-1);    // cell of `cell`
+    uint cell = CELL_EMPTY;
+    BrickPage masks = BrickPage(0ul);  // mask words of the brick in `cell`
+    int coarseKey = -1;           // index of the 2^3-block mask word in `coarse`
+    uint coarse = 0u;
+    int fineKey = -1;             // index of the voxel mask word in `fine`
+    uint fine = 0u;
     while (!done && steps < TRAVERSAL_MAX_STEPS) {
         ++steps;
         if (hierarchical) {
@@ -101,9 +133,7 @@ TraceResult traceGrid(vec3 o, vec3 d, float tMax, bool hierarchical, bool dyn) {
             // empty); later passes read the grid only where the ray leaves the box `skip` says
             // is empty. One read in its code serves both.
             bool air = true;
-            bool read = true;
-            ivec3 boxCentre = ivec3(0);
-            uint skip = 0u;
+            bool read = any(notEqual(v >> SUPER_SHIFT, boxCentre));
             while (air) {
                 if (read) {
                     boxCentre = v >> SUPER_SHIFT;
@@ -116,19 +146,18 @@ TraceResult traceGrid(vec3 o, vec3 d, float tMax, bool hierarchical, bool dyn) {
                         tDelta = 32.0 * absInv;
                         level = 32;
                     }
-                    int axis = tNext.x <= tNext.y ? (tNext.x <= tNext.z ? 0 : 2) : (tNext.y <= tNext.z ? 1 : 2);
-                    float best = tNext[axis];
-                    int lo = v[axis] & ~31;
-                    v[axis] = positive[axis] ? lo + 32 : lo - 1;
-                    done = best > tExit || v[axis] < 0 || v[axis] >= size[axis] || steps == TRAVERSAL_MAX_STEPS;
-                    tNext[axis] += tDelta[axis];
-                    face = uint(axis * 2 + (positive[axis] ? 0 : 1));
+                    float best;
+                    bool inside = leaveBlock(v, tNext, tDelta, v & ~31, 32, positive, size, tExit, best, face);
+                    done = !inside || steps == TRAVERSAL_MAX_STEPS;
                     t = best;
                     exact = 32;
                     air = !done;
                     if (air) {
                         ++steps;
-                        read = uint(abs((v[axis] >> SUPER_SHIFT) - boxCentre[axis])) >= skip;
+                        // Only the axis just stepped can have left the box (the others were
+                        // checked when they moved), so the largest offset is that axis's.
+                        ivec3 off = abs((v >> SUPER_SHIFT) - boxCentre);
+                        read = uint(max(off.x, max(off.y, off.z))) >= skip;
                     }
                 }
             }
@@ -142,7 +171,14 @@ TraceResult traceGrid(vec3 o, vec3 d, float tMax, bool hierarchical, bool dyn) {
                 v = refineVoxel(v, exact, o, d, t, size);
                 exact = 1;
             }
-            uint cell = gridCellIn(dyn, cellSize, v >> 3);
+            bool newCell = any(notEqual(v >> 3, cellKey));
+            if (newCell) {
+                cellKey = v >> 3;
+                cell = gridCellIn(dyn, cellSize, cellKey);
+                coarseKey = -1;
+                fineKey = -1;
+                if (cell != CELL_EMPTY && (cell & CELL_HOMOGENEOUS) == 0u) masks = gridBrickMasks(dyn, cell - 1u);
+            }
             if (cell == CELL_EMPTY) {
                 s = 8;
             } else if ((cell & CELL_HOMOGENEOUS) != 0u) {
@@ -150,7 +186,6 @@ TraceResult traceGrid(vec3 o, vec3 d, float tMax, bool hierarchical, bool dyn) {
                 material = cell & CELL_MATERIAL_MASK;
             } else {
                 uint brick = cell - 1u;
-                BrickPage masks = gridBrickMasks(dyn, brick);
                 ivec3 local = v & 7;
                 ivec3 b4 = local >> 2;
                 ivec3 b2 = local >> 1;
@@ -161,14 +196,21 @@ TraceResult traceGrid(vec3 o, vec3 d, float tMax, bool hierarchical, bool dyn) {
                     // 4-voxel-high slab of v (bit2 >> 5 == b4.z), and a 4^3 block is empty exactly
                     // when its eight 2^3 blocks are (bits 0,1,4,5,16,17,20,21 from its corner) —
                     // the same answer as the CPU's 4^3-block mask, whose bits are those ORs.
-                    uint coarse = masks.words[MASK_COARSE_WORD + uint(bit2 >> 5)];
+                    if (coarseKey != (bit2 >> 5)) {
+                        coarseKey = bit2 >> 5;
+                        coarse = masks.words[MASK_COARSE_WORD + uint(coarseKey)];
+                    }
                     if ((coarse & (0x330033u << uint(2 * b4.x + 8 * b4.y))) == 0u) {
                         s = 4;
                     } else if (((coarse >> uint(bit2 & 31)) & 1u) == 0u) {
                         s = 2;
                     }
                 }
-                if (s == 1 && ((masks.words[uint(bit >> 5)] >> uint(bit & 31)) & 1u) != 0u) {
+                if (s == 1 && fineKey != (bit >> 5)) {
+                    fineKey = bit >> 5;
+                    fine = masks.words[uint(fineKey)];
+                }
+                if (s == 1 && ((fine >> uint(bit & 31)) & 1u) != 0u) {
                     hit = true;
                     hitBrick = brick;
                     hitBit = bit;
@@ -185,13 +227,9 @@ TraceResult traceGrid(vec3 o, vec3 d, float tMax, bool hierarchical, bool dyn) {
                 tDelta = float(s) * absInv;
                 level = s;
             }
-            int axis = tNext.x <= tNext.y ? (tNext.x <= tNext.z ? 0 : 2) : (tNext.y <= tNext.z ? 1 : 2);
-            float best = tNext[axis];
-            v[axis] = positive[axis] ? lo[axis] + s : lo[axis] - 1;
+            float best;
             // Past tMax or out of the world: a miss (see ray_traversal.cpp).
-            done = best > tExit || v[axis] < 0 || v[axis] >= size[axis];
-            tNext[axis] += tDelta[axis];
-            face = uint(axis * 2 + (positive[axis] ? 0 : 1));
+            done = !leaveBlock(v, tNext, tDelta, lo, s, positive, size, tExit, best, face);
             t = best;
             exact = s;
         }

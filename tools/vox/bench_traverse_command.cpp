@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <thread>
+#include <time.h>
 
 #include "core/atomic_file.h"
 #include "classic_dda.h"
@@ -41,6 +42,9 @@ struct BenchOptions {
 struct MethodResult {
     std::string name;
     double ms = 0.0;  // median wall (CPU) or GPU timestamp time for all rays
+    // Median CPU time of the whole process over the same runs (all threads, lavapipe's too):
+    // unlike wall time it hardly moves when other processes load the machine.
+    double cpuMs = 0.0;
     std::uint64_t rays = 0;
     std::uint64_t steps = 0;
     // GPU only: steps as the SIMD hardware pays for them. llvmpipe runs 8 lanes in lockstep, so a
@@ -51,6 +55,13 @@ struct MethodResult {
 };
 
 constexpr std::size_t kSimdLanes = 8;  // llvmpipe with 256-bit vectors: 8 invocations per batch
+
+// CPU time of the whole process, all threads, in milliseconds.
+double processCpuMs() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
+}
 
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
@@ -76,9 +87,10 @@ MethodResult benchCpu(const std::vector<Ray>& rays, Trace&& trace, int repeats, 
     unsigned threads = std::max(1u, std::thread::hardware_concurrency());
     MethodResult r;
     r.name = name;
-    std::vector<double> times;
+    std::vector<double> times, cpuTimes;
     std::vector<std::uint64_t> steps(threads);
     for (int rep = 0; rep < repeats + 1; ++rep) {  // first run warms caches, not counted
+        const double cpuStart = processCpuMs();
         auto start = std::chrono::steady_clock::now();
         std::vector<std::thread> pool;
         for (unsigned t = 0; t < threads; ++t) {
@@ -94,9 +106,13 @@ MethodResult benchCpu(const std::vector<Ray>& rays, Trace&& trace, int repeats, 
         }
         for (auto& th : pool) th.join();
         double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-        if (rep > 0) times.push_back(ms);
+        if (rep > 0) {
+            times.push_back(ms);
+            cpuTimes.push_back(processCpuMs() - cpuStart);
+        }
     }
     r.ms = median(times);
+    r.cpuMs = median(cpuTimes);
     r.rays = rays.size();
     for (auto s : steps) r.steps += s;
     return r;
@@ -198,8 +214,9 @@ int runBench(const BenchOptions& o) {
     for (std::uint32_t mode : {shared::TRACE_MODE_HIERARCHICAL, shared::TRACE_MODE_PLAIN}) {
         MethodResult r;
         r.name = mode == shared::TRACE_MODE_HIERARCHICAL ? "gpu hierarchical" : "gpu plain two-level";
-        std::vector<double> times;
+        std::vector<double> times, cpuTimes;
         for (int rep = 0; rep < o.repeats + 2; ++rep) {  // two warm-up runs: the first compiles the shader
+            const double cpuStart = processCpuMs();
             engine::gpu::CommandList cmd(gpu, &timer);
             cmd.begin();
             shared::TraceRaysParams p{glm::uvec4(std::uint32_t(inputs.size()), mode, 0u, 0u)};
@@ -209,9 +226,13 @@ int runBench(const BenchOptions& o) {
             cmd.copyBuffer(hitsBuf, readback, {{0, 0, hitsBuf.size()}});
             cmd.barrier();
             cmd.submitAndWait();
-            if (rep >= 2) times.push_back(timer.results().at(0).second);
+            if (rep >= 2) {
+                times.push_back(timer.results().at(0).second);
+                cpuTimes.push_back(processCpuMs() - cpuStart);
+            }
         }
         r.ms = median(times);
+        r.cpuMs = median(cpuTimes);
         r.rays = inputs.size();
         auto out = readback.view<shared::TraceRayOutput>();
         for (std::size_t batch = 0; batch < inputs.size(); batch += kSimdLanes) {
@@ -252,10 +273,10 @@ int runBench(const BenchOptions& o) {
     const SkipEditCost edit = measureSkipEditCost(grid);
 
     unsigned threads = std::max(1u, std::thread::hardware_concurrency());
-    std::printf("\n%-28s %10s %12s %12s %12s\n", "method", "ms", "Mrays/s", "steps/ray", "ns/step");
+    std::printf("\n%-28s %10s %12s %12s %12s %10s\n", "method", "ms", "Mrays/s", "steps/ray", "ns/step", "cpu ms");
     for (const MethodResult& r : results) {
-        std::printf("%-28s %10.2f %12.3f %12.2f %12.3f\n", r.name.c_str(), r.ms, r.raysPerSecond() * 1e-6,
-                    r.stepsPerRay(), r.ms * 1e6 / double(std::max<std::uint64_t>(r.steps, 1)));
+        std::printf("%-28s %10.2f %12.3f %12.2f %12.3f %10.2f\n", r.name.c_str(), r.ms, r.raysPerSecond() * 1e-6,
+                    r.stepsPerRay(), r.ms * 1e6 / double(std::max<std::uint64_t>(r.steps, 1)), r.cpuMs);
     }
     for (const MethodResult& r : results) {
         if (r.laneSteps == 0) continue;
@@ -266,6 +287,8 @@ int runBench(const BenchOptions& o) {
     const MethodResult& classic = results[4];
     std::printf("\ngpu hierarchical vs cpu classic two-level DDA: %.2fx rays/s, %.2fx fewer steps per ray\n",
                 gpuH.raysPerSecond() / classic.raysPerSecond(), classic.stepsPerRay() / gpuH.stepsPerRay());
+    std::printf("gpu hierarchical vs cpu classic two-level DDA in CPU time (all threads; steadier under load): %.2fx\n",
+                classic.cpuMs / gpuH.cpuMs);
     std::printf("primary-hit mismatches against the CPU reference: gpu %llu, classic DDA %llu, of %zu (CPU threads: %u)\n",
                 static_cast<unsigned long long>(gpuCpuMismatches), static_cast<unsigned long long>(classicMismatches),
                 primary.size(), threads);
@@ -290,7 +313,7 @@ int runBench(const BenchOptions& o) {
     for (std::size_t i = 0; i < results.size(); ++i) {
         const MethodResult& r = results[i];
         json << "    {\"name\": \"" << r.name << "\", \"ms\": " << r.ms << ", \"rays\": " << r.rays
-             << ", \"steps\": " << r.steps << ", \"rays_per_second\": " << r.raysPerSecond()
+             << ", \"cpu_ms\": " << r.cpuMs << ", \"steps\": " << r.steps << ", \"rays_per_second\": " << r.raysPerSecond()
              << ", \"steps_per_ray\": " << r.stepsPerRay() << ", \"lane_steps\": " << r.laneSteps << "}" << (i + 1 < results.size() ? "," : "") << "\n";
     }
     json << "  ]\n}\n";
