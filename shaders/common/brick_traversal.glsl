@@ -92,11 +92,12 @@ TraceResult traceGrid(vec3 o, vec3 d, float tMax, bool hierarchical, bool dyn) {
     precise float t = tEnter;
 
     const vec3 absInv = abs(inv);
-    // Grid sizes are read once, here: llvmpipe makes every buffer read in the loop a loop over
-    // the SIMD lanes (even a read at the same address for all) and runs both sides of every
-    // branch under a lane mask, so a step pays for every read its code holds, whichever level its
-    // lanes are on. The loop holds five: a super cell, a cell, a page-table entry and two mask
-    // words (it held eleven: three grid sizes, two super-cell reads, three page-table reads).
+    // Grid sizes are read once, here: llvmpipe compiles a buffer read into a loop over the SIMD
+    // lanes with a branch per lane (Mesa 21.3's source does so even for an address all lanes
+    // share) and runs both sides of every branch under a lane mask, so a step pays for every read
+    // its code holds, whichever level its lanes are on. The loop holds five: a super cell, a cell,
+    // a page-table entry and two mask words (it held eleven: three grid sizes, two super-cell
+    // reads, three page-table reads, three mask words). See docs/PERFORMANCE.md.
     const ivec3 superSize = gridSizeInSuperCells(dyn);
     const ivec3 cellSize = gridSizeInCells(dyn);
     precise vec3 tNext = vec3(0.0);

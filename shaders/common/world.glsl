@@ -90,8 +90,8 @@ ivec3 gridSizeInCells(bool dyn) {
 }
 
 // Super-cell and cell reads for a caller that read the grid's size `n` once, before its loop:
-// llvmpipe turns every buffer read into a loop over the SIMD lanes, even one whose address is
-// the same for every lane, so a size read per step costs as much as the cell read itself.
+// llvmpipe turns a buffer read into a loop over the SIMD lanes (in Mesa 21.3's source even one
+// whose address all lanes share), so a size read per step can cost as much as the cell read.
 uint gridSuperCellIn(bool dyn, ivec3 n, ivec3 s) {
     uint i = uint(s.x) + uint(n.x) * (uint(s.y) + uint(n.y) * uint(s.z));
     if (dyn) return gDyn.words[gDynHeader.offsets.x + i];
