@@ -1,8 +1,9 @@
 // Ray traversal of the two-level brick grid. Mirrors engine/world/ray_traversal.cpp operation for
 // operation (`precise` here, -ffp-contract=off there) so both agree hit for hit; read that file
 // for the method. Each step finds the coarsest empty block around the current voxel (32^3 super
-// cell, 8^3 cell, 4^3, 2^3, voxel) and jumps to where the ray leaves it. Runs of empty super cells
-// are walked in a tight inner loop that reads the super grid only where its skip distance runs out.
+// cell, 8^3 cell, 4^3, 2^3, voxel) and jumps to where the ray leaves it. In runs of empty super
+// cells the super grid is read only where the last read's skip distance runs out. One loop, one
+// step per pass, as on the CPU: on llvmpipe a nested open-air loop cost every finer step a pass.
 // traceGrid walks either the static world or the dynamic grid (grid-local coordinates); its
 // `dyn` flag is a constant at each call, so the compiler folds it away after inlining and the
 // static walk's arithmetic is the one the CPU reference agrees with bit for bit.
@@ -35,8 +36,7 @@ ivec3 refineVoxel(ivec3 v, int exact, vec3 o, vec3 d, float t, ivec3 size) {
 // One DDA step out of the block [lo, lo + s) around v: to the nearest exit plane (ties go to the
 // lowest axis, as in ray_traversal.cpp), with the same arithmetic per component. Written with
 // per-component selects rather than a run-time axis index into the vectors, the form llvmpipe's
-// SIMD code takes anyway; one copy serves the open-air walk and the general step. False when the
-// ray passes tExit or leaves the world.
+// SIMD code takes anyway. False when the ray passes tExit or leaves the world.
 bool leaveBlock(inout ivec3 v, inout vec3 tNext, vec3 tDelta, ivec3 lo, int s, bvec3 positive, ivec3 size,
                 float tExit, out float best, out uint face) {
     bool xFirst = tNext.x <= tNext.y && tNext.x <= tNext.z;
@@ -112,9 +112,10 @@ TraceResult traceGrid(vec3 o, vec3 d, float tMax, bool hierarchical, bool dyn) {
     uint hitBrick = 0u;  // a brick voxel's material is read once, after the loop
     int hitBit = -1;
     uint steps = 0u;
-    // What the last reads found, and where: a lane reads again only when it has moved to another
-    // super cell, cell, brick slab or mask word. llvmpipe still runs each read's code for the
-    // batch, but skips the memory access for every lane that does not need it.
+    // What the last reads found, and where: a lane reads again only when it has left the box its
+    // last super-grid read vouches for, or moved to another cell, brick slab or mask word.
+    // llvmpipe still runs each read's code for the batch, but skips the memory access for every
+    // lane that does not need it.
     ivec3 boxCentre = ivec3(-1);  // super cell of the last super-grid read (its skip distance in `skip`)
     uint skip = 0u;
     ivec3 cellKey = ivec3(-1);    // cell of `cell`
@@ -126,46 +127,22 @@ TraceResult traceGrid(vec3 o, vec3 d, float tMax, bool hierarchical, bool dyn) {
     uint fine = 0u;
     while (!done && steps < TRAVERSAL_MAX_STEPS) {
         ++steps;
-        if (hierarchical) {
-            // Open air: walk empty super cells in this tight loop, one step each with the same
-            // arithmetic as the general step below (hits, t and step counts do not change), so
-            // lanes in the air pay neither for the finer levels' code nor for a read per super
-            // cell. Its first pass reads the super cell v is in (and leaves at once if it is not
-            // empty); later passes read the grid only where the ray leaves the box `skip` says
-            // is empty. One read in its code serves both.
-            bool air = true;
-            bool read = any(notEqual(v >> SUPER_SHIFT, boxCentre));
-            while (air) {
-                if (read) {
-                    boxCentre = v >> SUPER_SHIFT;
-                    skip = gridSuperCellIn(dyn, superSize, boxCentre);
-                }
-                air = skip != 0u;
-                if (air) {
-                    if (level != 32) {
-                        tNext = (vec3((v & ~31) + ivec3(positive) * 32) - o) * inv;
-                        tDelta = 32.0 * absInv;
-                        level = 32;
-                    }
-                    float best;
-                    bool inside = leaveBlock(v, tNext, tDelta, v & ~31, 32, positive, size, tExit, best, face);
-                    done = !inside || steps == TRAVERSAL_MAX_STEPS;
-                    t = best;
-                    exact = 32;
-                    air = !done;
-                    if (air) {
-                        ++steps;
-                        // Only the axis just stepped can have left the box (the others were
-                        // checked when they moved), so the largest offset is that axis's.
-                        ivec3 off = abs((v >> SUPER_SHIFT) - boxCentre);
-                        read = uint(max(off.x, max(off.y, off.z))) >= skip;
-                    }
-                }
-            }
-            if (done) break;
-        }
         int s = 1;
-        {
+        bool air = false;
+        if (hierarchical) {
+            // Open air: the super cell is empty. The grid is read again only when v leaves the
+            // box the last read's skip distance says is empty (skip 0: that super cell alone).
+            ivec3 superCell = v >> SUPER_SHIFT;
+            ivec3 off = abs(superCell - boxCentre);
+            if (uint(max(off.x, max(off.y, off.z))) >= max(skip, 1u)) {
+                boxCentre = superCell;
+                skip = gridSuperCellIn(dyn, superSize, superCell);
+            }
+            air = skip != 0u;
+        }
+        if (air) {
+            s = 32;
+        } else {
             // Below super-cell level every test wants the exact voxel: refine once, here (the
             // CPU refines lazily per level; both give the same v at every test that reads it).
             if (exact > 1) {
