@@ -17,6 +17,8 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -52,6 +54,7 @@ struct FlythroughOptions {
     std::uint32_t referenceEvery = 10;
     std::uint32_t referenceSpp = 256;
     std::vector<std::uint32_t> pathSpp{1, 4, 16, 64};
+    std::vector<std::uint32_t> cacheFallback;  // empty: the cache's default; more than one: a cache run each
     std::uint32_t bounces = 1;
     std::string output = "out/flythrough";
 };
@@ -60,6 +63,7 @@ struct FlythroughOptions {
 struct Run {
     std::string method;     // none | cache | path
     std::uint32_t spp = 0;  // path: paths per pixel per frame
+    std::optional<std::uint32_t> fallback;  // cache: the gather's fallback radius, when the run sets it
     LightingSettings lighting;
     Scene scene;
     Flythrough fly;
@@ -67,7 +71,10 @@ struct Run {
     std::unique_ptr<FlythroughPlayer> player;
     std::vector<double> wallMs;  // measured frames
     std::vector<double> mae;     // reference frames
-    std::string label() const { return method == "path" ? fmt::format("path {} spp", spp) : method; }
+    std::string label() const {
+        if (method == "path") return fmt::format("path {} spp", spp);
+        return fallback ? fmt::format("{} (fallback {})", method, *fallback) : method;
+    }
 };
 
 double mean(const std::vector<double>& v) {
@@ -178,7 +185,7 @@ int runFlythroughBench(const FlythroughOptions& o) {
     if (engine::Status s = summaryFile.open(out / "summary.csv"); !s) return fail(s.error());
     std::ostream& summary = summaryFile.stream();
     summary << "scene,method,spp,wall_ms_mean,wall_ms_median,indirect_mae,relative_mae,reference_mean_abs,frames,"
-               "reference_frames,size,reference_spp,bounces\n";
+               "reference_frames,size,reference_spp,bounces,cache_fallback\n";
     std::string table = "| scene | method | wall ms/frame (mean) | indirect MAE | MAE / mean \\|indirect\\| |\n|---|---|---|---|---|\n";
 
     for (const std::string& world : o.worlds) {
@@ -212,7 +219,17 @@ int runFlythroughBench(const FlythroughOptions& o) {
             return {};
         };
         engine::Status added = addRun("none", 0, Indirect::None);
-        if (added) added = addRun("cache", 0, Indirect::Cache);
+        if (o.cacheFallback.empty()) {
+            if (added) added = addRun("cache", 0, Indirect::Cache);
+        }
+        for (std::uint32_t radius : o.cacheFallback) {
+            if (!added) break;
+            added = addRun("cache", 0, Indirect::Cache);
+            if (added) {
+                runs.back().fallback = radius;
+                runs.back().lighting.cache.fallbackRadius = radius;
+            }
+        }
         for (std::uint32_t spp : o.pathSpp)
             if (added) added = addRun("path", spp, Indirect::Path);
         if (!added) return fail(added.error());
@@ -258,9 +275,10 @@ int runFlythroughBench(const FlythroughOptions& o) {
         const double refMean = mean(referenceMeans);
         for (const Run& r : runs) {
             const double wall = mean(r.wallMs), mae = mean(r.mae);
-            summary << fmt::format("{},{},{},{:.3f},{:.3f},{:.6g},{:.4f},{:.6g},{},{},{}x{},{},{}\n", loaded->name, r.method,
+            summary << fmt::format("{},{},{},{:.3f},{:.3f},{:.6g},{:.4f},{:.6g},{},{},{}x{},{},{},{}\n", loaded->name, r.method,
                                    r.spp, wall, median(r.wallMs), mae, mae / std::max(refMean, 1e-12), refMean,
-                                   r.wallMs.size(), r.mae.size(), frame.width, frame.height, o.referenceSpp, o.bounces);
+                                   r.wallMs.size(), r.mae.size(), frame.width, frame.height, o.referenceSpp, o.bounces,
+                                   r.fallback ? std::to_string(*r.fallback) : std::string());
             const std::string row = fmt::format("| {} | {} | {:.1f} | {:.4g} | {:.1f} % |\n", loaded->name, r.label(), wall,
                                                 mae, 100.0 * mae / std::max(refMean, 1e-12));
             table += row;
@@ -298,6 +316,10 @@ void addBenchFlythroughCommand(CLI::App& bench, int& exitCode) {
         ->delimiter(',')
         ->capture_default_str()
         ->check(numberIn(engine::wholeRange(1, 256, "paths per pixel")));
+    cmd->add_option("--cache-fallback", o->cacheFallback,
+                    "Cache runs, one per gather fallback radius (voxels; 0 = off), e.g. 0,4 for before and after")
+        ->delimiter(',')
+        ->check(numberIn(engine::wholeRange(0, 16, "voxels")));
     cmd->add_option("--bounces", o->bounces, "Bounces of the reference, the cache and the paths")->capture_default_str()
         ->check(numberIn(engine::wholeRange(1, 8, "bounces")));
     cmd->add_option("-o,--output", o->output, "Output folder (summary.csv, frames.csv, table.md)")->capture_default_str();
