@@ -64,7 +64,8 @@ def equal_time_table(rows):
         path = [r for r in rs if r["method"] == "path"]
         caches = [r for r in rs if r["method"] == "cache"]
         for c in caches:
-            name = f"{scene} (fallback {c['cache_fallback']})" if len(caches) > 1 and c.get("cache_fallback") else scene
+            variant = ", ".join(f"{k} {c[f'cache_{k}']}" for k in ("fallback", "budget") if c.get(f"cache_{k}"))
+            name = f"{scene} ({variant})" if len(caches) > 1 and variant else scene
             ms, mae = float(c["wall_ms_mean"]), float(c["relative_mae"])
             at, inside = path_error_at(path, ms)
             if inside:
@@ -111,10 +112,11 @@ def main():
                                              ("none", "x", "grey", "ReSTIR, no indirect")):
             for r in rs:
                 if r["method"] == method:
-                    fallback = r.get("cache_fallback")
+                    variant = ", ".join(f"{k} {r[f'cache_{k}']}" for k in ("fallback", "budget")
+                                        if r.get(f"cache_{k}"))
                     ax.plot(float(r["wall_ms_mean"]), 100 * float(r["relative_mae"]), style,
-                            color="tab:orange" if fallback == "0" else colour, markersize=9,
-                            label=f"{label}, fallback {fallback}" if fallback else label)
+                            color="tab:orange" if r.get("cache_fallback") == "0" else colour, markersize=9,
+                            label=f"{label} ({variant})" if variant else label)
         first = rs[0]
         ax.set_title(f"{scene} ({first['size']}, {first['reference_frames']} reference frames)", fontsize=10)
         ax.set_xscale("log")
