@@ -62,7 +62,10 @@ def equal_time_table(rows):
              "|---|---:|---:|---:|---|---:|---:|"]
     for scene, rs in rows.items():
         path = [r for r in rs if r["method"] == "path"]
-        for c in (r for r in rs if r["method"] == "cache"):
+        caches = [r for r in rs if r["method"] == "cache"]
+        for c in caches:
+            variant = ", ".join(f"{k} {c[f'cache_{k}']}" for k in ("fallback", "budget") if c.get(f"cache_{k}"))
+            name = f"{scene} ({variant})" if len(caches) > 1 and variant else scene
             ms, mae = float(c["wall_ms_mean"]), float(c["relative_mae"])
             at, inside = path_error_at(path, ms)
             if inside:
@@ -77,7 +80,7 @@ def equal_time_table(rows):
             floor = reference_floor(path)
             even = path_time_at(path, mae)
             even_text = f"{even:.0f}" if even else "beyond the path points"
-            lines.append(f"| {scene} | {ms:.0f} | {100 * mae:.1f} % | {text} | {verdict} | {even_text} "
+            lines.append(f"| {name} | {ms:.0f} | {100 * mae:.1f} % | {text} | {verdict} | {even_text} "
                          f"| {100 * floor:.0f} % |")
     return "\n".join(lines)
 
@@ -109,8 +112,11 @@ def main():
                                              ("none", "x", "grey", "ReSTIR, no indirect")):
             for r in rs:
                 if r["method"] == method:
-                    ax.plot(float(r["wall_ms_mean"]), 100 * float(r["relative_mae"]), style, color=colour,
-                            markersize=9, label=label)
+                    variant = ", ".join(f"{k} {r[f'cache_{k}']}" for k in ("fallback", "budget")
+                                        if r.get(f"cache_{k}"))
+                    ax.plot(float(r["wall_ms_mean"]), 100 * float(r["relative_mae"]), style,
+                            color="tab:orange" if r.get("cache_fallback") == "0" else colour, markersize=9,
+                            label=f"{label} ({variant})" if variant else label)
         first = rs[0]
         ax.set_title(f"{scene} ({first['size']}, {first['reference_frames']} reference frames)", fontsize=10)
         ax.set_xscale("log")

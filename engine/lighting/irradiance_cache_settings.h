@@ -40,6 +40,10 @@ struct IrradianceCacheSettings {
     // Static faces at least this far along the view ray (voxels) share a coarse entry per open,
     // coplanar 2x2 patch (render/irradiance_cache/cache_lod.h); 0: every voxel its own entry.
     float lodDistance = 0.0f;
+    // A pixel whose voxel has no entry yet (first seen this frame, or waiting for the ray budget)
+    // reads the nearest entries of the same face within this many voxels in the face's plane,
+    // reachable through the open space in front of it (never across a wall); 0: it reads nothing.
+    std::uint32_t fallbackRadius = 4;
     bool fullRetrace = false;          // tests: the static set traces the whole world every update
 
     bool operator==(const IrradianceCacheSettings&) const = default;

@@ -212,6 +212,9 @@ const Knob kCache[] = {
     {.name = "lod_distance", .help = "cache: static faces this far (voxels) share an entry per open 2x2 patch; 0 = off",
      .kind = KnobKind::Real, .min = 0, .max = 100000, .get = getPartField<&S::cache, &C::lodDistance>,
      .set = setPartField<&S::cache, &C::lodDistance>, .relevant = usesCache},
+    {.name = "fallback", .help = "cache: voxels a pixel without an entry searches in its face's plane for entries; 0 = off",
+     .kind = KnobKind::Count, .min = 0, .max = 16, .get = getPartField<&S::cache, &C::fallbackRadius>,
+     .set = setPartField<&S::cache, &C::fallbackRadius>, .relevant = usesCache},
 };
 
 // Path-traced indirect light beside the direct method (render/path_indirect/). The names carry

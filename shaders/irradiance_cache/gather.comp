@@ -4,7 +4,8 @@
 // surfaces), bilinearly across the neighbouring voxels in the face's plane. Neighbours without a
 // value drop out and the weights renormalise: the padding of §4.7 without storing padded voxels.
 // Adds albedo/pi * E to the frame's radiance. Far static faces read coarse entries (2x2 patches)
-// the same way, between patch centres.
+// the same way, between patch centres. A pixel left without a value falls back to the nearest
+// entries of its plane on the same side (gatherFallback).
 #extension GL_GOOGLE_include_directive : require
 
 #include "irradiance_cache/irradiance_cache.glsl"
@@ -38,6 +39,38 @@ vec4 gatherLevel(ivec3 voxel, uint face, uint set, vec3 p, uint coarse) {
     return vec4(sum, weights);
 }
 
+// A pixel whose voxel and its bilinear neighbours have no value yet — seen for the first time
+// (its entry comes a frame late) or waiting for the ray budget — reads the nearest square ring of
+// voxels around it in the face's plane, up to gCache.fallbackRadius away, whose entries have the
+// same face and whose front is reachable through the open space in front of the pixel's
+// (cacheFrontsConnected: never across a wall), weighted by inverse squared distance. A loop that
+// no lane enters costs nothing on lavapipe, so a view whose pixels all have entries pays nothing.
+vec4 gatherFallback(ivec3 voxel, uint face, uint set, vec3 p) {
+    uint axis = face >> 1u, ua = (axis + 1u) % 3u, va = (axis + 2u) % 3u;
+    vec3 sum = vec3(0.0);
+    float weights = 0.0;
+    int radius = int(gCache.fallbackRadius);
+    for (int ring = 1; weights == 0.0 && ring <= radius; ++ring) {
+        for (int j = -ring; j <= ring; ++j) {
+            // The whole row at the ring's top and bottom, its two ends in between.
+            for (int i = -ring; i <= ring; i += abs(j) == ring ? 1 : 2 * ring) {
+                ivec3 v = voxel;
+                v[ua] += i;
+                v[va] += j;
+                uint slot = cacheLookupKey(v, set, 0u);
+                if (slot == ~0u) continue;
+                vec4 e = gFiltered[slot * CACHE_FACES + face];
+                if (e.w == 0.0 || !cacheFrontsConnected(voxel, face, ivec2(i, j), set)) continue;
+                vec2 d = vec2(v[ua], v[va]) + 0.5 - vec2(p[ua], p[va]);
+                float w = 1.0 / max(dot(d, d), 0.25);
+                sum += w * e.rgb * cacheFade(slot);
+                weights += w;
+            }
+        }
+    }
+    return vec4(sum, weights);
+}
+
 void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;
     if (any(greaterThanEqual(pixel, uvec2(gCache.width, gCache.height)))) return;
@@ -56,6 +89,7 @@ void main() {
         bool far = uintBitsToFloat(g.data.y) >= gCache.lodDistance;
         vec4 r = gatherLevel(g.voxel.xyz, face, set, g.position.xyz, far ? coarse : 0u);
         if (r.w == 0.0 && coarse != 0u) r = gatherLevel(g.voxel.xyz, face, set, g.position.xyz, far ? 0u : coarse);
+        if (r.w == 0.0) r = gatherFallback(g.voxel.xyz, face, set, g.position.xyz);
         if (r.w > 0.0) indirect = gMaterials[g.data.x].albedo.rgb / PI * (r.rgb / r.w);
     }
     gIndirect[index] = vec4(indirect, 1.0);

@@ -125,6 +125,30 @@ uint cacheCoarsePatch(ivec3 voxel, uint face, out ivec3 base) {
     return 1u + face;
 }
 
+// Whether the open space in front of `face` of `voxel` reaches the front of the same face of its
+// in-plane neighbour at offset `d` (along the plane's u, v axes): a 4-connected walk through the
+// layer of voxels in front, along u then v or along v then u, that meets no solid voxel. A wall
+// between two faces of one plane, however thin, stands in that layer, so the gather's fallback
+// never reads light from its other side.
+bool cacheFrontOpen(ivec3 v, uint set) {
+    return staticVoxelMaterial(v) == 0u && (set == CACHE_SET_STATIC || dynamicVoxelMaterial(v) == 0u);
+}
+bool cacheFrontWalkOpen(ivec3 front, uint ua, uint va, ivec2 d, bool uFirst, uint set) {
+    ivec2 steps = abs(d), dir = sign(d);
+    ivec3 v = front;
+    for (int k = 0; k < steps.x + steps.y; ++k) {
+        if (uFirst ? k < steps.x : k >= steps.y) v[ua] += dir.x;
+        else v[va] += dir.y;
+        if (!cacheFrontOpen(v, set)) return false;
+    }
+    return true;
+}
+bool cacheFrontsConnected(ivec3 voxel, uint face, ivec2 d, uint set) {
+    uint axis = face >> 1u, ua = (axis + 1u) % 3u, va = (axis + 2u) % 3u;
+    ivec3 front = voxel + faceNormal(face);
+    return cacheFrontWalkOpen(front, ua, va, d, true, set) || cacheFrontWalkOpen(front, ua, va, d, false, set);
+}
+
 // Whether an entry's face is worth updating: a voxel's exposed faces; a coarse entry's one face
 // while its patch is still open (an edit may have closed it).
 bool cacheEntryFaceExposed(CacheEntry e, uint face) {

@@ -53,7 +53,8 @@ struct CacheParams {
     float time;          // scene time (s)
     float fadeSeconds;   // dynamic entries fade over this long without an update
     float lodDistance;   // static faces at least this far (view distance, voxels) use 2x2 patch entries; 0: off
-    uint pad1, pad2;
+    uint fallbackRadius; // voxels the gather searches in a face's plane when a pixel's voxel has no entry yet; 0: off
+    uint pad2;
 };
 SHARED_ASSERT_SIZE(CacheParams, 80);
 

@@ -204,6 +204,7 @@ namespace {
 struct ThinWallResult {
     double outsideMean = 0.0;
     float insideMax = 0.0f;
+    float firstLookInsideMax = 0.0f;  // the first frame inside, after only the outside was seen
     std::uint32_t coarseEntries = 0;
 };
 ThinWallResult thinWall(float lodDistance) {
@@ -233,8 +234,14 @@ ThinWallResult thinWall(float lodDistance) {
     r.render(scene, scene.camera("outside"), frame(48), l);
     out.outsideMean = meanOf(r.readback().indirect);
     for (const glm::vec4& p : inside) out.insideMax = std::max({out.insideMax, p.x, p.y, p.z});
-    std::printf("thin wall (lod_distance %g): indirect outside mean %.4f; inside max %.3g; coarse entries %u\n",
-                lodDistance, out.outsideMean, out.insideMax, out.coarseEntries);
+    // The gather's fallback: the room's voxels have no entries in the first frame inside, and the
+    // nearest entries of the floor's plane are the lit ones outside, two voxels away under the wall.
+    Renderer first(gpu_testing::context());
+    for (int i = 0; i < 12; ++i) first.render(scene, scene.camera("outside"), frame(48), l);
+    first.render(scene, scene.camera("inside"), frame(48), l);
+    for (const glm::vec4& p : first.readback().indirect) out.firstLookInsideMax = std::max({out.firstLookInsideMax, p.x, p.y, p.z});
+    std::printf("thin wall (lod_distance %g): indirect outside mean %.4f; inside max %.3g (first look %.3g); coarse entries %u\n",
+                lodDistance, out.outsideMean, out.insideMax, out.firstLookInsideMax, out.coarseEntries);
     return out;
 }
 
@@ -244,11 +251,70 @@ TEST_F(IrradianceCache, ThinWallDoesNotLeak) {
     const ThinWallResult fine = thinWall(0.0f);
     EXPECT_GT(fine.outsideMean, 0.02);  // the cache works on the lit side
     EXPECT_EQ(fine.insideMax, 0.0f);    // and nothing crosses the wall
+    EXPECT_EQ(fine.firstLookInsideMax, 0.0f);  // not even through the gather's fallback
     EXPECT_EQ(fine.coarseEntries, 0u);
     const ThinWallResult coarse = thinWall(1.0f);
     EXPECT_GT(coarse.coarseEntries, 100u);  // the floors and walls are mostly coarse
     EXPECT_GT(coarse.outsideMean, 0.02);
     EXPECT_EQ(coarse.insideMax, 0.0f);
+    EXPECT_EQ(coarse.firstLookInsideMax, 0.0f);
+}
+
+// A moving camera: the voxels it sees for the first time have no entry in that frame (the visible
+// set is the previous frame's), and with a ray budget some wait longer. The gather's fallback
+// gives their pixels the nearest entries of the same face in their plane: non-zero, and close to
+// what the converged cache shows there. Without it (fallback 0) those pixels read nothing.
+TEST_F(IrradianceCache, NewlyVisibleVoxelsGetLightInTheirFirstFrame) {
+    Scene scene = courtyard();
+    const engine::world::CameraPreset before = scene.camera();
+    engine::world::CameraPreset after = before;  // a step sideways and forwards: new voxels come into view
+    after.position += glm::vec3(4.0f, 0.0f, 3.0f);
+    after.target += glm::vec3(4.0f, 0.0f, 3.0f);
+    const std::uint32_t size = 48;
+    auto firstFrameAfterTheStep = [&](std::uint32_t fallback, FrameImages& images, std::vector<bool>& isNew) {
+        Renderer r(gpu_testing::context());
+        LightingSettings l = cacheLighting(1);
+        l.cache.fallbackRadius = fallback;
+        for (int i = 0; i < 24; ++i) r.render(scene, before, frame(size), l);
+        r.render(scene, after, frame(size), l);
+        images = r.readback();
+        isNew.assign(images.gbuffer.size(), false);
+        for (std::size_t p = 0; p < images.gbuffer.size(); ++p) {
+            const shared::GBufferTexel& g = images.gbuffer[p];
+            if (g.voxel.w >= 6 || (g.data.w & shared::GBUFFER_FLAG_DYNAMIC) != 0u) continue;
+            isNew[p] = r.irradianceCache().directory().slotOf({glm::ivec3(g.voxel), shared::CACHE_SET_STATIC}) == ~0u;
+        }
+    };
+    FrameImages with, without;
+    std::vector<bool> isNew, isNewWithout;
+    firstFrameAfterTheStep(4, with, isNew);
+    firstFrameAfterTheStep(0, without, isNewWithout);
+    ASSERT_EQ(isNew, isNewWithout);
+    std::vector<glm::vec4> converged = cacheIndirectSeeded(scene, after, size, 48, 128, 1);
+
+    std::uint32_t newPixels = 0, darkWith = 0, darkWithout = 0;
+    double sumWith = 0.0, sumConverged = 0.0, absError = 0.0;
+    for (std::size_t p = 0; p < isNew.size(); ++p) {
+        const double c = (converged[p].x + converged[p].y + converged[p].z) / 3.0;
+        if (!isNew[p] || c <= 0.0) continue;
+        const double w = (with.indirect[p].x + with.indirect[p].y + with.indirect[p].z) / 3.0;
+        const double wo = (without.indirect[p].x + without.indirect[p].y + without.indirect[p].z) / 3.0;
+        ++newPixels;
+        darkWith += w == 0.0;
+        darkWithout += wo == 0.0;
+        sumWith += w;
+        sumConverged += c;
+        absError += std::abs(w - c);
+    }
+    std::printf("newly visible voxels: %u pixels; without an indirect term in their first frame: %u with the fallback, "
+                "%u without; their mean %.4f against the converged cache's %.4f (%+.1f %%), MAE %.1f %% of it\n",
+                newPixels, darkWith, darkWithout, sumWith / std::max(newPixels, 1u), sumConverged / std::max(newPixels, 1u),
+                100.0 * (sumWith / sumConverged - 1.0), 100.0 * absError / sumConverged);
+    ASSERT_GT(newPixels, 50u) << "the step must bring new voxels into view for this test to mean anything";
+    EXPECT_GT(darkWithout, 0u) << "without the fallback some new pixels read nothing";
+    EXPECT_EQ(darkWith, 0u);
+    EXPECT_NEAR(sumWith / sumConverged, 1.0, 0.15);
+    EXPECT_LT(absError / sumConverged, 0.3);
 }
 
 // Level of detail: on the courtyard's wide view, faces farther than 40 voxels along the view ray

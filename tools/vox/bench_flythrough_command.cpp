@@ -17,6 +17,8 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -52,6 +54,9 @@ struct FlythroughOptions {
     std::uint32_t referenceEvery = 10;
     std::uint32_t referenceSpp = 256;
     std::vector<std::uint32_t> pathSpp{1, 4, 16, 64};
+    // Cache runs: one per (fallback radius, ray budget) pair; an empty list: the cache's default.
+    std::vector<std::uint32_t> cacheFallback;
+    std::vector<std::uint32_t> cacheBudget;
     std::uint32_t bounces = 1;
     std::string output = "out/flythrough";
 };
@@ -60,6 +65,8 @@ struct FlythroughOptions {
 struct Run {
     std::string method;     // none | cache | path
     std::uint32_t spp = 0;  // path: paths per pixel per frame
+    std::optional<std::uint32_t> fallback;  // cache: the gather's fallback radius, when the run sets it
+    std::optional<std::uint32_t> budget;    // cache: the ray budget, when the run sets it
     LightingSettings lighting;
     Scene scene;
     Flythrough fly;
@@ -67,7 +74,13 @@ struct Run {
     std::unique_ptr<FlythroughPlayer> player;
     std::vector<double> wallMs;  // measured frames
     std::vector<double> mae;     // reference frames
-    std::string label() const { return method == "path" ? fmt::format("path {} spp", spp) : method; }
+    std::string label() const {
+        if (method == "path") return fmt::format("path {} spp", spp);
+        std::string variant;
+        if (fallback) variant += fmt::format("fallback {}", *fallback);
+        if (budget) variant += fmt::format("{}budget {}", variant.empty() ? "" : ", ", *budget);
+        return variant.empty() ? method : fmt::format("{} ({})", method, variant);
+    }
 };
 
 double mean(const std::vector<double>& v) {
@@ -173,12 +186,12 @@ int runFlythroughBench(const FlythroughOptions& o) {
     engine::AtomicFile framesFile;
     if (engine::Status s = framesFile.open(out / "frames.csv"); !s) return fail(s.error());
     std::ostream& frames = framesFile.stream();
-    frames << "scene,method,spp,frame,wall_ms,indirect_mae,reference_mean_abs\n";
+    frames << "scene,method,spp,frame,wall_ms,indirect_mae,reference_mean_abs,label\n";
     engine::AtomicFile summaryFile;
     if (engine::Status s = summaryFile.open(out / "summary.csv"); !s) return fail(s.error());
     std::ostream& summary = summaryFile.stream();
     summary << "scene,method,spp,wall_ms_mean,wall_ms_median,indirect_mae,relative_mae,reference_mean_abs,frames,"
-               "reference_frames,size,reference_spp,bounces\n";
+               "reference_frames,size,reference_spp,bounces,cache_fallback,cache_budget\n";
     std::string table = "| scene | method | wall ms/frame (mean) | indirect MAE | MAE / mean \\|indirect\\| |\n|---|---|---|---|---|\n";
 
     for (const std::string& world : o.worlds) {
@@ -212,7 +225,23 @@ int runFlythroughBench(const FlythroughOptions& o) {
             return {};
         };
         engine::Status added = addRun("none", 0, Indirect::None);
-        if (added) added = addRun("cache", 0, Indirect::Cache);
+        const std::vector<std::optional<std::uint32_t>> fallbacks =
+            o.cacheFallback.empty() ? std::vector<std::optional<std::uint32_t>>{std::nullopt}
+                                    : std::vector<std::optional<std::uint32_t>>(o.cacheFallback.begin(), o.cacheFallback.end());
+        const std::vector<std::optional<std::uint32_t>> budgets =
+            o.cacheBudget.empty() ? std::vector<std::optional<std::uint32_t>>{std::nullopt}
+                                  : std::vector<std::optional<std::uint32_t>>(o.cacheBudget.begin(), o.cacheBudget.end());
+        for (const auto& budget : budgets) {
+            for (const auto& fallback : fallbacks) {
+                if (added) added = addRun("cache", 0, Indirect::Cache);
+                if (!added) break;
+                Run& r = runs.back();
+                r.fallback = fallback;
+                r.budget = budget;
+                if (fallback) r.lighting.cache.fallbackRadius = *fallback;
+                if (budget) r.lighting.cache.rayBudget = *budget;
+            }
+        }
         for (std::uint32_t spp : o.pathSpp)
             if (added) added = addRun("path", spp, Indirect::Path);
         if (!added) return fail(added.error());
@@ -248,8 +277,8 @@ int runFlythroughBench(const FlythroughOptions& o) {
                     r.mae.push_back(e->mae);
                     maeText = fmt::format("{:.6g}", e->mae);
                 }
-                frames << fmt::format("{},{},{},{},{:.3f},{},{}\n", loaded->name, r.method, r.spp, i, ms, maeText,
-                                      referenceFrame ? fmt::format("{:.6g}", refMean) : "");
+                frames << fmt::format("{},{},{},{},{:.3f},{},{},\"{}\"\n", loaded->name, r.method, r.spp, i, ms, maeText,
+                                      referenceFrame ? fmt::format("{:.6g}", refMean) : "", r.label());
             }
             progress.update(i + 1, measured ? (referenceFrame ? "reference frame" : "") : "warm-up");
         }
@@ -258,9 +287,11 @@ int runFlythroughBench(const FlythroughOptions& o) {
         const double refMean = mean(referenceMeans);
         for (const Run& r : runs) {
             const double wall = mean(r.wallMs), mae = mean(r.mae);
-            summary << fmt::format("{},{},{},{:.3f},{:.3f},{:.6g},{:.4f},{:.6g},{},{},{}x{},{},{}\n", loaded->name, r.method,
+            summary << fmt::format("{},{},{},{:.3f},{:.3f},{:.6g},{:.4f},{:.6g},{},{},{}x{},{},{},{},{}\n", loaded->name, r.method,
                                    r.spp, wall, median(r.wallMs), mae, mae / std::max(refMean, 1e-12), refMean,
-                                   r.wallMs.size(), r.mae.size(), frame.width, frame.height, o.referenceSpp, o.bounces);
+                                   r.wallMs.size(), r.mae.size(), frame.width, frame.height, o.referenceSpp, o.bounces,
+                                   r.fallback ? std::to_string(*r.fallback) : std::string(),
+                                   r.budget ? std::to_string(*r.budget) : std::string());
             const std::string row = fmt::format("| {} | {} | {:.1f} | {:.4g} | {:.1f} % |\n", loaded->name, r.label(), wall,
                                                 mae, 100.0 * mae / std::max(refMean, 1e-12));
             table += row;
@@ -298,6 +329,13 @@ void addBenchFlythroughCommand(CLI::App& bench, int& exitCode) {
         ->delimiter(',')
         ->capture_default_str()
         ->check(numberIn(engine::wholeRange(1, 256, "paths per pixel")));
+    cmd->add_option("--cache-fallback", o->cacheFallback,
+                    "Cache runs, one per gather fallback radius (voxels; 0 = off), e.g. 0,4 for before and after")
+        ->delimiter(',')
+        ->check(numberIn(engine::wholeRange(0, 16, "voxels")));
+    cmd->add_option("--cache-budget", o->cacheBudget, "Cache runs, one per ray budget (0 = every visible entry every frame)")
+        ->delimiter(',')
+        ->check(numberIn(engine::wholeRange(0, 100000000, "rays")));
     cmd->add_option("--bounces", o->bounces, "Bounces of the reference, the cache and the paths")->capture_default_str()
         ->check(numberIn(engine::wholeRange(1, 8, "bounces")));
     cmd->add_option("-o,--output", o->output, "Output folder (summary.csv, frames.csv, table.md)")->capture_default_str();

@@ -24,6 +24,7 @@ shared::CacheParams cacheParams(const lighting::IrradianceCacheSettings& s, cons
     p.time = static_cast<float>(f.timeSeconds);
     p.fadeSeconds = s.fadeSeconds;
     p.lodDistance = s.lodDistance;
+    p.fallbackRadius = s.fallbackRadius;
     return p;
 }
 
