@@ -40,7 +40,7 @@ struct IrradianceCacheSettings {
     // Static faces at least this far along the view ray (voxels) share a coarse entry per open,
     // coplanar 2x2 patch (render/irradiance_cache/cache_lod.h); 0: every voxel its own entry.
     float lodDistance = 0.0f;
-    bool fullRetrace = false;          // tests: the static set traces the whole world every update
+    bool fullRetrace = false;          // tests: every entry traces the whole world every update
 
     bool operator==(const IrradianceCacheSettings&) const = default;
     std::string describe() const;

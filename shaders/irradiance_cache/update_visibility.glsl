@@ -1,22 +1,26 @@
-// Irradiance cache, visibility update (the paper's divide-and-win, §4.5): a static entry's ray
-// keeps its cached static hit unless the dynamic grid, traced alone up to that hit, is nearer
-// (the selection bit); a dynamic entry's ray traces static and dynamic worlds. The update list
-// holds the static entries first; visibility_static.comp and visibility_dynamic.comp each run
-// this over their part (VISIBILITY_SET), so each is timed on its own. VISIBILITY_MODE picks the
-// method at compile time — lavapipe runs both sides of a branch its lanes disagree on, and even a
-// branch none takes costs, so the divide-and-win shader holds no full-trace code at all:
-//   VISIBILITY_DIVIDE  cached static hit + the dynamic grid traced alone (static entries)
-//   VISIBILITY_FULL    both worlds traced from scratch (dynamic entries; static ones in the
-//                      full-re-trace comparison mode)
+// Irradiance cache, visibility update (the paper's divide-and-win, §4.5): an entry's ray keeps
+// its cached static hit unless the dynamic grid, traced alone up to that hit, is nearer (the
+// selection bit). The update list holds the static entries first; visibility_static.comp and
+// visibility_dynamic.comp each run this over their part (VISIBILITY_SET), so each is timed on its
+// own. VISIBILITY_MODE picks the method at compile time — lavapipe runs both sides of a branch
+// its lanes disagree on, and even a branch none takes costs, so the divide-and-win shader holds
+// no full-trace code at all:
+//   VISIBILITY_DIVIDE  cached static hit + the dynamic grid traced alone (static entries, whose
+//                      hits trace_static.comp cached)
+//   VISIBILITY_FULL    both worlds traced from scratch (the full-re-trace comparison mode)
+//   VISIBILITY_REUSE   dynamic entries: the first update of a phase (CACHE_ENTRY_TRACE) traces the
+//                      static world and caches the hit, later ones read it; then as DIVIDE. A
+//                      dynamic key is a world voxel, so its static hits hold while it lives.
 #define VISIBILITY_DIVIDE 0
 #define VISIBILITY_FULL 1
+#define VISIBILITY_REUSE 2
 #include "irradiance_cache/irradiance_cache.glsl"
 
 layout(local_size_x = CACHE_GROUP_SIZE) in;
 
 // The selected hit of ray j of `face` of a static entry, or of a dynamic entry; `traced` counts
 // the rays actually traced (divide and win traces none while no dynamic object exists).
-uint selectHit(uint slot, ivec3 voxel, vec3 o, uint rotation, uint phase, uint face, uint j, inout uint traced) {
+uint selectHit(uint slot, ivec3 voxel, vec3 o, uint rotation, uint phase, uint face, uint j, bool tracing, inout uint traced) {
     uint K = gCache.directions;
     uint k = cacheDirectionIndex(phase, j);
     vec3 d = cacheDirection(rotation, face, k);
@@ -32,6 +36,24 @@ uint selectHit(uint slot, ivec3 voxel, vec3 o, uint rotation, uint phase, uint f
         SceneHit dyn = traceDynamic(o, d, ts);
         if (dyn.hit && faceHitT(o, d, dyn.voxel, dyn.face) < ts) return packCacheHit(voxel, dyn.voxel, dyn.face, true, d);
         return cached;
+#elif VISIBILITY_MODE == VISIBILITY_REUSE
+    // traceScene's steps with the static part cached: the same hit, bit for bit (the packed hit
+    // gives back the voxel and face, so ts is the same float).
+    uint at = (slot * CACHE_FACES + face) * K + k;
+    uint cached;
+    if (tracing) {
+        TraceResult s = traceRay(o, d, maxLength, true);
+        cached = s.hit ? packCacheHit(voxel, s.voxel, s.face, false, d) : CACHE_HIT_MISS;
+        gStaticHits[at] = cached;
+    } else {
+        cached = gStaticHits[at];
+    }
+    ++traced;
+    if (!dynamicGridPresent()) return cached;
+    float ts = cached == CACHE_HIT_MISS ? maxLength : faceHitT(o, d, cacheHitVoxel(voxel, cached, d), cacheHitFace(cached));
+    SceneHit dyn = traceDynamic(o, d, ts);
+    if (dyn.hit && faceHitT(o, d, dyn.voxel, dyn.face) < ts) return packCacheHit(voxel, dyn.voxel, dyn.face, true, d);
+    return cached;
 #else
     // Dynamic entries, and what the divide-and-win must equal: both worlds traced from scratch.
     ++traced;
@@ -56,10 +78,11 @@ void main() {
     bool exposed = cacheEntryFaceExposed(entry, face);
     uint rotation = cacheEntryRotation(entry);
     vec3 o = cacheEntryRayOrigin(entry, face);
+    bool tracing = (entry.flags & CACHE_ENTRY_TRACE) != 0u;
     uint traced = 0u;
     for (uint j = 0u; j < S; ++j) {
         gSelectedHits[(item * CACHE_FACES + face) * S + j] =
-            exposed ? selectHit(slot, voxel, o, rotation, entry.phase, face, j, traced) : CACHE_HIT_MISS;
+            exposed ? selectHit(slot, voxel, o, rotation, entry.phase, face, j, tracing, traced) : CACHE_HIT_MISS;
     }
     if (traced > 0u) atomicAdd(gCounters[CACHE_COUNTER_RAYS], traced);
 }

@@ -103,6 +103,7 @@ IrradianceCache::IrradianceCache(gpu::Context& ctx)
       mVisibilityStatic(ctx, "cache.visibility_static", "irradiance_cache/visibility_static", kOwnBindings),
       mVisibilityStaticFull(ctx, "cache.visibility_static", "irradiance_cache/visibility_static_full", kOwnBindings),
       mVisibilityDynamic(ctx, "cache.visibility_dynamic", "irradiance_cache/visibility_dynamic", kOwnBindings),
+      mVisibilityDynamicFull(ctx, "cache.visibility_dynamic", "irradiance_cache/visibility_dynamic_full", kOwnBindings),
       mBounce(ctx, "cache.bounce", "irradiance_cache/light_bounce", kOwnBindings),
       mFilter(ctx, "cache.filter", "irradiance_cache/filter", kOwnBindings),
       mGather(ctx, "cache.gather", "irradiance_cache/gather", kOwnBindings) {
@@ -316,7 +317,8 @@ void IrradianceCache::record(gpu::CommandList& cmd, const SceneBindings& scene, 
     mTraceStatic.record(cmd, scene, bindings, threadGroups(mTrace.size() * faces));
     (mSettings.fullRetrace ? mVisibilityStaticFull : mVisibilityStatic)
         .record(cmd, scene, bindings, threadGroups(mStaticUpdates * faces));
-    mVisibilityDynamic.record(cmd, scene, bindings, threadGroups((mUpdate.size() - mStaticUpdates) * faces));
+    (mSettings.fullRetrace ? mVisibilityDynamicFull : mVisibilityDynamic)
+        .record(cmd, scene, bindings, threadGroups((mUpdate.size() - mStaticUpdates) * faces));
     mBounce.record(cmd, scene, bindings, threadGroups(mUpdate.size() * faces));
     mFilter.record(cmd, scene, bindings, threadGroups(mUpdate.size() * faces));
     mGather.record(cmd, scene, bindings, screenGroups(mImage));

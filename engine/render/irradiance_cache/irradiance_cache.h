@@ -9,7 +9,8 @@
 //   cache.trace_static  new or invalidated static entries trace S of their K directions per face
 //                       (their phase's), until all K are cached
 //   cache.visibility_static   static entries re-trace only the dynamic grid (divide and win)
-//   cache.visibility_dynamic  dynamic entries trace both worlds
+//   cache.visibility_dynamic  dynamic entries trace the dynamic grid, and the static world on the
+//                       first update of each phase (its hits are cached like the static entries')
 //   cache.bounce        light leaving each ray's hit -> E_new, blended into the entry
 //   cache.filter        3^3 filter over neighbouring entries of the same set
 //   cache.gather        per pixel: albedo/pi * E from the pixel's set, added to the radiance
@@ -103,7 +104,7 @@ private:
     void ensureCapacity(std::uint32_t slots, gpu::CommandList& cmd);
 
     gpu::Context& mCtx;
-    LitPass mTraceStatic, mVisibilityStatic, mVisibilityStaticFull, mVisibilityDynamic, mBounce, mFilter, mGather;
+    LitPass mTraceStatic, mVisibilityStatic, mVisibilityStaticFull, mVisibilityDynamic, mVisibilityDynamicFull, mBounce, mFilter, mGather;
     lighting::IrradianceCacheSettings mSettings;
     bool mConfigured = false;
     bool mDirectionsUploaded = false;
