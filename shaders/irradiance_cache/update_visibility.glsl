@@ -18,6 +18,19 @@
 
 layout(local_size_x = CACHE_GROUP_SIZE) in;
 
+#if VISIBILITY_MODE == VISIBILITY_REUSE
+// A dynamic entry's static hit along direction k of `face`: traced and kept on the first update
+// of its phase, read from the cache on the later ones.
+uint reusedStaticHit(uint slot, ivec3 voxel, vec3 o, vec3 d, uint face, uint k, bool tracing) {
+    uint at = (slot * CACHE_FACES + face) * gCache.directions + k;
+    if (!tracing) return gStaticHits[at];
+    TraceResult s = traceRay(o, d, gCache.maxRayLength, true);
+    uint packed = s.hit ? packCacheHit(voxel, s.voxel, s.face, false, d) : CACHE_HIT_MISS;
+    gStaticHits[at] = packed;
+    return packed;
+}
+#endif
+
 // The selected hit of ray j of `face` of a static entry, or of a dynamic entry; `traced` counts
 // the rays actually traced (divide and win traces none while no dynamic object exists).
 uint selectHit(uint slot, ivec3 voxel, vec3 o, uint rotation, uint phase, uint face, uint j, bool tracing, inout uint traced) {
@@ -39,15 +52,7 @@ uint selectHit(uint slot, ivec3 voxel, vec3 o, uint rotation, uint phase, uint f
 #elif VISIBILITY_MODE == VISIBILITY_REUSE
     // traceScene's steps with the static part cached: the same hit, bit for bit (the packed hit
     // gives back the voxel and face, so ts is the same float).
-    uint at = (slot * CACHE_FACES + face) * K + k;
-    uint cached;
-    if (tracing) {
-        TraceResult s = traceRay(o, d, maxLength, true);
-        cached = s.hit ? packCacheHit(voxel, s.voxel, s.face, false, d) : CACHE_HIT_MISS;
-        gStaticHits[at] = cached;
-    } else {
-        cached = gStaticHits[at];
-    }
+    uint cached = reusedStaticHit(slot, voxel, o, d, face, k, tracing);
     ++traced;
     if (!dynamicGridPresent()) return cached;
     float ts = cached == CACHE_HIT_MISS ? maxLength : faceHitT(o, d, cacheHitVoxel(voxel, cached, d), cacheHitFace(cached));
@@ -62,16 +67,13 @@ uint selectHit(uint slot, ivec3 voxel, vec3 o, uint rotation, uint phase, uint f
 #endif
 }
 
-// One invocation per face of an entry, looping over its S rays: the entry and the face's
-// exposure are read once, not per ray.
+// One invocation per listed face of an entry (faces.comp; closed faces got their misses there),
+// looping over its S rays: the entry and the face's exposure are read once, not per ray.
 void main() {
     uint S = gCache.raysPerUpdate;
-    uint thread = cacheThread();
-    uint staticEntries = gCache.staticUpdates;
-    uint item = thread / CACHE_FACES;
-    if (VISIBILITY_SET == CACHE_SET_DYNAMIC) item += staticEntries;
-    if (item >= (VISIBILITY_SET == CACHE_SET_STATIC ? staticEntries : gCache.updates)) return;
-    uint face = thread % CACHE_FACES;
+    uint item, face;
+    if (!cacheListedFace(VISIBILITY_SET == CACHE_SET_STATIC ? CACHE_LIST_STATIC : CACHE_LIST_DYNAMIC, cacheThread(), item, face))
+        return;
     uint slot = gLists[item];
     CacheEntry entry = gEntries[slot];
     ivec3 voxel = entry.voxel.xyz;
@@ -80,9 +82,21 @@ void main() {
     vec3 o = cacheEntryRayOrigin(entry, face);
     bool tracing = (entry.flags & CACHE_ENTRY_TRACE) != 0u;
     uint traced = 0u;
+#if VISIBILITY_MODE == VISIBILITY_REUSE
+    // A face an object's voxel covers now may open later, before the phase comes round again:
+    // its static hits are cached whenever the static world leaves it open.
+    bool cacheClosed = !exposed && tracing && cacheFaceExposed(voxel, face, CACHE_SET_STATIC);
+#endif
     for (uint j = 0u; j < S; ++j) {
         gSelectedHits[(item * CACHE_FACES + face) * S + j] =
             exposed ? selectHit(slot, voxel, o, rotation, entry.phase, face, j, tracing, traced) : CACHE_HIT_MISS;
+#if VISIBILITY_MODE == VISIBILITY_REUSE
+        if (cacheClosed) {
+            uint k = cacheDirectionIndex(entry.phase, j);
+            reusedStaticHit(slot, voxel, o, cacheDirection(rotation, face, k), face, k, true);
+            ++traced;
+        }
+#endif
     }
     if (traced > 0u) atomicAdd(gCounters[CACHE_COUNTER_RAYS], traced);
 }

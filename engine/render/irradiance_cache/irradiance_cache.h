@@ -6,6 +6,7 @@
 // G-buffer on the host (the previous frame's, so the frame is one submission; plus an N^3
 // neighbourhood around visible dynamic voxels), lets the directory pick this frame's updates
 // within the ray budget, and queues the uploads; record() then runs the stages, each a timed pass:
+//   cache.faces         which faces have work: the passes below run one invocation per such face
 //   cache.trace_static  new or invalidated static entries trace S of their K directions per face
 //                       (their phase's), until all K are cached
 //   cache.visibility_static   static entries re-trace only the dynamic grid (divide and win)
@@ -104,7 +105,7 @@ private:
     void ensureCapacity(std::uint32_t slots, gpu::CommandList& cmd);
 
     gpu::Context& mCtx;
-    LitPass mTraceStatic, mVisibilityStatic, mVisibilityStaticFull, mVisibilityDynamic, mVisibilityDynamicFull, mBounce, mFilter, mGather;
+    LitPass mFaces, mTraceStatic, mVisibilityStatic, mVisibilityStaticFull, mVisibilityDynamic, mVisibilityDynamicFull, mBounce, mFilter, mGather;
     lighting::IrradianceCacheSettings mSettings;
     bool mConfigured = false;
     bool mDirectionsUploaded = false;
