@@ -479,15 +479,15 @@ std::uint32_t packHit(glm::ivec3 origin, glm::vec3 d, const SceneHit& h) {
 // entry, and with coarse entries everywhere their patch is open (lod_distance 1).
 // With `frames` > 8 (K / S), dynamic entries update again in phases whose static hits they cached
 // (visibility_dynamic.comp): `reused` counts those in the last frame's list.
-void expectDivideAndWinExact(float lodDistance, std::uint32_t frames = 5, std::size_t* reused = nullptr) {
+void expectDivideAndWinExact(float lodDistance, std::uint32_t frames = 5, double seconds = 2.4, std::size_t* reused = nullptr) {
     Scene a = loadWorld("thin_wall.toml"), b = loadWorld("thin_wall.toml");
     Renderer divide(gpu_testing::context()), full(gpu_testing::context());
     LightingSettings ld = cacheLighting(1), lf = cacheLighting(1);
     ld.cache.lodDistance = lf.cache.lodDistance = lodDistance;
     lf.cache.fullRetrace = true;
-    // The crate slides to the wall over these frames (0 to 2.4 s): static rays cached early see it arrive.
+    // The crate slides to the wall over these frames (by 2.4 s): static rays cached early see it arrive.
     for (std::uint32_t i = 0; i < frames; ++i) {
-        const double time = 2.4 * i / (frames - 1);
+        const double time = seconds * i / (frames - 1);
         divide.render(a, a.camera("outside"), frameAt(64, time), ld);
         full.render(b, b.camera("outside"), frameAt(64, time), lf);
     }
@@ -497,6 +497,9 @@ void expectDivideAndWinExact(float lodDistance, std::uint32_t frames = 5, std::s
               std::vector<std::uint32_t>(cf.updateList().begin(), cf.updateList().end()));
     const std::uint32_t S = cd.raysPerUpdate();
     const std::size_t rays = cd.updateList().size() * shared::CACHE_FACES * S;
+    std::size_t dynamicEntries = 0;
+    for (std::uint32_t slot : cd.updateList()) dynamicEntries += cd.directory().entry(slot).voxel.w == int(shared::CACHE_SET_DYNAMIC);
+    std::printf("%zu dynamic entries in the last update list\n", dynamicEntries);
     std::vector<std::uint32_t> hd = readUints(cd.selectedHits()), hf = readUints(cf.selectedHits());
 
     std::size_t traced = 0, dynamicHits = 0, gpuMismatch = 0, cpuMismatch = 0, coarse = 0;
@@ -554,7 +557,7 @@ TEST_F(IrradianceCache, DivideAndWinSelectsTheSameHitAsAFullRetrace) {
 // when their phase was traced and has uncovered since.
 TEST_F(IrradianceCache, DynamicEntriesReuseTheirStaticHitsExactly) {
     std::size_t reused = 0;
-    expectDivideAndWinExact(0.0f, 12, &reused);
+    expectDivideAndWinExact(0.0f, 12, 1.2, &reused);
     std::printf("dynamic entries that read cached static hits in the last frame: %zu\n", reused);
     EXPECT_GT(reused, 100u);
 }
