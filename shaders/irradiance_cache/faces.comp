@@ -24,11 +24,18 @@ void main() {
         bool exposed = cacheEntryFaceExposed(entry, face);
         if (item < gCache.staticUpdates) {
             if (exposed) appendFace(CACHE_LIST_STATIC, item, face);
-        } else if (exposed || ((entry.flags & CACHE_ENTRY_TRACE) != 0u && cacheFaceExposed(entry.voxel.xyz, face, CACHE_SET_STATIC))) {
+        } else if (exposed) {
             appendFace(CACHE_LIST_DYNAMIC, item, face);
         }
         if (!exposed) {
-            for (uint j = 0u; j < S; ++j) gSelectedHits[(item * CACHE_FACES + face) * S + j] = CACHE_HIT_MISS;
+            // A dynamic entry's face may open before its phase comes round again: its static hits
+            // are traced when it does (visibility_dynamic.comp).
+            bool untraced = item >= gCache.staticUpdates && (entry.flags & CACHE_ENTRY_TRACE) != 0u;
+            for (uint j = 0u; j < S; ++j) {
+                gSelectedHits[(item * CACHE_FACES + face) * S + j] = CACHE_HIT_MISS;
+                if (untraced)
+                    gStaticHits[(slot * CACHE_FACES + face) * gCache.directions + cacheDirectionIndex(entry.phase, j)] = CACHE_HIT_UNTRACED;
+            }
             gIrradiance[slot * CACHE_FACES + face] = vec4(0.0);
         }
     }

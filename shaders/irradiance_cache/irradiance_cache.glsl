@@ -34,10 +34,13 @@ uint cacheThread() { return gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * 
 // holds item * CACHE_FACES + face, its length in a counter (reset to 0 every frame); the host
 // sizes the lists buffer for them (kListWordsPerSlot in irradiance_cache.cpp).
 //   CACHE_LIST_STATIC   exposed faces of the static updates      at 2 * capacity
-//   CACHE_LIST_DYNAMIC  dynamic updates' exposed faces, and those that trace their static hits
-//                       while an object's voxel covers them      at 2 * capacity + 6 * staticUpdates
+//   CACHE_LIST_DYNAMIC  exposed faces of the dynamic updates    at 2 * capacity + 6 * staticUpdates
 //   CACHE_LIST_TRACE    exposed faces of the trace list (item: index into it)   at 8 * capacity
 const uint CACHE_LIST_STATIC = 1u, CACHE_LIST_DYNAMIC = 2u, CACHE_LIST_TRACE = 3u;  // also their counters' indices
+
+// A dynamic entry's static hit not traced yet: its face was covered by an object's voxel on the
+// first update of the phase (never a packed hit: face bits 7 are FACE_NONE).
+const uint CACHE_HIT_UNTRACED = 0x7FFFFFFFu;
 
 uint cacheListBase(uint list) {
     if (list == CACHE_LIST_STATIC) return 2u * gCache.capacity;

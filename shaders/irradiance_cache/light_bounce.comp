@@ -46,7 +46,6 @@ void main() {
     CacheEntry entry = gEntries[slot];
     ivec3 voxel = entry.voxel.xyz;
     uint index = slot * CACHE_FACES + face;
-    if (!cacheEntryFaceExposed(entry, face)) return;  // listed only to trace (faces.comp wrote its 0)
     uint rng = rngInit(uvec2(slot, face), gCache.frameIndex, 11u, gCache.seed);
     vec3 o = cacheEntryRayOrigin(entry, face);
     vec3 sum = vec3(0.0);

@@ -20,10 +20,12 @@ layout(local_size_x = CACHE_GROUP_SIZE) in;
 
 #if VISIBILITY_MODE == VISIBILITY_REUSE
 // A dynamic entry's static hit along direction k of `face`: traced and kept on the first update
-// of its phase, read from the cache on the later ones.
+// of its phase, read from the cache on the later ones — unless an object's voxel covered the face
+// at that first update (faces.comp marked it untraced): then traced and kept now.
 uint reusedStaticHit(uint slot, ivec3 voxel, vec3 o, vec3 d, uint face, uint k, bool tracing) {
     uint at = (slot * CACHE_FACES + face) * gCache.directions + k;
-    if (!tracing) return gStaticHits[at];
+    uint cached = tracing ? CACHE_HIT_UNTRACED : gStaticHits[at];
+    if (cached != CACHE_HIT_UNTRACED) return cached;
     TraceResult s = traceRay(o, d, gCache.maxRayLength, true);
     uint packed = s.hit ? packCacheHit(voxel, s.voxel, s.face, false, d) : CACHE_HIT_MISS;
     gStaticHits[at] = packed;
@@ -67,8 +69,8 @@ uint selectHit(uint slot, ivec3 voxel, vec3 o, uint rotation, uint phase, uint f
 #endif
 }
 
-// One invocation per listed face of an entry (faces.comp; closed faces got their misses there),
-// looping over its S rays: the entry and the face's exposure are read once, not per ray.
+// One invocation per exposed face of an entry (faces.comp; closed faces got their misses there),
+// looping over its S rays: the entry is read once, not per ray.
 void main() {
     uint S = gCache.raysPerUpdate;
     uint item, face;
@@ -77,26 +79,13 @@ void main() {
     uint slot = gLists[item];
     CacheEntry entry = gEntries[slot];
     ivec3 voxel = entry.voxel.xyz;
-    bool exposed = cacheEntryFaceExposed(entry, face);
     uint rotation = cacheEntryRotation(entry);
     vec3 o = cacheEntryRayOrigin(entry, face);
     bool tracing = (entry.flags & CACHE_ENTRY_TRACE) != 0u;
     uint traced = 0u;
-#if VISIBILITY_MODE == VISIBILITY_REUSE
-    // A face an object's voxel covers now may open later, before the phase comes round again:
-    // its static hits are cached whenever the static world leaves it open.
-    bool cacheClosed = !exposed && tracing && cacheFaceExposed(voxel, face, CACHE_SET_STATIC);
-#endif
     for (uint j = 0u; j < S; ++j) {
         gSelectedHits[(item * CACHE_FACES + face) * S + j] =
-            exposed ? selectHit(slot, voxel, o, rotation, entry.phase, face, j, tracing, traced) : CACHE_HIT_MISS;
-#if VISIBILITY_MODE == VISIBILITY_REUSE
-        if (cacheClosed) {
-            uint k = cacheDirectionIndex(entry.phase, j);
-            reusedStaticHit(slot, voxel, o, cacheDirection(rotation, face, k), face, k, true);
-            ++traced;
-        }
-#endif
+            selectHit(slot, voxel, o, rotation, entry.phase, face, j, tracing, traced);
     }
     if (traced > 0u) atomicAdd(gCounters[CACHE_COUNTER_RAYS], traced);
 }
