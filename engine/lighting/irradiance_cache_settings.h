@@ -44,7 +44,7 @@ struct IrradianceCacheSettings {
     // reads the nearest entries of the same face within this many voxels in the face's plane,
     // reachable through the open space in front of it (never across a wall); 0: it reads nothing.
     std::uint32_t fallbackRadius = 4;
-    bool fullRetrace = false;          // tests: the static set traces the whole world every update
+    bool fullRetrace = false;          // tests: every entry traces the whole world every update
 
     bool operator==(const IrradianceCacheSettings&) const = default;
     std::string describe() const;

@@ -14,8 +14,9 @@ layout(set = 0, binding = CACHE_BINDING_FRAME, std430) readonly buffer FramePara
 layout(set = 0, binding = CACHE_BINDING_DIRECTIONS, std430) readonly buffer Directions { vec4 gDirections[]; };
 layout(set = 0, binding = CACHE_BINDING_ENTRIES, std430) readonly buffer Entries { CacheEntry gEntries[]; };
 layout(set = 0, binding = CACHE_BINDING_TABLE, std430) readonly buffer Table { CacheBucket gTable[]; };
-// [0, updates): slots to update; [capacity, capacity + traces): slots to trace statically.
-layout(set = 0, binding = CACHE_BINDING_LISTS, std430) readonly buffer Lists { uint gLists[]; };
+// [0, updates): slots to update; [capacity, capacity + traces): slots to trace statically; then
+// the face lists faces.comp writes (cacheListedFace).
+layout(set = 0, binding = CACHE_BINDING_LISTS, std430) buffer Lists { uint gLists[]; };
 layout(set = 0, binding = CACHE_BINDING_STATIC_HITS, std430) buffer StaticHits { uint gStaticHits[]; };
 layout(set = 0, binding = CACHE_BINDING_SELECTED_HITS, std430) buffer SelectedHits { uint gSelectedHits[]; };
 layout(set = 0, binding = CACHE_BINDING_IRRADIANCE, std430) buffer Irradiance { vec4 gIrradiance[]; };
@@ -26,6 +27,37 @@ layout(set = 0, binding = CACHE_BINDING_INDIRECT, std430) writeonly buffer Indir
 layout(set = 0, binding = CACHE_BINDING_COUNTERS, std430) buffer Counters { uint gCounters[CACHE_COUNTER_COUNT]; };
 
 uint cacheThread() { return gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * CACHE_DISPATCH_ROW; }
+
+// The faces with work this frame (faces.comp), so that the passes with ray loops run one
+// invocation per such face: lavapipe runs 8 invocations in lockstep, and with one per face of
+// every entry a ground voxel's closed faces idled through the loops of its open ones. Each list
+// holds item * CACHE_FACES + face, its length in a counter (reset to 0 every frame); the host
+// sizes the lists buffer for them (kListWordsPerSlot in irradiance_cache.cpp).
+//   CACHE_LIST_STATIC   exposed faces of the static updates      at 2 * capacity
+//   CACHE_LIST_DYNAMIC  exposed faces of the dynamic updates    at 2 * capacity + 6 * staticUpdates
+//   CACHE_LIST_TRACE    exposed faces of the trace list (item: index into it)   at 8 * capacity
+const uint CACHE_LIST_STATIC = 1u, CACHE_LIST_DYNAMIC = 2u, CACHE_LIST_TRACE = 3u;  // also their counters' indices
+
+// A dynamic entry's static hit not traced yet: its face was covered by an object's voxel on the
+// first update of the phase (never a packed hit: face bits 7 are FACE_NONE).
+const uint CACHE_HIT_UNTRACED = 0x7FFFFFFFu;
+
+uint cacheListBase(uint list) {
+    if (list == CACHE_LIST_STATIC) return 2u * gCache.capacity;
+    if (list == CACHE_LIST_DYNAMIC) return 2u * gCache.capacity + CACHE_FACES * gCache.staticUpdates;
+    return 8u * gCache.capacity;
+}
+
+// Entry i of `list` as (item, face); false past its end.
+bool cacheListedFace(uint list, uint i, out uint item, out uint face) {
+    item = 0u;
+    face = 0u;
+    if (i >= gCounters[list]) return false;
+    uint code = gLists[cacheListBase(list) + i];
+    item = code / CACHE_FACES;
+    face = code % CACHE_FACES;
+    return true;
+}
 
 // Which of the rotated direction sets entry (voxel, set) uses, and how it is mirrored: a hash of
 // the key and the lighting seed, so neighbours' finite sets err independently and a run repeats

@@ -37,18 +37,15 @@ vec3 lightLeaving(ivec3 voxel, uint face, vec3 o, vec3 d, uint packed, inout uin
 
 void main() {
     uint S = gCache.raysPerUpdate;
-    uint thread = cacheThread();
-    uint item = thread / CACHE_FACES;
-    if (item >= gCache.updates) return;
-    uint face = thread % CACHE_FACES;
+    // One invocation per listed face (faces.comp): the static updates' list, then the dynamic one's.
+    uint thread = cacheThread(), item, face;
+    uint staticFaces = gCounters[CACHE_LIST_STATIC];
+    if (!(thread < staticFaces ? cacheListedFace(CACHE_LIST_STATIC, thread, item, face)
+                               : cacheListedFace(CACHE_LIST_DYNAMIC, thread - staticFaces, item, face))) return;
     uint slot = gLists[item];
     CacheEntry entry = gEntries[slot];
     ivec3 voxel = entry.voxel.xyz;
     uint index = slot * CACHE_FACES + face;
-    if (!cacheEntryFaceExposed(entry, face)) {
-        gIrradiance[index] = vec4(0.0);
-        return;
-    }
     uint rng = rngInit(uvec2(slot, face), gCache.frameIndex, 11u, gCache.seed);
     vec3 o = cacheEntryRayOrigin(entry, face);
     vec3 sum = vec3(0.0);

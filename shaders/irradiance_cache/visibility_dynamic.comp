@@ -1,7 +1,7 @@
 #version 460
-// Visibility update of the cache's dynamic entries: see update_visibility.glsl.
+// Visibility update of the cache's dynamic entries, their static hits cached per phase: see update_visibility.glsl.
 #extension GL_GOOGLE_include_directive : require
 
 #define VISIBILITY_SET CACHE_SET_DYNAMIC
-#define VISIBILITY_MODE VISIBILITY_FULL
+#define VISIBILITY_MODE VISIBILITY_REUSE
 #include "irradiance_cache/update_visibility.glsl"

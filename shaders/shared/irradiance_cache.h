@@ -1,8 +1,8 @@
 // The voxel-face irradiance cache as the GPU sees it (engine/render/irradiance_cache/ keeps
 // the CPU side). Entries are (voxel, set) pairs in slots; a hash table maps keys to slots.
 //
-// Per slot: CacheEntry; CACHE_FACES * K packed static hits (the static set's cached rays, traced
-// S at a time over an entry's first K / S updates);
+// Per slot: CacheEntry; CACHE_FACES * K packed static hits (the static world's hits of its rays,
+// traced S at a time over an entry's first K / S updates, for dynamic entries too);
 // CACHE_FACES irradiance values, accumulated and filtered. Per entry in this frame's update list
 // and per traced ray: the selected hit (static or dynamic, bit CACHE_HIT_DYNAMIC).
 //
@@ -59,11 +59,12 @@ struct CacheParams {
 SHARED_ASSERT_SIZE(CacheParams, 80);
 
 SHARED_CONST uint CACHE_FLAG_NO_FILTER = 1u;
-SHARED_CONST uint CACHE_FLAG_FULL_RETRACE = 2u;  // tests and benchmarks: the static set re-traces everything (visibility_static_full.comp)
+SHARED_CONST uint CACHE_FLAG_FULL_RETRACE = 2u;  // tests and benchmarks: the static set re-traces everything (visibility_static_full.comp), and so do dynamic entries (visibility_dynamic_full.comp)
 
 // Flags of an entry in this frame's update list (zero for entries not updated this frame).
 SHARED_CONST uint CACHE_ENTRY_RESET = 1u;  // its running mean restarts: new slot, lights changed, or re-traced after an edit
-SHARED_CONST uint CACHE_ENTRY_TRACE = 2u;  // a static entry tracing its phase's S directions through the static world
+SHARED_CONST uint CACHE_ENTRY_TRACE = 2u;  // tracing its phase's S directions through the static world: a static entry
+                                           // (trace_static.comp), or a dynamic entry's first update of this phase
 
 struct CacheEntry {
     ivec4 voxel;       // xyz world voxel, w set (CACHE_SET_*)

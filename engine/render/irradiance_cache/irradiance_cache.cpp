@@ -5,7 +5,6 @@
 #include <limits>
 #include <cmath>
 #include <numeric>
-#include <unordered_set>
 
 #include "core/check.h"
 #include "core/hash.h"
@@ -54,6 +53,11 @@ struct CachePassIo {
 };
 constexpr std::uint32_t kOwnBindings = bindingCount<CachePassIo>();
 
+// Words of the lists buffer per slot: the update and trace lists (one each), then the face lists
+// faces.comp builds (six per slot for the updates' faces, six for the trace list's; see
+// cacheListedFace in shaders/irradiance_cache/irradiance_cache.glsl).
+constexpr std::uint64_t kListWordsPerSlot = 2 + 2 * shared::CACHE_FACES;
+
 // CACHE_DIRECTION_SETS sets of K cosine-distributed directions in a face's frame (z along the
 // normal). The base set is a jittered Fibonacci lattice in (u1, u2) = (r^2, phi / 2pi); set r is
 // the base shifted by its own uniform (a, b) modulo 1 (a Cranley-Patterson rotation), which keeps
@@ -87,6 +91,38 @@ std::vector<glm::vec4> makeDirections(std::uint32_t count) {
     return out;
 }
 
+// The distinct keys of one frame's scan (packCacheKey values): open addressing in one array sized
+// for the most keys the scan can produce, so a key costs a probe, not an allocation (an
+// unordered_set's node per key was most of the scan's time). ~0 is never a key: a voxel's
+// coordinates stay below 0xFFFF.
+class KeySet {
+public:
+    explicit KeySet(std::size_t maxKeys) : mBuckets(std::bit_ceil(std::max<std::size_t>(2 * maxKeys, 64)), kEmpty) {}
+    // True when the key was not in the set yet.
+    bool insert(std::uint64_t key) {
+        const std::size_t mask = mBuckets.size() - 1;
+        for (std::size_t b = mix(key) & mask;; b = (b + 1) & mask) {
+            if (mBuckets[b] == key) return false;
+            if (mBuckets[b] == kEmpty) {
+                mBuckets[b] = key;
+                ++mSize;
+                return true;
+            }
+        }
+    }
+    std::size_t size() const { return mSize; }
+
+private:
+    static constexpr std::uint64_t kEmpty = ~0ull;
+    static std::uint64_t mix(std::uint64_t x) {  // splitmix64's finaliser
+        x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+        x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+        return x ^ (x >> 31);
+    }
+    std::vector<std::uint64_t> mBuckets;
+    std::size_t mSize = 0;
+};
+
 // Workgroups of CACHE_GROUP_SIZE threads for a 1-D grid of `threads`, in rows of 65535 groups
 // (the shaders' cacheThread() undoes it).
 glm::uvec2 threadGroups(std::uint64_t threads) {
@@ -99,10 +135,12 @@ glm::uvec2 threadGroups(std::uint64_t threads) {
 
 IrradianceCache::IrradianceCache(gpu::Context& ctx)
     : mCtx(ctx),
+      mFaces(ctx, "cache.faces", "irradiance_cache/faces", kOwnBindings),
       mTraceStatic(ctx, "cache.trace_static", "irradiance_cache/trace_static", kOwnBindings),
       mVisibilityStatic(ctx, "cache.visibility_static", "irradiance_cache/visibility_static", kOwnBindings),
       mVisibilityStaticFull(ctx, "cache.visibility_static", "irradiance_cache/visibility_static_full", kOwnBindings),
       mVisibilityDynamic(ctx, "cache.visibility_dynamic", "irradiance_cache/visibility_dynamic", kOwnBindings),
+      mVisibilityDynamicFull(ctx, "cache.visibility_dynamic", "irradiance_cache/visibility_dynamic_full", kOwnBindings),
       mBounce(ctx, "cache.bounce", "irradiance_cache/light_bounce", kOwnBindings),
       mFilter(ctx, "cache.filter", "irradiance_cache/filter", kOwnBindings),
       mGather(ctx, "cache.gather", "irradiance_cache/gather", kOwnBindings) {
@@ -114,7 +152,7 @@ IrradianceCache::IrradianceCache(gpu::Context& ctx)
 std::uint64_t IrradianceCache::bytesPerSlot(const lighting::IrradianceCacheSettings& s) {
     return sizeof(shared::CacheEntry) + shared::CACHE_FACES * s.directions * 4ull   // entry, static hits
            + 2ull * shared::CACHE_FACES * sizeof(glm::vec4)                          // irradiance, filtered
-           + 2ull * sizeof(shared::CacheBucket) + 2ull * 4                           // table, lists
+           + 2ull * sizeof(shared::CacheBucket) + kListWordsPerSlot * 4              // table, lists
            + shared::CACHE_FACES * s.raysPerUpdate * 4ull;                           // selected hits
 }
 
@@ -183,7 +221,7 @@ void IrradianceCache::ensureCapacity(std::uint32_t slots, gpu::CommandList& cmd)
     grow(mIrradiance, shared::CACHE_FACES * sizeof(glm::vec4), "cache.irradiance");
     grow(mFiltered, shared::CACHE_FACES * sizeof(glm::vec4), "cache.filtered");
     mEntries = gpu::Buffer(mCtx, gpu::BufferKind::Storage, capacity * sizeof(shared::CacheEntry), "cache.entries");
-    mLists = gpu::Buffer(mCtx, gpu::BufferKind::Storage, 2ull * capacity * 4, "cache.lists");
+    mLists = gpu::Buffer(mCtx, gpu::BufferKind::Storage, kListWordsPerSlot * capacity * 4, "cache.lists");
     mSelectedHits = gpu::Buffer(mCtx, gpu::BufferKind::Storage,
                                 std::uint64_t(capacity) * shared::CACHE_FACES * mSettings.raysPerUpdate * 4, "cache.selectedHits");
     mCapacity = capacity;
@@ -199,7 +237,10 @@ void IrradianceCache::prepare(const lighting::IrradianceCacheSettings& settings,
 
     // Visible voxels, from the G-buffer; an N^3 neighbourhood around the dynamic ones so the
     // values a moving object interpolates are ready before it gets there (§4.4).
-    std::unordered_set<std::uint64_t> seenStatic, seenDynamic;
+    // Neighbouring pixels mostly see the same voxel: a key equal to the previous pixel's of its set
+    // skips the set's probe.
+    KeySet seenStatic(frameIn.gbuffer.size()), seenDynamic(frameIn.gbuffer.size());
+    std::uint64_t lastStatic = ~0ull, lastDynamic = ~0ull;
     // A static pixel far enough away reads a coarse entry where its face's 2x2 patch is open.
     std::vector<CacheKey> visible;
     std::vector<glm::ivec3> dynamicVoxels;
@@ -209,17 +250,22 @@ void IrradianceCache::prepare(const lighting::IrradianceCacheSettings& settings,
         if (face >= 6u) continue;
         glm::ivec3 v(g.voxel);
         if ((g.data.w & shared::GBUFFER_FLAG_DYNAMIC) != 0u) {
-            if (seenDynamic.insert(packCacheKey({v, shared::CACHE_SET_DYNAMIC})).second) dynamicVoxels.push_back(v);
+            const std::uint64_t packed = packCacheKey({v, shared::CACHE_SET_DYNAMIC});
+            if (packed != lastDynamic && seenDynamic.insert(packed)) dynamicVoxels.push_back(v);
+            lastDynamic = packed;
             continue;
         }
         const CacheKey key = lod ? staticKeyFor(*frameIn.grid, v, face, std::bit_cast<float>(g.data.y), settings.lodDistance)
                                  : CacheKey{v, shared::CACHE_SET_STATIC};
-        if (seenStatic.insert(packCacheKey(key)).second) visible.push_back(key);
+        const std::uint64_t packed = packCacheKey(key);
+        if (packed != lastStatic && seenStatic.insert(packed)) visible.push_back(key);
+        lastStatic = packed;
     }
     mStats.visibleStatic = static_cast<std::uint32_t>(seenStatic.size());
     mStats.visibleDynamic = static_cast<std::uint32_t>(dynamicVoxels.size());
     const int half = static_cast<int>(settings.neighbourhood / 2);
-    std::unordered_set<std::uint64_t> added;
+    const std::size_t side = 2 * std::size_t(half) + 1;
+    KeySet added(dynamicVoxels.size() * side * side * side);
     for (const glm::ivec3& v : dynamicVoxels) {
         for (int z = -half; z <= half; ++z) {
             for (int y = -half; y <= half; ++y) {
@@ -227,7 +273,7 @@ void IrradianceCache::prepare(const lighting::IrradianceCacheSettings& settings,
                     glm::ivec3 n = v + glm::ivec3(x, y, z);
                     if (glm::any(glm::lessThan(n, glm::ivec3(0))) || glm::any(glm::greaterThan(n, glm::ivec3(0xFFFE)))) continue;
                     CacheKey key{n, shared::CACHE_SET_DYNAMIC};
-                    if (added.insert(packCacheKey(key)).second) visible.push_back(key);
+                    if (added.insert(packCacheKey(key))) visible.push_back(key);
                 }
             }
         }
@@ -313,10 +359,14 @@ void IrradianceCache::record(gpu::CommandList& cmd, const SceneBindings& scene, 
     const std::uint64_t faces = shared::CACHE_FACES;
     cmd.fillBuffer(mCounters, 0);
     cmd.barrier();
+    // The passes with ray loops run over the face lists this pass builds; their dispatches are
+    // sized for every face, and invocations past a list's end return at once.
+    mFaces.record(cmd, scene, bindings, threadGroups(std::max(mUpdate.size(), mTrace.size()) * faces));
     mTraceStatic.record(cmd, scene, bindings, threadGroups(mTrace.size() * faces));
     (mSettings.fullRetrace ? mVisibilityStaticFull : mVisibilityStatic)
         .record(cmd, scene, bindings, threadGroups(mStaticUpdates * faces));
-    mVisibilityDynamic.record(cmd, scene, bindings, threadGroups((mUpdate.size() - mStaticUpdates) * faces));
+    (mSettings.fullRetrace ? mVisibilityDynamicFull : mVisibilityDynamic)
+        .record(cmd, scene, bindings, threadGroups((mUpdate.size() - mStaticUpdates) * faces));
     mBounce.record(cmd, scene, bindings, threadGroups(mUpdate.size() * faces));
     mFilter.record(cmd, scene, bindings, threadGroups(mUpdate.size() * faces));
     mGather.record(cmd, scene, bindings, screenGroups(mImage));

@@ -6,10 +6,12 @@
 // G-buffer on the host (the previous frame's, so the frame is one submission; plus an N^3
 // neighbourhood around visible dynamic voxels), lets the directory pick this frame's updates
 // within the ray budget, and queues the uploads; record() then runs the stages, each a timed pass:
+//   cache.faces         which faces have work: the passes below run one invocation per such face
 //   cache.trace_static  new or invalidated static entries trace S of their K directions per face
 //                       (their phase's), until all K are cached
 //   cache.visibility_static   static entries re-trace only the dynamic grid (divide and win)
-//   cache.visibility_dynamic  dynamic entries trace both worlds
+//   cache.visibility_dynamic  dynamic entries trace the dynamic grid, and the static world on the
+//                       first update of each phase (its hits are cached like the static entries')
 //   cache.bounce        light leaving each ray's hit -> E_new, blended into the entry
 //   cache.filter        3^3 filter over neighbouring entries of the same set
 //   cache.gather        per pixel: albedo/pi * E from the pixel's set, added to the radiance
@@ -103,7 +105,7 @@ private:
     void ensureCapacity(std::uint32_t slots, gpu::CommandList& cmd);
 
     gpu::Context& mCtx;
-    LitPass mTraceStatic, mVisibilityStatic, mVisibilityStaticFull, mVisibilityDynamic, mBounce, mFilter, mGather;
+    LitPass mFaces, mTraceStatic, mVisibilityStatic, mVisibilityStaticFull, mVisibilityDynamic, mVisibilityDynamicFull, mBounce, mFilter, mGather;
     lighting::IrradianceCacheSettings mSettings;
     bool mConfigured = false;
     bool mDirectionsUploaded = false;

@@ -237,6 +237,15 @@ CacheFrameLists IrradianceCacheDirectory::beginFrame(std::span<const CacheKey> v
             e.flags |= shared::CACHE_ENTRY_TRACE;
             lists.trace.push_back(slot);
         }
+        if (!isStatic) {
+            // A dynamic entry's key is a world voxel, so its static hits stay valid while it lives
+            // (until an edit nearby): the first update of each phase traces the static world and
+            // keeps the hits, the later ones trace only the dynamic grid (visibility_dynamic.comp).
+            // Beyond 64 phases the bit set has no room: every update traces.
+            const std::uint64_t bit = e.phase < 64 ? 1ull << e.phase : 0ull;
+            if ((s.tracedPhases & bit) == 0) e.flags |= shared::CACHE_ENTRY_TRACE;
+            s.tracedPhases |= bit;
+        }
         if (isStatic) {
             ++lists.staticUpdates;
             ++s.traced;
@@ -264,7 +273,8 @@ std::uint32_t IrradianceCacheDirectory::invalidateStatic(std::span<const glm::iv
     }
     std::uint32_t marked = 0;
     for (Slot& s : mSlots) {
-        if (!s.live || s.key.set != shared::CACHE_SET_STATIC || s.traced == 0) continue;
+        const bool isStatic = s.key.set == shared::CACHE_SET_STATIC;
+        if (!s.live || (isStatic ? s.traced == 0 : s.tracedPhases == 0)) continue;
         glm::vec3 p = glm::vec3(s.key.voxel) + 0.5f;
         // Quick reject against the edits' bounds, then the distance to each edited cell.
         glm::vec3 gap = glm::max(glm::max(lo - p, p - hi), glm::vec3(0.0f));
@@ -272,9 +282,13 @@ std::uint32_t IrradianceCacheDirectory::invalidateStatic(std::span<const glm::iv
         for (const glm::ivec3& c : editedCellMins) {
             glm::vec3 g = glm::max(glm::max(glm::vec3(c) - p, p - glm::vec3(c + 8)), glm::vec3(0.0f));
             if (glm::dot(g, g) <= radius * radius) {
-                s.traced = 0;
-                s.reset = true;
-                ++marked;
+                if (isStatic) {
+                    s.traced = 0;
+                    s.reset = true;
+                    ++marked;
+                } else {
+                    s.tracedPhases = 0;  // re-traced as its phases come round; its value blends on
+                }
                 break;
             }
         }

@@ -76,7 +76,8 @@ public:
                                const CacheWork& work = {});
 
     // Static entries within `radius` voxels of an edited 8^3 cell must re-trace their static rays
-    // (next time they are updated). Returns how many were marked.
+    // (next time they are updated). Returns how many were marked. Dynamic entries within reach
+    // forget their cached static hits too (not counted).
     std::uint32_t invalidateStatic(std::span<const glm::ivec3> editedCellMins, float radius);
     // The lights changed: every entry restarts its running mean at its next update (class 2).
     void relightAll();
@@ -99,6 +100,7 @@ private:
         bool live = false;
         bool reset = true;                 // the next update restarts the running mean
         std::uint32_t traced = 0;          // updates since its static rays were (re)traced from scratch
+        std::uint64_t tracedPhases = 0;    // a dynamic entry: bit p set when phase p's static hits are cached
         std::uint32_t updates = 0;         // since the last reset
         std::uint64_t lastSeen = 0;
         std::uint64_t lastUpdateFrame = 0;
