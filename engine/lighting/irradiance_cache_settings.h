@@ -43,7 +43,7 @@ struct IrradianceCacheSettings {
     // A pixel whose voxel has no entry yet (first seen this frame, or waiting for the ray budget)
     // reads the nearest entries of the same face within this many voxels in the face's plane,
     // reachable through the open space in front of it (never across a wall); 0: it reads nothing.
-    std::uint32_t fallbackRadius = 4;
+    std::uint32_t fallbackRadius = 0;
     bool fullRetrace = false;          // tests: every entry traces the whole world every update
 
     bool operator==(const IrradianceCacheSettings&) const = default;

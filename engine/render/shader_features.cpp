@@ -16,6 +16,7 @@ ShaderFeatures shaderFeatures(const lighting::LightingSettings& l) {
     f[FEATURE_CANDIDATE_VISIBILITY] = restir.knobs.candidateVisibility;
     f[FEATURE_UNBIASED] = restir.knobs.unbiased;
     f[FEATURE_CACHE_MULTI_BOUNCE] = l.cache.bounces > 1u ? 1u : 0u;
+    f[FEATURE_CACHE_FALLBACK] = l.cache.fallbackRadius > 0u ? 1u : 0u;
     return f;
 }
 

@@ -44,7 +44,10 @@ vec4 gatherLevel(ivec3 voxel, uint face, uint set, vec3 p, uint coarse) {
 // voxels around it in the face's plane, up to gCache.fallbackRadius away, whose entries have the
 // same face and whose front is reachable through the open space in front of the pixel's
 // (cacheFrontsConnected: never across a wall), weighted by inverse squared distance. A loop that
-// no lane enters costs nothing on lavapipe, so a view whose pixels all have entries pays nothing.
+// no lane enters costs nothing on lavapipe, so a view whose pixels all have entries pays little;
+// but pixels that find nothing search every ring, so it is off by default and, off, compiled out
+// (shared/shader_features.h).
+layout(constant_id = FEATURE_CACHE_FALLBACK) const bool kFallback = true;
 vec4 gatherFallback(ivec3 voxel, uint face, uint set, vec3 p) {
     uint axis = face >> 1u, ua = (axis + 1u) % 3u, va = (axis + 2u) % 3u;
     vec3 sum = vec3(0.0);
@@ -89,7 +92,7 @@ void main() {
         bool far = uintBitsToFloat(g.data.y) >= gCache.lodDistance;
         vec4 r = gatherLevel(g.voxel.xyz, face, set, g.position.xyz, far ? coarse : 0u);
         if (r.w == 0.0 && coarse != 0u) r = gatherLevel(g.voxel.xyz, face, set, g.position.xyz, far ? 0u : coarse);
-        if (r.w == 0.0) r = gatherFallback(g.voxel.xyz, face, set, g.position.xyz);
+        if (kFallback && r.w == 0.0) r = gatherFallback(g.voxel.xyz, face, set, g.position.xyz);
         if (r.w > 0.0) indirect = gMaterials[g.data.x].albedo.rgb / PI * (r.rgb / r.w);
     }
     gIndirect[index] = vec4(indirect, 1.0);

@@ -16,6 +16,7 @@
 #define FEATURE_CANDIDATE_VISIBILITY 4  // ReSTIR's shadow test of the chosen candidate
 #define FEATURE_UNBIASED 5              // ReSTIR's pairwise MIS (restir-unbiased)
 #define FEATURE_CACHE_MULTI_BOUNCE 6    // the cache's bounce reads the cache at its hits
-#define FEATURE_COUNT 7
+#define FEATURE_CACHE_FALLBACK 7        // the cache's gather searches the plane for pixels without an entry
+#define FEATURE_COUNT 8
 
 #endif

@@ -222,6 +222,7 @@ ThinWallResult thinWall(float lodDistance) {
     Renderer r(gpu_testing::context());
     LightingSettings l = cacheLighting(1);
     l.cache.lodDistance = lodDistance;
+    l.cache.fallbackRadius = 4;  // on (the default is off), so the first look inside tests it
     ThinWallResult out;
     // Both views every frame, so the inside and outside entries are both live and neighbours.
     for (int i = 0; i < 24; ++i) {

@@ -54,6 +54,10 @@ TEST_F(ShaderFeatures, SpecialisedFramesEqualTheGenericOnes) {
     l.cache.bounces = 2;
     cases.push_back({"cache, two bounces", l});
     l = {};
+    l.indirect = engine::lighting::Indirect::Cache;
+    l.cache.fallbackRadius = 4;
+    cases.push_back({"cache with the gather's fallback", l});
+    l = {};
     l.restir.candidateVisibility = 0u;
     cases.push_back({"no candidate visibility", l});
     for (const Case& c : cases) {
@@ -74,6 +78,7 @@ TEST_F(ShaderFeatures, AFrameUsesOnlyTheFeaturesItsSettingsAskFor) {
     EXPECT_EQ(defaults[FEATURE_CANDIDATE_VISIBILITY], 1u);
     EXPECT_EQ(defaults[FEATURE_UNBIASED], 0u);
     EXPECT_EQ(defaults[FEATURE_CACHE_MULTI_BOUNCE], 0u);
+    EXPECT_EQ(defaults[FEATURE_CACHE_FALLBACK], 0u);
     LightingSettings unbiased;
     unbiased.restir.unbiased = 1u;
     unbiased.restir.candidateVisibility = 0u;  // the unbiased mode tests its candidates anyway
