@@ -221,19 +221,13 @@ float lightSamplePdf(vec3 x, uint slot, uint face, bool byPower) {
 
 // Is the light sample visible from the surface? The first thing the shadow ray hits must be the
 // emitter itself (or nothing before the sample point); emitters are static, so an object's voxel
-// in the way occludes even inside the emitter's box. The answer of traceScene's nearest hit, found
-// without walking the dynamic grid behind a static voxel outside the emitter: whichever set is
-// nearer, that ray is occluded.
+// in the way occludes even inside the emitter's box.
 bool lightVisible(Surface s, GpuEmitter e, vec3 shadowDir, float shadowDist) {
-    vec3 o = s.position + s.normal * kRayOffset;
-    float tMax = shadowDist + kRayOffset;
-    TraceResult st = traceGrid(o, shadowDir, tMax, true, false);
+    SceneHit hit = traceScene(s.position + s.normal * kRayOffset, shadowDir, shadowDist + kRayOffset);
+    if (!hit.hit) return true;
+    if (hit.dynamicSet) return false;
     ivec3 lo = e.minCorner.xyz;
-    if (st.hit && !(all(greaterThanEqual(st.voxel, lo)) && all(lessThan(st.voxel, lo + e.minCorner.w)))) return false;
-    if (!dynamicGridPresent()) return true;
-    float ts = st.hit ? faceHitT(o, shadowDir, st.voxel, st.face) : tMax;
-    SceneHit h = traceDynamic(o, shadowDir, ts);
-    return !(h.hit && faceHitT(o, shadowDir, h.voxel, h.face) < ts);
+    return all(greaterThanEqual(hit.voxel, lo)) && all(lessThan(hit.voxel, lo + e.minCorner.w));
 }
 
 #endif

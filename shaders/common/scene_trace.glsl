@@ -53,16 +53,6 @@ SceneHit traceScene(vec3 o, vec3 d, float tMax) {
     return s;
 }
 
-// Shadow rays want to know whether anything is in the way, not what is nearest: the same answer
-// as traceScene(o, d, tMax).hit, but a ray the static world stops does not then walk the dynamic
-// grid (a static hit occludes whichever set is nearer).
-bool sceneOccluded(vec3 o, vec3 d, float tMax) {
-    TraceResult s = traceGrid(o, d, tMax, true, false);
-    if (s.hit || !dynamicGridPresent()) return s.hit;
-    SceneHit h = traceDynamic(o, d, tMax);
-    return h.hit && faceHitT(o, d, h.voxel, h.face) < tMax;
-}
-
 uint staticVoxelMaterial(ivec3 v) { return gridVoxelMaterial(false, v); }
 
 // World coordinates; 0 = empty, outside or no dynamic grid.

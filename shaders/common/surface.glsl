@@ -25,8 +25,8 @@ vec3 sunLight(Surface s, FrameParams f) {
     vec3 l = f.sunDirection.xyz;
     float cosine = dot(s.normal, l);
     if (cosine <= 0.0 || !any(greaterThan(f.sunRadiance.rgb, vec3(0.0)))) return vec3(0.0);
-    if (sceneOccluded(s.position + s.normal * kRayOffset, l, 1.0e30)) return vec3(0.0);
-    return s.albedo / PI * f.sunRadiance.rgb * cosine;
+    SceneHit hit = traceScene(s.position + s.normal * kRayOffset, l, 1.0e30);
+    return hit.hit ? vec3(0.0) : s.albedo / PI * f.sunRadiance.rgb * cosine;
 }
 
 vec3 skyBackground(FrameParams f, vec3 dir) {

@@ -73,20 +73,6 @@ Reservoir pairwiseReuse(Surface s, Reservoir own, float ownChooser, uint neighbo
     return combinerFinish(c, 1.0);
 }
 
-// The next tap: a random pixel in the r-pixel disc (three random numbers, whatever the outcome);
-// false when it lies outside the image, is this pixel, or sees another surface (face or depth).
-bool nextTap(uvec2 pixel, Surface s, float depth, inout uint rng, out uint qi, out GBufferTexel ng, out float u) {
-    float angle = 2.0 * PI * rngNext(rng);
-    float dist = gRestir.knobs.spatialRadius * sqrt(rngNext(rng));
-    u = rngNext(rng);
-    qi = 0u;
-    ivec2 q = ivec2(pixel) + ivec2(round(dist * vec2(cos(angle), sin(angle))));
-    if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, ivec2(gFrame.imageSize.xy))) || q == ivec2(pixel)) return false;
-    qi = uint(q.x) + uint(q.y) * gFrame.imageSize.x;
-    ng = gGBuffer[qi];
-    return uint(ng.voxel.w) == s.face && !(abs(gbufferDistance(ng) - depth) > gRestir.knobs.depthTolerance * depth);
-}
-
 void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;
     if (any(greaterThanEqual(pixel, gFrame.imageSize.xy))) return;
@@ -102,6 +88,8 @@ void main() {
     float depth = gbufferDistance(g);
     uint rng = rngInit(pixel, gRestir.frameIndex, 3u, gRestir.seed);
     uint taps = min(gRestir.knobs.spatialTaps, kMaxTaps);
+    float radius = gRestir.knobs.spatialRadius;
+    float tolerance = gRestir.knobs.depthTolerance;
 
     bool pairwise = kUnbiased && gRestir.knobs.unbiased != 0u;
     Combiner c = combinerStart();
@@ -109,25 +97,24 @@ void main() {
     // evaluated it at this surface this frame): no need to evaluate it again.
     float ownChooser = rngNext(rng);
     if (!pairwise) combinerAdd(c, own, reservoirHasLight(own) ? own.weights.z : 0.0, ownChooser);
-    // Pairwise MIS keeps the accepted taps in arrays; the default mode replays the taps from the
-    // same random numbers instead (below): on lavapipe an array written at a varying index costs
-    // a store and a gather per lane, more than drawing the taps again.
     uint neighbours[kMaxTaps];
     float choosers[kMaxTaps];
     uint accepted = 0u;
-    uint tapsRng = rng;
     for (uint i = 0u; i < taps; ++i) {
-        uint qi;
-        GBufferTexel ng;
-        float u;
-        if (!nextTap(pixel, s, depth, rng, qi, ng, u)) continue;
-        if (pairwise) {
-            choosers[accepted] = u;
-            neighbours[accepted++] = qi;
-        } else {
+        float angle = 2.0 * PI * rngNext(rng);
+        float dist = radius * sqrt(rngNext(rng));
+        float u = rngNext(rng);
+        ivec2 q = ivec2(pixel) + ivec2(round(dist * vec2(cos(angle), sin(angle))));
+        if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, ivec2(gFrame.imageSize.xy))) || q == ivec2(pixel)) continue;
+        uint qi = uint(q.x) + uint(q.y) * gFrame.imageSize.x;
+        GBufferTexel ng = gGBuffer[qi];
+        if (uint(ng.voxel.w) != s.face || abs(gbufferDistance(ng) - depth) > tolerance * depth) continue;
+        if (!pairwise) {
             Reservoir r = gCandidates[qi];
             combinerAdd(c, r, targetAt(s, r), u);
         }
+        choosers[accepted] = u;
+        neighbours[accepted++] = qi;
     }
     if (pairwise) {
         gOut[index] = pairwiseReuse(s, own, ownChooser, neighbours, choosers, accepted);
@@ -138,12 +125,8 @@ void main() {
     // a neighbour only those with a positive target at its own surface.
     float normaliser = own.weights.y;
     if (reservoirHasLight(c.chosen)) {
-        for (uint i = 0u; i < taps; ++i) {
-            uint qi;
-            GBufferTexel ng;
-            float u;
-            if (!nextTap(pixel, s, depth, tapsRng, qi, ng, u)) continue;
-            if (targetAt(surfaceFrom(ng), c.chosen) > 0.0) normaliser += gCandidates[qi].weights.y;
+        for (uint i = 0u; i < accepted; ++i) {
+            if (targetAt(surfaceFrom(gGBuffer[neighbours[i]]), c.chosen) > 0.0) normaliser += gCandidates[neighbours[i]].weights.y;
         }
     } else {
         normaliser = c.M;
