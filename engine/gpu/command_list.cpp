@@ -27,10 +27,14 @@ CommandList::CommandList(Context& ctx, TimestampTimer* timer) : mCtx(ctx), mTime
     }
 }
 
-CommandList::~CommandList() { vkFreeCommandBuffers(mCtx.device(), mCtx.commandPool(), 1, &mCmd); }
+CommandList::~CommandList() {
+    if (mPending) wait();
+    if (mFence) vkDestroyFence(mCtx.device(), mFence, nullptr);
+    vkFreeCommandBuffers(mCtx.device(), mCtx.commandPool(), 1, &mCmd);
+}
 
 void CommandList::begin() {
-    CHECK(!mRecording);
+    CHECK(!mRecording && !mPending);
     VK_CHECK(vkResetCommandBuffer(mCmd, 0));
     VkCommandBufferBeginInfo info{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     info.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
@@ -44,6 +48,31 @@ void CommandList::submitAndWait(const SubmitSync& sync) {
     VK_CHECK(vkEndCommandBuffer(mCmd));
     mRecording = false;
     mCtx.submitAndWait(mCmd, sync);
+    releaseSubmissionResources();
+}
+
+void CommandList::submit(const SubmitSync& sync) {
+    CHECK(mRecording);
+    VK_CHECK(vkEndCommandBuffer(mCmd));
+    mRecording = false;
+    if (!mFence) {
+        VkFenceCreateInfo info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+        VK_CHECK(vkCreateFence(mCtx.device(), &info, nullptr, &mFence));
+    }
+    mCtx.submit(mCmd, mFence, sync);
+    mPending = true;
+}
+
+void CommandList::wait() {
+    CHECK(mPending);
+    VK_CHECK(vkWaitForFences(mCtx.device(), 1, &mFence, VK_TRUE, UINT64_MAX));
+    VK_CHECK(vkResetFences(mCtx.device(), 1, &mFence));
+    mPending = false;
+    mCtx.countCompleted();
+    releaseSubmissionResources();
+}
+
+void CommandList::releaseSubmissionResources() {
     for (auto [pool, set] : mDescriptorSets) VK_CHECK(vkFreeDescriptorSets(mCtx.device(), pool, 1, &set));
     mDescriptorSets.clear();
 }

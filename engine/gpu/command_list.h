@@ -32,6 +32,10 @@ public:
     // Ends recording, submits, waits, and releases per-submission resources. `sync` ties the
     // submission to a swapchain image (gpu/swapchain.h).
     void submitAndWait(const SubmitSync& sync = {});
+    // Ends recording and submits without waiting, so the host can work while the GPU runs the
+    // list. Call wait() before reading what it wrote or beginning it again.
+    void submit(const SubmitSync& sync = {});
+    void wait();
 
     void beginPass(const std::string& name);
     void endPass();
@@ -51,10 +55,14 @@ public:
     void retainDescriptorSet(VkDescriptorPool pool, VkDescriptorSet set) { mDescriptorSets.emplace_back(pool, set); }
 
 private:
+    void releaseSubmissionResources();
+
     Context& mCtx;
     TimestampTimer* mTimer;
     VkCommandBuffer mCmd = VK_NULL_HANDLE;
     bool mRecording = false;
+    VkFence mFence = VK_NULL_HANDLE;  // made by the first submit()
+    bool mPending = false;            // submitted, not yet waited for
     std::vector<std::pair<VkDescriptorPool, VkDescriptorSet>> mDescriptorSets;
     std::vector<std::uint32_t> mSpecialization;
 };

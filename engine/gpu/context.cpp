@@ -322,6 +322,13 @@ void Context::setObjectName(VkObjectType type, std::uint64_t handle, const char*
 }
 
 void Context::submitAndWait(VkCommandBuffer commandBuffer, const SubmitSync& sync) {
+    submit(commandBuffer, mFence, sync);
+    VK_CHECK(vkWaitForFences(mDevice, 1, &mFence, VK_TRUE, UINT64_MAX));
+    VK_CHECK(vkResetFences(mDevice, 1, &mFence));
+    countCompleted();
+}
+
+void Context::submit(VkCommandBuffer commandBuffer, VkFence fence, const SubmitSync& sync) {
     VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
     submit.commandBufferCount = 1;
     submit.pCommandBuffers = &commandBuffer;
@@ -334,10 +341,7 @@ void Context::submitAndWait(VkCommandBuffer commandBuffer, const SubmitSync& syn
         submit.signalSemaphoreCount = 1;
         submit.pSignalSemaphores = &sync.signal;
     }
-    VK_CHECK(vkQueueSubmit(mQueue, 1, &submit, mFence));
-    VK_CHECK(vkWaitForFences(mDevice, 1, &mFence, VK_TRUE, UINT64_MAX));
-    VK_CHECK(vkResetFences(mDevice, 1, &mFence));
-    ++mCompletedSubmissions;
+    VK_CHECK(vkQueueSubmit(mQueue, 1, &submit, fence));
 }
 
 VKAPI_ATTR VkBool32 VKAPI_CALL Context::onValidationMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,

@@ -77,6 +77,10 @@ public:
     // Incremented after every completed submission; pipelines recycle descriptor sets with it.
     std::uint64_t completedSubmissions() const { return mCompletedSubmissions; }
     void submitAndWait(VkCommandBuffer commandBuffer, const SubmitSync& sync = {});
+    // Submits without waiting; `fence` signals when the GPU is done. The caller waits for it and
+    // then calls countCompleted(), so completedSubmissions() only counts finished work.
+    void submit(VkCommandBuffer commandBuffer, VkFence fence, const SubmitSync& sync = {});
+    void countCompleted() { ++mCompletedSubmissions; }
 
 private:
     Context() = default;

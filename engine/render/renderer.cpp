@@ -45,6 +45,7 @@ Renderer::Renderer(gpu::Context& ctx)
       mWorld(ctx),
       mGpuEmitters(ctx),
       mUploader(ctx),
+      mCacheUploader(ctx),
       mTimer(ctx, 24),
       mPresentTimer(ctx, 1),
       mLateTimer(ctx, 16),
@@ -202,9 +203,12 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
     mUploader.write(mFrameParams, 0, &params, sizeof(params));
     writeMethodParams(lighting);
 
-    // The cache picks this frame's updates from the last frame's visible voxels, so the whole
-    // frame is one submission. Without them (its first frame, a new size) the frame is split: up
-    // to the G-buffer, read back, then the rest.
+    // The cache picks this frame's updates from the last frame's visible voxels, so its host work
+    // (cache.prepare) needs nothing of this frame: the frame goes to the GPU in two submissions,
+    // the host picks the cache's updates while lavapipe runs the first (primary rays and direct
+    // light), and the second (the cache's passes, tonemapping) follows without a wait between.
+    // Without last frame's voxels (the cache's first frame, a new size) the frame is split: up to
+    // the G-buffer, read back, wait, then the rest.
     const bool splitFrame = useCache && !(mGBufferHostValid && mCache.configured());
     CacheFrameInput cacheInput;
     if (useCache) {
@@ -220,10 +224,9 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
     auto prepareCache = [&](gpu::CommandList& list) {
         start = std::chrono::steady_clock::now();
         cacheInput.gbuffer = mGBufferHost.view<shared::GBufferTexel>();
-        mCache.prepare(lighting.cache, cacheInput, mUploader, list);
+        mCache.prepare(lighting.cache, cacheInput, mCacheUploader, list);
         result.cachePrepareMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     };
-    if (useCache && !splitFrame) prepareCache(cmd);
     // What the accumulating estimators restart on (besides new settings, which drop the history).
     const bool viewOrWorldChanged = worldChanged || !mPrevCamera || !sameView(*mPrevCamera, camera);
     if (usePath) mPathIndirect.prepare(lighting, mSize, mFrameIndex, !mHistoryValid || viewOrWorldChanged, mUploader);
@@ -259,16 +262,20 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
     mPrimary.record(cmd, {mWorld, mFrameParams, mGBuffers[mCurrent]}, mSize);
     gpu::CommandList late(mCtx, &mLateTimer);
     late.setSpecialization(specialization);
+    auto beginLate = [&] {
+        late.begin();
+        late.barrier();  // the first submission's writes (G-buffer, radiance, light tiles) before what reads them
+        late.beginPass("cache.prepare");
+        prepareCache(late);
+        mCacheUploader.record(late);
+        late.endPass();
+    };
     gpu::CommandList* rest = &cmd;
     if (splitFrame) {
         cmd.copyBuffer(mGBuffers[mCurrent], mGBufferHost, {{0, 0, mGBuffers[mCurrent].size()}});
         cmd.barrier();
         cmd.submitAndWait();
-        late.begin();
-        late.beginPass("cache.prepare");
-        prepareCache(late);
-        mUploader.record(late);
-        late.endPass();
+        beginLate();
         rest = &late;
     }
     recordLighting(*rest, lighting, mHistoryValid);
@@ -276,6 +283,12 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
     if (usePath)
         mPathIndirect.record(*rest, {mWorld, mGpuEmitters}, {mFrameParams, mGBuffers[mCurrent], mRadiance, mIndirect});
     if (useVct) mVct.record(*rest, {mWorld, mGpuEmitters}, {mFrameParams, mGBuffers[mCurrent], mRadiance, mIndirect}, mSize);
+    const bool overlapped = useCache && !splitFrame;
+    if (overlapped) {
+        cmd.submit();
+        beginLate();  // the host's cache work, while lavapipe runs the submission above
+        rest = &late;
+    }
     if (useCache) {
         mCache.record(*rest, {mWorld, mGpuEmitters}, {mFrameParams, mGBuffers[mCurrent], mRadiance, mIndirect});
         // This frame's visible voxels, for the next frame's cache updates.
@@ -284,8 +297,9 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
     }
     mTonemap.record(*rest, {mFrameParams, mRadiance, mLdr}, mSize);
     rest->submitAndWait();
+    if (overlapped) cmd.wait();  // done already: the queue runs submissions in order
     result.passMs = mTimer.results();
-    if (splitFrame) {
+    if (useCache) {
         for (const auto& pass : mLateTimer.results()) result.passMs.push_back(pass);
     }
     if (useCache) {

@@ -117,9 +117,12 @@ private:
     lighting::EmitterList mEmitters;
     GpuEmitterList mGpuEmitters;
     gpu::Uploader mUploader;
+    // The cache's uploads, recorded while the frame's first submission may still read mUploader's
+    // staging memory.
+    gpu::Uploader mCacheUploader;
     gpu::TimestampTimer mTimer;
     gpu::TimestampTimer mPresentTimer;
-    gpu::TimestampTimer mLateTimer;  // a split frame's passes after the G-buffer is read back
+    gpu::TimestampTimer mLateTimer;  // the cache frame's second submission
     PrimaryRayPass mPrimary;
     SunShadePass mPreview;
     RestirInitialPass mRestirInitial;
