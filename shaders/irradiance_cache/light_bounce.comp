@@ -2,8 +2,8 @@
 // Irradiance cache, light bounce (§4.6): each face gathers the light leaving its rays' selected
 // hits — the direct light there from the sun and the emitter list (sampled, with shadow rays, at
 // a weighted subset of the hits: CacheParams::lightSamples), plus, with more than one bounce, the
-// cached irradiance of the hit face — or the sky where a ray escapes. Cosine-distributed directions make E = pi * mean(L). The result is blended into the
-// entry's running value.
+// cached irradiance of the hit face — or the sky where a ray escapes. Cosine-distributed
+// directions make E = pi * mean(L). The result is blended into the entry's running value.
 #extension GL_GOOGLE_include_directive : require
 
 #include "irradiance_cache/irradiance_cache.glsl"
@@ -74,17 +74,18 @@ void main() {
         sum += indirectLeaving(voxel, o, cacheDirection(rotation, face, cacheDirectionIndex(entry.phase, j)), packed);
         if (cacheHitLit(packed)) ++lit;
     }
-    // Direct light at the lit hits: the shadow rays are the pass's cost, so with lightSamples = L
-    // > 0 only L of them, stratified over the lit hits in order (one in each run of lit/L, a
-    // random place in it), each weighted lit/L: every lit hit is taken with probability L/lit, so
-    // the sum's expectation is unchanged. Every lane runs at most L iterations (lavapipe's batch
-    // of 8 pays for its slowest lane).
-    uint L = gCache.lightSamples == 0u ? lit : min(gCache.lightSamples, lit);
-    float weight = float(lit) / float(max(L, 1u));
-    float u = L < lit ? rngNext(rng) : 0.0;
+    // Direct light at the lit hits: its shadow rays are the pass's cost, so with lightSamples > 0
+    // only that many, stratified over the lit hits in order (one in each run of lit / samples, at
+    // a random place in it), each weighted lit / samples: every lit hit is taken with probability
+    // samples / lit, so the sum's expectation is unchanged. Every lane runs at most `samples`
+    // iterations (lavapipe's batch of 8 pays for its slowest lane; a branch per hit would have
+    // paid for the union of the lanes' choices).
+    uint samples = gCache.lightSamples == 0u ? lit : min(gCache.lightSamples, lit);
+    float weight = float(lit) / float(max(samples, 1u));
+    float u = samples < lit ? rngNext(rng) : 0.0;
     uint j = 0u, rank = 0u;  // rank: lit hits before hit j
-    for (uint k = 0u; k < L; ++k) {
-        uint target = L < lit ? min(uint((float(k) + u) * weight), lit - 1u) : k;
+    for (uint k = 0u; k < samples; ++k) {
+        uint target = samples < lit ? min(uint((float(k) + u) * weight), lit - 1u) : k;
         target = max(target, rank);  // strictly increasing (guards rounding)
         uint packed = gSelectedHits[hits + j];
         while ((!cacheHitLit(packed) || rank < target) && j + 1u < S) {
