@@ -44,6 +44,10 @@ struct IrradianceCacheSettings {
     // reads the nearest entries of the same face within this many voxels in the face's plane,
     // reachable through the open space in front of it (never across a wall); 0: it reads nothing.
     std::uint32_t fallbackRadius = 0;
+    // Of an update's hits per face that can receive light, how many sample the direct light there
+    // (sun and one emitter, each with a shadow ray), a stratified subset weighted to stay unbiased;
+    // 0: every one. The shadow rays are most of the bounce's cost.
+    std::uint32_t lightSamples = 8;
     bool fullRetrace = false;          // tests: every entry traces the whole world every update
 
     bool operator==(const IrradianceCacheSettings&) const = default;

@@ -215,6 +215,9 @@ const Knob kCache[] = {
     {.name = "fallback", .help = "cache: voxels a pixel without an entry searches in its face's plane for entries; 0 = off",
      .kind = KnobKind::Count, .min = 0, .max = 16, .get = getPartField<&S::cache, &C::fallbackRadius>,
      .set = setPartField<&S::cache, &C::fallbackRadius>, .relevant = usesCache},
+    {.name = "light_samples", .help = "cache: hits per face update that sample direct light (weighted subset); 0 = all",
+     .kind = KnobKind::Count, .min = 0, .max = 256, .get = getPartField<&S::cache, &C::lightSamples>,
+     .set = setPartField<&S::cache, &C::lightSamples>, .relevant = usesCache},
 };
 
 // Path-traced indirect light beside the direct method (render/path_indirect/). The names carry

@@ -1,9 +1,9 @@
 #version 460
 // Irradiance cache, light bounce (§4.6): each face gathers the light leaving its rays' selected
-// hits — the direct light there from the sun and the emitter list (sampled, with shadow rays),
-// plus, with more than one bounce, the cached irradiance of the hit face — or the sky where a ray
-// escapes. Cosine-distributed directions make E = pi * mean(L). The result is blended into the
-// entry's running value.
+// hits — the direct light there from the sun and the emitter list (sampled, with shadow rays, at
+// a weighted subset of the hits: CacheParams::lightSamples), plus, with more than one bounce, the
+// cached irradiance of the hit face — or the sky where a ray escapes. Cosine-distributed
+// directions make E = pi * mean(L). The result is blended into the entry's running value.
 #extension GL_GOOGLE_include_directive : require
 
 #include "irradiance_cache/irradiance_cache.glsl"
@@ -12,27 +12,44 @@
 layout(local_size_x = CACHE_GROUP_SIZE) in;
 layout(constant_id = FEATURE_CACHE_MULTI_BOUNCE) const bool kMultiBounce = true;  // off: one bounce, compiled out
 
-vec3 lightLeaving(ivec3 voxel, uint face, vec3 o, vec3 d, uint packed, inout uint rng) {
-    if (packed == CACHE_HIT_MISS) return skyBackground(gFrame, d);
-    ivec3 hv = cacheHitVoxel(voxel, packed, d);
+// A selected hit that may receive direct light: a face of a voxel, reached from outside.
+bool cacheHitLit(uint packed) { return packed != CACHE_HIT_MISS && cacheHitFace(packed) < 6u; }
+
+// The hit as a surface for the light-sampling maths; valid = false where its voxel is empty (a
+// dynamic voxel that moved away).
+Surface cacheHitSurface(ivec3 voxel, vec3 o, vec3 d, uint packed, out ivec3 hv) {
+    hv = cacheHitVoxel(voxel, packed, d);
     uint hf = cacheHitFace(packed);
     bool dynamicHit = (packed & CACHE_HIT_DYNAMIC) != 0u;
-    if (hf >= 6u) return vec3(0.0);  // the ray started inside a voxel: no light
     uint material = dynamicHit ? dynamicVoxelMaterial(hv) : staticVoxelMaterial(hv);
-    if (material == 0u) return vec3(0.0);
     Surface s;
     s.face = hf;
-    s.valid = true;
+    s.valid = material != 0u;
     s.position = o + d * faceHitT(o, d, hv, hf);
     s.normal = faceNormalF(hf);
-    s.albedo = gMaterials[material].albedo.rgb;
+    s.albedo = s.valid ? gMaterials[material].albedo.rgb : vec3(0.0);
     s.emission = vec3(0.0);  // emitters are the direct-light passes' job
-    vec3 L = directLightFromTiles(s, gFrame, rng);
-    if (kMultiBounce && gCache.bounces > 1u) {
-        uint hs = cacheLookup(hv, dynamicHit ? CACHE_SET_DYNAMIC : CACHE_SET_STATIC);
-        if (hs != ~0u && (gEntries[hs].flags & CACHE_ENTRY_RESET) == 0u) L += s.albedo / PI * gFiltered[hs * CACHE_FACES + hf].rgb * cacheFade(hs);
-    }
-    return L;
+    return s;
+}
+
+// Light leaving a hit apart from its direct light: the sky where the ray escapes, and with more
+// than one bounce the cached irradiance of the hit face.
+vec3 indirectLeaving(ivec3 voxel, vec3 o, vec3 d, uint packed) {
+    if (packed == CACHE_HIT_MISS) return skyBackground(gFrame, d);
+    if (!(kMultiBounce && gCache.bounces > 1u) || !cacheHitLit(packed)) return vec3(0.0);
+    ivec3 hv;
+    Surface s = cacheHitSurface(voxel, o, d, packed, hv);
+    if (!s.valid) return vec3(0.0);
+    uint hs = cacheLookup(hv, (packed & CACHE_HIT_DYNAMIC) != 0u ? CACHE_SET_DYNAMIC : CACHE_SET_STATIC);
+    if (hs == ~0u || (gEntries[hs].flags & CACHE_ENTRY_RESET) != 0u) return vec3(0.0);
+    return s.albedo / PI * gFiltered[hs * CACHE_FACES + s.face].rgb * cacheFade(hs);
+}
+
+// The direct light leaving a hit (sun and one emitter sample, each with a shadow ray).
+vec3 directLeaving(ivec3 voxel, vec3 o, vec3 d, uint packed, inout uint rng) {
+    ivec3 hv;
+    Surface s = cacheHitSurface(voxel, o, d, packed, hv);
+    return s.valid ? directLightFromTiles(s, gFrame, rng) : vec3(0.0);
 }
 
 void main() {
@@ -50,9 +67,36 @@ void main() {
     vec3 o = cacheEntryRayOrigin(entry, face);
     vec3 sum = vec3(0.0);
     uint rotation = cacheEntryRotation(entry);  // the directions its hits were traced along
+    uint hits = (item * CACHE_FACES + face) * S;
+    uint lit = 0u;  // hits that may receive direct light
     for (uint j = 0u; j < S; ++j) {
+        uint packed = gSelectedHits[hits + j];
+        sum += indirectLeaving(voxel, o, cacheDirection(rotation, face, cacheDirectionIndex(entry.phase, j)), packed);
+        if (cacheHitLit(packed)) ++lit;
+    }
+    // Direct light at the lit hits: its shadow rays are the pass's cost, so with lightSamples > 0
+    // only that many, stratified over the lit hits in order (one in each run of lit / samples, at
+    // a random place in it), each weighted lit / samples: every lit hit is taken with probability
+    // samples / lit, so the sum's expectation is unchanged. Every lane runs at most `samples`
+    // iterations (lavapipe's batch of 8 pays for its slowest lane; a branch per hit would have
+    // paid for the union of the lanes' choices).
+    uint samples = gCache.lightSamples == 0u ? lit : min(gCache.lightSamples, lit);
+    float weight = float(lit) / float(max(samples, 1u));
+    float u = samples < lit ? rngNext(rng) : 0.0;
+    uint j = 0u, rank = 0u;  // rank: lit hits before hit j
+    for (uint k = 0u; k < samples; ++k) {
+        uint target = samples < lit ? min(uint((float(k) + u) * weight), lit - 1u) : k;
+        target = max(target, rank);  // strictly increasing (guards rounding)
+        uint packed = gSelectedHits[hits + j];
+        while ((!cacheHitLit(packed) || rank < target) && j + 1u < S) {
+            if (cacheHitLit(packed)) ++rank;
+            packed = gSelectedHits[hits + ++j];
+        }
+        if (!cacheHitLit(packed)) break;  // never: the lit hits are counted above
         vec3 d = cacheDirection(rotation, face, cacheDirectionIndex(entry.phase, j));
-        sum += lightLeaving(voxel, face, o, d, gSelectedHits[(item * CACHE_FACES + face) * S + j], rng);
+        sum += weight * directLeaving(voxel, o, d, packed, rng);
+        ++rank;
+        ++j;
     }
     vec3 fresh = PI * sum / float(S);
     // The running mean for the first 1/alpha updates, then the paper's exponential blend: a new

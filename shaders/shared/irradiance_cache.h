@@ -54,7 +54,7 @@ struct CacheParams {
     float fadeSeconds;   // dynamic entries fade over this long without an update
     float lodDistance;   // static faces at least this far (view distance, voxels) use 2x2 patch entries; 0: off
     uint fallbackRadius; // voxels the gather searches in a face's plane when a pixel's voxel has no entry yet; 0: off
-    uint pad2;
+    uint lightSamples;   // lit hits per face update whose direct light is sampled (weighted); 0: all
 };
 SHARED_ASSERT_SIZE(CacheParams, 80);
 

@@ -25,6 +25,7 @@ shared::CacheParams cacheParams(const lighting::IrradianceCacheSettings& s, cons
     p.fadeSeconds = s.fadeSeconds;
     p.lodDistance = s.lodDistance;
     p.fallbackRadius = s.fallbackRadius;
+    p.lightSamples = s.lightSamples;
     return p;
 }
 
