@@ -45,11 +45,12 @@ WorldUploadStats GpuWorld::sync(const world::Scene& scene, gpu::Uploader& upload
         stats.full = true;
         mSizeInCells = grid.sizeInCells();
         std::span<const std::uint32_t> cells = grid.cells();
-        mCells = gpu::Buffer(mCtx, gpu::BufferKind::Storage, cells.size_bytes(), "world.cells");
         std::span<const std::uint32_t> supers = grid.superCells();
-        mInfo = gpu::Buffer(mCtx, gpu::BufferKind::Storage, sizeof(shared::BrickGridInfo) + supers.size_bytes(),
-                            "world.info");
-        uploader.write(mInfo, sizeof(shared::BrickGridInfo), supers.data(), supers.size_bytes());
+        // The super cells follow the cells (shaders read both as texels of one view).
+        mCells = gpu::Buffer(mCtx, gpu::BufferKind::Storage, cells.size_bytes() + supers.size_bytes(), "world.cells");
+        mCells.setTexelFormat(VK_FORMAT_R32_UINT);
+        mInfo = gpu::Buffer(mCtx, gpu::BufferKind::Storage, sizeof(shared::BrickGridInfo), "world.info");
+        uploader.write(mCells, cells.size_bytes(), supers.data(), supers.size_bytes());
         stats.bytes += supers.size_bytes();
         uploader.write(mCells, 0, cells.data(), cells.size_bytes());
         stats.cells = static_cast<std::uint32_t>(cells.size());
@@ -75,7 +76,7 @@ WorldUploadStats GpuWorld::sync(const world::Scene& scene, gpu::Uploader& upload
         stats.cells = static_cast<std::uint32_t>(dirty.size());
         std::span<const std::uint32_t> supers = grid.superCells();
         for (std::uint32_t s : grid.dirtySuperCells()) {
-            uploader.write(mInfo, sizeof(shared::BrickGridInfo) + std::uint64_t(s) * 4u, &supers[s], 4u);
+            uploader.write(mCells, cells.size_bytes() + std::uint64_t(s) * 4u, &supers[s], 4u);
             stats.bytes += 4u;
         }
         std::vector<std::uint32_t> bricks(grid.dirtyBricks().begin(), grid.dirtyBricks().end());
@@ -106,6 +107,7 @@ void GpuWorld::ensurePages(std::uint32_t brickCapacity, gpu::Uploader& uploader)
     if (!mPageTable.valid() || mPageTable.size() < tableBytes) {
         std::uint64_t capacity = std::max<std::uint64_t>(64, std::bit_ceil(std::uint64_t(needed)));
         mPageTable = gpu::Buffer(mCtx, gpu::BufferKind::Storage, capacity * sizeof(std::uint64_t), "world.pageTable");
+        mPageTable.setTexelFormat(VK_FORMAT_R32G32_UINT);
     }
     while (mPages.size() < needed) {
         mPages.emplace_back(mCtx, gpu::BufferKind::Storage, kPageBytes, "world.brickPage" + std::to_string(mPages.size()));

@@ -100,6 +100,7 @@ TraceResult traceGrid(vec3 o, vec3 d, float tMax, bool hierarchical, bool dyn) {
     // reads, three page-table reads, three mask words). See docs/PERFORMANCE.md.
     const ivec3 superSize = gridSizeInSuperCells(dyn);
     const ivec3 cellSize = gridSizeInCells(dyn);
+    const uint superBase = superCellBase(cellSize);
     precise vec3 tNext = vec3(0.0);
     precise vec3 tDelta = vec3(0.0);
     int level = 0;
@@ -136,7 +137,7 @@ TraceResult traceGrid(vec3 o, vec3 d, float tMax, bool hierarchical, bool dyn) {
             ivec3 off = abs(superCell - boxCentre);
             if (uint(max(off.x, max(off.y, off.z))) >= max(skip, 1u)) {
                 boxCentre = superCell;
-                skip = gridSuperCellIn(dyn, superSize, superCell);
+                skip = gridSuperCellIn(dyn, superSize, superBase, superCell);
             }
             air = skip != 0u;
         }
