@@ -40,14 +40,18 @@ WorldUploadStats GpuWorld::sync(const world::Scene& scene, gpu::Uploader& upload
     }
 
     ensurePages(grid.brickCapacity(), uploader);
-    if (needsFullUpload(grid)) {
+    // The grid texels: the cells, the super cells, then every brick slot's mask words (a copy of
+    // the pages' masks that the traversal reads as texels, without the page table). More pages
+    // outgrow the mask copy: then everything is uploaded again, as for a new world.
+    const std::uint64_t gridTexelBytes = grid.cells().size_bytes() + grid.superCells().size_bytes();
+    const std::uint64_t texelBytes = gridTexelBytes + mPages.size() * shared::BRICK_PAGE_BRICKS * kMaskBytes;
+    if (needsFullUpload(grid) || mCells.size() != texelBytes) {
         // A new or resized world: upload the top grid and every live brick.
         stats.full = true;
         mSizeInCells = grid.sizeInCells();
         std::span<const std::uint32_t> cells = grid.cells();
         std::span<const std::uint32_t> supers = grid.superCells();
-        // The super cells follow the cells (shaders read both as texels of one view).
-        mCells = gpu::Buffer(mCtx, gpu::BufferKind::Storage, cells.size_bytes() + supers.size_bytes(), "world.cells");
+        mCells = gpu::Buffer(mCtx, gpu::BufferKind::Storage, texelBytes, "world.cells");
         mCells.setTexelFormat(VK_FORMAT_R32_UINT);
         mInfo = gpu::Buffer(mCtx, gpu::BufferKind::Storage, sizeof(shared::BrickGridInfo), "world.info");
         uploader.write(mCells, cells.size_bytes(), supers.data(), supers.size_bytes());
@@ -83,7 +87,7 @@ WorldUploadStats GpuWorld::sync(const world::Scene& scene, gpu::Uploader& upload
         uploadBricks(grid, bricks, uploader);
         stats.bricks = static_cast<std::uint32_t>(bricks.size());
     }
-    stats.bytes += std::uint64_t(stats.bricks) * (kMaskBytes + kMaterialBytes);
+    stats.bytes += std::uint64_t(stats.bricks) * (2 * kMaskBytes + kMaterialBytes);
 
     stats.dynamicBytes = mDynamic.sync(scene.dynamic, uploader);
     stats.bytes += stats.dynamicBytes;
@@ -125,6 +129,10 @@ void GpuWorld::uploadBricks(const world::BrickGrid& grid, std::vector<std::uint3
         std::uint64_t local = brick & (shared::BRICK_PAGE_BRICKS - 1u);
         uploader.write(mPages[brick >> shared::BRICK_PAGE_SHIFT], local * kMaskBytes, grid.brickMask(brick).words.data(),
                        kMaskBytes);
+    }
+    const std::uint64_t maskTexels = grid.cells().size_bytes() + grid.superCells().size_bytes();
+    for (std::uint32_t brick : bricks) {
+        uploader.write(mCells, maskTexels + std::uint64_t(brick) * kMaskBytes, grid.brickMask(brick).words.data(), kMaskBytes);
     }
     for (std::uint32_t brick : bricks) {
         std::uint64_t local = brick & (shared::BRICK_PAGE_BRICKS - 1u);

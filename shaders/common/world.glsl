@@ -24,7 +24,7 @@ layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer Dy
 
 layout(set = 0, binding = WORLD_BINDING_INFO, std430) readonly buffer WorldInfoBuffer { BrickGridInfo gWorld; };
 // The top grid's cells, then its super cells (skip distance per 4^3 cells, 0: occupied; see
-// shared/brick_grid.h), and the page table (device address per brick page, as two uints), read
+// shared/brick_grid.h), then every brick's mask words, and the page table (device address per brick page, as two uints), read
 // as texels: llvmpipe gathers a texel fetch for the 8 lanes of a SIMD batch at once, where it
 // compiles a storage-buffer read into a loop over the lanes with a branch per lane.
 layout(set = 0, binding = WORLD_BINDING_CELLS) uniform usamplerBuffer gGridTexels;
@@ -33,6 +33,12 @@ layout(set = 0, binding = WORLD_BINDING_PALETTE, std430) readonly buffer Palette
 
 // Where the super cells start among the grid texels: after the cells.
 uint superCellBase(ivec3 sizeInCells) { return uint(sizeInCells.x) * uint(sizeInCells.y) * uint(sizeInCells.z); }
+
+// Where the bricks' mask words start among the grid texels: after the super cells (brick b's
+// BRICK_MASK_WORDS words at maskBase + b * BRICK_MASK_WORDS; a copy of its page's).
+uint maskBase(ivec3 sizeInCells, ivec3 sizeInSuperCells) {
+    return superCellBase(sizeInCells) + superCellBase(sizeInSuperCells);
+}
 
 uint worldCell(ivec3 cell) {
     ivec3 s = gWorld.sizeInCells.xyz;
@@ -121,14 +127,16 @@ uint gridSuperCell(bool dyn, ivec3 s) {
 
 uint gridCell(bool dyn, ivec3 cell) { return gridCellIn(dyn, gridSizeInCells(dyn), cell); }
 
-// A brick's BRICK_MASK_WORDS mask words (words[0..19]), found once (one page-table read) for
-// several reads of them.
-BrickPage gridBrickMasks(bool dyn, uint brick) {
-    if (dyn) {
-        // words[] follows the 96-byte header (shared/dynamic_grid.h).
-        return BrickPage(uint64_t(gDyn) + 96ul + 4ul * uint64_t(gDynHeader.offsets.z + brick * BRICK_MASK_WORDS));
-    }
-    return BrickPage(brickPageAddress(brick >> BRICK_PAGE_SHIFT) + 4ul * uint64_t((brick & (BRICK_PAGE_BRICKS - 1u)) * BRICK_MASK_WORDS));
+// The first mask word of a brick, as an index for gridMaskWordAt; `base` is maskBase of the
+// static grid's sizes (unused for the dynamic grid).
+uint gridBrickMaskIndex(bool dyn, uint base, uint brick) {
+    if (dyn) return gDynHeader.offsets.z + brick * BRICK_MASK_WORDS;
+    return base + brick * BRICK_MASK_WORDS;
+}
+
+uint gridMaskWordAt(bool dyn, uint index) {
+    if (dyn) return gDyn.words[index];
+    return texelFetch(gGridTexels, int(index)).x;
 }
 
 uint gridMaskWord(bool dyn, uint brick, uint word) {
