@@ -105,7 +105,8 @@ ComputePipeline::ComputePipeline(Context& ctx, const std::string& shader, std::u
 
     std::vector<VkDescriptorPoolSize> sizes;
     for (VkDescriptorType type : mTypes) {
-        auto same = std::find_if(sizes.begin(), sizes.end(), [&](const VkDescriptorPoolSize& s) { return s.type == type; });
+        auto same = std::find_if(sizes.begin(), sizes.end(),
+                                 [&](const VkDescriptorPoolSize& s) { return s.type == type; });
         if (same == sizes.end()) same = sizes.insert(sizes.end(), {type, 0});
         same->descriptorCount += kSetsPerPool;
     }

@@ -132,7 +132,8 @@ void GpuWorld::uploadBricks(const world::BrickGrid& grid, std::vector<std::uint3
     }
     const std::uint64_t maskTexels = grid.cells().size_bytes() + grid.superCells().size_bytes();
     for (std::uint32_t brick : bricks) {
-        uploader.write(mCells, maskTexels + std::uint64_t(brick) * kMaskBytes, grid.brickMask(brick).words.data(), kMaskBytes);
+        uploader.write(mCells, maskTexels + std::uint64_t(brick) * kMaskBytes, grid.brickMask(brick).words.data(),
+                       kMaskBytes);
     }
     for (std::uint32_t brick : bricks) {
         std::uint64_t local = brick & (shared::BRICK_PAGE_BRICKS - 1u);

@@ -24,9 +24,10 @@ layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer Dy
 
 layout(set = 0, binding = WORLD_BINDING_INFO, std430) readonly buffer WorldInfoBuffer { BrickGridInfo gWorld; };
 // The top grid's cells, then its super cells (skip distance per 4^3 cells, 0: occupied; see
-// shared/brick_grid.h), then every brick's mask words, and the page table (device address per brick page, as two uints), read
-// as texels: llvmpipe gathers a texel fetch for the 8 lanes of a SIMD batch at once, where it
-// compiles a storage-buffer read into a loop over the lanes with a branch per lane.
+// shared/brick_grid.h), then every brick's mask words; and the page table (device address per
+// brick page, as two uints). Both are read as texels: llvmpipe gathers a texel fetch for the 8
+// lanes of a SIMD batch at once, where it compiles a storage-buffer read into a loop over the
+// lanes with a branch per lane.
 layout(set = 0, binding = WORLD_BINDING_CELLS) uniform usamplerBuffer gGridTexels;
 layout(set = 0, binding = WORLD_BINDING_PAGES) uniform usamplerBuffer gPageTexels;
 layout(set = 0, binding = WORLD_BINDING_PALETTE, std430) readonly buffer PaletteBuffer { GpuMaterial gMaterials[]; };

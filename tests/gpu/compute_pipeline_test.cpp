@@ -26,7 +26,8 @@ TEST_F(ComputePipelineBindings, TypesFollowTheShaderDeclarations) {
 }
 
 TEST_F(ComputePipelineBindings, LightPassesReadTheAliasTableAsTexels) {
-    engine::gpu::ComputePipeline lit(context(), "baselines/light_sampling", shared::LIGHT_SAMPLING_BINDING_RADIANCE + 1u);
+    const std::uint32_t count = shared::LIGHT_SAMPLING_BINDING_RADIANCE + 1u;
+    engine::gpu::ComputePipeline lit(context(), "baselines/light_sampling", count);
     const std::vector<VkDescriptorType>& types = lit.bindingTypes();
     EXPECT_EQ(types[shared::LIGHTS_BINDING_ALIAS], VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER);
     EXPECT_EQ(types[shared::LIGHTS_BINDING_EMITTERS], VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
