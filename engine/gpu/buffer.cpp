@@ -17,8 +17,9 @@ Buffer::Buffer(Context& ctx, BufferKind kind, std::uint64_t bytes, const std::st
     VkMemoryPropertyFlags required = 0, preferred = 0;
     switch (kind) {
         case BufferKind::Storage:
-            info.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
-                         VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
+            info.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT |
+                         VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                         VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
             preferred = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
             break;
         case BufferKind::Staging:
@@ -63,6 +64,7 @@ Buffer& Buffer::operator=(Buffer&& other) noexcept {
     mCtx = std::exchange(other.mCtx, nullptr);
     mBuffer = std::exchange(other.mBuffer, VK_NULL_HANDLE);
     mMemory = std::exchange(other.mMemory, VK_NULL_HANDLE);
+    mView = std::exchange(other.mView, VK_NULL_HANDLE);
     mSize = std::exchange(other.mSize, 0);
     mAddress = std::exchange(other.mAddress, 0);
     mMapped = std::exchange(other.mMapped, nullptr);
@@ -76,14 +78,28 @@ void Buffer::write(const void* data, std::uint64_t bytes, std::uint64_t offset) 
     std::memcpy(static_cast<char*>(mMapped) + offset, data, bytes);
 }
 
+void Buffer::setTexelFormat(VkFormat format) {
+    CHECK_MSG(mBuffer && !mMapped, "buffer %s: texel views are for storage buffers", mName.c_str());
+    VkDevice device = mCtx->device();
+    if (mView) vkDestroyBufferView(device, mView, nullptr);
+    VkBufferViewCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
+    info.buffer = mBuffer;
+    info.format = format;
+    info.offset = 0;
+    info.range = VK_WHOLE_SIZE;
+    VK_CHECK(vkCreateBufferView(device, &info, nullptr, &mView));
+}
+
 void Buffer::release() {
     if (!mCtx) return;
     VkDevice device = mCtx->device();
     if (mMapped) vkUnmapMemory(device, mMemory);
+    if (mView) vkDestroyBufferView(device, mView, nullptr);
     if (mBuffer) vkDestroyBuffer(device, mBuffer, nullptr);
     if (mMemory) vkFreeMemory(device, mMemory, nullptr);
     mBuffer = VK_NULL_HANDLE;
     mMemory = VK_NULL_HANDLE;
+    mView = VK_NULL_HANDLE;
     mMapped = nullptr;
     mCtx = nullptr;
 }

@@ -1,5 +1,7 @@
 // gpu::Buffer: a VkBuffer with its own memory. Storage buffers are device-local and reachable by
-// device address; staging and readback buffers are host-visible and stay mapped.
+// device address; staging and readback buffers are host-visible and stay mapped. A storage buffer
+// can also be bound as a uniform texel buffer, through a view of the format its owner gives it
+// (setTexelFormat), where a shader declares a usamplerBuffer (gpu::ComputePipeline).
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -43,12 +45,18 @@ public:
     }
     void write(const void* data, std::uint64_t bytes, std::uint64_t offset = 0);
 
+    // Storage buffers only: a view of the whole buffer as texels of `format` (e.g.
+    // VK_FORMAT_R32_UINT), for shaders that read it through a usamplerBuffer.
+    void setTexelFormat(VkFormat format);
+    VkBufferView texelView() const { return mView; }
+
 private:
     void release();
 
     Context* mCtx = nullptr;
     VkBuffer mBuffer = VK_NULL_HANDLE;
     VkDeviceMemory mMemory = VK_NULL_HANDLE;
+    VkBufferView mView = VK_NULL_HANDLE;
     std::uint64_t mSize = 0;
     std::uint64_t mAddress = 0;
     void* mMapped = nullptr;

@@ -1,6 +1,7 @@
 #include "gpu/compute_pipeline.h"
 
 #include <algorithm>
+#include <unordered_map>
 #include <vector>
 
 #include "core/check.h"
@@ -29,6 +30,49 @@ std::vector<std::uint32_t> declaredSpecIds(std::span<const std::uint32_t> code) 
     ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
     return ids;
 }
+
+// The descriptor type of each binding 0..count-1 of set 0, as the SPIR-V module declares it: a
+// `uniform usamplerBuffer` (OpTypeImage, Dim Buffer, Sampled 1) is a uniform texel buffer;
+// anything else (a `buffer` block, or a binding the shader does not declare) a storage buffer.
+std::vector<VkDescriptorType> declaredBindingTypes(std::span<const std::uint32_t> code, std::uint32_t count) {
+    constexpr std::uint32_t kOpTypeImage = 25, kOpTypeSampledImage = 27, kOpTypePointer = 32, kOpVariable = 59,
+                            kOpDecorate = 71, kHeaderWords = 5;
+    constexpr std::uint32_t kDecorationBinding = 33, kDecorationDescriptorSet = 34;
+    constexpr std::uint32_t kStorageUniformConstant = 0, kDimBuffer = 5;
+    std::unordered_map<std::uint32_t, std::uint32_t> binding, set, pointerClass, pointee, variableType, sampledImage;
+    std::unordered_map<std::uint32_t, std::pair<std::uint32_t, std::uint32_t>> image;  // id -> (Dim, Sampled)
+    for (std::size_t i = kHeaderWords; i < code.size();) {
+        const std::uint32_t words = code[i] >> 16, opcode = code[i] & 0xFFFFu;
+        if (words == 0 || i + words > code.size()) break;
+        const std::uint32_t* w = &code[i];
+        if (opcode == kOpDecorate && words >= 3) {
+            if (w[2] == kDecorationBinding && words >= 4) binding[w[1]] = w[3];
+            if (w[2] == kDecorationDescriptorSet && words >= 4) set[w[1]] = w[3];
+        } else if (opcode == kOpTypeImage && words >= 8) {
+            image[w[1]] = {w[3], w[7]};
+        } else if (opcode == kOpTypeSampledImage && words >= 3) {
+            sampledImage[w[1]] = w[2];
+        } else if (opcode == kOpTypePointer && words >= 4) {
+            pointerClass[w[1]] = w[2];
+            pointee[w[1]] = w[3];
+        } else if (opcode == kOpVariable && words >= 4) {
+            variableType[w[2]] = w[1];
+        }
+        i += words;
+    }
+    std::vector<VkDescriptorType> types(count, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+    for (auto [variable, b] : binding) {
+        if (b >= count || set[variable] != 0 || !variableType.contains(variable)) continue;
+        const std::uint32_t pointer = variableType[variable];
+        std::uint32_t type = pointee[pointer];
+        if (sampledImage.contains(type)) type = sampledImage[type];
+        if (pointerClass[pointer] == kStorageUniformConstant && image.contains(type)) {
+            CHECK_MSG(image[type] == std::make_pair(kDimBuffer, 1u), "binding %u: only sampled buffer images", b);
+            types[b] = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+        }
+    }
+    return types;
+}
 }  // namespace
 
 ComputePipeline::ComputePipeline(Context& ctx, const std::string& shader, std::uint32_t bindingCount)
@@ -37,9 +81,10 @@ ComputePipeline::ComputePipeline(Context& ctx, const std::string& shader, std::u
     CHECK_MSG(!code.empty(), "no embedded shader named '%s'", shader.c_str());
     VkDevice device = ctx.device();
 
+    mTypes = declaredBindingTypes(code, bindingCount);
     std::vector<VkDescriptorSetLayoutBinding> bindings(bindingCount);
     for (std::uint32_t i = 0; i < bindingCount; ++i) {
-        bindings[i] = {i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+        bindings[i] = {i, mTypes[i], 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
     }
     VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     setInfo.bindingCount = bindingCount;
@@ -58,12 +103,18 @@ ComputePipeline::ComputePipeline(Context& ctx, const std::string& shader, std::u
     mSpecIds = declaredSpecIds(code);
     variant({});  // the generic pipeline now: a shader that does not compile fails at start-up
 
-    VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, bindingCount * kSetsPerPool};
+    std::vector<VkDescriptorPoolSize> sizes;
+    for (VkDescriptorType type : mTypes) {
+        auto same = std::find_if(sizes.begin(), sizes.end(),
+                                 [&](const VkDescriptorPoolSize& s) { return s.type == type; });
+        if (same == sizes.end()) same = sizes.insert(sizes.end(), {type, 0});
+        same->descriptorCount += kSetsPerPool;
+    }
     VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     poolInfo.flags = VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT;
     poolInfo.maxSets = kSetsPerPool;
-    poolInfo.poolSizeCount = 1;
-    poolInfo.pPoolSizes = &size;
+    poolInfo.poolSizeCount = static_cast<std::uint32_t>(sizes.size());
+    poolInfo.pPoolSizes = sizes.data();
     VK_CHECK(vkCreateDescriptorPool(device, &poolInfo, nullptr, &mPool));
 }
 
@@ -120,19 +171,29 @@ void ComputePipeline::dispatch(CommandList& cmd, std::span<const Buffer* const> 
     cmd.retainDescriptorSet(mPool, set);
 
     std::vector<VkDescriptorBufferInfo> infos;
+    std::vector<VkBufferView> views;
     std::vector<VkWriteDescriptorSet> writes;
     infos.reserve(buffers.size());
+    views.reserve(buffers.size());
     std::uint32_t binding = 0;
     for (const Buffer* b : buffers) {
         CHECK_MSG(b && b->valid(), "%s: binding %u has no buffer", mName.c_str(), binding);
-        infos.push_back({b->handle(), 0, VK_WHOLE_SIZE});
         VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
         w.dstSet = set;
-        w.dstBinding = binding++;
+        w.dstBinding = binding;
         w.descriptorCount = 1;
-        w.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-        w.pBufferInfo = &infos.back();
+        w.descriptorType = mTypes[binding];
+        if (w.descriptorType == VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER) {
+            CHECK_MSG(b->texelView(), "%s: binding %u reads texels of %s, which has no texel format", mName.c_str(),
+                      binding, b->name().c_str());
+            views.push_back(b->texelView());
+            w.pTexelBufferView = &views.back();
+        } else {
+            infos.push_back({b->handle(), 0, VK_WHOLE_SIZE});
+            w.pBufferInfo = &infos.back();
+        }
         writes.push_back(w);
+        ++binding;
     }
     vkUpdateDescriptorSets(mCtx.device(), static_cast<std::uint32_t>(writes.size()), writes.data(), 0, nullptr);
     vkCmdBindPipeline(cmd.handle(), VK_PIPELINE_BIND_POINT_COMPUTE, variant(cmd.specialization()));

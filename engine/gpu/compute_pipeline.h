@@ -1,5 +1,7 @@
-// gpu::ComputePipeline: one compute shader (embedded SPIR-V, by name) whose bindings are all
-// storage buffers in set 0, numbered 0..bindingCount-1. Its specialization constants take their
+// gpu::ComputePipeline: one compute shader (embedded SPIR-V, by name) whose bindings are buffers
+// in set 0, numbered 0..bindingCount-1. Each binding's descriptor type follows the shader's
+// declaration (read from the SPIR-V): a `buffer` block is a storage buffer, a `usamplerBuffer` a
+// uniform texel buffer (bound through the Buffer's texel view, Buffer::setTexelFormat). Its specialization constants take their
 // values from the command list's (CommandList::setSpecialization, indexed by constant_id); one
 // pipeline is compiled per combination of the values the shader declares, when first used.
 #pragma once
@@ -37,6 +39,8 @@ public:
 
     // The constant_ids the shader declares, ascending.
     const std::vector<std::uint32_t>& specializationIds() const { return mSpecIds; }
+    // The descriptor type of each binding, as the shader declares it.
+    const std::vector<VkDescriptorType>& bindingTypes() const { return mTypes; }
 
 private:
     // The pipeline for these values of the shader's constants (empty: every default).
@@ -47,6 +51,7 @@ private:
     std::uint32_t mBindingCount;
     VkShaderModule mModule = VK_NULL_HANDLE;
     std::vector<std::uint32_t> mSpecIds;
+    std::vector<VkDescriptorType> mTypes;
     VkDescriptorSetLayout mSetLayout = VK_NULL_HANDLE;
     VkPipelineLayout mLayout = VK_NULL_HANDLE;
     // (values of mSpecIds, pipeline); a handful at most, so a list.

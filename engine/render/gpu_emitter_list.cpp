@@ -40,6 +40,7 @@ EmitterUploadStats GpuEmitterList::sync(lighting::EmitterList& list, gpu::Upload
     ensure(mAlive, list.aliveSlots().size_bytes(), "lights.alive", aliveGrown);
     const std::vector<shared::AliasEntry>& alias = list.aliasTable();
     ensure(mAlias, alias.size() * sizeof(shared::AliasEntry), "lights.alias", aliveGrown);
+    if (!mAlias.texelView()) mAlias.setTexelFormat(VK_FORMAT_R32G32B32A32_UINT);  // shaders fetch AliasEntry texels
     if (list.aliveChanged() || aliveGrown) {
         uploader.write(mAlive, 0, list.aliveSlots().data(), list.aliveSlots().size_bytes());
         uploader.write(mAlias, 0, alias.data(), alias.size() * sizeof(shared::AliasEntry));

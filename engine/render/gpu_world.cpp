@@ -40,16 +40,21 @@ WorldUploadStats GpuWorld::sync(const world::Scene& scene, gpu::Uploader& upload
     }
 
     ensurePages(grid.brickCapacity(), uploader);
-    if (needsFullUpload(grid)) {
+    // The grid texels: the cells, the super cells, then every brick slot's mask words (a copy of
+    // the pages' masks that the traversal reads as texels, without the page table). More pages
+    // outgrow the mask copy: then everything is uploaded again, as for a new world.
+    const std::uint64_t gridTexelBytes = grid.cells().size_bytes() + grid.superCells().size_bytes();
+    const std::uint64_t texelBytes = gridTexelBytes + mPages.size() * shared::BRICK_PAGE_BRICKS * kMaskBytes;
+    if (needsFullUpload(grid) || mCells.size() != texelBytes) {
         // A new or resized world: upload the top grid and every live brick.
         stats.full = true;
         mSizeInCells = grid.sizeInCells();
         std::span<const std::uint32_t> cells = grid.cells();
-        mCells = gpu::Buffer(mCtx, gpu::BufferKind::Storage, cells.size_bytes(), "world.cells");
         std::span<const std::uint32_t> supers = grid.superCells();
-        mInfo = gpu::Buffer(mCtx, gpu::BufferKind::Storage, sizeof(shared::BrickGridInfo) + supers.size_bytes(),
-                            "world.info");
-        uploader.write(mInfo, sizeof(shared::BrickGridInfo), supers.data(), supers.size_bytes());
+        mCells = gpu::Buffer(mCtx, gpu::BufferKind::Storage, texelBytes, "world.cells");
+        mCells.setTexelFormat(VK_FORMAT_R32_UINT);
+        mInfo = gpu::Buffer(mCtx, gpu::BufferKind::Storage, sizeof(shared::BrickGridInfo), "world.info");
+        uploader.write(mCells, cells.size_bytes(), supers.data(), supers.size_bytes());
         stats.bytes += supers.size_bytes();
         uploader.write(mCells, 0, cells.data(), cells.size_bytes());
         stats.cells = static_cast<std::uint32_t>(cells.size());
@@ -75,14 +80,14 @@ WorldUploadStats GpuWorld::sync(const world::Scene& scene, gpu::Uploader& upload
         stats.cells = static_cast<std::uint32_t>(dirty.size());
         std::span<const std::uint32_t> supers = grid.superCells();
         for (std::uint32_t s : grid.dirtySuperCells()) {
-            uploader.write(mInfo, sizeof(shared::BrickGridInfo) + std::uint64_t(s) * 4u, &supers[s], 4u);
+            uploader.write(mCells, cells.size_bytes() + std::uint64_t(s) * 4u, &supers[s], 4u);
             stats.bytes += 4u;
         }
         std::vector<std::uint32_t> bricks(grid.dirtyBricks().begin(), grid.dirtyBricks().end());
         uploadBricks(grid, bricks, uploader);
         stats.bricks = static_cast<std::uint32_t>(bricks.size());
     }
-    stats.bytes += std::uint64_t(stats.bricks) * (kMaskBytes + kMaterialBytes);
+    stats.bytes += std::uint64_t(stats.bricks) * (2 * kMaskBytes + kMaterialBytes);
 
     stats.dynamicBytes = mDynamic.sync(scene.dynamic, uploader);
     stats.bytes += stats.dynamicBytes;
@@ -106,6 +111,7 @@ void GpuWorld::ensurePages(std::uint32_t brickCapacity, gpu::Uploader& uploader)
     if (!mPageTable.valid() || mPageTable.size() < tableBytes) {
         std::uint64_t capacity = std::max<std::uint64_t>(64, std::bit_ceil(std::uint64_t(needed)));
         mPageTable = gpu::Buffer(mCtx, gpu::BufferKind::Storage, capacity * sizeof(std::uint64_t), "world.pageTable");
+        mPageTable.setTexelFormat(VK_FORMAT_R32G32_UINT);
     }
     while (mPages.size() < needed) {
         mPages.emplace_back(mCtx, gpu::BufferKind::Storage, kPageBytes, "world.brickPage" + std::to_string(mPages.size()));
@@ -122,6 +128,11 @@ void GpuWorld::uploadBricks(const world::BrickGrid& grid, std::vector<std::uint3
     for (std::uint32_t brick : bricks) {
         std::uint64_t local = brick & (shared::BRICK_PAGE_BRICKS - 1u);
         uploader.write(mPages[brick >> shared::BRICK_PAGE_SHIFT], local * kMaskBytes, grid.brickMask(brick).words.data(),
+                       kMaskBytes);
+    }
+    const std::uint64_t maskTexels = grid.cells().size_bytes() + grid.superCells().size_bytes();
+    for (std::uint32_t brick : bricks) {
+        uploader.write(mCells, maskTexels + std::uint64_t(brick) * kMaskBytes, grid.brickMask(brick).words.data(),
                        kMaskBytes);
     }
     for (std::uint32_t brick : bricks) {

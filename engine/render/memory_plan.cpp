@@ -28,8 +28,10 @@ MemoryPlan planMemory(const world::Scene& scene, glm::uvec2 frameSize, const lig
     plan.world = grid.topGridBytes + grid.superGridBytes + grid.brickPoolBytes + grid.bookkeepingBytes + palette;
     const std::uint64_t bricks = scene.grid.brickCapacity();
     const std::uint64_t pages = std::max<std::uint64_t>(1, (bricks + shared::BRICK_PAGE_BRICKS - 1) / shared::BRICK_PAGE_BRICKS);
+    // The pages, the page table, and the copy of every brick slot's masks beside the top grid.
     plan.gpuWorld = grid.topGridBytes + grid.superGridBytes + palette + pages * std::uint64_t(shared::BRICK_PAGE_WORDS) * 4u +
-                    std::max<std::uint64_t>(64, std::bit_ceil(pages)) * sizeof(std::uint64_t);
+                    std::max<std::uint64_t>(64, std::bit_ceil(pages)) * sizeof(std::uint64_t) +
+                    pages * shared::BRICK_PAGE_BRICKS * std::uint64_t(shared::BRICK_MASK_WORDS) * 4u;
     plan.upload = std::min<std::uint64_t>(gpu::Uploader::kChunkBytes, std::bit_ceil(plan.gpuWorld));  // one chunk at most
     plan.frame = std::uint64_t(frameSize.x) * frameSize.y * Renderer::frameBytesPerPixel();
     if (lighting.indirect == lighting::Indirect::Cache) plan.cache = lighting.cache.budgetBytes;

@@ -95,11 +95,13 @@ TraceResult traceGrid(vec3 o, vec3 d, float tMax, bool hierarchical, bool dyn) {
     // Grid sizes are read once, here: llvmpipe compiles a buffer read into a loop over the SIMD
     // lanes with a branch per lane (Mesa 21.3's source does so even for an address all lanes
     // share) and runs both sides of every branch under a lane mask, so a step pays for every read
-    // its code holds, whichever level its lanes are on. The loop holds five: a super cell, a cell,
-    // a page-table entry and two mask words (it held eleven: three grid sizes, two super-cell
-    // reads, three page-table reads, three mask words). See docs/PERFORMANCE.md.
+    // its code holds, whichever level its lanes are on. The loop holds four: a super cell, a cell
+    // and two mask words, all texel fetches of one view, which llvmpipe gathers without a branch
+    // per lane (it held eleven storage and device-address reads). See docs/PERFORMANCE.md.
     const ivec3 superSize = gridSizeInSuperCells(dyn);
     const ivec3 cellSize = gridSizeInCells(dyn);
+    const uint superBase = superCellBase(cellSize);
+    const uint masksBase = maskBase(cellSize, superSize);
     precise vec3 tNext = vec3(0.0);
     precise vec3 tDelta = vec3(0.0);
     int level = 0;
@@ -120,7 +122,7 @@ TraceResult traceGrid(vec3 o, vec3 d, float tMax, bool hierarchical, bool dyn) {
     uint skip = 0u;
     ivec3 cellKey = ivec3(-1);    // cell of `cell`
     uint cell = CELL_EMPTY;
-    BrickPage masks = BrickPage(0ul);  // mask words of the brick in `cell`
+    uint masks = 0u;              // index of the first mask word of the brick in `cell`
     int coarseKey = -1;           // index of the 2^3-block mask word in `coarse`
     uint coarse = 0u;
     int fineKey = -1;             // index of the voxel mask word in `fine`
@@ -136,7 +138,7 @@ TraceResult traceGrid(vec3 o, vec3 d, float tMax, bool hierarchical, bool dyn) {
             ivec3 off = abs(superCell - boxCentre);
             if (uint(max(off.x, max(off.y, off.z))) >= max(skip, 1u)) {
                 boxCentre = superCell;
-                skip = gridSuperCellIn(dyn, superSize, superCell);
+                skip = gridSuperCellIn(dyn, superSize, superBase, superCell);
             }
             air = skip != 0u;
         }
@@ -155,7 +157,9 @@ TraceResult traceGrid(vec3 o, vec3 d, float tMax, bool hierarchical, bool dyn) {
                 cell = gridCellIn(dyn, cellSize, cellKey);
                 coarseKey = -1;
                 fineKey = -1;
-                if (cell != CELL_EMPTY && (cell & CELL_HOMOGENEOUS) == 0u) masks = gridBrickMasks(dyn, cell - 1u);
+                if (cell != CELL_EMPTY && (cell & CELL_HOMOGENEOUS) == 0u) {
+                    masks = gridBrickMaskIndex(dyn, masksBase, cell - 1u);
+                }
             }
             if (cell == CELL_EMPTY) {
                 s = 8;
@@ -176,7 +180,7 @@ TraceResult traceGrid(vec3 o, vec3 d, float tMax, bool hierarchical, bool dyn) {
                     // the same answer as the CPU's 4^3-block mask, whose bits are those ORs.
                     if (coarseKey != (bit2 >> 5)) {
                         coarseKey = bit2 >> 5;
-                        coarse = masks.words[MASK_COARSE_WORD + uint(coarseKey)];
+                        coarse = gridMaskWordAt(dyn, masks + MASK_COARSE_WORD + uint(coarseKey));
                     }
                     if ((coarse & (0x330033u << uint(2 * b4.x + 8 * b4.y))) == 0u) {
                         s = 4;
@@ -186,7 +190,7 @@ TraceResult traceGrid(vec3 o, vec3 d, float tMax, bool hierarchical, bool dyn) {
                 }
                 if (s == 1 && fineKey != (bit >> 5)) {
                     fineKey = bit >> 5;
-                    fine = masks.words[uint(fineKey)];
+                    fine = gridMaskWordAt(dyn, masks + uint(fineKey));
                 }
                 if (s == 1 && ((fine >> uint(bit & 31)) & 1u) != 0u) {
                     hit = true;

@@ -13,7 +13,9 @@
 layout(set = 0, binding = LIGHTS_BINDING_INFO, std430) readonly buffer LightInfoBuffer { EmitterListInfo gLights; };
 layout(set = 0, binding = LIGHTS_BINDING_EMITTERS, std430) readonly buffer EmitterBuffer { GpuEmitter gEmitters[]; };
 layout(set = 0, binding = LIGHTS_BINDING_ALIVE, std430) readonly buffer AliveBuffer { uint gAlive[]; };
-layout(set = 0, binding = LIGHTS_BINDING_ALIAS, std430) readonly buffer AliasBuffer { AliasEntry gAlias[]; };
+// AliasEntry per alive emitter, one uvec4 texel each: a texel fetch is a gather on llvmpipe, a
+// storage-buffer read a loop over the SIMD lanes (common/world.glsl).
+layout(set = 0, binding = LIGHTS_BINDING_ALIAS) uniform usamplerBuffer gAliasTexels;
 
 // Off when no pass of the frame draws emitters uniformly / uses point mode: that code is compiled
 // out (shared/shader_features.h).
@@ -55,8 +57,8 @@ bool pickEmitter(inout uint rng, bool byPower, out uint slot) {
     if (n == 0u || (byPower && !(gLights.power.x > 0.0))) return false;
     uint i = min(uint(rngNext(rng) * float(n)), n - 1u);
     if (byPower) {
-        AliasEntry a = gAlias[i];
-        slot = rngNext(rng) < a.probability ? a.slot : a.alias;
+        uvec4 a = texelFetch(gAliasTexels, int(i));  // probability, slot, alias, pdf
+        slot = rngNext(rng) < uintBitsToFloat(a.x) ? a.y : a.z;
     } else {
         slot = gAlive[i];
     }

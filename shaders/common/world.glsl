@@ -22,31 +22,48 @@ layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer Dy
     GpuDynamicObject objects[];
 };
 
-layout(set = 0, binding = WORLD_BINDING_INFO, std430) readonly buffer WorldInfoBuffer {
-    BrickGridInfo gWorld;
-    uint gSuperCells[];  // skip distance per 4^3 cells (0: occupied), see shared/brick_grid.h
-};
-layout(set = 0, binding = WORLD_BINDING_CELLS, std430) readonly buffer CellBuffer { uint gCells[]; };
-layout(set = 0, binding = WORLD_BINDING_PAGES, std430) readonly buffer PageTable { uint64_t gPages[]; };
+layout(set = 0, binding = WORLD_BINDING_INFO, std430) readonly buffer WorldInfoBuffer { BrickGridInfo gWorld; };
+// The top grid's cells, then its super cells (skip distance per 4^3 cells, 0: occupied; see
+// shared/brick_grid.h), then every brick's mask words; and the page table (device address per
+// brick page, as two uints). Both are read as texels: llvmpipe gathers a texel fetch for the 8
+// lanes of a SIMD batch at once, where it compiles a storage-buffer read into a loop over the
+// lanes with a branch per lane.
+layout(set = 0, binding = WORLD_BINDING_CELLS) uniform usamplerBuffer gGridTexels;
+layout(set = 0, binding = WORLD_BINDING_PAGES) uniform usamplerBuffer gPageTexels;
 layout(set = 0, binding = WORLD_BINDING_PALETTE, std430) readonly buffer PaletteBuffer { GpuMaterial gMaterials[]; };
+
+// Where the super cells start among the grid texels: after the cells.
+uint superCellBase(ivec3 sizeInCells) { return uint(sizeInCells.x) * uint(sizeInCells.y) * uint(sizeInCells.z); }
+
+// Where the bricks' mask words start among the grid texels: after the super cells (brick b's
+// BRICK_MASK_WORDS words at maskBase + b * BRICK_MASK_WORDS; a copy of its page's).
+uint maskBase(ivec3 sizeInCells, ivec3 sizeInSuperCells) {
+    return superCellBase(sizeInCells) + superCellBase(sizeInSuperCells);
+}
 
 uint worldCell(ivec3 cell) {
     ivec3 s = gWorld.sizeInCells.xyz;
-    return gCells[uint(cell.x) + uint(s.x) * (uint(cell.y) + uint(s.y) * uint(cell.z))];
+    return texelFetch(gGridTexels, int(uint(cell.x) + uint(s.x) * (uint(cell.y) + uint(s.y) * uint(cell.z)))).x;
 }
 
 uint worldSuperCell(ivec3 s) {
     ivec3 n = gWorld.sizeInSuperCells.xyz;
-    return gSuperCells[uint(s.x) + uint(n.x) * (uint(s.y) + uint(n.y) * uint(s.z))];
+    uint i = uint(s.x) + uint(n.x) * (uint(s.y) + uint(n.y) * uint(s.z));
+    return texelFetch(gGridTexels, int(superCellBase(gWorld.sizeInCells.xyz) + i)).x;
+}
+
+uint64_t brickPageAddress(uint page) {
+    uvec2 a = texelFetch(gPageTexels, int(page)).xy;
+    return uint64_t(a.x) | (uint64_t(a.y) << 32);
 }
 
 uint brickMaskWord(uint brick, uint word) {
-    BrickPage page = BrickPage(gPages[brick >> BRICK_PAGE_SHIFT]);
+    BrickPage page = BrickPage(brickPageAddress(brick >> BRICK_PAGE_SHIFT));
     return page.words[(brick & (BRICK_PAGE_BRICKS - 1u)) * BRICK_MASK_WORDS + word];
 }
 
 uint brickMaterial(uint brick, uint voxelIndex) {
-    BrickPage page = BrickPage(gPages[brick >> BRICK_PAGE_SHIFT]);
+    BrickPage page = BrickPage(brickPageAddress(brick >> BRICK_PAGE_SHIFT));
     uint word = page.words[BRICK_PAGE_MATERIAL_OFFSET + (brick & (BRICK_PAGE_BRICKS - 1u)) * BRICK_MATERIAL_WORDS +
                            (voxelIndex >> 1u)];
     return (word >> ((voxelIndex & 1u) * 16u)) & 0xFFFFu;
@@ -92,30 +109,35 @@ ivec3 gridSizeInCells(bool dyn) {
 // Super-cell and cell reads for a caller that read the grid's size `n` once, before its loop:
 // llvmpipe turns a buffer read into a loop over the SIMD lanes (in Mesa 21.3's source even one
 // whose address all lanes share), so a size read per step can cost as much as the cell read.
-uint gridSuperCellIn(bool dyn, ivec3 n, ivec3 s) {
+// `base`: superCellBase of the static grid's size in cells (unused for the dynamic grid).
+uint gridSuperCellIn(bool dyn, ivec3 n, uint base, ivec3 s) {
     uint i = uint(s.x) + uint(n.x) * (uint(s.y) + uint(n.y) * uint(s.z));
     if (dyn) return gDyn.words[gDynHeader.offsets.x + i];
-    return gSuperCells[i];
+    return texelFetch(gGridTexels, int(base + i)).x;
 }
 
 uint gridCellIn(bool dyn, ivec3 n, ivec3 cell) {
     uint i = uint(cell.x) + uint(n.x) * (uint(cell.y) + uint(n.y) * uint(cell.z));
     if (dyn) return gDyn.words[gDynHeader.offsets.y + i];
-    return gCells[i];
+    return texelFetch(gGridTexels, int(i)).x;
 }
 
-uint gridSuperCell(bool dyn, ivec3 s) { return gridSuperCellIn(dyn, gridSizeInSuperCells(dyn), s); }
+uint gridSuperCell(bool dyn, ivec3 s) {
+    return gridSuperCellIn(dyn, gridSizeInSuperCells(dyn), dyn ? 0u : superCellBase(gWorld.sizeInCells.xyz), s);
+}
 
 uint gridCell(bool dyn, ivec3 cell) { return gridCellIn(dyn, gridSizeInCells(dyn), cell); }
 
-// A brick's BRICK_MASK_WORDS mask words (words[0..19]), found once (one page-table read) for
-// several reads of them.
-BrickPage gridBrickMasks(bool dyn, uint brick) {
-    if (dyn) {
-        // words[] follows the 96-byte header (shared/dynamic_grid.h).
-        return BrickPage(uint64_t(gDyn) + 96ul + 4ul * uint64_t(gDynHeader.offsets.z + brick * BRICK_MASK_WORDS));
-    }
-    return BrickPage(gPages[brick >> BRICK_PAGE_SHIFT] + 4ul * uint64_t((brick & (BRICK_PAGE_BRICKS - 1u)) * BRICK_MASK_WORDS));
+// The first mask word of a brick, as an index for gridMaskWordAt; `base` is maskBase of the
+// static grid's sizes (unused for the dynamic grid).
+uint gridBrickMaskIndex(bool dyn, uint base, uint brick) {
+    if (dyn) return gDynHeader.offsets.z + brick * BRICK_MASK_WORDS;
+    return base + brick * BRICK_MASK_WORDS;
+}
+
+uint gridMaskWordAt(bool dyn, uint index) {
+    if (dyn) return gDyn.words[index];
+    return texelFetch(gGridTexels, int(index)).x;
 }
 
 uint gridMaskWord(bool dyn, uint brick, uint word) {

@@ -1,8 +1,8 @@
 // Descriptor bindings every ray-tracing pass shares: the world (set 0, bindings 0-3).
-// A pass's own buffers start at PASS_BINDING_FIRST. All bindings are storage buffers. The
-// techniques number their passes' own bindings in their headers (restir.h, light_sampling.h,
-// reference.h, irradiance_cache.h); the passes every method shares are numbered here. The C++
-// passes bind by these numbers (engine/render/passes/compute_pass.h).
+// A pass's own buffers start at PASS_BINDING_FIRST. Bindings are storage buffers, but for those a
+// shader declares usamplerBuffer (uniform texel buffers: top grid, page and alias tables). Passes
+// number their own in their technique's header (restir.h, light_sampling.h, reference.h, ...);
+// the passes every method shares, here. C++ binds by these numbers (render/passes/compute_pass.h).
 #ifndef SHARED_BINDINGS_H
 #define SHARED_BINDINGS_H
 #include "interop.h"
@@ -10,8 +10,8 @@
 SHARED_BEGIN
 
 SHARED_CONST uint WORLD_BINDING_INFO = 0u;     // BrickGridInfo
-SHARED_CONST uint WORLD_BINDING_CELLS = 1u;    // uint per top-grid cell
-SHARED_CONST uint WORLD_BINDING_PAGES = 2u;    // uint64 device address per brick page
+SHARED_CONST uint WORLD_BINDING_CELLS = 1u;    // uint per top-grid cell, then per super cell
+SHARED_CONST uint WORLD_BINDING_PAGES = 2u;    // uint64 device address per brick page (uvec2 texels)
 SHARED_CONST uint WORLD_BINDING_PALETTE = 3u;  // GpuMaterial per material id
 SHARED_CONST uint WORLD_BINDING_COUNT = 4u;
 SHARED_CONST uint PASS_BINDING_FIRST = 4u;

@@ -7,6 +7,7 @@
 #include "gpu/command_list.h"
 #include "gpu/gpu_test_setup.h"
 #include "gpu/uploader.h"
+#include "shared/brick_grid.h"
 #include "world/random_worlds.h"
 
 using namespace engine::world;
@@ -108,6 +109,33 @@ TEST_F(Upload, CollapsingAndReusingBricksStaysConsistent) {
         fresh.render(scene, camera, smallFrame(), kPreview);
         expectSameImages(incremental, fresh.readback());
     }
+}
+
+// The traversal reads brick masks from a copy beside the top grid sized for the brick pages; an
+// edit that needs a new page outgrows it, and the next sync uploads everything again.
+TEST_F(Upload, MoreBrickPagesUploadTheGridTexelsAgain) {
+    BrickGrid grid({256, 64, 256});
+    fillBox(grid, Box{{0, 0, 0}, {256, 8, 256}}, 1);  // homogeneous ground, no bricks
+    grid.set({8, 8, 8}, 2);
+    Scene scene = gpu_testing::sceneWith(std::move(grid));
+    CameraPreset camera = lookingAtWorld(scene.grid);
+    Renderer renderer(gpu_testing::context());
+    renderer.render(scene, camera, smallFrame(), kPreview);
+    ASSERT_LT(scene.grid.brickCapacity(), shared::BRICK_PAGE_BRICKS);
+
+    // One voxel in each of 32 x 5 x 32 cells: more bricks than one page holds.
+    for (int z = 0; z < 256; z += 8) {
+        for (int y = 16; y < 56; y += 8) {
+            for (int x = 0; x < 256; x += 8) scene.grid.set({x + 2, y, z + 3}, MaterialId(1 + (x + z) % 4));
+        }
+    }
+    ASSERT_GT(scene.grid.liveBricks(), shared::BRICK_PAGE_BRICKS);
+    auto grown = renderer.render(scene, camera, smallFrame(), kPreview);
+    EXPECT_TRUE(grown.upload.full);
+    FrameImages incremental = renderer.readback();
+    Renderer fresh(gpu_testing::context());
+    fresh.render(scene, camera, smallFrame(), kPreview);
+    expectSameImages(incremental, fresh.readback());
 }
 
 // A whole new world is one burst of uploads (gigabytes for a large terrain). Queued whole, the
