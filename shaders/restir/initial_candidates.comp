@@ -12,7 +12,6 @@
 
 #include "light_tiles/light_tiles.glsl"
 #include "regir/regir.glsl"
-#include "common/ray_sort.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(constant_id = FEATURE_CANDIDATE_VISIBILITY) const bool kCandidateVisibility = true;
@@ -22,11 +21,17 @@ layout(set = 0, binding = RESTIR_BINDING_PARAMS, std430) readonly buffer Restir 
 layout(set = 0, binding = RESTIR_BINDING_GBUFFER, std430) readonly buffer GBuffer { GBufferTexel gGBuffer[]; };
 layout(set = 0, binding = RESTIR_INITIAL_BINDING_OUT, std430) writeonly buffer Out { Reservoir gOut[]; };
 
-// The pixel's reservoir from its candidates, before the shadow test.
-Reservoir resampleCandidates(uvec2 pixel, Surface s) {
+void main() {
+    uvec2 pixel = gl_GlobalInvocationID.xy;
+    if (any(greaterThanEqual(pixel, gFrame.imageSize.xy))) return;
+    uint index = pixel.x + pixel.y * gFrame.imageSize.x;
+    Surface s = surfaceFrom(gGBuffer[index]);
     Reservoir r = Reservoir(uvec4(RESERVOIR_EMPTY, 0u, 0u, 0u), vec4(0.0));
     uint candidates = gRestir.knobs.candidates;
-    if (!s.valid || gLights.counts.x == 0u || candidates == 0u) return r;
+    if (!s.valid || gLights.counts.x == 0u || candidates == 0u) {
+        gOut[index] = r;
+        return;
+    }
     bool area = !kPointLights || gRestir.area != 0u;
     bool byPower = gRestir.byPower != 0u;
     uint rng = rngInit(pixel, gRestir.frameIndex, 1u, gRestir.seed);
@@ -89,30 +94,12 @@ Reservoir resampleCandidates(uvec2 pixel, Surface s) {
     }
     r.weights = vec4(chosenTarget > 0.0 ? wSum / (float(candidates) * chosenTarget) : 0.0, float(candidates),
                      chosenTarget, 1.0);
-    return r;
-}
-
-void main() {
-    // No early return: every invocation of the workgroup takes part in the sorted shadow test.
-    uvec2 pixel = gl_GlobalInvocationID.xy;
-    bool inside = all(lessThan(pixel, gFrame.imageSize.xy));
-    uint index = pixel.x + pixel.y * gFrame.imageSize.x;
-    Surface s = Surface(vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), FACE_NONE, false);
-    Reservoir r = Reservoir(uvec4(RESERVOIR_EMPTY, 0u, 0u, 0u), vec4(0.0));
-    if (inside) {
-        s = surfaceFrom(gGBuffer[index]);
-        r = resampleCandidates(pixel, s);
+    if (kCandidateVisibility && gRestir.knobs.candidateVisibility != 0u && r.light.x != RESERVOIR_EMPTY) {
+        GpuEmitter e = gEmitters[r.light.x];
+        vec3 toLight;
+        float dist;
+        lightContribution(s, e, r.light.z, unpackUnorm2x16(r.light.w), toLight, dist);
+        if (!lightVisible(s, e, toLight, dist)) r.weights.w = 0.0;
     }
-    if (kCandidateVisibility && gRestir.knobs.candidateVisibility != 0u) {
-        bool test = r.light.x != RESERVOIR_EMPTY;
-        GpuEmitter e;  // read only when test
-        vec3 toLight = vec3(0.0, 0.0, 1.0);
-        float dist = 0.0;
-        if (test) {
-            e = gEmitters[r.light.x];
-            lightContribution(s, e, r.light.z, unpackUnorm2x16(r.light.w), toLight, dist);
-        }
-        if (!lightVisibleSorted(test, s, e, toLight, dist) && test) r.weights.w = 0.0;
-    }
-    if (inside) gOut[index] = r;
+    gOut[index] = r;
 }
