@@ -39,7 +39,7 @@ std::uint64_t GpuDynamicGrid::sync(const world::DynamicGrid& grid, gpu::Uploader
     h.sizeInVoxels = glm::ivec4(g.sizeInVoxels(), 0);
     h.sizeInSuperCells = glm::ivec4(g.sizeInSuperCells(), 0);
     std::size_t words = shared::DYNAMIC_HEADER_TEXELS;  // offsets count texels from the buffer's start
-    h.offsets.x = std::uint32_t(words);
+    h.offsets.x = std::uint32_t(words);  // right after the header: shaders take that for granted
     words = align4(words + supers.size());
     h.offsets.y = std::uint32_t(words);
     words = align4(words + cells.size());

@@ -89,15 +89,18 @@ mat4 dynamicObjectPrevFromCurrent(uint i) {
 }
 
 // The dynamic grid's header, read once per traversal rather than at every step (private to the
-// invocation; set by loadDynamicGrid before any dyn accessor below). Only the parts the
-// accessors use: origin, the three sizes and the offsets (w components and objects left 0).
+// invocation; set by loadDynamicGrid before any dyn accessor below). Every ray of a scene with
+// objects loads it (traceScene), so it takes eight texels, not 24: the other sizes follow from
+// the size in cells by BrickGrid's rules, the super cells start right after the header, and the
+// materials' offset is read at a hit (gridBrickMaterial). w components and objects stay 0.
 DynamicGridHeader gDynHeader;
 void loadDynamicGrid() {
+    ivec3 cells = dynamicTexels3(4u);
     gDynHeader.origin = ivec4(dynamicTexels3(0u), 0);
-    gDynHeader.sizeInCells = ivec4(dynamicTexels3(4u), 0);
-    gDynHeader.sizeInVoxels = ivec4(dynamicTexels3(8u), 0);
-    gDynHeader.sizeInSuperCells = ivec4(dynamicTexels3(12u), 0);
-    gDynHeader.offsets = uvec4(dynamicTexel(16u), dynamicTexel(17u), dynamicTexel(18u), dynamicTexel(19u));
+    gDynHeader.sizeInCells = ivec4(cells, 0);
+    gDynHeader.sizeInVoxels = ivec4(cells * int(BRICK_DIM), 0);
+    gDynHeader.sizeInSuperCells = ivec4((cells + 3) / 4, 0);
+    gDynHeader.offsets = uvec4(DYNAMIC_HEADER_TEXELS, dynamicTexel(17u), dynamicTexel(18u), 0u);
     gDynHeader.objects = uvec4(0u);
 }
 
@@ -160,7 +163,7 @@ uint gridMaskWord(bool dyn, uint brick, uint word) {
 
 uint gridBrickMaterial(bool dyn, uint brick, uint voxelIndex) {
     if (dyn) {
-        uint w = dynamicTexel(gDynHeader.offsets.w + brick * BRICK_MATERIAL_WORDS + (voxelIndex >> 1u));
+        uint w = dynamicTexel(dynamicTexel(19u) + brick * BRICK_MATERIAL_WORDS + (voxelIndex >> 1u));  // header.offsets.w
         return (w >> ((voxelIndex & 1u) * 16u)) & 0xFFFFu;
     }
     return brickMaterial(brick, voxelIndex);

@@ -5,7 +5,8 @@
 // its lanes): DynamicGridHeader (DYNAMIC_HEADER_TEXELS words), then the super cells, top-grid
 // cells, brick masks (BRICK_MASK_WORDS per brick), brick materials (BRICK_MATERIAL_WORDS per
 // brick) and the object table (GpuDynamicObject per object) — each part at the texel offset the
-// header gives, counted from the buffer's start. BrickGridInfo::dynamicGrid.x says whether there
+// header gives, counted from the buffer's start; the super cells come first, at
+// DYNAMIC_HEADER_TEXELS (shaders rely on that and on BrickGrid's size rules, common/world.glsl). BrickGridInfo::dynamicGrid.x says whether there
 // is one. Cell encoding as in brick_grid.h; brick indices count from 0 in this buffer alone.
 #ifndef SHARED_DYNAMIC_GRID_H
 #define SHARED_DYNAMIC_GRID_H
