@@ -17,10 +17,12 @@ GpuDynamicGrid::GpuDynamicGrid(gpu::Context& ctx) : mCtx(ctx) { allocate(0); }
 
 std::uint64_t GpuDynamicGrid::sync(const world::DynamicGrid& grid, gpu::Uploader& uploader) {
     if (mSynced && grid.revision == mRevision) return 0;
-    mSynced = true;
-    mRevision = grid.revision;
-    mPresent = grid.present();
-    if (!mPresent) return 0;
+    if (!grid.present()) {
+        mSynced = true;
+        mRevision = grid.revision;
+        mPresent = false;
+        return 0;
+    }
 
     const world::BrickGrid& g = grid.grid;
     std::span<const std::uint32_t> supers = g.superCells(), cells = g.cells();
@@ -82,6 +84,9 @@ std::uint64_t GpuDynamicGrid::sync(const world::DynamicGrid& grid, gpu::Uploader
         allocate(std::min(std::bit_ceil(bytes), mCtx.info().maxTexelBufferElements * 4u));
     }
     uploader.write(mBuffer, 0, data.data(), bytes);
+    mSynced = true;
+    mRevision = grid.revision;
+    mPresent = true;
     return bytes;
 }
 

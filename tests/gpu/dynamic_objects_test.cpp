@@ -241,4 +241,7 @@ TEST_F(DynamicObjects, AGridOverTheTexelLimitIsRefusedWithItsSize) {
         EXPECT_NE(std::string(e.what()).find(" texels, limit 100000"), std::string::npos) << e.what();
     }
     gpu_testing::context().limitTexelBuffers(0);  // the device's
+    // The refused grid was not taken for uploaded: with the limit back, the next frame sends it.
+    auto again = renderer.render(scene, {"test", {32, 24, -10}, {32, 10, 32}, 60.0f}, frame(32, 32), kPreview);
+    EXPECT_GT(again.upload.dynamicBytes, 0u);
 }
