@@ -4,6 +4,7 @@
 
 #include "core/check.h"
 #include "gpu/context.h"
+#include "gpu/texel_buffer_limit.h"
 #include "gpu/vk_check.h"
 
 namespace engine::gpu {
@@ -78,8 +79,20 @@ void Buffer::write(const void* data, std::uint64_t bytes, std::uint64_t offset) 
     std::memcpy(static_cast<char*>(mMapped) + offset, data, bytes);
 }
 
+namespace {
+std::uint64_t texelBytes(VkFormat format) {
+    switch (format) {
+        case VK_FORMAT_R32_UINT: case VK_FORMAT_R32_SFLOAT: return 4;
+        case VK_FORMAT_R32G32_UINT: case VK_FORMAT_R32G32_SFLOAT: return 8;
+        case VK_FORMAT_R32G32B32A32_UINT: case VK_FORMAT_R32G32B32A32_SFLOAT: return 16;
+        default: CHECK_MSG(false, "texel format %d: size unknown", int(format)); return 0;
+    }
+}
+}  // namespace
+
 void Buffer::setTexelFormat(VkFormat format) {
     CHECK_MSG(mBuffer && !mMapped, "buffer %s: texel views are for storage buffers", mName.c_str());
+    checkTexelCount(*mCtx, mSize / texelBytes(format), "buffer " + mName);
     VkDevice device = mCtx->device();
     if (mView) vkDestroyBufferView(device, mView, nullptr);
     VkBufferViewCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};

@@ -46,7 +46,8 @@ public:
     void write(const void* data, std::uint64_t bytes, std::uint64_t offset = 0);
 
     // Storage buffers only: a view of the whole buffer as texels of `format` (e.g.
-    // VK_FORMAT_R32_UINT), for shaders that read it through a usamplerBuffer.
+    // VK_FORMAT_R32_UINT), for shaders that read it through a usamplerBuffer. Throws
+    // TexelBufferTooLarge (gpu/texel_buffer_limit.h) past the device's maxTexelBufferElements.
     void setTexelFormat(VkFormat format);
     VkBufferView texelView() const { return mView; }
 

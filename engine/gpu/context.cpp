@@ -241,6 +241,9 @@ Status Context::init(const ContextOptions& options) {
     mInfo.type = deviceTypeName(props.deviceType);
     mInfo.timestampPeriodNs = props.limits.timestampPeriod;
     mInfo.maxStorageBufferRange = props.limits.maxStorageBufferRange;
+    mDeviceMaxTexelBufferElements = props.limits.maxTexelBufferElements;
+    mInfo.maxTexelBufferElements = mDeviceMaxTexelBufferElements;
+    if (const char* v = std::getenv("VOX_MAX_TEXELS"); v && *v) limitTexelBuffers(std::strtoull(v, nullptr, 10));
     vkGetPhysicalDeviceMemoryProperties(mPhysicalDevice, &mMemoryProperties);
 
     std::optional<std::uint32_t> family = pickQueueFamily(mPhysicalDevice, mSurface);
@@ -357,6 +360,10 @@ VKAPI_ATTR VkBool32 VKAPI_CALL Context::onValidationMessage(VkDebugUtilsMessageS
         std::fprintf(stderr, "[vulkan validation warning] %s\n", data->pMessage);
     }
     return VK_FALSE;
+}
+
+void Context::limitTexelBuffers(std::uint64_t texels) {
+    mInfo.maxTexelBufferElements = texels == 0 ? mDeviceMaxTexelBufferElements : std::min(texels, mDeviceMaxTexelBufferElements);
 }
 
 }  // namespace engine::gpu

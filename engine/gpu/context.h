@@ -45,6 +45,9 @@ struct DeviceInfo {
     std::string type;  // "discrete GPU", "integrated GPU", "CPU", ...
     double timestampPeriodNs = 1.0;
     std::uint64_t maxStorageBufferRange = 0;
+    // Texels a texel view may hold (gpu/texel_buffer_limit.h checks it): the device's, or lower
+    // where VOX_MAX_TEXELS or Context::limitTexelBuffers asks (tests of the refusal).
+    std::uint64_t maxTexelBufferElements = 0;
 };
 
 class Context {
@@ -69,6 +72,10 @@ public:
     // Validation messages seen so far (errors are also printed to stderr).
     std::uint32_t validationErrors() const { return mValidationErrors.load(); }
     std::uint32_t validationWarnings() const { return mValidationWarnings.load(); }
+
+    // Checks of texel views use min(the device's limit, texels) from now on; 0 restores the
+    // device's limit. For tests of what a world over the limit does.
+    void limitTexelBuffers(std::uint64_t texels);
 
     std::uint32_t findMemoryType(std::uint32_t typeBits, VkMemoryPropertyFlags required,
                                  VkMemoryPropertyFlags preferred) const;
@@ -101,6 +108,7 @@ private:
     VkFence mFence = VK_NULL_HANDLE;
     VkPhysicalDeviceMemoryProperties mMemoryProperties{};
     DeviceInfo mInfo;
+    std::uint64_t mDeviceMaxTexelBufferElements = 0;
     bool mValidation = false;
     bool mDebugUtils = false;
     std::uint64_t mCompletedSubmissions = 0;

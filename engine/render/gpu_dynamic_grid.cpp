@@ -5,18 +5,24 @@
 #include <cstring>
 #include <vector>
 
+#include "gpu/context.h"
+#include "gpu/texel_buffer_limit.h"
 #include "gpu/uploader.h"
 #include "shared/brick_grid.h"
 #include "shared/dynamic_grid.h"
 
 namespace engine::render {
 
+GpuDynamicGrid::GpuDynamicGrid(gpu::Context& ctx) : mCtx(ctx) { allocate(0); }
+
 std::uint64_t GpuDynamicGrid::sync(const world::DynamicGrid& grid, gpu::Uploader& uploader) {
     if (mSynced && grid.revision == mRevision) return 0;
-    mSynced = true;
-    mRevision = grid.revision;
-    mPresent = grid.present();
-    if (!mPresent) return 0;
+    if (!grid.present()) {
+        mSynced = true;
+        mRevision = grid.revision;
+        mPresent = false;
+        return 0;
+    }
 
     const world::BrickGrid& g = grid.grid;
     std::span<const std::uint32_t> supers = g.superCells(), cells = g.cells();
@@ -34,8 +40,8 @@ std::uint64_t GpuDynamicGrid::sync(const world::DynamicGrid& grid, gpu::Uploader
     h.sizeInCells = glm::ivec4(g.sizeInCells(), 0);
     h.sizeInVoxels = glm::ivec4(g.sizeInVoxels(), 0);
     h.sizeInSuperCells = glm::ivec4(g.sizeInSuperCells(), 0);
-    std::size_t words = 0;
-    h.offsets.x = std::uint32_t(words);
+    std::size_t words = shared::DYNAMIC_HEADER_TEXELS;  // offsets count texels from the buffer's start
+    h.offsets.x = std::uint32_t(words);  // right after the header: shaders take that for granted
     words = align4(words + supers.size());
     h.offsets.y = std::uint32_t(words);
     words = align4(words + cells.size());
@@ -47,8 +53,10 @@ std::uint64_t GpuDynamicGrid::sync(const world::DynamicGrid& grid, gpu::Uploader
     h.objects.x = std::uint32_t(words);
     words += grid.instances.size() * (sizeof(shared::GpuDynamicObject) / 4u);
 
-    std::vector<std::uint32_t> data(sizeof(h) / 4u + words, 0u);
-    std::uint32_t* w = data.data() + sizeof(h) / 4u;
+    static_assert(sizeof(h) == shared::DYNAMIC_HEADER_TEXELS * 4u);
+    static_assert(sizeof(shared::GpuDynamicObject) == shared::DYNAMIC_OBJECT_TEXELS * 4u);
+    std::vector<std::uint32_t> data(words, 0u);
+    std::uint32_t* w = data.data();
     std::memcpy(data.data(), &h, sizeof(h));
     std::copy(supers.begin(), supers.end(), w + h.offsets.x);
     std::copy(cellWords.begin(), cellWords.end(), w + h.offsets.y);
@@ -67,14 +75,25 @@ std::uint64_t GpuDynamicGrid::sync(const world::DynamicGrid& grid, gpu::Uploader
         std::memcpy(w + h.objects.x + i * (sizeof(o) / 4u), &o, sizeof(o));
     }
 
+    // One texel view holds it all: refused, with the count, before the GPU copy changes.
+    gpu::checkTexelCount(mCtx, data.size(), "the dynamic objects' grid");
     const std::uint64_t bytes = data.size() * 4u;
-    if (!mBuffer.valid() || mBuffer.size() < bytes) {
-        // Grows by powers of two so an object moving about does not reallocate every frame.
-        mBuffer = gpu::Buffer(mCtx, gpu::BufferKind::Storage, std::max<std::uint64_t>(std::bit_ceil(bytes), 4096),
-                              "world.dynamicGrid");
+    if (mBuffer.size() < bytes) {
+        // Grows by powers of two so an object moving about does not reallocate every frame, up
+        // to the view's limit.
+        allocate(std::min(std::bit_ceil(bytes), mCtx.info().maxTexelBufferElements * 4u));
     }
     uploader.write(mBuffer, 0, data.data(), bytes);
+    mSynced = true;
+    mRevision = grid.revision;
+    mPresent = true;
     return bytes;
+}
+
+void GpuDynamicGrid::allocate(std::uint64_t bytes) {
+    gpu::Buffer bigger(mCtx, gpu::BufferKind::Storage, std::max<std::uint64_t>(bytes, 4096), "world.dynamicGrid");
+    bigger.setTexelFormat(VK_FORMAT_R32_UINT);
+    mBuffer = std::move(bigger);
 }
 
 }  // namespace engine::render

@@ -1,8 +1,9 @@
 // GpuDynamicGrid: the GPU copy of a scene's dynamic grid (world/dynamic_grid.h), one buffer laid
-// out as shaders/shared/dynamic_grid.h says. The grid is small and rebuilt whenever an object
-// moves, so a changed grid is uploaded whole (no dirty tracking); an unchanged one (same
-// revision) costs nothing. Shaders find it through BrickGridInfo::dynamicGrid, which GpuWorld
-// fills with address() — so the world bindings stay as they are.
+// out as shaders/shared/dynamic_grid.h says, read by shaders through its R32_UINT texel view
+// (world binding 4). The grid is small and rebuilt whenever an object moves, so a changed grid is
+// uploaded whole (no dirty tracking); an unchanged one (same revision) costs nothing. Shaders
+// read it only when BrickGridInfo::dynamicGrid.x says it is present(); the binding always holds a
+// buffer, a small unused one when there are no objects.
 #pragma once
 
 #include <cstdint>
@@ -19,16 +20,20 @@ namespace engine::render {
 
 class GpuDynamicGrid {
 public:
-    explicit GpuDynamicGrid(gpu::Context& ctx) : mCtx(ctx) {}
+    explicit GpuDynamicGrid(gpu::Context& ctx);
 
     // Queues the upload if `grid` changed since the last sync; returns the bytes queued.
     std::uint64_t sync(const world::DynamicGrid& grid, gpu::Uploader& uploader);
-    // Device address of the buffer, 0 when there are no objects.
-    std::uint64_t address() const { return mPresent ? mBuffer.deviceAddress() : 0u; }
+    // Whether the last sync had objects (else shaders must not read the buffer).
+    bool present() const { return mPresent; }
+    // The buffer for world binding 4 (a small unused one until there are objects).
+    const gpu::Buffer& buffer() const { return mBuffer; }
     std::uint64_t bytes() const { return mBuffer.valid() ? mBuffer.size() : 0u; }
     void invalidate() { mSynced = false; }
 
 private:
+    void allocate(std::uint64_t bytes);
+
     gpu::Context& mCtx;
     gpu::Buffer mBuffer;
     bool mSynced = false;

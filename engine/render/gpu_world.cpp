@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "gpu/context.h"
+#include "gpu/texel_buffer_limit.h"
 #include "gpu/uploader.h"
 #include "shared/brick_grid.h"
 
@@ -18,6 +19,10 @@ constexpr std::uint64_t kMaterialBytes = shared::BRICK_MATERIAL_WORDS * 4u;
 static_assert(sizeof(world::BrickVoxels) == kMaterialBytes);
 static_assert(sizeof(world::BrickMask) == kMaskBytes);
 
+std::uint32_t pagesFor(std::uint32_t brickCapacity) {
+    return std::max<std::uint32_t>(1, (brickCapacity + shared::BRICK_PAGE_BRICKS - 1) >> shared::BRICK_PAGE_SHIFT);
+}
+
 bool samePalette(const std::vector<shared::GpuMaterial>& a, const std::vector<shared::GpuMaterial>& b) {
     return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(shared::GpuMaterial)) == 0;
 }
@@ -28,6 +33,12 @@ GpuWorld::GpuWorld(gpu::Context& ctx) : mCtx(ctx), mDynamic(ctx) {}
 WorldUploadStats GpuWorld::sync(const world::Scene& scene, gpu::Uploader& uploader) {
     const world::BrickGrid& grid = scene.grid;
     WorldUploadStats stats;
+
+    // The grid texels (below) must fit one texel view: refused before anything is allocated or
+    // changed, so a world over the device's limit leaves the GPU copy as it was.
+    const std::uint64_t pages = std::max<std::uint64_t>(mPages.size(), pagesFor(grid.brickCapacity()));
+    gpu::checkTexelCount(mCtx, grid.cells().size() + grid.superCells().size() + pages * shared::BRICK_PAGE_BRICKS * shared::BRICK_MASK_WORDS,
+                         "world '" + scene.name + "'");
 
     std::vector<shared::GpuMaterial> palette = scene.palette.toGpu();
     if (!samePalette(palette, mUploadedPalette)) {
@@ -98,14 +109,13 @@ WorldUploadStats GpuWorld::sync(const world::Scene& scene, gpu::Uploader& upload
     info.sizeInSuperCells = glm::ivec4(grid.sizeInSuperCells(), 0);
     info.counts = glm::uvec4(grid.liveBricks(), static_cast<std::uint32_t>(mPages.size()),
                              static_cast<std::uint32_t>(scene.palette.size()), 0u);
-    const std::uint64_t dynamicAddress = mDynamic.address();
-    info.dynamicGrid = glm::uvec4(std::uint32_t(dynamicAddress), std::uint32_t(dynamicAddress >> 32), 0u, 0u);
+    info.dynamicGrid = glm::uvec4(mDynamic.present() ? 1u : 0u, 0u, 0u, 0u);
     uploader.write(mInfo, 0, &info, sizeof(info));
     return stats;
 }
 
 void GpuWorld::ensurePages(std::uint32_t brickCapacity, gpu::Uploader& uploader) {
-    std::uint32_t needed = std::max<std::uint32_t>(1, (brickCapacity + shared::BRICK_PAGE_BRICKS - 1) >> shared::BRICK_PAGE_SHIFT);
+    std::uint32_t needed = pagesFor(brickCapacity);
     if (needed <= mPages.size() && mPageTable.valid()) return;
     std::uint64_t tableBytes = std::uint64_t(needed) * sizeof(std::uint64_t);
     if (!mPageTable.valid() || mPageTable.size() < tableBytes) {

@@ -1,4 +1,4 @@
-// GpuWorld: the GPU mirror of a Scene's BrickGrid and palette (world bindings 0-3 of every
+// GpuWorld: the GPU mirror of a Scene's BrickGrid, palette and dynamic grid (world bindings 0-4 of every
 // ray-tracing shader, see shaders/shared/bindings.h).
 //
 // The first sync uploads everything; later syncs upload only the bricks and top-grid cells the
@@ -57,6 +57,7 @@ public:
     const gpu::Buffer& cells() const { return mCells; }
     const gpu::Buffer& pageTable() const { return mPageTable; }
     const gpu::Buffer& palette() const { return mPalette; }
+    const gpu::Buffer& dynamicGridTexels() const { return mDynamic.buffer(); }
     const GpuDynamicGrid& dynamicGrid() const { return mDynamic; }
     GpuWorldMemory memory() const;
 
@@ -69,7 +70,7 @@ private:
     gpu::Buffer mInfo, mCells, mPageTable, mPalette;
     std::vector<gpu::Buffer> mPages;
     std::vector<shared::GpuMaterial> mUploadedPalette;
-    GpuDynamicGrid mDynamic;  // scene.dynamic, reached through the info's device address
+    GpuDynamicGrid mDynamic;  // scene.dynamic, world binding 4
 };
 
 }  // namespace engine::render

@@ -52,8 +52,8 @@ bool leaveBlock(inout ivec3 v, inout vec3 tNext, vec3 tDelta, ivec3 lo, int s, b
     return !(best > tExit || c < 0 || c >= n);
 }
 
+// With dyn, the caller has called loadDynamicGrid (traceDynamic, which needs the origin first).
 TraceResult traceGrid(vec3 o, vec3 d, float tMax, bool hierarchical, bool dyn) {
-    if (dyn) loadDynamicGrid();
     const ivec3 size = gridSizeInVoxels(dyn);
 
     if (d == vec3(0.0)) return traceMiss(0u);

@@ -1,4 +1,4 @@
-// The emitter list (bindings 4-7) and the light-sampling maths shared by ReSTIR, the
+// The emitter list (bindings 5-8) and the light-sampling maths shared by ReSTIR, the
 // light-sampling baselines and the reference path tracer. Lights are axis-aligned cubes (a voxel
 // or an 8^3 brick light) whose exposed faces emit radiance Le.
 #ifndef COMMON_EMITTERS_GLSL

@@ -35,7 +35,8 @@ float faceHitT(vec3 o, vec3 d, ivec3 voxel, uint face) {
 // Dynamic grid only; voxel in world coordinates (grid-local + origin).
 SceneHit traceDynamic(vec3 o, vec3 d, float tMax) {
     if (!dynamicGridPresent()) return sceneHitFrom(traceMiss(0u), ivec3(0), false);
-    ivec3 origin = dynamicGrid().header.origin.xyz;
+    loadDynamicGrid();
+    ivec3 origin = gDynHeader.origin.xyz;
     precise vec3 local = o - vec3(origin);
     return sceneHitFrom(traceGrid(local, d, tMax, true, true), origin, true);
 }
@@ -65,11 +66,9 @@ uint dynamicVoxelMaterial(ivec3 v) {
 // The object whose bounds hold world voxel v (the first, where bounds overlap); -1 if none.
 int dynamicObjectAt(ivec3 v) {
     if (!dynamicGridPresent()) return -1;
-    uint count = uint(dynamicGrid().header.origin.w);
-    DynamicObjectTable table = dynamicObjects();
+    uint count = dynamicObjectCount();
     for (uint i = 0u; i < count; ++i) {
-        GpuDynamicObject o = table.objects[i];
-        if (all(greaterThanEqual(v, o.boundsMin.xyz)) && all(lessThan(v, o.boundsMax.xyz))) return int(i);
+        if (all(greaterThanEqual(v, dynamicObjectBoundsMin(i))) && all(lessThan(v, dynamicObjectBoundsMax(i)))) return int(i);
     }
     return -1;
 }

@@ -1,5 +1,5 @@
-// World resources (set 0, bindings 0-3) and voxel/brick accessors. Layouts: shared/brick_grid.h.
-// The dynamic grid (shared/dynamic_grid.h) is reached by the device address in the world info.
+// World resources (set 0, bindings 0-4) and voxel/brick accessors. Layouts: shared/brick_grid.h.
+// The dynamic grid (shared/dynamic_grid.h) is binding 4, read as texels like the static grid.
 // The grid* accessors take a `dyn` flag that is a constant at every call site, so after
 // inlining the compiler keeps one branch: the static path reads exactly what it always did.
 #ifndef COMMON_WORLD_GLSL
@@ -14,13 +14,6 @@
 #include "shared/material.h"
 
 layout(buffer_reference, std430, buffer_reference_align = 4) readonly buffer BrickPage { uint words[]; };
-layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer DynamicGridBuffer {
-    DynamicGridHeader header;
-    uint words[];
-};
-layout(buffer_reference, std430, buffer_reference_align = 16) readonly buffer DynamicObjectTable {
-    GpuDynamicObject objects[];
-};
 
 layout(set = 0, binding = WORLD_BINDING_INFO, std430) readonly buffer WorldInfoBuffer { BrickGridInfo gWorld; };
 // The top grid's cells, then its super cells (skip distance per 4^3 cells, 0: occupied; see
@@ -31,6 +24,9 @@ layout(set = 0, binding = WORLD_BINDING_INFO, std430) readonly buffer WorldInfoB
 layout(set = 0, binding = WORLD_BINDING_CELLS) uniform usamplerBuffer gGridTexels;
 layout(set = 0, binding = WORLD_BINDING_PAGES) uniform usamplerBuffer gPageTexels;
 layout(set = 0, binding = WORLD_BINDING_PALETTE, std430) readonly buffer PaletteBuffer { GpuMaterial gMaterials[]; };
+// The dynamic grid: header, super cells, cells, masks, materials, object table (dynamic_grid.h),
+// as texels for the same reason; bound always, read only when dynamicGridPresent().
+layout(set = 0, binding = WORLD_BINDING_DYNAMIC) uniform usamplerBuffer gDynamicTexels;
 
 // Where the super cells start among the grid texels: after the cells.
 uint superCellBase(ivec3 sizeInCells) { return uint(sizeInCells.x) * uint(sizeInCells.y) * uint(sizeInCells.z); }
@@ -69,25 +65,43 @@ uint brickMaterial(uint brick, uint voxelIndex) {
     return (word >> ((voxelIndex & 1u) * 16u)) & 0xFFFFu;
 }
 
-bool dynamicGridPresent() { return gWorld.dynamicGrid.x != 0u || gWorld.dynamicGrid.y != 0u; }
+bool dynamicGridPresent() { return gWorld.dynamicGrid.x != 0u; }
 
-uint64_t dynamicGridAddress() { return uint64_t(gWorld.dynamicGrid.x) | (uint64_t(gWorld.dynamicGrid.y) << 32); }
+uint dynamicTexel(uint i) { return texelFetch(gDynamicTexels, int(i)).x; }
 
-// Only when dynamicGridPresent().
-DynamicGridBuffer dynamicGrid() { return DynamicGridBuffer(dynamicGridAddress()); }
+ivec3 dynamicTexels3(uint i) { return ivec3(dynamicTexel(i), dynamicTexel(i + 1u), dynamicTexel(i + 2u)); }
 
-DynamicObjectTable dynamicObjects() {
-    DynamicGridBuffer g = dynamicGrid();
-    return DynamicObjectTable(dynamicGridAddress() + 96ul + 4ul * uint64_t(g.header.objects.x));
+// Only when dynamicGridPresent(): the object count and object i's bounds and motion.
+uint dynamicObjectCount() { return dynamicTexel(3u); }  // header.origin.w
+
+uint dynamicObjectBase(uint i) { return dynamicTexel(20u) + i * DYNAMIC_OBJECT_TEXELS; }  // header.objects.x
+
+ivec3 dynamicObjectBoundsMin(uint i) { return dynamicTexels3(dynamicObjectBase(i)); }
+
+ivec3 dynamicObjectBoundsMax(uint i) { return dynamicTexels3(dynamicObjectBase(i) + 4u); }
+
+mat4 dynamicObjectPrevFromCurrent(uint i) {
+    uint base = dynamicObjectBase(i) + 8u;
+    mat4 m;
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) m[c][r] = uintBitsToFloat(dynamicTexel(base + uint(4 * c + r)));
+    return m;
 }
 
-// The dynamic grid's buffer and header, read once per traversal rather than at every step
-// (private to the invocation; set by loadDynamicGrid before any dyn accessor below).
-DynamicGridBuffer gDyn;
+// The dynamic grid's header, read once per traversal rather than at every step (private to the
+// invocation; set by loadDynamicGrid before any dyn accessor below). Every ray of a scene with
+// objects loads it (traceScene), so it takes eight texels, not 24: the other sizes follow from
+// the size in cells by BrickGrid's rules, the super cells start right after the header, and the
+// materials' offset is read at a hit (gridBrickMaterial). w components and objects stay 0.
 DynamicGridHeader gDynHeader;
 void loadDynamicGrid() {
-    gDyn = dynamicGrid();
-    gDynHeader = gDyn.header;
+    ivec3 cells = dynamicTexels3(4u);
+    gDynHeader.origin = ivec4(dynamicTexels3(0u), 0);
+    gDynHeader.sizeInCells = ivec4(cells, 0);
+    gDynHeader.sizeInVoxels = ivec4(cells * int(BRICK_DIM), 0);
+    gDynHeader.sizeInSuperCells = ivec4((cells + 3) / 4, 0);
+    gDynHeader.offsets = uvec4(DYNAMIC_HEADER_TEXELS, dynamicTexel(17u), dynamicTexel(18u), 0u);
+    gDynHeader.objects = uvec4(0u);
 }
 
 // The same accessors over either grid (grid-local coordinates).
@@ -112,13 +126,13 @@ ivec3 gridSizeInCells(bool dyn) {
 // `base`: superCellBase of the static grid's size in cells (unused for the dynamic grid).
 uint gridSuperCellIn(bool dyn, ivec3 n, uint base, ivec3 s) {
     uint i = uint(s.x) + uint(n.x) * (uint(s.y) + uint(n.y) * uint(s.z));
-    if (dyn) return gDyn.words[gDynHeader.offsets.x + i];
+    if (dyn) return dynamicTexel(gDynHeader.offsets.x + i);
     return texelFetch(gGridTexels, int(base + i)).x;
 }
 
 uint gridCellIn(bool dyn, ivec3 n, ivec3 cell) {
     uint i = uint(cell.x) + uint(n.x) * (uint(cell.y) + uint(n.y) * uint(cell.z));
-    if (dyn) return gDyn.words[gDynHeader.offsets.y + i];
+    if (dyn) return dynamicTexel(gDynHeader.offsets.y + i);
     return texelFetch(gGridTexels, int(i)).x;
 }
 
@@ -136,20 +150,20 @@ uint gridBrickMaskIndex(bool dyn, uint base, uint brick) {
 }
 
 uint gridMaskWordAt(bool dyn, uint index) {
-    if (dyn) return gDyn.words[index];
+    if (dyn) return dynamicTexel(index);
     return texelFetch(gGridTexels, int(index)).x;
 }
 
 uint gridMaskWord(bool dyn, uint brick, uint word) {
     if (dyn) {
-        return gDyn.words[gDynHeader.offsets.z + brick * BRICK_MASK_WORDS + word];
+        return dynamicTexel(gDynHeader.offsets.z + brick * BRICK_MASK_WORDS + word);
     }
     return brickMaskWord(brick, word);
 }
 
 uint gridBrickMaterial(bool dyn, uint brick, uint voxelIndex) {
     if (dyn) {
-        uint w = gDyn.words[gDynHeader.offsets.w + brick * BRICK_MATERIAL_WORDS + (voxelIndex >> 1u)];
+        uint w = dynamicTexel(dynamicTexel(19u) + brick * BRICK_MATERIAL_WORDS + (voxelIndex >> 1u));  // header.offsets.w
         return (w >> ((voxelIndex & 1u) * 16u)) & 0xFFFFu;
     }
     return brickMaterial(brick, voxelIndex);

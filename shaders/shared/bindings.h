@@ -1,6 +1,7 @@
-// Descriptor bindings every ray-tracing pass shares: the world (set 0, bindings 0-3).
+// Descriptor bindings every ray-tracing pass shares: the world (set 0, bindings 0-4).
 // A pass's own buffers start at PASS_BINDING_FIRST. Bindings are storage buffers, but for those a
-// shader declares usamplerBuffer (uniform texel buffers: top grid, page and alias tables). Passes
+// shader declares usamplerBuffer (uniform texel buffers: top grid, page table, dynamic grid,
+// alias table). Passes
 // number their own in their technique's header (restir.h, light_sampling.h, reference.h, ...);
 // the passes every method shares, here. C++ binds by these numbers (render/passes/compute_pass.h).
 #ifndef SHARED_BINDINGS_H
@@ -13,16 +14,17 @@ SHARED_CONST uint WORLD_BINDING_INFO = 0u;     // BrickGridInfo
 SHARED_CONST uint WORLD_BINDING_CELLS = 1u;    // uint per top-grid cell, then per super cell
 SHARED_CONST uint WORLD_BINDING_PAGES = 2u;    // uint64 device address per brick page (uvec2 texels)
 SHARED_CONST uint WORLD_BINDING_PALETTE = 3u;  // GpuMaterial per material id
-SHARED_CONST uint WORLD_BINDING_COUNT = 4u;
-SHARED_CONST uint PASS_BINDING_FIRST = 4u;
+SHARED_CONST uint WORLD_BINDING_DYNAMIC = 4u;  // the dynamic grid (dynamic_grid.h), uint texels
+SHARED_CONST uint WORLD_BINDING_COUNT = 5u;
+SHARED_CONST uint PASS_BINDING_FIRST = 5u;
 
-// Passes that sample lights add the emitter list after the world (bindings 4-7) and start their
+// Passes that sample lights add the emitter list after the world (bindings 5-8) and start their
 // own buffers at LIT_PASS_BINDING_FIRST.
-SHARED_CONST uint LIGHTS_BINDING_INFO = 4u;      // EmitterListInfo
-SHARED_CONST uint LIGHTS_BINDING_EMITTERS = 5u;  // GpuEmitter per slot
-SHARED_CONST uint LIGHTS_BINDING_ALIVE = 6u;     // uint slot per alive emitter
-SHARED_CONST uint LIGHTS_BINDING_ALIAS = 7u;     // AliasEntry per alive emitter
-SHARED_CONST uint LIT_PASS_BINDING_FIRST = 8u;
+SHARED_CONST uint LIGHTS_BINDING_INFO = 5u;      // EmitterListInfo
+SHARED_CONST uint LIGHTS_BINDING_EMITTERS = 6u;  // GpuEmitter per slot
+SHARED_CONST uint LIGHTS_BINDING_ALIVE = 7u;     // uint slot per alive emitter
+SHARED_CONST uint LIGHTS_BINDING_ALIAS = 8u;     // AliasEntry per alive emitter
+SHARED_CONST uint LIT_PASS_BINDING_FIRST = 9u;
 
 // Own bindings of the passes every method shares.
 // world/primary_rays.comp

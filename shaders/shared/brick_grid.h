@@ -54,7 +54,7 @@ struct BrickGridInfo {
     ivec4 sizeInVoxels;  // xyz: sizeInCells * 8
     ivec4 sizeInSuperCells;  // xyz: ceil(sizeInCells / 4)
     uvec4 counts;        // x: allocated bricks, y: pages, z: materials, w: unused
-    uvec4 dynamicGrid;   // xy: device address (low, high) of the dynamic grid (dynamic_grid.h), 0 = none
+    uvec4 dynamicGrid;   // x: 1 when the scene has a dynamic grid (world binding 4, dynamic_grid.h), else 0; yzw unused
 };
 SHARED_ASSERT_SIZE(BrickGridInfo, 80);
 

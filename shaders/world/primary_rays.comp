@@ -33,7 +33,7 @@ void main() {
         vec3 prevPosition = position;
         if (hit.dynamicSet) {
             int object = dynamicObjectAt(hit.voxel);
-            if (object >= 0) prevPosition = (dynamicObjects().objects[object].prevFromCurrent * vec4(position, 1.0)).xyz;
+            if (object >= 0) prevPosition = (dynamicObjectPrevFromCurrent(uint(object)) * vec4(position, 1.0)).xyz;
         }
         vec3 rel = prevPosition - gFrame.prevCameraPosition.xyz;
         float z = dot(rel, gFrame.prevCameraForward.xyz);

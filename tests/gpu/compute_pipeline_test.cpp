@@ -1,6 +1,6 @@
 // gpu::ComputePipeline reads each binding's descriptor type from the shader's SPIR-V: the world's
-// cell and page-table reads are texel fetches (usamplerBuffer), so those bindings must be uniform
-// texel buffers and every other binding stays a storage buffer.
+// cell, page-table and dynamic-grid reads are texel fetches (usamplerBuffer), so those bindings
+// must be uniform texel buffers and every other binding stays a storage buffer.
 #include <gtest/gtest.h>
 
 #include "gpu/compute_pipeline.h"
@@ -19,7 +19,7 @@ TEST_F(ComputePipelineBindings, TypesFollowTheShaderDeclarations) {
     const std::vector<VkDescriptorType>& types = trace.bindingTypes();
     ASSERT_EQ(types.size(), count);
     for (std::uint32_t b = 0; b < count; ++b) {
-        const bool texel = b == shared::WORLD_BINDING_CELLS || b == shared::WORLD_BINDING_PAGES;
+        const bool texel = b == shared::WORLD_BINDING_CELLS || b == shared::WORLD_BINDING_PAGES || b == shared::WORLD_BINDING_DYNAMIC;
         EXPECT_EQ(types[b], texel ? VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER)
             << "binding " << b;
     }

@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "gpu/gpu_test_setup.h"
+#include "gpu/texel_buffer_limit.h"
 #include "world/random_worlds.h"
 #include "scene/scene_file.h"
 #include "world/scene_trace.h"
@@ -218,4 +219,29 @@ TEST_F(DynamicObjects, ShippedWorldsRenderWithTheirObjects) {
         }
         EXPECT_GT(dynamicPixels, 0) << name << ": its objects are in view of its first camera";
     }
+}
+
+// The dynamic grid is one texel view too: objects whose grid would not fit it are refused with
+// the count and the device's limit (lowered for the test below the objects' grid, above the
+// static floor's texels).
+TEST_F(DynamicObjects, AGridOverTheTexelLimitIsRefusedWithItsSize) {
+    Scene scene = floorScene();
+    DynamicObject o = makeObject({64, 40, 64}, 5);
+    o.path = ObjectPath({{0.0, {32, 30, 32}, rotationFromYawPitchRoll({0, 0, 0})}}, false);
+    scene.objects.push_back(std::move(o));
+    Renderer renderer(gpu_testing::context());
+    gpu_testing::context().limitTexelBuffers(100000);
+    try {
+        renderer.render(scene, {"test", {32, 24, -10}, {32, 10, 32}, 60.0f}, frame(32, 32), kPreview);
+        ADD_FAILURE() << "no error";
+    } catch (const engine::gpu::TexelBufferTooLarge& e) {
+        EXPECT_NE(std::string(e.what()).find("the dynamic objects' grid too large for the GPU's texel buffer: "),
+                  std::string::npos)
+            << e.what();
+        EXPECT_NE(std::string(e.what()).find(" texels, limit 100000"), std::string::npos) << e.what();
+    }
+    gpu_testing::context().limitTexelBuffers(0);  // the device's
+    // The refused grid was not taken for uploaded: with the limit back, the next frame sends it.
+    auto again = renderer.render(scene, {"test", {32, 24, -10}, {32, 10, 32}, 60.0f}, frame(32, 32), kPreview);
+    EXPECT_GT(again.upload.dynamicBytes, 0u);
 }

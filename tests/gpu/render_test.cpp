@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "core/memory_budget.h"
+#include "gpu/texel_buffer_limit.h"
 #include "gpu/gpu_test_setup.h"
 #include "io/image_io.h"
 #include "world/random_worlds.h"
@@ -107,6 +108,35 @@ TEST_F(Render, AWorldOverTheMemoryBudgetIsRefusedBeforeItsGpuCopy) {
         },
         engine::MemoryBudgetExceeded);
     engine::setMemoryBudgetBytes(0);  // the default
+    auto result = renderer.render(scene, scene.camera(), settings, kPreview);
+    EXPECT_TRUE(result.upload.full);
+}
+
+// A world whose grid texels (cells, super cells, brick masks) would not fit one texel view is
+// refused with its count and the device's limit before its GPU copy changes, and the renderer
+// stays usable for a world that fits (the limit lowered for the test: a world over lavapipe's
+// 2^27 texels takes gigabytes).
+TEST_F(Render, AWorldOverTheTexelLimitIsRefusedWithItsSize) {
+    Scene scene = loadWorld("sandbox.toml");
+    const FrameSettings settings = frame(64, 48);
+    engine::render::Renderer renderer(gpu_testing::context());
+    gpu_testing::context().limitTexelBuffers(50000);
+    EXPECT_THROW(
+        {
+            try {
+                renderer.render(scene, scene.camera(), settings, kPreview);
+            } catch (const engine::gpu::TexelBufferTooLarge& e) {
+                const std::string texels = std::to_string(scene.grid.cells().size() + scene.grid.superCells().size() +
+                                                          4096 * 20 * ((scene.grid.brickCapacity() + 4095) / 4096));
+                EXPECT_NE(std::string(e.what()).find("world 'sandbox' too large for the GPU's texel buffer: " + texels +
+                                                     " texels, limit 50000"),
+                          std::string::npos)
+                    << e.what();
+                throw;
+            }
+        },
+        engine::gpu::TexelBufferTooLarge);
+    gpu_testing::context().limitTexelBuffers(0);  // the device's
     auto result = renderer.render(scene, scene.camera(), settings, kPreview);
     EXPECT_TRUE(result.upload.full);
 }

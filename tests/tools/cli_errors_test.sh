@@ -49,6 +49,9 @@ expect_error "cut.vox: offset 12:" -- "$vox" render "$tmp/cut.vox" -o "$tmp/a.pn
 expect_error "model.dat: not a scene file \(binary data; a TOML scene file, a .vdb or a .vox file was expected" -- "$vox" info "$tmp/model.dat"
 expect_error "afile/w.vox: cannot write: '.*afile' is not a folder" -- "$vox" export cornell -o "$tmp/afile/w.vox"
 expect_error "the file must end in .vdb or .vox" -- "$vox" export cornell -o "$tmp/w.obj"
+# A world over the device's texel-view limit (lowered here: lavapipe's 2^27 takes gigabytes).
+expect_error "^vox: world 'cornell' too large for the GPU's texel buffer: [0-9]+ texels, limit 50000 " -- \
+    env VOX_MAX_TEXELS=50000 "$vox" render cornell --size 8x8 -o "$tmp/a.png"
 
 out=$("$vox" render --size 64x40 -o "$tmp/ok.png" 2>&1); rc=$?
 if [ $rc -ne 0 ] || ! grep -q "wrote    $tmp/ok.png" <<<"$out" || [ "$(head -c 4 "$tmp/ok.png" | tail -c 3)" != "PNG" ]; then

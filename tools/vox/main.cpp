@@ -9,6 +9,7 @@
 #include "core/log.h"
 #include "core/memory_budget.h"
 #include "core/symbol_table_pages.h"
+#include "gpu/texel_buffer_limit.h"
 #include "generator_progress.h"
 #include "io/vdb_import.h"
 #include "io/vox_import.h"
@@ -138,6 +139,9 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const engine::MemoryBudgetExceeded& e) {
+        std::fprintf(stderr, "vox: %s\n", e.what());
+        return 1;
+    } catch (const engine::gpu::TexelBufferTooLarge& e) {
         std::fprintf(stderr, "vox: %s\n", e.what());
         return 1;
     } catch (const std::bad_alloc&) {

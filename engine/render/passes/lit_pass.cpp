@@ -11,7 +11,7 @@ LitPass::LitPass(gpu::Context& ctx, std::string name, const std::string& shader,
 
 void LitPass::record(gpu::CommandList& cmd, const SceneBindings& scene, std::span<const PassBinding> own,
                      glm::uvec2 groups) {
-    const std::array<PassBinding, 8> first = sceneBindings(scene);
+    const auto first = sceneBindings(scene);
     std::vector<PassBinding> bindings(first.begin(), first.end());
     bindings.insert(bindings.end(), own.begin(), own.end());
     mPass.record(cmd, bindings, groups);

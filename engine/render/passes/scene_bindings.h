@@ -16,7 +16,7 @@ struct SceneBindings {
     const GpuEmitterList& lights;
 };
 
-std::array<PassBinding, 4> worldBindings(const GpuWorld& world);
-std::array<PassBinding, 8> sceneBindings(const SceneBindings& scene);  // world, then emitter list
+std::array<PassBinding, 5> worldBindings(const GpuWorld& world);
+std::array<PassBinding, 9> sceneBindings(const SceneBindings& scene);  // world, then emitter list
 
 }  // namespace engine::render
