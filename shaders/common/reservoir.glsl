@@ -27,11 +27,11 @@ float targetAt(Surface s, Reservoir r) {
     if (!s.valid || !emitterCurrent(r.light.x, r.light.y)) return 0.0;
     vec3 toLight;
     float dist;
-    return luminance(lightContribution(s, gEmitters[r.light.x], r.light.z, unpackUnorm2x16(r.light.w), toLight, dist));
+    return luminance(lightContribution(s, loadEmitter(r.light.x), r.light.z, unpackUnorm2x16(r.light.w), toLight, dist));
 }
 
 bool visibleAt(Surface s, Reservoir r) {
-    GpuEmitter e = gEmitters[r.light.x];
+    GpuEmitter e = loadEmitter(r.light.x);
     vec3 toLight;
     float dist;
     vec3 f = lightContribution(s, e, r.light.z, unpackUnorm2x16(r.light.w), toLight, dist);

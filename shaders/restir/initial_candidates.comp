@@ -60,7 +60,7 @@ void main() {
             RegirEntry entry = grid.entries[cellEntries + min(uint(rngNext(rng) * float(REGIR_CELL_ENTRIES)), REGIR_CELL_ENTRIES - 1u)];
             if (entry.slot == RESERVOIR_EMPTY) continue;  // no light reaches this cell: a zero-weight candidate
             slot = entry.slot;
-            e = gEmitters[slot];
+            e = loadEmitter(slot);
             pdf = 1.0 / entry.weight;
         } else if (tiles) {
             LightTileSample t = lightTileSample(gFrame, lightTileRunEntry(run, i));
@@ -69,7 +69,7 @@ void main() {
             pdf = t.radiance.w;
         } else {
             pickEmitter(rng, byPower, slot);
-            e = gEmitters[slot];
+            e = loadEmitter(slot);
             pdf = emitterPdf(slot, byPower);
         }
         uint face = LIGHT_FACE_CENTRE;
@@ -95,7 +95,7 @@ void main() {
     r.weights = vec4(chosenTarget > 0.0 ? wSum / (float(candidates) * chosenTarget) : 0.0, float(candidates),
                      chosenTarget, 1.0);
     if (kCandidateVisibility && gRestir.knobs.candidateVisibility != 0u && r.light.x != RESERVOIR_EMPTY) {
-        GpuEmitter e = gEmitters[r.light.x];
+        GpuEmitter e = loadEmitter(r.light.x);
         vec3 toLight;
         float dist;
         lightContribution(s, e, r.light.z, unpackUnorm2x16(r.light.w), toLight, dist);

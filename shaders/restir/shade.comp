@@ -32,7 +32,7 @@ void main() {
         radiance += sunLight(s, gFrame);
         Reservoir r = gFinal[index];
         if (emitterCurrent(r.light.x, r.light.y) && r.weights.x > 0.0) {
-            GpuEmitter e = gEmitters[r.light.x];
+            GpuEmitter e = loadEmitter(r.light.x);
             vec3 toLight;
             float dist;
             vec3 f = lightContribution(s, e, r.light.z, unpackUnorm2x16(r.light.w), toLight, dist);

@@ -25,12 +25,13 @@ TEST_F(ComputePipelineBindings, TypesFollowTheShaderDeclarations) {
     }
 }
 
-TEST_F(ComputePipelineBindings, LightPassesReadTheAliasTableAsTexels) {
+TEST_F(ComputePipelineBindings, LightPassesReadTheEmittersAndAliasTableAsTexels) {
     const std::uint32_t count = shared::LIGHT_SAMPLING_BINDING_RADIANCE + 1u;
     engine::gpu::ComputePipeline lit(context(), "baselines/light_sampling", count);
     const std::vector<VkDescriptorType>& types = lit.bindingTypes();
     EXPECT_EQ(types[shared::LIGHTS_BINDING_ALIAS], VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER);
-    EXPECT_EQ(types[shared::LIGHTS_BINDING_EMITTERS], VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+    EXPECT_EQ(types[shared::LIGHTS_BINDING_EMITTERS], VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER);
+    EXPECT_EQ(types[shared::LIGHTS_BINDING_ALIVE], VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
     EXPECT_EQ(types[shared::WORLD_BINDING_INFO], VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
 }
 
