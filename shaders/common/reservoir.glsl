@@ -6,6 +6,13 @@
 
 Reservoir emptyReservoir() { return Reservoir(uvec4(RESERVOIR_EMPTY, 0u, 0u, 0u), vec4(0.0)); }
 
+// A Reservoir from an R32G32B32A32_UINT view of a reservoir buffer, two texels per pixel: passes
+// that only read a reservoir buffer fetch texels (see loadGBuffer in common/surface.glsl).
+Reservoir loadReservoir(usamplerBuffer texels, uint i) {
+    int t = int(i) * 2;
+    return Reservoir(texelFetch(texels, t), uintBitsToFloat(texelFetch(texels, t + 1)));
+}
+
 bool reservoirHasLight(Reservoir r) { return r.light.x != RESERVOIR_EMPTY; }
 
 // The reservoir as its own pixel reuses it: a sample the candidate pass found occluded here loses

@@ -18,14 +18,14 @@ layout(constant_id = FEATURE_CANDIDATE_VISIBILITY) const bool kCandidateVisibili
 
 layout(set = 0, binding = RESTIR_BINDING_FRAME, std430) readonly buffer Params { FrameParams gFrame; };
 layout(set = 0, binding = RESTIR_BINDING_PARAMS, std430) readonly buffer Restir { RestirParams gRestir; };
-layout(set = 0, binding = RESTIR_BINDING_GBUFFER, std430) readonly buffer GBuffer { GBufferTexel gGBuffer[]; };
+layout(set = 0, binding = RESTIR_BINDING_GBUFFER) uniform usamplerBuffer gGBuffer;  // loadGBuffer
 layout(set = 0, binding = RESTIR_INITIAL_BINDING_OUT, std430) writeonly buffer Out { Reservoir gOut[]; };
 
 void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;
     if (any(greaterThanEqual(pixel, gFrame.imageSize.xy))) return;
     uint index = pixel.x + pixel.y * gFrame.imageSize.x;
-    Surface s = surfaceFrom(gGBuffer[index]);
+    Surface s = surfaceFrom(loadGBuffer(gGBuffer, index));
     Reservoir r = Reservoir(uvec4(RESERVOIR_EMPTY, 0u, 0u, 0u), vec4(0.0));
     uint candidates = gRestir.knobs.candidates;
     if (!s.valid || gLights.counts.x == 0u || candidates == 0u) {
