@@ -23,6 +23,7 @@ EmitterUploadStats GpuEmitterList::sync(lighting::EmitterList& list, gpu::Upload
     bool grown = false;
     std::span<const shared::GpuEmitter> slots = list.slots();
     ensure(mEmitters, slots.size_bytes(), "lights.emitters", grown);
+    if (!mEmitters.texelView()) mEmitters.setTexelFormat(VK_FORMAT_R32G32B32A32_UINT);  // GpuEmitter: 3 texels
     if (grown) {
         // A new buffer: every slot, once.
         uploader.write(mEmitters, 0, slots.data(), slots.size_bytes());

@@ -89,6 +89,11 @@ void Renderer::resize(std::uint32_t width, std::uint32_t height) {
     }
     mCandidates = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(shared::Reservoir), "restir.candidates");
     mOwnReservoirs = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(shared::Reservoir), "restir.own");
+    // Passes that only read these fetch them as uvec4 texels (loadGBuffer, loadReservoir): one gather
+    // per 16 B on lavapipe, where a storage-buffer read at a lane-varying index loops over the lanes.
+    for (gpu::Buffer* b : {&mGBuffers[0], &mGBuffers[1], &mFinalReservoirs[0], &mFinalReservoirs[1], &mCandidates, &mOwnReservoirs}) {
+        b->setTexelFormat(VK_FORMAT_R32G32B32A32_UINT);
+    }
     mAccumulation = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(glm::vec4), "reference.accumulation");
     mRadiance = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(glm::vec4), "frame.radiance");
     mLdr = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(std::uint32_t), "frame.ldr");

@@ -16,7 +16,7 @@ layout(set = 0, binding = LIGHT_SAMPLING_BINDING_RADIANCE, std430) writeonly buf
 
 // One sample of emitter `slot` chosen with probability `emitterProbability`: f V / p.
 vec3 sampleEmitter(Surface s, uint slot, float emitterProbability, bool area, inout uint rng) {
-    GpuEmitter e = gEmitters[slot];
+    GpuEmitter e = loadEmitter(slot);
     uint face = LIGHT_FACE_CENTRE;
     vec2 uv = vec2(0.5);
     float pdf = emitterProbability;

@@ -22,7 +22,7 @@ vec3 directLightSampled(Surface s, FrameParams frame, inout uint rng, bool misWi
     vec3 direct = sunLight(s, frame);
     uint slot;
     if (!pickEmitter(rng, true, slot)) return direct;
-    GpuEmitter e = gEmitters[slot];
+    GpuEmitter e = loadEmitter(slot);
     uint face;
     float side = float(e.minCorner.w);
     float pdf = emitterPdf(slot, true) * pickFace(e, s.position, rngNext(rng), face) / (side * side);

@@ -11,7 +11,9 @@
 #include "shared/shader_features.h"
 
 layout(set = 0, binding = LIGHTS_BINDING_INFO, std430) readonly buffer LightInfoBuffer { EmitterListInfo gLights; };
-layout(set = 0, binding = LIGHTS_BINDING_EMITTERS, std430) readonly buffer EmitterBuffer { GpuEmitter gEmitters[]; };
+// GpuEmitter per slot as three uvec4 texels (loadEmitter): candidates read emitters at lane-varying
+// slots, which as storage-buffer reads would be a loop over the SIMD lanes each.
+layout(set = 0, binding = LIGHTS_BINDING_EMITTERS) uniform usamplerBuffer gEmitterTexels;
 layout(set = 0, binding = LIGHTS_BINDING_ALIVE, std430) readonly buffer AliveBuffer { uint gAlive[]; };
 // AliasEntry per alive emitter, one uvec4 texel each: a texel fetch is a gather on llvmpipe, a
 // storage-buffer read a loop over the SIMD lanes (common/world.glsl).
@@ -34,18 +36,24 @@ struct Surface {
     bool valid;  // a lit surface (not sky, not a camera inside solid)
 };
 
+GpuEmitter loadEmitter(uint slot) {
+    int t = int(slot) * 3;
+    return GpuEmitter(ivec4(texelFetch(gEmitterTexels, t)), uintBitsToFloat(texelFetch(gEmitterTexels, t + 1)),
+                      texelFetch(gEmitterTexels, t + 2));
+}
+
 float luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
 
 // Is the emitter in this slot still the one the reservoir saw?
 bool emitterCurrent(uint slot, uint generation) {
     if (slot == RESERVOIR_EMPTY || slot >= gLights.counts.y) return false;
-    GpuEmitter e = gEmitters[slot];
+    GpuEmitter e = loadEmitter(slot);
     return (e.info.w & EMITTER_FLAG_ALIVE) != 0u && e.info.y == generation;
 }
 
 // Probability of choosing `slot` as a candidate.
 float emitterPdf(uint slot, bool byPower) {
-    if (byPower || !kUniformSampling) return gEmitters[slot].radiance.w / gLights.power.x;
+    if (byPower || !kUniformSampling) return loadEmitter(slot).radiance.w / gLights.power.x;
     return 1.0 / float(gLights.counts.x);
 }
 
@@ -216,7 +224,7 @@ vec3 lightContribution(Surface s, GpuEmitter e, uint face, vec2 uv, out vec3 sha
 float lightSamplePdf(vec3 x, uint slot, uint face, bool byPower) {
     float p = emitterPdf(slot, byPower);
     if (face == LIGHT_FACE_CENTRE) return p;
-    GpuEmitter e = gEmitters[slot];
+    GpuEmitter e = loadEmitter(slot);
     float side = float(e.minCorner.w);
     return p * facePdf(e, x, face) / (side * side);
 }

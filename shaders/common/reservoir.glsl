@@ -6,6 +6,13 @@
 
 Reservoir emptyReservoir() { return Reservoir(uvec4(RESERVOIR_EMPTY, 0u, 0u, 0u), vec4(0.0)); }
 
+// A Reservoir from an R32G32B32A32_UINT view of a reservoir buffer, two texels per pixel: passes
+// that only read a reservoir buffer fetch texels (see loadGBuffer in common/surface.glsl).
+Reservoir loadReservoir(usamplerBuffer texels, uint i) {
+    int t = int(i) * 2;
+    return Reservoir(texelFetch(texels, t), uintBitsToFloat(texelFetch(texels, t + 1)));
+}
+
 bool reservoirHasLight(Reservoir r) { return r.light.x != RESERVOIR_EMPTY; }
 
 // The reservoir as its own pixel reuses it: a sample the candidate pass found occluded here loses
@@ -27,11 +34,11 @@ float targetAt(Surface s, Reservoir r) {
     if (!s.valid || !emitterCurrent(r.light.x, r.light.y)) return 0.0;
     vec3 toLight;
     float dist;
-    return luminance(lightContribution(s, gEmitters[r.light.x], r.light.z, unpackUnorm2x16(r.light.w), toLight, dist));
+    return luminance(lightContribution(s, loadEmitter(r.light.x), r.light.z, unpackUnorm2x16(r.light.w), toLight, dist));
 }
 
 bool visibleAt(Surface s, Reservoir r) {
-    GpuEmitter e = gEmitters[r.light.x];
+    GpuEmitter e = loadEmitter(r.light.x);
     vec3 toLight;
     float dist;
     vec3 f = lightContribution(s, e, r.light.z, unpackUnorm2x16(r.light.w), toLight, dist);

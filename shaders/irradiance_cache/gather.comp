@@ -78,7 +78,7 @@ void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;
     if (any(greaterThanEqual(pixel, uvec2(gCache.width, gCache.height)))) return;
     uint index = pixel.x + pixel.y * gCache.width;
-    GBufferTexel g = gGBuffer[index];
+    GBufferTexel g = loadGBuffer(gGBuffer, index);
     uint face = uint(g.voxel.w);
     vec3 indirect = vec3(0.0);
     if (face < 6u) {

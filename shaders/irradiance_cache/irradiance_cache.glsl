@@ -21,7 +21,7 @@ layout(set = 0, binding = CACHE_BINDING_STATIC_HITS, std430) buffer StaticHits {
 layout(set = 0, binding = CACHE_BINDING_SELECTED_HITS, std430) buffer SelectedHits { uint gSelectedHits[]; };
 layout(set = 0, binding = CACHE_BINDING_IRRADIANCE, std430) buffer Irradiance { vec4 gIrradiance[]; };
 layout(set = 0, binding = CACHE_BINDING_FILTERED, std430) buffer Filtered { vec4 gFiltered[]; };
-layout(set = 0, binding = CACHE_BINDING_GBUFFER, std430) readonly buffer GBuffer { GBufferTexel gGBuffer[]; };
+layout(set = 0, binding = CACHE_BINDING_GBUFFER) uniform usamplerBuffer gGBuffer;  // loadGBuffer (common/surface.glsl)
 layout(set = 0, binding = CACHE_BINDING_RADIANCE, std430) buffer Radiance { vec4 gRadiance[]; };
 layout(set = 0, binding = CACHE_BINDING_INDIRECT, std430) writeonly buffer Indirect { vec4 gIndirect[]; };
 layout(set = 0, binding = CACHE_BINDING_COUNTERS, std430) buffer Counters { uint gCounters[CACHE_COUNTER_COUNT]; };

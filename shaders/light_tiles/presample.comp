@@ -19,7 +19,7 @@ void main() {
     LightTileSample t = LightTileSample(ivec4(0), vec4(0.0), uvec4(0u, 0u, RESERVOIR_EMPTY, 0u));
     uint slot;
     if (pickEmitter(rng, true, slot)) {
-        GpuEmitter e = gEmitters[slot];
+        GpuEmitter e = loadEmitter(slot);
         t = LightTileSample(e.minCorner, vec4(e.radiance.rgb, emitterPdf(slot, true)), uvec4(e.info.x, e.info.y, slot, 0u));
     }
     gSamples[entry] = t;

@@ -35,7 +35,7 @@ void main() {
     for (uint i = 0u; i < candidates; ++i) {
         uint slot;
         if (!pickEmitter(rng, true, slot)) break;
-        GpuEmitter e = gEmitters[slot];
+        GpuEmitter e = loadEmitter(slot);
         float pdf = e.radiance.w / gLights.power.x;
         float target = regirTarget(e, lo, hi, size);
         float w = pdf > 0.0 ? target / pdf : 0.0;

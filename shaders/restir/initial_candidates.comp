@@ -18,14 +18,14 @@ layout(constant_id = FEATURE_CANDIDATE_VISIBILITY) const bool kCandidateVisibili
 
 layout(set = 0, binding = RESTIR_BINDING_FRAME, std430) readonly buffer Params { FrameParams gFrame; };
 layout(set = 0, binding = RESTIR_BINDING_PARAMS, std430) readonly buffer Restir { RestirParams gRestir; };
-layout(set = 0, binding = RESTIR_BINDING_GBUFFER, std430) readonly buffer GBuffer { GBufferTexel gGBuffer[]; };
+layout(set = 0, binding = RESTIR_BINDING_GBUFFER) uniform usamplerBuffer gGBuffer;  // loadGBuffer
 layout(set = 0, binding = RESTIR_INITIAL_BINDING_OUT, std430) writeonly buffer Out { Reservoir gOut[]; };
 
 void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;
     if (any(greaterThanEqual(pixel, gFrame.imageSize.xy))) return;
     uint index = pixel.x + pixel.y * gFrame.imageSize.x;
-    Surface s = surfaceFrom(gGBuffer[index]);
+    Surface s = surfaceFrom(loadGBuffer(gGBuffer, index));
     Reservoir r = Reservoir(uvec4(RESERVOIR_EMPTY, 0u, 0u, 0u), vec4(0.0));
     uint candidates = gRestir.knobs.candidates;
     if (!s.valid || gLights.counts.x == 0u || candidates == 0u) {
@@ -60,7 +60,7 @@ void main() {
             RegirEntry entry = grid.entries[cellEntries + min(uint(rngNext(rng) * float(REGIR_CELL_ENTRIES)), REGIR_CELL_ENTRIES - 1u)];
             if (entry.slot == RESERVOIR_EMPTY) continue;  // no light reaches this cell: a zero-weight candidate
             slot = entry.slot;
-            e = gEmitters[slot];
+            e = loadEmitter(slot);
             pdf = 1.0 / entry.weight;
         } else if (tiles) {
             LightTileSample t = lightTileSample(gFrame, lightTileRunEntry(run, i));
@@ -69,7 +69,7 @@ void main() {
             pdf = t.radiance.w;
         } else {
             pickEmitter(rng, byPower, slot);
-            e = gEmitters[slot];
+            e = loadEmitter(slot);
             pdf = emitterPdf(slot, byPower);
         }
         uint face = LIGHT_FACE_CENTRE;
@@ -95,7 +95,7 @@ void main() {
     r.weights = vec4(chosenTarget > 0.0 ? wSum / (float(candidates) * chosenTarget) : 0.0, float(candidates),
                      chosenTarget, 1.0);
     if (kCandidateVisibility && gRestir.knobs.candidateVisibility != 0u && r.light.x != RESERVOIR_EMPTY) {
-        GpuEmitter e = gEmitters[r.light.x];
+        GpuEmitter e = loadEmitter(r.light.x);
         vec3 toLight;
         float dist;
         lightContribution(s, e, r.light.z, unpackUnorm2x16(r.light.w), toLight, dist);

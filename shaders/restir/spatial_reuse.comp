@@ -25,9 +25,9 @@ layout(constant_id = FEATURE_UNBIASED) const bool kUnbiased = true;  // pairwise
 
 layout(set = 0, binding = RESTIR_BINDING_FRAME, std430) readonly buffer Params { FrameParams gFrame; };
 layout(set = 0, binding = RESTIR_BINDING_PARAMS, std430) readonly buffer Restir { RestirParams gRestir; };
-layout(set = 0, binding = RESTIR_BINDING_GBUFFER, std430) readonly buffer GBuffer { GBufferTexel gGBuffer[]; };
-layout(set = 0, binding = RESTIR_SPATIAL_BINDING_OWN, std430) readonly buffer Own { Reservoir gOwn[]; };
-layout(set = 0, binding = RESTIR_SPATIAL_BINDING_CANDIDATES, std430) readonly buffer Candidates { Reservoir gCandidates[]; };
+layout(set = 0, binding = RESTIR_BINDING_GBUFFER) uniform usamplerBuffer gGBuffer;  // loadGBuffer
+layout(set = 0, binding = RESTIR_SPATIAL_BINDING_OWN) uniform usamplerBuffer gOwn;  // loadReservoir
+layout(set = 0, binding = RESTIR_SPATIAL_BINDING_CANDIDATES) uniform usamplerBuffer gCandidates;
 layout(set = 0, binding = RESTIR_SPATIAL_BINDING_OUT, std430) writeonly buffer Out { Reservoir gOut[]; };
 
 const uint kMaxTaps = 16u;
@@ -49,7 +49,7 @@ Reservoir pairwiseReuse(Surface s, Reservoir own, float ownChooser, uint neighbo
     if (k == 0u) return own;
     float ownM = own.weights.y;
     float total = ownM;
-    for (uint i = 0u; i < k; ++i) total += gCandidates[neighbours[i]].weights.y;
+    for (uint i = 0u; i < k; ++i) total += loadReservoir(gCandidates, neighbours[i]).weights.y;
     if (!(total > 0.0)) return own;
     float ownShare = ownM / float(k);  // the canonical's confidence in each pair
     bool ownSample = reservoirHasLight(own) && own.weights.x > 0.0;
@@ -58,14 +58,14 @@ Reservoir pairwiseReuse(Surface s, Reservoir own, float ownChooser, uint neighbo
     Combiner c = combinerStart();
     float ownWeight = 0.0;
     for (uint i = 0u; i < k; ++i) {
-        Reservoir r = gCandidates[neighbours[i]];
+        Reservoir r = loadReservoir(gCandidates, neighbours[i]);
         float m = r.weights.y;
         float pairShare = (m + ownShare) / total;
         float targetThere = reservoirHasLight(r) ? r.weights.z : 0.0;  // its sample at its own pixel
         float targetHere = targetAt(s, r);
         combinerAddWeighted(c, r, targetHere, pairShare * balanceShare(m, targetThere, ownShare, targetHere), choosers[i]);
         if (ownSample) {
-            float ownTargetThere = targetAt(surfaceFrom(gGBuffer[neighbours[i]]), own);
+            float ownTargetThere = targetAt(surfaceFrom(loadGBuffer(gGBuffer, neighbours[i])), own);
             ownWeight += pairShare * balanceShare(ownShare, ownTarget, m, ownTargetThere);
         }
     }
@@ -78,8 +78,8 @@ void main() {
     if (any(greaterThanEqual(pixel, gFrame.imageSize.xy))) return;
     uint index = pixel.x + pixel.y * gFrame.imageSize.x;
     // Without temporal reuse the own reservoir is the candidates' one: apply its shadow test.
-    Reservoir own = withOwnVisibility(gOwn[index]);
-    GBufferTexel g = gGBuffer[index];
+    Reservoir own = withOwnVisibility(loadReservoir(gOwn, index));
+    GBufferTexel g = loadGBuffer(gGBuffer, index);
     Surface s = surfaceFrom(g);
     if (!s.valid || gRestir.knobs.spatial == 0u) {
         gOut[index] = own;
@@ -107,10 +107,10 @@ void main() {
         ivec2 q = ivec2(pixel) + ivec2(round(dist * vec2(cos(angle), sin(angle))));
         if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, ivec2(gFrame.imageSize.xy))) || q == ivec2(pixel)) continue;
         uint qi = uint(q.x) + uint(q.y) * gFrame.imageSize.x;
-        GBufferTexel ng = gGBuffer[qi];
+        GBufferTexel ng = loadGBuffer(gGBuffer, qi);
         if (uint(ng.voxel.w) != s.face || abs(gbufferDistance(ng) - depth) > tolerance * depth) continue;
         if (!pairwise) {
-            Reservoir r = gCandidates[qi];
+            Reservoir r = loadReservoir(gCandidates, qi);
             combinerAdd(c, r, targetAt(s, r), u);
         }
         choosers[accepted] = u;
@@ -126,7 +126,7 @@ void main() {
     float normaliser = own.weights.y;
     if (reservoirHasLight(c.chosen)) {
         for (uint i = 0u; i < accepted; ++i) {
-            if (targetAt(surfaceFrom(gGBuffer[neighbours[i]]), c.chosen) > 0.0) normaliser += gCandidates[neighbours[i]].weights.y;
+            if (targetAt(surfaceFrom(loadGBuffer(gGBuffer, neighbours[i])), c.chosen) > 0.0) normaliser += loadReservoir(gCandidates, neighbours[i]).weights.y;
         }
     } else {
         normaliser = c.M;

@@ -16,10 +16,10 @@ layout(constant_id = FEATURE_UNBIASED) const bool kUnbiased = true;  // the bala
 
 layout(set = 0, binding = RESTIR_BINDING_FRAME, std430) readonly buffer Params { FrameParams gFrame; };
 layout(set = 0, binding = RESTIR_BINDING_PARAMS, std430) readonly buffer Restir { RestirParams gRestir; };
-layout(set = 0, binding = RESTIR_BINDING_GBUFFER, std430) readonly buffer GBuffer { GBufferTexel gGBuffer[]; };
-layout(set = 0, binding = RESTIR_TEMPORAL_BINDING_PREV_GBUFFER, std430) readonly buffer PrevGBuffer { GBufferTexel gPrevGBuffer[]; };
-layout(set = 0, binding = RESTIR_TEMPORAL_BINDING_CANDIDATES, std430) readonly buffer Candidates { Reservoir gCandidates[]; };
-layout(set = 0, binding = RESTIR_TEMPORAL_BINDING_PREVIOUS, std430) readonly buffer Previous { Reservoir gPrevious[]; };
+layout(set = 0, binding = RESTIR_BINDING_GBUFFER) uniform usamplerBuffer gGBuffer;  // loadGBuffer
+layout(set = 0, binding = RESTIR_TEMPORAL_BINDING_PREV_GBUFFER) uniform usamplerBuffer gPrevGBuffer;
+layout(set = 0, binding = RESTIR_TEMPORAL_BINDING_CANDIDATES) uniform usamplerBuffer gCandidates;  // loadReservoir
+layout(set = 0, binding = RESTIR_TEMPORAL_BINDING_PREVIOUS) uniform usamplerBuffer gPrevious;
 layout(set = 0, binding = RESTIR_TEMPORAL_BINDING_OWN, std430) writeonly buffer Own { Reservoir gOwn[]; };
 
 // Last frame's reservoir for this pixel, or an empty one when there is none to reuse.
@@ -30,9 +30,9 @@ bool previousReservoir(uvec2 pixel, GBufferTexel g, Surface s, out Reservoir pre
     ivec2 prevPixel = ivec2(floor(g.motion.xy));
     if (any(lessThan(prevPixel, ivec2(0))) || any(greaterThanEqual(prevPixel, ivec2(gFrame.imageSize.xy)))) return false;
     uint prevIndex = uint(prevPixel.x) + uint(prevPixel.y) * gFrame.imageSize.x;
-    pg = gPrevGBuffer[prevIndex];
+    pg = loadGBuffer(gPrevGBuffer, prevIndex);
     if (uint(pg.voxel.w) != s.face || abs(gbufferDistance(pg) - g.motion.z) > gRestir.knobs.depthTolerance * g.motion.z) return false;
-    previous = gPrevious[prevIndex];
+    previous = loadReservoir(gPrevious, prevIndex);
     return !reservoirStale(previous);  // a light that is gone: drop it
 }
 
@@ -69,11 +69,11 @@ void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;
     if (any(greaterThanEqual(pixel, gFrame.imageSize.xy))) return;
     uint index = pixel.x + pixel.y * gFrame.imageSize.x;
-    GBufferTexel g = gGBuffer[index];
+    GBufferTexel g = loadGBuffer(gGBuffer, index);
     Surface s = surfaceFrom(g);
     // This pixel's candidates with their shadow test applied: like last frame's final reservoir
     // (whose occluded sample lost its weight in shade.comp), they now target the visible light here.
-    Reservoir current = withOwnVisibility(gCandidates[index]);
+    Reservoir current = withOwnVisibility(loadReservoir(gCandidates, index));
     Reservoir previous;
     GBufferTexel pg;
     if (!previousReservoir(pixel, g, s, previous, pg)) {

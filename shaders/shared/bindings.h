@@ -1,8 +1,8 @@
 // Descriptor bindings every ray-tracing pass shares: the world (set 0, bindings 0-4).
 // A pass's own buffers start at PASS_BINDING_FIRST. Bindings are storage buffers, but for those a
 // shader declares usamplerBuffer (uniform texel buffers: top grid, page table, dynamic grid,
-// alias table). Passes
-// number their own in their technique's header (restir.h, light_sampling.h, reference.h, ...);
+// emitters and alias table; the ReSTIR passes' G-buffer and the reservoirs they only read,
+// restir.h). Passes number their own in their technique's header (restir.h, light_sampling.h, reference.h, ...);
 // the passes every method shares, here. C++ binds by these numbers (render/passes/compute_pass.h).
 #ifndef SHARED_BINDINGS_H
 #define SHARED_BINDINGS_H
@@ -21,9 +21,9 @@ SHARED_CONST uint PASS_BINDING_FIRST = 5u;
 // Passes that sample lights add the emitter list after the world (bindings 5-8) and start their
 // own buffers at LIT_PASS_BINDING_FIRST.
 SHARED_CONST uint LIGHTS_BINDING_INFO = 5u;      // EmitterListInfo
-SHARED_CONST uint LIGHTS_BINDING_EMITTERS = 6u;  // GpuEmitter per slot
+SHARED_CONST uint LIGHTS_BINDING_EMITTERS = 6u;  // GpuEmitter per slot (3 uvec4 texels)
 SHARED_CONST uint LIGHTS_BINDING_ALIVE = 7u;     // uint slot per alive emitter
-SHARED_CONST uint LIGHTS_BINDING_ALIAS = 8u;     // AliasEntry per alive emitter
+SHARED_CONST uint LIGHTS_BINDING_ALIAS = 8u;     // AliasEntry per alive emitter (uvec4 texel)
 SHARED_CONST uint LIT_PASS_BINDING_FIRST = 9u;
 
 // Own bindings of the passes every method shares.

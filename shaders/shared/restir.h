@@ -53,7 +53,8 @@ struct RestirParams {
 SHARED_ASSERT_SIZE(RestirParams, 64);
 
 // Own bindings of the ReSTIR passes, after the emitter list. All four start with the frame, the
-// parameters and the G-buffer.
+// parameters and the G-buffer. A buffer a pass only reads (the G-buffers; the reservoirs but its
+// output and shade's final ones) is a uvec4 texel binding (loadGBuffer, loadReservoir).
 SHARED_CONST uint RESTIR_BINDING_FRAME = LIT_PASS_BINDING_FIRST + 0u;    // FrameParams
 SHARED_CONST uint RESTIR_BINDING_PARAMS = LIT_PASS_BINDING_FIRST + 1u;   // RestirParams
 SHARED_CONST uint RESTIR_BINDING_GBUFFER = LIT_PASS_BINDING_FIRST + 2u;  // GBufferTexel per pixel

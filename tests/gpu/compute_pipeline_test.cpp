@@ -3,10 +3,14 @@
 // must be uniform texel buffers and every other binding stays a storage buffer.
 #include <gtest/gtest.h>
 
+#include <utility>
+#include <vector>
+
 #include "gpu/compute_pipeline.h"
 #include "gpu/gpu_test_context.h"
 #include "shared/bindings.h"
 #include "shared/light_sampling.h"
+#include "shared/restir.h"
 #include "shared/trace_rays.h"
 
 using namespace gpu_testing;
@@ -25,13 +29,60 @@ TEST_F(ComputePipelineBindings, TypesFollowTheShaderDeclarations) {
     }
 }
 
-TEST_F(ComputePipelineBindings, LightPassesReadTheAliasTableAsTexels) {
+TEST_F(ComputePipelineBindings, LightPassesReadTheEmittersAndAliasTableAsTexels) {
     const std::uint32_t count = shared::LIGHT_SAMPLING_BINDING_RADIANCE + 1u;
     engine::gpu::ComputePipeline lit(context(), "baselines/light_sampling", count);
     const std::vector<VkDescriptorType>& types = lit.bindingTypes();
     EXPECT_EQ(types[shared::LIGHTS_BINDING_ALIAS], VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER);
-    EXPECT_EQ(types[shared::LIGHTS_BINDING_EMITTERS], VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+    EXPECT_EQ(types[shared::LIGHTS_BINDING_EMITTERS], VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER);
+    EXPECT_EQ(types[shared::LIGHTS_BINDING_ALIVE], VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
     EXPECT_EQ(types[shared::WORLD_BINDING_INFO], VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+}
+
+// The ReSTIR passes fetch the G-buffer and the reservoirs they only read as texels; a buffer a pass
+// writes (its output, shade's final reservoirs) stays a storage buffer.
+TEST_F(ComputePipelineBindings, RestirPassesReadWhatTheyOnlyReadAsTexels) {
+    const VkDescriptorType texel = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    struct Expected {
+        const char* shader;
+        std::vector<std::pair<std::uint32_t, VkDescriptorType>> own;  // the pass's own bindings, in order
+    };
+    const Expected passes[] = {
+        {"restir/initial_candidates",
+         {{shared::RESTIR_BINDING_FRAME, storage},
+          {shared::RESTIR_BINDING_PARAMS, storage},
+          {shared::RESTIR_BINDING_GBUFFER, texel},
+          {shared::RESTIR_INITIAL_BINDING_OUT, storage}}},
+        {"restir/temporal_reuse",
+         {{shared::RESTIR_BINDING_FRAME, storage},
+          {shared::RESTIR_BINDING_PARAMS, storage},
+          {shared::RESTIR_BINDING_GBUFFER, texel},
+          {shared::RESTIR_TEMPORAL_BINDING_PREV_GBUFFER, texel},
+          {shared::RESTIR_TEMPORAL_BINDING_CANDIDATES, texel},
+          {shared::RESTIR_TEMPORAL_BINDING_PREVIOUS, texel},
+          {shared::RESTIR_TEMPORAL_BINDING_OWN, storage}}},
+        {"restir/spatial_reuse",
+         {{shared::RESTIR_BINDING_FRAME, storage},
+          {shared::RESTIR_BINDING_PARAMS, storage},
+          {shared::RESTIR_BINDING_GBUFFER, texel},
+          {shared::RESTIR_SPATIAL_BINDING_OWN, texel},
+          {shared::RESTIR_SPATIAL_BINDING_CANDIDATES, texel},
+          {shared::RESTIR_SPATIAL_BINDING_OUT, storage}}},
+        {"restir/shade",
+         {{shared::RESTIR_BINDING_FRAME, storage},
+          {shared::RESTIR_BINDING_PARAMS, storage},
+          {shared::RESTIR_BINDING_GBUFFER, texel},
+          {shared::RESTIR_SHADE_BINDING_FINAL, storage},
+          {shared::RESTIR_SHADE_BINDING_RADIANCE, storage}}},
+    };
+    for (const Expected& pass : passes) {
+        const std::uint32_t count = pass.own.back().first + 1u;
+        engine::gpu::ComputePipeline pipeline(context(), pass.shader, count);
+        const std::vector<VkDescriptorType>& types = pipeline.bindingTypes();
+        ASSERT_EQ(types.size(), count) << pass.shader;
+        EXPECT_EQ(types[shared::LIGHTS_BINDING_EMITTERS], texel) << pass.shader;
+        for (auto [binding, type] : pass.own) EXPECT_EQ(types[binding], type) << pass.shader << " binding " << binding;
+    }
 }
 
 TEST_F(ComputePipelineBindings, ShadersWithoutTexelReadsKeepStorageBuffers) {
