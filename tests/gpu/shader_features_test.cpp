@@ -10,6 +10,7 @@
 #include "gpu/compute_pipeline.h"
 #include "gpu/gpu_test_setup.h"
 #include "render/shader_features.h"
+#include "shared/restir.h"
 
 using namespace gpu_testing;
 
@@ -87,7 +88,7 @@ TEST_F(ShaderFeatures, AFrameUsesOnlyTheFeaturesItsSettingsAskFor) {
 }
 
 TEST_F(ShaderFeatures, PipelinesFindTheConstantsTheirShaderDeclares) {
-    engine::gpu::ComputePipeline initial(context(), "restir/initial_candidates", 12);
+    engine::gpu::ComputePipeline initial(context(), "restir/initial_candidates", shared::RESTIR_INITIAL_BINDING_OUT + 1);
     const std::vector<std::uint32_t>& ids = initial.specializationIds();
     for (std::uint32_t id : {FEATURE_REGIR, FEATURE_LIGHT_TILES, FEATURE_POINT_LIGHTS, FEATURE_CANDIDATE_VISIBILITY}) {
         EXPECT_TRUE(std::find(ids.begin(), ids.end(), id) != ids.end()) << "constant_id " << id;
