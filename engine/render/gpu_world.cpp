@@ -44,7 +44,10 @@ WorldUploadStats GpuWorld::sync(const world::Scene& scene, gpu::Uploader& upload
     if (!samePalette(palette, mUploadedPalette)) {
         std::uint64_t bytes = palette.size() * sizeof(shared::GpuMaterial);
         if (!mPalette.valid() || mPalette.size() < bytes)
+        {
             mPalette = gpu::Buffer(mCtx, gpu::BufferKind::Storage, std::max<std::uint64_t>(bytes, 64 * 48), "world.palette");
+            mPalette.setTexelFormat(VK_FORMAT_R32G32B32A32_UINT);  // GpuMaterial: 3 texels (materialAlbedo)
+        }
         uploader.write(mPalette, 0, palette.data(), bytes);
         stats.bytes += bytes;
         mUploadedPalette = std::move(palette);

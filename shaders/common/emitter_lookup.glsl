@@ -51,7 +51,7 @@ bool emitterOfStaticVoxel(ivec3 v, bool brickLights, out EmitterShape shape) {
     shape.power = 0.0;
     uint material = gridVoxelMaterial(false, v);
     if (material == 0u) return false;
-    vec3 le = gMaterials[material].emission.rgb;
+    vec3 le = materialEmission(material);
     if (!any(greaterThan(le, vec3(0.0)))) return false;
     uint cell = gridCell(false, v >> 3);
     int side = 1;

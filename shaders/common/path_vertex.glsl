@@ -24,9 +24,8 @@ Surface surfaceAt(SceneHit hit, vec3 origin, vec3 dir) {
     s.valid = hit.face < 6u;
     s.position = origin + dir * hit.t;
     s.normal = s.valid ? faceNormalF(hit.face) : vec3(0.0);
-    GpuMaterial m = gMaterials[hit.material];
-    s.albedo = m.albedo.rgb;
-    s.emission = m.emission.rgb;
+    s.albedo = materialAlbedo(hit.material);
+    s.emission = materialEmission(hit.material);
     return s;
 }
 

@@ -22,9 +22,8 @@ Surface surfaceFrom(GBufferTexel g) {
     s.valid = s.face < 6u;
     s.position = g.position.xyz;
     s.normal = s.valid ? faceNormalF(s.face) : vec3(0.0);
-    GpuMaterial m = gMaterials[g.data.x];
-    s.albedo = m.albedo.rgb;
-    s.emission = s.face == FACE_NONE ? vec3(0.0) : m.emission.rgb;
+    s.albedo = materialAlbedo(g.data.x);
+    s.emission = s.face == FACE_NONE ? vec3(0.0) : materialEmission(g.data.x);
     return s;
 }
 

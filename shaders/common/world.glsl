@@ -23,10 +23,15 @@ layout(set = 0, binding = WORLD_BINDING_INFO, std430) readonly buffer WorldInfoB
 // lanes with a branch per lane.
 layout(set = 0, binding = WORLD_BINDING_CELLS) uniform usamplerBuffer gGridTexels;
 layout(set = 0, binding = WORLD_BINDING_PAGES) uniform usamplerBuffer gPageTexels;
-layout(set = 0, binding = WORLD_BINDING_PALETTE, std430) readonly buffer PaletteBuffer { GpuMaterial gMaterials[]; };
+// The palette: three uvec4 texels per GpuMaterial (albedo, emission, flags). Every surface read
+// (G-buffer loads, spatial taps, bounce hits) looks up its material at a lane-varying index.
+layout(set = 0, binding = WORLD_BINDING_PALETTE) uniform usamplerBuffer gPaletteTexels;
 // The dynamic grid: header, super cells, cells, masks, materials, object table (dynamic_grid.h),
 // as texels for the same reason; bound always, read only when dynamicGridPresent().
 layout(set = 0, binding = WORLD_BINDING_DYNAMIC) uniform usamplerBuffer gDynamicTexels;
+
+vec3 materialAlbedo(uint material) { return uintBitsToFloat(texelFetch(gPaletteTexels, int(material) * 3).rgb); }
+vec3 materialEmission(uint material) { return uintBitsToFloat(texelFetch(gPaletteTexels, int(material) * 3 + 1).rgb); }
 
 // Where the super cells start among the grid texels: after the cells.
 uint superCellBase(ivec3 sizeInCells) { return uint(sizeInCells.x) * uint(sizeInCells.y) * uint(sizeInCells.z); }

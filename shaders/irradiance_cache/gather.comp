@@ -93,7 +93,7 @@ void main() {
         vec4 r = gatherLevel(g.voxel.xyz, face, set, g.position.xyz, far ? coarse : 0u);
         if (r.w == 0.0 && coarse != 0u) r = gatherLevel(g.voxel.xyz, face, set, g.position.xyz, far ? 0u : coarse);
         if (kFallback && r.w == 0.0) r = gatherFallback(g.voxel.xyz, face, set, g.position.xyz);
-        if (r.w > 0.0) indirect = gMaterials[g.data.x].albedo.rgb / PI * (r.rgb / r.w);
+        if (r.w > 0.0) indirect = materialAlbedo(g.data.x) / PI * (r.rgb / r.w);
     }
     gIndirect[index] = vec4(indirect, 1.0);
     gRadiance[index] += vec4(indirect, 0.0);

@@ -27,7 +27,7 @@ Surface cacheHitSurface(ivec3 voxel, vec3 o, vec3 d, uint packed, out ivec3 hv) 
     s.valid = material != 0u;
     s.position = o + d * faceHitT(o, d, hv, hf);
     s.normal = faceNormalF(hf);
-    s.albedo = s.valid ? gMaterials[material].albedo.rgb : vec3(0.0);
+    s.albedo = s.valid ? materialAlbedo(material) : vec3(0.0);
     s.emission = vec3(0.0);  // emitters are the direct-light passes' job
     return s;
 }

@@ -33,7 +33,7 @@ void main() {
         return;
     }
 
-    GpuMaterial m = gMaterials[g.data.x];
+    uint material = g.data.x;
     vec3 n = face == FACE_INSIDE ? -dir : vec3(faceNormal(face));
     float t = uintBitsToFloat(g.data.y);
     vec3 position = gFrame.cameraPosition.xyz + dir * t + n * kShadowOffset;
@@ -48,8 +48,8 @@ void main() {
     }
     // A cheap sky-visibility term: faces pointing down see less sky.
     float skyFacing = 0.55 + 0.45 * n.y;
-    vec3 radiance = m.albedo.rgb * (gFrame.skyRadiance.rgb * skyFacing + gFrame.sunRadiance.rgb * nDotL * visible) +
-                    m.emission.rgb;
+    vec3 radiance = materialAlbedo(material) * (gFrame.skyRadiance.rgb * skyFacing + gFrame.sunRadiance.rgb * nDotL * visible) +
+                    materialEmission(material);
     gRadiance[index] = vec4(radiance, 1.0);
     gRayStats[index] = uvec4(g.data.z, shadowSteps, nDotL > 0.0 ? 2u : 1u, 0u);
 }

@@ -23,7 +23,8 @@ TEST_F(ComputePipelineBindings, TypesFollowTheShaderDeclarations) {
     const std::vector<VkDescriptorType>& types = trace.bindingTypes();
     ASSERT_EQ(types.size(), count);
     for (std::uint32_t b = 0; b < count; ++b) {
-        const bool texel = b == shared::WORLD_BINDING_CELLS || b == shared::WORLD_BINDING_PAGES || b == shared::WORLD_BINDING_DYNAMIC;
+        const bool texel = b == shared::WORLD_BINDING_CELLS || b == shared::WORLD_BINDING_PAGES || b == shared::WORLD_BINDING_PALETTE ||
+                           b == shared::WORLD_BINDING_DYNAMIC;
         EXPECT_EQ(types[b], texel ? VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER)
             << "binding " << b;
     }
