@@ -15,7 +15,7 @@ void main() {
     if (item >= gCache.updates) return;
     uint face = thread % CACHE_FACES;
     uint slot = gLists[item];
-    CacheEntry entry = gEntries[slot];
+    CacheEntry entry = loadCacheEntry(slot);
     uint index = slot * CACHE_FACES + face;
     vec4 own = gIrradiance[index];
     if ((gCache.flags & CACHE_FLAG_NO_FILTER) != 0u || own.w == 0.0) {

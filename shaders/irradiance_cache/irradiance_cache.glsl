@@ -11,9 +11,11 @@
 
 layout(set = 0, binding = CACHE_BINDING_PARAMS, std430) readonly buffer CacheParamsBuffer { CacheParams gCache; };
 layout(set = 0, binding = CACHE_BINDING_FRAME, std430) readonly buffer FrameParamsBuffer { FrameParams gFrame; };
-layout(set = 0, binding = CACHE_BINDING_DIRECTIONS, std430) readonly buffer Directions { vec4 gDirections[]; };
-layout(set = 0, binding = CACHE_BINDING_ENTRIES, std430) readonly buffer Entries { CacheEntry gEntries[]; };
-layout(set = 0, binding = CACHE_BINDING_TABLE, std430) readonly buffer Table { CacheBucket gTable[]; };
+// What the passes read at lane-varying indices and never write is fetched as texels: one gather on
+// lavapipe, where a storage-buffer read is a loop over the SIMD lanes (common/world.glsl).
+layout(set = 0, binding = CACHE_BINDING_DIRECTIONS) uniform usamplerBuffer gDirectionTexels;  // a vec4's bits each
+layout(set = 0, binding = CACHE_BINDING_ENTRIES) uniform usamplerBuffer gEntryTexels;          // loadCacheEntry
+layout(set = 0, binding = CACHE_BINDING_TABLE) uniform usamplerBuffer gTableTexels;            // loadCacheBucket
 // [0, updates): slots to update; [capacity, capacity + traces): slots to trace statically; then
 // the face lists faces.comp writes (cacheListedFace).
 layout(set = 0, binding = CACHE_BINDING_LISTS, std430) buffer Lists { uint gLists[]; };
@@ -25,6 +27,13 @@ layout(set = 0, binding = CACHE_BINDING_GBUFFER) uniform usamplerBuffer gGBuffer
 layout(set = 0, binding = CACHE_BINDING_RADIANCE, std430) buffer Radiance { vec4 gRadiance[]; };
 layout(set = 0, binding = CACHE_BINDING_INDIRECT, std430) writeonly buffer Indirect { vec4 gIndirect[]; };
 layout(set = 0, binding = CACHE_BINDING_COUNTERS, std430) buffer Counters { uint gCounters[CACHE_COUNTER_COUNT]; };
+
+CacheEntry loadCacheEntry(uint slot) {
+    int t = int(slot) * 2;
+    uvec4 rest = texelFetch(gEntryTexels, t + 1);
+    return CacheEntry(ivec4(texelFetch(gEntryTexels, t)), uintBitsToFloat(rest.x), rest.y, rest.z, rest.w);
+}
+CacheBucket loadCacheBucket(uint bucket) { return CacheBucket(texelFetch(gTableTexels, int(bucket))); }
 
 uint cacheThread() { return gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * CACHE_DISPATCH_ROW; }
 
@@ -77,7 +86,8 @@ uint cacheEntryRotation(CacheEntry e) { return cacheRotation(e.voxel.xyz, uint(e
 // from the host's table; the mirror (swap, negations) and the face frame only permute and negate
 // components, so host and GPU get the same bits and the cosine distribution is kept.
 vec3 cacheDirection(uint rotation, uint face, uint k) {
-    vec3 local = gDirections[(rotation % CACHE_DIRECTION_SETS) * gCache.directions + k].xyz;
+    uint set = rotation % CACHE_DIRECTION_SETS;
+    vec3 local = uintBitsToFloat(texelFetch(gDirectionTexels, int(set * gCache.directions + k)).xyz);
     uint mirror = rotation >> 29u;
     if ((mirror & 1u) != 0u) local.xy = local.yx;
     if ((mirror & 2u) != 0u) local.x = -local.x;
@@ -196,7 +206,7 @@ uint cacheLookupKey(ivec3 voxel, uint set, uint coarse) {
     uint mask = gCache.tableMask;
     uint b = pcgHash(key.x ^ pcgHash(key.y)) & mask;
     for (uint i = 0u; i <= mask; ++i) {
-        uvec4 e = gTable[b].keySlot;
+        uvec4 e = loadCacheBucket(b).keySlot;
         if (e.x == CACHE_TABLE_EMPTY) return ~0u;
         if (e.x == key.x && e.y == key.y) return e.z;
         b = (b + 1u) & mask;
@@ -207,7 +217,7 @@ uint cacheLookup(ivec3 voxel, uint set) { return cacheLookupKey(voxel, set, 0u);
 
 // A dynamic entry's irradiance dims linearly to zero over the fade time after its last update.
 float cacheFade(uint slot) {
-    CacheEntry e = gEntries[slot];
+    CacheEntry e = loadCacheEntry(slot);
     if (uint(e.voxel.w) == CACHE_SET_STATIC) return 1.0;
     return clamp(1.0 - (gCache.time - e.updatedAt) / gCache.fadeSeconds, 0.0, 1.0);
 }

@@ -41,7 +41,7 @@ vec3 indirectLeaving(ivec3 voxel, vec3 o, vec3 d, uint packed) {
     Surface s = cacheHitSurface(voxel, o, d, packed, hv);
     if (!s.valid) return vec3(0.0);
     uint hs = cacheLookup(hv, (packed & CACHE_HIT_DYNAMIC) != 0u ? CACHE_SET_DYNAMIC : CACHE_SET_STATIC);
-    if (hs == ~0u || (gEntries[hs].flags & CACHE_ENTRY_RESET) != 0u) return vec3(0.0);
+    if (hs == ~0u || (loadCacheEntry(hs).flags & CACHE_ENTRY_RESET) != 0u) return vec3(0.0);
     return s.albedo / PI * gFiltered[hs * CACHE_FACES + s.face].rgb * cacheFade(hs);
 }
 
@@ -60,7 +60,7 @@ void main() {
     if (!(thread < staticFaces ? cacheListedFace(CACHE_LIST_STATIC, thread, item, face)
                                : cacheListedFace(CACHE_LIST_DYNAMIC, thread - staticFaces, item, face))) return;
     uint slot = gLists[item];
-    CacheEntry entry = gEntries[slot];
+    CacheEntry entry = loadCacheEntry(slot);
     ivec3 voxel = entry.voxel.xyz;
     uint index = slot * CACHE_FACES + face;
     uint rng = rngInit(uvec2(slot, face), gCache.frameIndex, 11u, gCache.seed);

@@ -77,7 +77,7 @@ void main() {
     if (!cacheListedFace(VISIBILITY_SET == CACHE_SET_STATIC ? CACHE_LIST_STATIC : CACHE_LIST_DYNAMIC, cacheThread(), item, face))
         return;
     uint slot = gLists[item];
-    CacheEntry entry = gEntries[slot];
+    CacheEntry entry = loadCacheEntry(slot);
     ivec3 voxel = entry.voxel.xyz;
     uint rotation = cacheEntryRotation(entry);
     vec3 o = cacheEntryRayOrigin(entry, face);

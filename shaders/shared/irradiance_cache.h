@@ -66,6 +66,7 @@ SHARED_CONST uint CACHE_ENTRY_RESET = 1u;  // its running mean restarts: new slo
 SHARED_CONST uint CACHE_ENTRY_TRACE = 2u;  // tracing its phase's S directions through the static world: a static entry
                                            // (trace_static.comp), or a dynamic entry's first update of this phase
 
+// Shaders fetch it as two uvec4 texels (loadCacheEntry), so its size stays a multiple of 16 B.
 struct CacheEntry {
     ivec4 voxel;       // xyz world voxel, w set (CACHE_SET_*)
     float updatedAt;   // scene time of its last update (s)
@@ -80,19 +81,21 @@ SHARED_ASSERT_SIZE(CacheEntry, 32);
 // cache_lod.h). Its key is the patch's lowest voxel with `coarse` = 1 + face in key bits 27..29.
 SHARED_CONST uint CACHE_KEY_COARSE_SHIFT = 27u;
 
-// One hash-table bucket: the key (voxel, set, coarse) and its slot. Key x = CACHE_TABLE_EMPTY: unused.
+// One hash-table bucket: the key (voxel, set, coarse) and its slot. Key x = CACHE_TABLE_EMPTY:
+// unused. One uvec4 texel (loadCacheBucket).
 struct CacheBucket {
     uvec4 keySlot;  // x: voxel.x | voxel.y << 16, y: voxel.z | coarse << 27 | set << 31, z: slot, w: unused
 };
 SHARED_ASSERT_SIZE(CacheBucket, 16);
 
 // The bindings every cache pass shares (shaders/irradiance_cache/irradiance_cache.glsl), after
-// the world and the emitter list.
+// the world and the emitter list. Directions, entries and table are read-only everywhere: texel
+// views (uvec4 texels).
 SHARED_CONST uint CACHE_BINDING_PARAMS = LIT_PASS_BINDING_FIRST + 0u;         // CacheParams
 SHARED_CONST uint CACHE_BINDING_FRAME = LIT_PASS_BINDING_FIRST + 1u;          // FrameParams
 SHARED_CONST uint CACHE_BINDING_DIRECTIONS = LIT_PASS_BINDING_FIRST + 2u;     // vec4: CACHE_DIRECTION_SETS sets of K
-SHARED_CONST uint CACHE_BINDING_ENTRIES = LIT_PASS_BINDING_FIRST + 3u;        // CacheEntry per slot
-SHARED_CONST uint CACHE_BINDING_TABLE = LIT_PASS_BINDING_FIRST + 4u;          // CacheBucket
+SHARED_CONST uint CACHE_BINDING_ENTRIES = LIT_PASS_BINDING_FIRST + 3u;        // CacheEntry per slot (2 texels)
+SHARED_CONST uint CACHE_BINDING_TABLE = LIT_PASS_BINDING_FIRST + 4u;          // CacheBucket (1 texel)
 SHARED_CONST uint CACHE_BINDING_LISTS = LIT_PASS_BINDING_FIRST + 5u;          // update list, then trace list
 SHARED_CONST uint CACHE_BINDING_STATIC_HITS = LIT_PASS_BINDING_FIRST + 6u;    // CACHE_FACES * K packed hits per slot
 SHARED_CONST uint CACHE_BINDING_SELECTED_HITS = LIT_PASS_BINDING_FIRST + 7u;  // per updated entry and ray

@@ -196,6 +196,7 @@ void IrradianceCache::reset(const lighting::IrradianceCacheSettings& settings, s
     mDirectory = IrradianceCacheDirectory(slots);
     mDirections = makeDirections(settings.directions);
     mDirectionBuffer = gpu::Buffer(mCtx, gpu::BufferKind::Storage, mDirections.size() * sizeof(glm::vec4), "cache.directions");
+    mDirectionBuffer.setTexelFormat(VK_FORMAT_R32G32B32A32_UINT);  // cacheDirection fetches vec4 bits
     mCapacity = 0;
     mStaticHits = {};
     mIrradiance = {};
@@ -221,6 +222,7 @@ void IrradianceCache::ensureCapacity(std::uint32_t slots, gpu::CommandList& cmd)
     grow(mIrradiance, shared::CACHE_FACES * sizeof(glm::vec4), "cache.irradiance");
     grow(mFiltered, shared::CACHE_FACES * sizeof(glm::vec4), "cache.filtered");
     mEntries = gpu::Buffer(mCtx, gpu::BufferKind::Storage, capacity * sizeof(shared::CacheEntry), "cache.entries");
+    mEntries.setTexelFormat(VK_FORMAT_R32G32B32A32_UINT);  // loadCacheEntry
     mLists = gpu::Buffer(mCtx, gpu::BufferKind::Storage, kListWordsPerSlot * capacity * 4, "cache.lists");
     mSelectedHits = gpu::Buffer(mCtx, gpu::BufferKind::Storage,
                                 std::uint64_t(capacity) * shared::CACHE_FACES * mSettings.raysPerUpdate * 4, "cache.selectedHits");
@@ -318,6 +320,7 @@ void IrradianceCache::prepare(const lighting::IrradianceCacheSettings& settings,
         std::vector<shared::CacheBucket> table = mDirectory.buildTable();
         if (!mTable.valid() || mTable.size() != table.size() * sizeof(shared::CacheBucket)) {
             mTable = gpu::Buffer(mCtx, gpu::BufferKind::Storage, table.size() * sizeof(shared::CacheBucket), "cache.table");
+            mTable.setTexelFormat(VK_FORMAT_R32G32B32A32_UINT);  // loadCacheBucket
         }
         uploader.write(mTable, 0, table.data(), table.size() * sizeof(shared::CacheBucket));
     }
