@@ -19,6 +19,9 @@ layout(set = 0, binding = CACHE_BINDING_TABLE) uniform usamplerBuffer gTableTexe
 // [0, updates): slots to update; [capacity, capacity + traces): slots to trace statically; then
 // the face lists faces.comp writes (cacheListedFace).
 layout(set = 0, binding = CACHE_BINDING_LISTS, std430) buffer Lists { uint gLists[]; };
+// The per-slot results, written by some passes and read by later ones. A pass that only reads one
+// fetches it through its texel view (the *_TEXELS bindings below, the same buffer); a pass never
+// writes a buffer and fetches its texels in one dispatch.
 layout(set = 0, binding = CACHE_BINDING_STATIC_HITS, std430) buffer StaticHits { uint gStaticHits[]; };
 layout(set = 0, binding = CACHE_BINDING_SELECTED_HITS, std430) buffer SelectedHits { uint gSelectedHits[]; };
 layout(set = 0, binding = CACHE_BINDING_IRRADIANCE, std430) buffer Irradiance { vec4 gIrradiance[]; };
@@ -27,6 +30,10 @@ layout(set = 0, binding = CACHE_BINDING_GBUFFER) uniform usamplerBuffer gGBuffer
 layout(set = 0, binding = CACHE_BINDING_RADIANCE, std430) buffer Radiance { vec4 gRadiance[]; };
 layout(set = 0, binding = CACHE_BINDING_INDIRECT, std430) writeonly buffer Indirect { vec4 gIndirect[]; };
 layout(set = 0, binding = CACHE_BINDING_COUNTERS, std430) buffer Counters { uint gCounters[CACHE_COUNTER_COUNT]; };
+layout(set = 0, binding = CACHE_BINDING_STATIC_HIT_TEXELS) uniform usamplerBuffer gStaticHitTexels;
+layout(set = 0, binding = CACHE_BINDING_SELECTED_HIT_TEXELS) uniform usamplerBuffer gSelectedHitTexels;
+layout(set = 0, binding = CACHE_BINDING_IRRADIANCE_TEXELS) uniform usamplerBuffer gIrradianceTexels;
+layout(set = 0, binding = CACHE_BINDING_FILTERED_TEXELS) uniform usamplerBuffer gFilteredTexels;
 
 CacheEntry loadCacheEntry(uint slot) {
     int t = int(slot) * 2;
@@ -34,6 +41,14 @@ CacheEntry loadCacheEntry(uint slot) {
     return CacheEntry(ivec4(texelFetch(gEntryTexels, t)), uintBitsToFloat(rest.x), rest.y, rest.z, rest.w);
 }
 CacheBucket loadCacheBucket(uint bucket) { return CacheBucket(texelFetch(gTableTexels, int(bucket))); }
+
+// The per-slot results through their texel views, for the passes that do not write them:
+// visibility_static (divide and win) reads the static hits, the bounce the selected hits and the
+// filtered irradiance, the filter the irradiance, the gather the filtered irradiance.
+uint cachedStaticHit(uint i) { return texelFetch(gStaticHitTexels, int(i)).x; }
+uint selectedHit(uint i) { return texelFetch(gSelectedHitTexels, int(i)).x; }
+vec4 cachedIrradiance(uint i) { return uintBitsToFloat(texelFetch(gIrradianceTexels, int(i))); }
+vec4 filteredIrradiance(uint i) { return uintBitsToFloat(texelFetch(gFilteredTexels, int(i))); }
 
 uint cacheThread() { return gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * CACHE_DISPATCH_ROW; }
 

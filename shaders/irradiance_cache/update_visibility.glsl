@@ -43,8 +43,8 @@ uint selectHit(uint slot, ivec3 voxel, vec3 o, uint rotation, uint phase, uint f
 #if !defined(VISIBILITY_MODE)
 #error "define VISIBILITY_MODE"
 #elif VISIBILITY_MODE == VISIBILITY_DIVIDE
-    // Only static entries come here.
-        uint cached = gStaticHits[(slot * CACHE_FACES + face) * K + k];
+    // Only static entries come here; this pass only reads their static hits, so as texels.
+        uint cached = cachedStaticHit((slot * CACHE_FACES + face) * K + k);
         if (!dynamicGridPresent()) return cached;
         float ts = cached == CACHE_HIT_MISS ? maxLength : faceHitT(o, d, cacheHitVoxel(voxel, cached, d), cacheHitFace(cached));
         ++traced;

@@ -90,7 +90,8 @@ SHARED_ASSERT_SIZE(CacheBucket, 16);
 
 // The bindings every cache pass shares (shaders/irradiance_cache/irradiance_cache.glsl), after
 // the world and the emitter list. Directions, entries and table are read-only everywhere: texel
-// views (uvec4 texels).
+// views (uvec4 texels). Each *_TEXELS binding is a texel view of the buffer of the same name,
+// bound to both, for the passes that only read it; the passes that write it use its storage binding.
 SHARED_CONST uint CACHE_BINDING_PARAMS = LIT_PASS_BINDING_FIRST + 0u;         // CacheParams
 SHARED_CONST uint CACHE_BINDING_FRAME = LIT_PASS_BINDING_FIRST + 1u;          // FrameParams
 SHARED_CONST uint CACHE_BINDING_DIRECTIONS = LIT_PASS_BINDING_FIRST + 2u;     // vec4: CACHE_DIRECTION_SETS sets of K
@@ -105,6 +106,10 @@ SHARED_CONST uint CACHE_BINDING_GBUFFER = LIT_PASS_BINDING_FIRST + 10u;       //
 SHARED_CONST uint CACHE_BINDING_RADIANCE = LIT_PASS_BINDING_FIRST + 11u;      // vec4 per pixel, read and written
 SHARED_CONST uint CACHE_BINDING_INDIRECT = LIT_PASS_BINDING_FIRST + 12u;      // vec4 per pixel: the indirect term alone
 SHARED_CONST uint CACHE_BINDING_COUNTERS = LIT_PASS_BINDING_FIRST + 13u;      // uint[CACHE_COUNTER_COUNT]
+SHARED_CONST uint CACHE_BINDING_STATIC_HIT_TEXELS = LIT_PASS_BINDING_FIRST + 14u;    // uint texels: visibility_static
+SHARED_CONST uint CACHE_BINDING_SELECTED_HIT_TEXELS = LIT_PASS_BINDING_FIRST + 15u;  // uint texels: bounce
+SHARED_CONST uint CACHE_BINDING_IRRADIANCE_TEXELS = LIT_PASS_BINDING_FIRST + 16u;    // uvec4 texels: filter
+SHARED_CONST uint CACHE_BINDING_FILTERED_TEXELS = LIT_PASS_BINDING_FIRST + 17u;      // uvec4 texels: bounce, gather
 
 SHARED_CONST uint CACHE_COUNTER_RAYS = 0u;  // rays the cache's passes traced this frame (not the bounce's shadow rays)
 SHARED_CONST uint CACHE_COUNTER_COUNT = 4u;

@@ -34,6 +34,7 @@ struct CachePassIo {
     gpu::Buffer& radiance;  // read and written: the indirect term is added
     gpu::Buffer& indirect;  // written: the indirect term alone
     gpu::Buffer& counters;
+    // The texel bindings (CACHE_BINDING_*_TEXELS) take the same buffers as the storage ones.
     auto bindings() const {
         return std::to_array<PassBinding>({{shared::CACHE_BINDING_PARAMS, &params},
                                            {shared::CACHE_BINDING_FRAME, &frameParams},
@@ -48,7 +49,11 @@ struct CachePassIo {
                                            {shared::CACHE_BINDING_GBUFFER, &gbuffer},
                                            {shared::CACHE_BINDING_RADIANCE, &radiance},
                                            {shared::CACHE_BINDING_INDIRECT, &indirect},
-                                           {shared::CACHE_BINDING_COUNTERS, &counters}});
+                                           {shared::CACHE_BINDING_COUNTERS, &counters},
+                                           {shared::CACHE_BINDING_STATIC_HIT_TEXELS, &staticHits},
+                                           {shared::CACHE_BINDING_SELECTED_HIT_TEXELS, &selectedHits},
+                                           {shared::CACHE_BINDING_IRRADIANCE_TEXELS, &irradiance},
+                                           {shared::CACHE_BINDING_FILTERED_TEXELS, &filtered}});
     }
 };
 constexpr std::uint32_t kOwnBindings = bindingCount<CachePassIo>();
@@ -210,22 +215,26 @@ void IrradianceCache::reset(const lighting::IrradianceCacheSettings& settings, s
 void IrradianceCache::ensureCapacity(std::uint32_t slots, gpu::CommandList& cmd) {
     if (slots <= mCapacity) return;
     std::uint32_t capacity = std::min(std::max(std::bit_ceil(slots), 1024u), std::max(mDirectory.maxSlots(), slots));
-    auto grow = [&](gpu::Buffer& buffer, std::uint64_t bytesPerSlot, const char* name) {
+    // Every buffer but the lists is read as texels by some pass (irradiance_cache.glsl): packed
+    // hits as R32_UINT, the vec4s and structs as uvec4 texels.
+    auto grow = [&](gpu::Buffer& buffer, std::uint64_t bytesPerSlot, VkFormat texels, const char* name) {
         gpu::Buffer bigger(mCtx, gpu::BufferKind::Storage, capacity * bytesPerSlot, name);
+        bigger.setTexelFormat(texels);
         if (buffer.valid()) {
             cmd.copyBuffer(buffer, bigger, {{0, 0, buffer.size()}});
             mRetired.push_back(std::move(buffer));
         }
         buffer = std::move(bigger);
     };
-    grow(mStaticHits, shared::CACHE_FACES * mSettings.directions * 4ull, "cache.staticHits");
-    grow(mIrradiance, shared::CACHE_FACES * sizeof(glm::vec4), "cache.irradiance");
-    grow(mFiltered, shared::CACHE_FACES * sizeof(glm::vec4), "cache.filtered");
+    grow(mStaticHits, shared::CACHE_FACES * mSettings.directions * 4ull, VK_FORMAT_R32_UINT, "cache.staticHits");
+    grow(mIrradiance, shared::CACHE_FACES * sizeof(glm::vec4), VK_FORMAT_R32G32B32A32_UINT, "cache.irradiance");
+    grow(mFiltered, shared::CACHE_FACES * sizeof(glm::vec4), VK_FORMAT_R32G32B32A32_UINT, "cache.filtered");
     mEntries = gpu::Buffer(mCtx, gpu::BufferKind::Storage, capacity * sizeof(shared::CacheEntry), "cache.entries");
     mEntries.setTexelFormat(VK_FORMAT_R32G32B32A32_UINT);  // loadCacheEntry
     mLists = gpu::Buffer(mCtx, gpu::BufferKind::Storage, kListWordsPerSlot * capacity * 4, "cache.lists");
     mSelectedHits = gpu::Buffer(mCtx, gpu::BufferKind::Storage,
                                 std::uint64_t(capacity) * shared::CACHE_FACES * mSettings.raysPerUpdate * 4, "cache.selectedHits");
+    mSelectedHits.setTexelFormat(VK_FORMAT_R32_UINT);
     mCapacity = capacity;
     cmd.barrier();
 }
