@@ -9,6 +9,7 @@
 #include "core/check.h"
 #include "core/hash.h"
 #include "gpu/command_list.h"
+#include "gpu/context.h"
 #include "gpu/uploader.h"
 #include "render/irradiance_cache/cache_lod.h"
 #include "render/irradiance_cache/cache_params.h"
@@ -161,6 +162,17 @@ std::uint64_t IrradianceCache::bytesPerSlot(const lighting::IrradianceCacheSetti
            + shared::CACHE_FACES * s.raysPerUpdate * 4ull;                           // selected hits
 }
 
+std::uint32_t IrradianceCache::maxSlots(const lighting::IrradianceCacheSettings& s, std::uint64_t maxTexels) {
+    const std::uint64_t budgetSlots = std::clamp<std::uint64_t>(s.budgetBytes / bytesPerSlot(s), 1, 1u << 24);
+    // The most texels any one view needs per slot: the static hits' CACHE_FACES * K words (K >= 16),
+    // against the selected hits' CACHE_FACES * S words, CACHE_FACES vec4s of irradiance, two texels
+    // per entry and up to four table buckets (a power of two at least twice the slots in use).
+    const std::uint64_t texelsPerSlot = std::max<std::uint64_t>(
+        {shared::CACHE_FACES * std::uint64_t(s.directions), shared::CACHE_FACES * std::uint64_t(s.raysPerUpdate),
+         shared::CACHE_FACES, sizeof(shared::CacheEntry) / 16, 4});
+    return static_cast<std::uint32_t>(std::clamp<std::uint64_t>(maxTexels / texelsPerSlot, 1, budgetSlots));
+}
+
 std::uint32_t IrradianceCache::directionRotation(glm::ivec3 voxel, std::uint32_t set, std::uint32_t seed, std::uint32_t coarse) {
     const std::uint32_t x = static_cast<std::uint32_t>(voxel.x) | (static_cast<std::uint32_t>(voxel.y) << 16);
     const std::uint32_t y = static_cast<std::uint32_t>(voxel.z) | (coarse << shared::CACHE_KEY_COARSE_SHIFT) | (set << 31);
@@ -196,9 +208,7 @@ void IrradianceCache::reset(const lighting::IrradianceCacheSettings& settings, s
     mSeed = seed;
     mConfigured = true;
     mDirectionsUploaded = false;
-    auto slots = static_cast<std::uint32_t>(
-        std::clamp<std::uint64_t>(settings.budgetBytes / bytesPerSlot(settings), 1, 1u << 24));
-    mDirectory = IrradianceCacheDirectory(slots);
+    mDirectory = IrradianceCacheDirectory(maxSlots(settings, mCtx.info().maxTexelBufferElements));
     mDirections = makeDirections(settings.directions);
     mDirectionBuffer = gpu::Buffer(mCtx, gpu::BufferKind::Storage, mDirections.size() * sizeof(glm::vec4), "cache.directions");
     mDirectionBuffer.setTexelFormat(VK_FORMAT_R32G32B32A32_UINT);  // cacheDirection fetches vec4 bits
@@ -216,7 +226,7 @@ void IrradianceCache::ensureCapacity(std::uint32_t slots, gpu::CommandList& cmd)
     if (slots <= mCapacity) return;
     std::uint32_t capacity = std::min(std::max(std::bit_ceil(slots), 1024u), std::max(mDirectory.maxSlots(), slots));
     // Every buffer but the lists is read as texels by some pass (irradiance_cache.glsl): packed
-    // hits as R32_UINT, the vec4s and structs as uvec4 texels.
+    // hits as R32_UINT, the vec4s and structs as uvec4 texels. maxSlots keeps the views in the limit.
     auto grow = [&](gpu::Buffer& buffer, std::uint64_t bytesPerSlot, VkFormat texels, const char* name) {
         gpu::Buffer bigger(mCtx, gpu::BufferKind::Storage, capacity * bytesPerSlot, name);
         bigger.setTexelFormat(texels);
