@@ -20,7 +20,7 @@ void main() {
     uint face = thread % CACHE_FACES;
     if (item < gCache.updates) {
         uint slot = gLists[item];
-        CacheEntry entry = loadCacheEntry(slot);
+        CacheEntry entry = gEntries[slot];
         bool exposed = cacheEntryFaceExposed(entry, face);
         if (item < gCache.staticUpdates) {
             if (exposed) appendFace(CACHE_LIST_STATIC, item, face);
@@ -41,7 +41,7 @@ void main() {
     }
     if (item < gCache.traces) {
         uint slot = gLists[gCache.capacity + item];
-        CacheEntry entry = loadCacheEntry(slot);
+        CacheEntry entry = gEntries[slot];
         if (cacheEntryFaceExposed(entry, face)) {
             appendFace(CACHE_LIST_TRACE, item, face);
         } else {

@@ -15,9 +15,9 @@ void main() {
     if (item >= gCache.updates) return;
     uint face = thread % CACHE_FACES;
     uint slot = gLists[item];
-    CacheEntry entry = loadCacheEntry(slot);
+    CacheEntry entry = gEntries[slot];
     uint index = slot * CACHE_FACES + face;
-    vec4 own = cachedIrradiance(index);
+    vec4 own = gIrradiance[index];
     if ((gCache.flags & CACHE_FLAG_NO_FILTER) != 0u || own.w == 0.0) {
         gFiltered[index] = vec4(own.rgb, own.w > 0.0 ? 1.0 : 0.0);
         return;
@@ -35,7 +35,7 @@ void main() {
                 v[va] += 2 * y;
                 uint n = x == 0 && y == 0 ? slot : cacheLookupKey(v, CACHE_SET_STATIC, entry.coarse);
                 if (n == ~0u) continue;
-                vec4 c = cachedIrradiance(n * CACHE_FACES + face);
+                vec4 c = gIrradiance[n * CACHE_FACES + face];
                 if (c.w == 0.0) continue;
                 float w = float((2 - abs(x)) * (2 - abs(y)));
                 sum += w * c.rgb;
@@ -51,7 +51,7 @@ void main() {
                 ivec3 o = ivec3(x, y, z);
                 uint n = o == ivec3(0) ? slot : cacheLookup(entry.voxel.xyz + o, uint(entry.voxel.w));
                 if (n == ~0u) continue;
-                vec4 v = cachedIrradiance(n * CACHE_FACES + face);
+                vec4 v = gIrradiance[n * CACHE_FACES + face];
                 if (v.w == 0.0) continue;
                 float w = float((2 - abs(x)) * (2 - abs(y)) * (2 - abs(z)));
                 sum += w * v.rgb;

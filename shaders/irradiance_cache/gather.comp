@@ -29,7 +29,7 @@ vec4 gatherLevel(ivec3 voxel, uint face, uint set, vec3 p, uint coarse) {
             v[va] = (base.y + j) * int(cell);
             uint slot = cacheLookupKey(v, set, coarse);
             if (slot == ~0u) continue;
-            vec4 e = filteredIrradiance(slot * CACHE_FACES + face);
+            vec4 e = gFiltered[slot * CACHE_FACES + face];
             if (e.w == 0.0) continue;
             float w = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y) + 1e-6;
             sum += w * e.rgb * cacheFade(slot);
@@ -62,7 +62,7 @@ vec4 gatherFallback(ivec3 voxel, uint face, uint set, vec3 p) {
                 v[va] += j;
                 uint slot = cacheLookupKey(v, set, 0u);
                 if (slot == ~0u) continue;
-                vec4 e = filteredIrradiance(slot * CACHE_FACES + face);
+                vec4 e = gFiltered[slot * CACHE_FACES + face];
                 if (e.w == 0.0 || !cacheFrontsConnected(voxel, face, ivec2(i, j), set)) continue;
                 vec2 d = vec2(v[ua], v[va]) + 0.5 - vec2(p[ua], p[va]);
                 float w = 1.0 / max(dot(d, d), 0.25);

@@ -11,17 +11,12 @@
 
 layout(set = 0, binding = CACHE_BINDING_PARAMS, std430) readonly buffer CacheParamsBuffer { CacheParams gCache; };
 layout(set = 0, binding = CACHE_BINDING_FRAME, std430) readonly buffer FrameParamsBuffer { FrameParams gFrame; };
-// What the passes read at lane-varying indices and never write is fetched as texels: one gather on
-// lavapipe, where a storage-buffer read is a loop over the SIMD lanes (common/world.glsl).
-layout(set = 0, binding = CACHE_BINDING_DIRECTIONS) uniform usamplerBuffer gDirectionTexels;  // a vec4's bits each
-layout(set = 0, binding = CACHE_BINDING_ENTRIES) uniform usamplerBuffer gEntryTexels;          // loadCacheEntry
-layout(set = 0, binding = CACHE_BINDING_TABLE) uniform usamplerBuffer gTableTexels;            // loadCacheBucket
+layout(set = 0, binding = CACHE_BINDING_DIRECTIONS, std430) readonly buffer Directions { vec4 gDirections[]; };
+layout(set = 0, binding = CACHE_BINDING_ENTRIES, std430) readonly buffer Entries { CacheEntry gEntries[]; };
+layout(set = 0, binding = CACHE_BINDING_TABLE, std430) readonly buffer Table { CacheBucket gTable[]; };
 // [0, updates): slots to update; [capacity, capacity + traces): slots to trace statically; then
 // the face lists faces.comp writes (cacheListedFace).
 layout(set = 0, binding = CACHE_BINDING_LISTS, std430) buffer Lists { uint gLists[]; };
-// The per-slot results, written by some passes and read by later ones. A pass that only reads one
-// fetches it through its texel view (the *_TEXELS bindings below, the same buffer); a pass never
-// writes a buffer and fetches its texels in one dispatch.
 layout(set = 0, binding = CACHE_BINDING_STATIC_HITS, std430) buffer StaticHits { uint gStaticHits[]; };
 layout(set = 0, binding = CACHE_BINDING_SELECTED_HITS, std430) buffer SelectedHits { uint gSelectedHits[]; };
 layout(set = 0, binding = CACHE_BINDING_IRRADIANCE, std430) buffer Irradiance { vec4 gIrradiance[]; };
@@ -30,25 +25,6 @@ layout(set = 0, binding = CACHE_BINDING_GBUFFER) uniform usamplerBuffer gGBuffer
 layout(set = 0, binding = CACHE_BINDING_RADIANCE, std430) buffer Radiance { vec4 gRadiance[]; };
 layout(set = 0, binding = CACHE_BINDING_INDIRECT, std430) writeonly buffer Indirect { vec4 gIndirect[]; };
 layout(set = 0, binding = CACHE_BINDING_COUNTERS, std430) buffer Counters { uint gCounters[CACHE_COUNTER_COUNT]; };
-layout(set = 0, binding = CACHE_BINDING_STATIC_HIT_TEXELS) uniform usamplerBuffer gStaticHitTexels;
-layout(set = 0, binding = CACHE_BINDING_SELECTED_HIT_TEXELS) uniform usamplerBuffer gSelectedHitTexels;
-layout(set = 0, binding = CACHE_BINDING_IRRADIANCE_TEXELS) uniform usamplerBuffer gIrradianceTexels;
-layout(set = 0, binding = CACHE_BINDING_FILTERED_TEXELS) uniform usamplerBuffer gFilteredTexels;
-
-CacheEntry loadCacheEntry(uint slot) {
-    int t = int(slot) * 2;
-    uvec4 rest = texelFetch(gEntryTexels, t + 1);
-    return CacheEntry(ivec4(texelFetch(gEntryTexels, t)), uintBitsToFloat(rest.x), rest.y, rest.z, rest.w);
-}
-CacheBucket loadCacheBucket(uint bucket) { return CacheBucket(texelFetch(gTableTexels, int(bucket))); }
-
-// The per-slot results through their texel views, for the passes that do not write them:
-// visibility_static (divide and win) reads the static hits, the bounce the selected hits and the
-// filtered irradiance, the filter the irradiance, the gather the filtered irradiance.
-uint cachedStaticHit(uint i) { return texelFetch(gStaticHitTexels, int(i)).x; }
-uint selectedHit(uint i) { return texelFetch(gSelectedHitTexels, int(i)).x; }
-vec4 cachedIrradiance(uint i) { return uintBitsToFloat(texelFetch(gIrradianceTexels, int(i))); }
-vec4 filteredIrradiance(uint i) { return uintBitsToFloat(texelFetch(gFilteredTexels, int(i))); }
 
 uint cacheThread() { return gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * CACHE_DISPATCH_ROW; }
 
@@ -101,8 +77,7 @@ uint cacheEntryRotation(CacheEntry e) { return cacheRotation(e.voxel.xyz, uint(e
 // from the host's table; the mirror (swap, negations) and the face frame only permute and negate
 // components, so host and GPU get the same bits and the cosine distribution is kept.
 vec3 cacheDirection(uint rotation, uint face, uint k) {
-    uint set = rotation % CACHE_DIRECTION_SETS;
-    vec3 local = uintBitsToFloat(texelFetch(gDirectionTexels, int(set * gCache.directions + k)).xyz);
+    vec3 local = gDirections[(rotation % CACHE_DIRECTION_SETS) * gCache.directions + k].xyz;
     uint mirror = rotation >> 29u;
     if ((mirror & 1u) != 0u) local.xy = local.yx;
     if ((mirror & 2u) != 0u) local.x = -local.x;
@@ -221,7 +196,7 @@ uint cacheLookupKey(ivec3 voxel, uint set, uint coarse) {
     uint mask = gCache.tableMask;
     uint b = pcgHash(key.x ^ pcgHash(key.y)) & mask;
     for (uint i = 0u; i <= mask; ++i) {
-        uvec4 e = loadCacheBucket(b).keySlot;
+        uvec4 e = gTable[b].keySlot;
         if (e.x == CACHE_TABLE_EMPTY) return ~0u;
         if (e.x == key.x && e.y == key.y) return e.z;
         b = (b + 1u) & mask;
@@ -232,7 +207,7 @@ uint cacheLookup(ivec3 voxel, uint set) { return cacheLookupKey(voxel, set, 0u);
 
 // A dynamic entry's irradiance dims linearly to zero over the fade time after its last update.
 float cacheFade(uint slot) {
-    CacheEntry e = loadCacheEntry(slot);
+    CacheEntry e = gEntries[slot];
     if (uint(e.voxel.w) == CACHE_SET_STATIC) return 1.0;
     return clamp(1.0 - (gCache.time - e.updatedAt) / gCache.fadeSeconds, 0.0, 1.0);
 }

@@ -41,8 +41,8 @@ vec3 indirectLeaving(ivec3 voxel, vec3 o, vec3 d, uint packed) {
     Surface s = cacheHitSurface(voxel, o, d, packed, hv);
     if (!s.valid) return vec3(0.0);
     uint hs = cacheLookup(hv, (packed & CACHE_HIT_DYNAMIC) != 0u ? CACHE_SET_DYNAMIC : CACHE_SET_STATIC);
-    if (hs == ~0u || (loadCacheEntry(hs).flags & CACHE_ENTRY_RESET) != 0u) return vec3(0.0);
-    return s.albedo / PI * filteredIrradiance(hs * CACHE_FACES + s.face).rgb * cacheFade(hs);
+    if (hs == ~0u || (gEntries[hs].flags & CACHE_ENTRY_RESET) != 0u) return vec3(0.0);
+    return s.albedo / PI * gFiltered[hs * CACHE_FACES + s.face].rgb * cacheFade(hs);
 }
 
 // The direct light leaving a hit (sun and one emitter sample, each with a shadow ray).
@@ -60,7 +60,7 @@ void main() {
     if (!(thread < staticFaces ? cacheListedFace(CACHE_LIST_STATIC, thread, item, face)
                                : cacheListedFace(CACHE_LIST_DYNAMIC, thread - staticFaces, item, face))) return;
     uint slot = gLists[item];
-    CacheEntry entry = loadCacheEntry(slot);
+    CacheEntry entry = gEntries[slot];
     ivec3 voxel = entry.voxel.xyz;
     uint index = slot * CACHE_FACES + face;
     uint rng = rngInit(uvec2(slot, face), gCache.frameIndex, 11u, gCache.seed);
@@ -70,7 +70,7 @@ void main() {
     uint hits = (item * CACHE_FACES + face) * S;
     uint lit = 0u;  // hits that may receive direct light
     for (uint j = 0u; j < S; ++j) {
-        uint packed = selectedHit(hits + j);
+        uint packed = gSelectedHits[hits + j];
         sum += indirectLeaving(voxel, o, cacheDirection(rotation, face, cacheDirectionIndex(entry.phase, j)), packed);
         if (cacheHitLit(packed)) ++lit;
     }
@@ -87,10 +87,10 @@ void main() {
     for (uint k = 0u; k < samples; ++k) {
         uint target = samples < lit ? min(uint((float(k) + u) * weight), lit - 1u) : k;
         target = max(target, rank);  // strictly increasing (guards rounding)
-        uint packed = selectedHit(hits + j);
+        uint packed = gSelectedHits[hits + j];
         while ((!cacheHitLit(packed) || rank < target) && j + 1u < S) {
             if (cacheHitLit(packed)) ++rank;
-            packed = selectedHit(hits + ++j);
+            packed = gSelectedHits[hits + ++j];
         }
         if (!cacheHitLit(packed)) break;  // never: the lit hits are counted above
         vec3 d = cacheDirection(rotation, face, cacheDirectionIndex(entry.phase, j));

@@ -14,7 +14,7 @@ void main() {
     uint item, face;
     if (!cacheListedFace(CACHE_LIST_TRACE, cacheThread(), item, face)) return;
     uint slot = gLists[gCache.capacity + item];
-    CacheEntry entry = loadCacheEntry(slot);
+    CacheEntry entry = gEntries[slot];
     ivec3 voxel = entry.voxel.xyz;
     uint rotation = cacheEntryRotation(entry);
     vec3 o = cacheEntryRayOrigin(entry, face);

@@ -43,8 +43,8 @@ uint selectHit(uint slot, ivec3 voxel, vec3 o, uint rotation, uint phase, uint f
 #if !defined(VISIBILITY_MODE)
 #error "define VISIBILITY_MODE"
 #elif VISIBILITY_MODE == VISIBILITY_DIVIDE
-    // Only static entries come here; this pass only reads their static hits, so as texels.
-        uint cached = cachedStaticHit((slot * CACHE_FACES + face) * K + k);
+    // Only static entries come here.
+        uint cached = gStaticHits[(slot * CACHE_FACES + face) * K + k];
         if (!dynamicGridPresent()) return cached;
         float ts = cached == CACHE_HIT_MISS ? maxLength : faceHitT(o, d, cacheHitVoxel(voxel, cached, d), cacheHitFace(cached));
         ++traced;
@@ -77,7 +77,7 @@ void main() {
     if (!cacheListedFace(VISIBILITY_SET == CACHE_SET_STATIC ? CACHE_LIST_STATIC : CACHE_LIST_DYNAMIC, cacheThread(), item, face))
         return;
     uint slot = gLists[item];
-    CacheEntry entry = loadCacheEntry(slot);
+    CacheEntry entry = gEntries[slot];
     ivec3 voxel = entry.voxel.xyz;
     uint rotation = cacheEntryRotation(entry);
     vec3 o = cacheEntryRayOrigin(entry, face);

@@ -2,7 +2,7 @@
 // A pass's own buffers start at PASS_BINDING_FIRST. Bindings are storage buffers, but for those a
 // shader declares usamplerBuffer (uniform texel buffers: top grid, page table, dynamic grid,
 // emitters and alias table; the ReSTIR passes' G-buffer and the reservoirs they only read,
-// restir.h; what the irradiance cache's passes only read, irradiance_cache.h). Passes number their own in their technique's header (restir.h, light_sampling.h, reference.h, ...);
+// restir.h). Passes number their own in their technique's header (restir.h, light_sampling.h, reference.h, ...);
 // the passes every method shares, here. C++ binds by these numbers (render/passes/compute_pass.h).
 #ifndef SHARED_BINDINGS_H
 #define SHARED_BINDINGS_H

@@ -66,7 +66,6 @@ SHARED_CONST uint CACHE_ENTRY_RESET = 1u;  // its running mean restarts: new slo
 SHARED_CONST uint CACHE_ENTRY_TRACE = 2u;  // tracing its phase's S directions through the static world: a static entry
                                            // (trace_static.comp), or a dynamic entry's first update of this phase
 
-// Shaders fetch it as two uvec4 texels (loadCacheEntry), so its size stays a multiple of 16 B.
 struct CacheEntry {
     ivec4 voxel;       // xyz world voxel, w set (CACHE_SET_*)
     float updatedAt;   // scene time of its last update (s)
@@ -81,22 +80,19 @@ SHARED_ASSERT_SIZE(CacheEntry, 32);
 // cache_lod.h). Its key is the patch's lowest voxel with `coarse` = 1 + face in key bits 27..29.
 SHARED_CONST uint CACHE_KEY_COARSE_SHIFT = 27u;
 
-// One hash-table bucket: the key (voxel, set, coarse) and its slot. Key x = CACHE_TABLE_EMPTY:
-// unused. One uvec4 texel (loadCacheBucket).
+// One hash-table bucket: the key (voxel, set, coarse) and its slot. Key x = CACHE_TABLE_EMPTY: unused.
 struct CacheBucket {
     uvec4 keySlot;  // x: voxel.x | voxel.y << 16, y: voxel.z | coarse << 27 | set << 31, z: slot, w: unused
 };
 SHARED_ASSERT_SIZE(CacheBucket, 16);
 
 // The bindings every cache pass shares (shaders/irradiance_cache/irradiance_cache.glsl), after
-// the world and the emitter list. Directions, entries and table are read-only everywhere: texel
-// views (uvec4 texels). Each *_TEXELS binding is a texel view of the buffer of the same name,
-// bound to both, for the passes that only read it; the passes that write it use its storage binding.
+// the world and the emitter list.
 SHARED_CONST uint CACHE_BINDING_PARAMS = LIT_PASS_BINDING_FIRST + 0u;         // CacheParams
 SHARED_CONST uint CACHE_BINDING_FRAME = LIT_PASS_BINDING_FIRST + 1u;          // FrameParams
 SHARED_CONST uint CACHE_BINDING_DIRECTIONS = LIT_PASS_BINDING_FIRST + 2u;     // vec4: CACHE_DIRECTION_SETS sets of K
-SHARED_CONST uint CACHE_BINDING_ENTRIES = LIT_PASS_BINDING_FIRST + 3u;        // CacheEntry per slot (2 texels)
-SHARED_CONST uint CACHE_BINDING_TABLE = LIT_PASS_BINDING_FIRST + 4u;          // CacheBucket (1 texel)
+SHARED_CONST uint CACHE_BINDING_ENTRIES = LIT_PASS_BINDING_FIRST + 3u;        // CacheEntry per slot
+SHARED_CONST uint CACHE_BINDING_TABLE = LIT_PASS_BINDING_FIRST + 4u;          // CacheBucket
 SHARED_CONST uint CACHE_BINDING_LISTS = LIT_PASS_BINDING_FIRST + 5u;          // update list, then trace list
 SHARED_CONST uint CACHE_BINDING_STATIC_HITS = LIT_PASS_BINDING_FIRST + 6u;    // CACHE_FACES * K packed hits per slot
 SHARED_CONST uint CACHE_BINDING_SELECTED_HITS = LIT_PASS_BINDING_FIRST + 7u;  // per updated entry and ray
@@ -106,10 +102,6 @@ SHARED_CONST uint CACHE_BINDING_GBUFFER = LIT_PASS_BINDING_FIRST + 10u;       //
 SHARED_CONST uint CACHE_BINDING_RADIANCE = LIT_PASS_BINDING_FIRST + 11u;      // vec4 per pixel, read and written
 SHARED_CONST uint CACHE_BINDING_INDIRECT = LIT_PASS_BINDING_FIRST + 12u;      // vec4 per pixel: the indirect term alone
 SHARED_CONST uint CACHE_BINDING_COUNTERS = LIT_PASS_BINDING_FIRST + 13u;      // uint[CACHE_COUNTER_COUNT]
-SHARED_CONST uint CACHE_BINDING_STATIC_HIT_TEXELS = LIT_PASS_BINDING_FIRST + 14u;    // uint texels: visibility_static
-SHARED_CONST uint CACHE_BINDING_SELECTED_HIT_TEXELS = LIT_PASS_BINDING_FIRST + 15u;  // uint texels: bounce
-SHARED_CONST uint CACHE_BINDING_IRRADIANCE_TEXELS = LIT_PASS_BINDING_FIRST + 16u;    // uvec4 texels: filter
-SHARED_CONST uint CACHE_BINDING_FILTERED_TEXELS = LIT_PASS_BINDING_FIRST + 17u;      // uvec4 texels: bounce, gather
 
 SHARED_CONST uint CACHE_COUNTER_RAYS = 0u;  // rays the cache's passes traced this frame (not the bounce's shadow rays)
 SHARED_CONST uint CACHE_COUNTER_COUNT = 4u;

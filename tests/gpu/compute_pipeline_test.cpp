@@ -3,14 +3,12 @@
 // must be uniform texel buffers and every other binding stays a storage buffer.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <utility>
 #include <vector>
 
 #include "gpu/compute_pipeline.h"
 #include "gpu/gpu_test_context.h"
 #include "shared/bindings.h"
-#include "shared/irradiance_cache.h"
 #include "shared/light_sampling.h"
 #include "shared/restir.h"
 #include "shared/trace_rays.h"
@@ -85,38 +83,6 @@ TEST_F(ComputePipelineBindings, RestirPassesReadWhatTheyOnlyReadAsTexels) {
         ASSERT_EQ(types.size(), count) << pass.shader;
         EXPECT_EQ(types[shared::LIGHTS_BINDING_EMITTERS], texel) << pass.shader;
         for (auto [binding, type] : pass.own) EXPECT_EQ(types[binding], type) << pass.shader << " binding " << binding;
-    }
-}
-
-// The irradiance cache's passes share one binding list (irradiance_cache.glsl): directions, entries,
-// table and G-buffer, which no pass writes, are texels; the per-slot results a pass writes keep
-// their storage bindings, and the passes that only read them fetch the same buffers through the
-// *_TEXELS bindings.
-TEST_F(ComputePipelineBindings, CachePassesReadWhatTheyOnlyReadAsTexels) {
-    const std::vector<std::uint32_t> texelBindings = {
-        shared::CACHE_BINDING_DIRECTIONS,        shared::CACHE_BINDING_ENTRIES,
-        shared::CACHE_BINDING_TABLE,             shared::CACHE_BINDING_GBUFFER,
-        shared::CACHE_BINDING_STATIC_HIT_TEXELS, shared::CACHE_BINDING_SELECTED_HIT_TEXELS,
-        shared::CACHE_BINDING_IRRADIANCE_TEXELS, shared::CACHE_BINDING_FILTERED_TEXELS};
-    const char* passes[] = {"irradiance_cache/faces",
-                            "irradiance_cache/trace_static",
-                            "irradiance_cache/visibility_static",
-                            "irradiance_cache/visibility_static_full",
-                            "irradiance_cache/visibility_dynamic",
-                            "irradiance_cache/visibility_dynamic_full",
-                            "irradiance_cache/light_bounce",
-                            "irradiance_cache/filter",
-                            "irradiance_cache/gather"};
-    const std::uint32_t count = shared::CACHE_BINDING_FILTERED_TEXELS + 1u;
-    for (const char* shader : passes) {
-        engine::gpu::ComputePipeline pipeline(context(), shader, count);
-        const std::vector<VkDescriptorType>& types = pipeline.bindingTypes();
-        ASSERT_EQ(types.size(), count) << shader;
-        for (std::uint32_t b = shared::LIT_PASS_BINDING_FIRST; b < count; ++b) {
-            const bool texel = std::find(texelBindings.begin(), texelBindings.end(), b) != texelBindings.end();
-            EXPECT_EQ(types[b], texel ? VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER)
-                << shader << " binding " << b;
-        }
     }
 }
 

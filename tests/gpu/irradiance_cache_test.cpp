@@ -401,36 +401,6 @@ TEST_F(IrradianceCache, MemoryDoesNotGrowWithTheWorld) {
     EXPECT_EQ(a.bytes, b.bytes);
 }
 
-// The cache's buffers are read through texel views (irradiance_cache.glsl), each at most
-// maxTexelBufferElements texels: a memory budget that pays for more slots than the views hold is
-// held to what they hold, and the cache still renders. The limit is lowered for the test, above
-// the courtyard's grid and below its budget's static hits (CACHE_FACES * K texels per slot); on
-// lavapipe (2^27 texels) it binds above a budget of about 630 MiB at K = 128, S = 16.
-TEST_F(IrradianceCache, ABudgetOverTheTexelLimitIsHeldToIt) {
-    using engine::render::IrradianceCache;
-    Scene scene = courtyard();
-    const LightingSettings l = cacheLighting(1);
-    const std::uint64_t limit = 200000;
-    const auto heldTo = static_cast<std::uint32_t>(limit / (shared::CACHE_FACES * l.cache.directions));
-    ASSERT_LT(heldTo, l.cache.budgetBytes / IrradianceCache::bytesPerSlot(l.cache)) << "the budget must pay for more";
-    EXPECT_EQ(IrradianceCache::maxSlots(l.cache, limit), heldTo);
-    struct LoweredLimit {  // the device's limit back whatever happens
-        explicit LoweredLimit(std::uint64_t texels) { gpu_testing::context().limitTexelBuffers(texels); }
-        ~LoweredLimit() { gpu_testing::context().limitTexelBuffers(0); }
-    } lowered(limit);
-    Renderer r(gpu_testing::context());
-    engine::render::FrameResult result;
-    for (int i = 0; i < 3; ++i) result = r.render(scene, scene.camera(), frame(48), l);
-    std::printf("texel limit %llu: %u slots (the budget's %llu), %u live entries, %u visible keys dropped\n",
-                static_cast<unsigned long long>(limit), r.irradianceCache().directory().maxSlots(),
-                static_cast<unsigned long long>(l.cache.budgetBytes / IrradianceCache::bytesPerSlot(l.cache)),
-                result.cache.entries, result.cache.dropped);
-    EXPECT_EQ(r.irradianceCache().directory().maxSlots(), heldTo);
-    EXPECT_GT(result.cache.entries, 0u);
-    EXPECT_LE(result.cache.entries, heldTo);
-    EXPECT_GT(meanOf(r.readback().indirect), 0.0) << "the cache still lights what it holds";
-}
-
 // An edit re-traces the static rays of the entries within the maximum ray length of it, and no
 // others; the changed light then reaches the cache.
 TEST_F(IrradianceCache, EditsInvalidateOnlyNearbyStaticRays) {

@@ -9,7 +9,6 @@
 #include "core/check.h"
 #include "core/hash.h"
 #include "gpu/command_list.h"
-#include "gpu/context.h"
 #include "gpu/uploader.h"
 #include "render/irradiance_cache/cache_lod.h"
 #include "render/irradiance_cache/cache_params.h"
@@ -35,7 +34,6 @@ struct CachePassIo {
     gpu::Buffer& radiance;  // read and written: the indirect term is added
     gpu::Buffer& indirect;  // written: the indirect term alone
     gpu::Buffer& counters;
-    // The texel bindings (CACHE_BINDING_*_TEXELS) take the same buffers as the storage ones.
     auto bindings() const {
         return std::to_array<PassBinding>({{shared::CACHE_BINDING_PARAMS, &params},
                                            {shared::CACHE_BINDING_FRAME, &frameParams},
@@ -50,11 +48,7 @@ struct CachePassIo {
                                            {shared::CACHE_BINDING_GBUFFER, &gbuffer},
                                            {shared::CACHE_BINDING_RADIANCE, &radiance},
                                            {shared::CACHE_BINDING_INDIRECT, &indirect},
-                                           {shared::CACHE_BINDING_COUNTERS, &counters},
-                                           {shared::CACHE_BINDING_STATIC_HIT_TEXELS, &staticHits},
-                                           {shared::CACHE_BINDING_SELECTED_HIT_TEXELS, &selectedHits},
-                                           {shared::CACHE_BINDING_IRRADIANCE_TEXELS, &irradiance},
-                                           {shared::CACHE_BINDING_FILTERED_TEXELS, &filtered}});
+                                           {shared::CACHE_BINDING_COUNTERS, &counters}});
     }
 };
 constexpr std::uint32_t kOwnBindings = bindingCount<CachePassIo>();
@@ -162,17 +156,6 @@ std::uint64_t IrradianceCache::bytesPerSlot(const lighting::IrradianceCacheSetti
            + shared::CACHE_FACES * s.raysPerUpdate * 4ull;                           // selected hits
 }
 
-std::uint32_t IrradianceCache::maxSlots(const lighting::IrradianceCacheSettings& s, std::uint64_t maxTexels) {
-    const std::uint64_t budgetSlots = std::clamp<std::uint64_t>(s.budgetBytes / bytesPerSlot(s), 1, 1u << 24);
-    // The most texels any one view needs per slot: the static hits' CACHE_FACES * K words (K >= 16),
-    // against the selected hits' CACHE_FACES * S words, CACHE_FACES vec4s of irradiance, two texels
-    // per entry and up to four table buckets (a power of two at least twice the slots in use).
-    const std::uint64_t texelsPerSlot = std::max<std::uint64_t>(
-        {shared::CACHE_FACES * std::uint64_t(s.directions), shared::CACHE_FACES * std::uint64_t(s.raysPerUpdate),
-         shared::CACHE_FACES, sizeof(shared::CacheEntry) / 16, 4});
-    return static_cast<std::uint32_t>(std::clamp<std::uint64_t>(maxTexels / texelsPerSlot, 1, budgetSlots));
-}
-
 std::uint32_t IrradianceCache::directionRotation(glm::ivec3 voxel, std::uint32_t set, std::uint32_t seed, std::uint32_t coarse) {
     const std::uint32_t x = static_cast<std::uint32_t>(voxel.x) | (static_cast<std::uint32_t>(voxel.y) << 16);
     const std::uint32_t y = static_cast<std::uint32_t>(voxel.z) | (coarse << shared::CACHE_KEY_COARSE_SHIFT) | (set << 31);
@@ -208,10 +191,11 @@ void IrradianceCache::reset(const lighting::IrradianceCacheSettings& settings, s
     mSeed = seed;
     mConfigured = true;
     mDirectionsUploaded = false;
-    mDirectory = IrradianceCacheDirectory(maxSlots(settings, mCtx.info().maxTexelBufferElements));
+    auto slots = static_cast<std::uint32_t>(
+        std::clamp<std::uint64_t>(settings.budgetBytes / bytesPerSlot(settings), 1, 1u << 24));
+    mDirectory = IrradianceCacheDirectory(slots);
     mDirections = makeDirections(settings.directions);
     mDirectionBuffer = gpu::Buffer(mCtx, gpu::BufferKind::Storage, mDirections.size() * sizeof(glm::vec4), "cache.directions");
-    mDirectionBuffer.setTexelFormat(VK_FORMAT_R32G32B32A32_UINT);  // cacheDirection fetches vec4 bits
     mCapacity = 0;
     mStaticHits = {};
     mIrradiance = {};
@@ -225,26 +209,21 @@ void IrradianceCache::reset(const lighting::IrradianceCacheSettings& settings, s
 void IrradianceCache::ensureCapacity(std::uint32_t slots, gpu::CommandList& cmd) {
     if (slots <= mCapacity) return;
     std::uint32_t capacity = std::min(std::max(std::bit_ceil(slots), 1024u), std::max(mDirectory.maxSlots(), slots));
-    // Every buffer but the lists is read as texels by some pass (irradiance_cache.glsl): packed
-    // hits as R32_UINT, the vec4s and structs as uvec4 texels. maxSlots keeps the views in the limit.
-    auto grow = [&](gpu::Buffer& buffer, std::uint64_t bytesPerSlot, VkFormat texels, const char* name) {
+    auto grow = [&](gpu::Buffer& buffer, std::uint64_t bytesPerSlot, const char* name) {
         gpu::Buffer bigger(mCtx, gpu::BufferKind::Storage, capacity * bytesPerSlot, name);
-        bigger.setTexelFormat(texels);
         if (buffer.valid()) {
             cmd.copyBuffer(buffer, bigger, {{0, 0, buffer.size()}});
             mRetired.push_back(std::move(buffer));
         }
         buffer = std::move(bigger);
     };
-    grow(mStaticHits, shared::CACHE_FACES * mSettings.directions * 4ull, VK_FORMAT_R32_UINT, "cache.staticHits");
-    grow(mIrradiance, shared::CACHE_FACES * sizeof(glm::vec4), VK_FORMAT_R32G32B32A32_UINT, "cache.irradiance");
-    grow(mFiltered, shared::CACHE_FACES * sizeof(glm::vec4), VK_FORMAT_R32G32B32A32_UINT, "cache.filtered");
+    grow(mStaticHits, shared::CACHE_FACES * mSettings.directions * 4ull, "cache.staticHits");
+    grow(mIrradiance, shared::CACHE_FACES * sizeof(glm::vec4), "cache.irradiance");
+    grow(mFiltered, shared::CACHE_FACES * sizeof(glm::vec4), "cache.filtered");
     mEntries = gpu::Buffer(mCtx, gpu::BufferKind::Storage, capacity * sizeof(shared::CacheEntry), "cache.entries");
-    mEntries.setTexelFormat(VK_FORMAT_R32G32B32A32_UINT);  // loadCacheEntry
     mLists = gpu::Buffer(mCtx, gpu::BufferKind::Storage, kListWordsPerSlot * capacity * 4, "cache.lists");
     mSelectedHits = gpu::Buffer(mCtx, gpu::BufferKind::Storage,
                                 std::uint64_t(capacity) * shared::CACHE_FACES * mSettings.raysPerUpdate * 4, "cache.selectedHits");
-    mSelectedHits.setTexelFormat(VK_FORMAT_R32_UINT);
     mCapacity = capacity;
     cmd.barrier();
 }
@@ -339,7 +318,6 @@ void IrradianceCache::prepare(const lighting::IrradianceCacheSettings& settings,
         std::vector<shared::CacheBucket> table = mDirectory.buildTable();
         if (!mTable.valid() || mTable.size() != table.size() * sizeof(shared::CacheBucket)) {
             mTable = gpu::Buffer(mCtx, gpu::BufferKind::Storage, table.size() * sizeof(shared::CacheBucket), "cache.table");
-            mTable.setTexelFormat(VK_FORMAT_R32G32B32A32_UINT);  // loadCacheBucket
         }
         uploader.write(mTable, 0, table.data(), table.size() * sizeof(shared::CacheBucket));
     }

@@ -15,8 +15,7 @@
 //   cache.bounce        light leaving each ray's hit -> E_new, blended into the entry
 //   cache.filter        3^3 filter over neighbouring entries of the same set
 //   cache.gather        per pixel: albedo/pi * E from the pixel's set, added to the radiance
-// GPU storage grows with the entries (doubling) up to the budget (held to the device's texel-view
-// limit, maxSlots); it never depends on the world's size.
+// GPU storage grows with the entries (doubling) up to the budget; it never depends on the world's size.
 #pragma once
 
 #include <cstdint>
@@ -100,9 +99,6 @@ public:
     glm::vec3 rayDirection(glm::ivec3 voxel, std::uint32_t set, std::uint32_t face, std::uint32_t k,
                            std::uint32_t coarse = 0) const;
     static std::uint64_t bytesPerSlot(const lighting::IrradianceCacheSettings& settings);
-    // The slots the memory budget pays for, held to what keeps each of the cache's texel views
-    // within `maxTexels` texels (the device's maxTexelBufferElements).
-    static std::uint32_t maxSlots(const lighting::IrradianceCacheSettings& settings, std::uint64_t maxTexels);
 
 private:
     void reset(const lighting::IrradianceCacheSettings& settings, std::uint32_t seed);
