@@ -146,6 +146,23 @@ TEST(IrradianceCacheDirectory, RayBudgetIsSpentByPriorityAndNeverExceeded) {
     EXPECT_EQ(restarted, 100u) << "40 per frame: all within ceil(100 / 40) = 3 frames";
 }
 
+// An update is charged for the faces the shaders trace: a floor voxel (one open face) costs a
+// sixth of an entry with six, so the same budget admits six times the new floor entries.
+TEST(IrradianceCacheDirectory, RayBudgetChargesOnlyOpenFaces) {
+    CacheWork work;
+    work.rayBudget = 40 * 96;  // 20 new entries with six faces each (a first update costs twice)
+    work.phases = 2;
+    IrradianceCacheDirectory sixFaces(1000), floor(1000);
+    EXPECT_EQ(sixFaces.beginFrame(row(0, 200), 0.0, 0.3f, work).update.size(), 20u);
+    work.openFaces = [](glm::ivec3) { return 1u; };
+    auto lists = floor.beginFrame(row(0, 200), 0.0, 0.3f, work);
+    EXPECT_EQ(lists.update.size(), 120u);
+    EXPECT_EQ(lists.rays, work.rayBudget);
+    // Dynamic keys are charged six faces whatever is around them (objects move in front of them).
+    auto dynamic = floor.beginFrame(row(0, 50, shared::CACHE_SET_DYNAMIC), 0.1, 0.3f, work);
+    EXPECT_EQ(dynamic.update.size(), 40u) << "the whole budget (nothing else waits) at 96 rays each";
+}
+
 TEST(IrradianceCacheDirectory, WithoutABudgetEveryVisibleEntryUpdatesEveryFrame) {
     IrradianceCacheDirectory dir(1000);
     CacheWork work;

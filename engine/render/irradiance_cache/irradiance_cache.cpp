@@ -286,6 +286,18 @@ void IrradianceCache::prepare(const lighting::IrradianceCacheSettings& settings,
     work.raysPerUpdate = settings.raysPerUpdate * shared::CACHE_FACES;
     work.phases = settings.directions / settings.raysPerUpdate;
     work.convergedAfter = static_cast<std::uint32_t>(std::ceil(1.0f / settings.alpha));
+    if (frameIn.grid != nullptr) {
+        // The shaders' rule for a static entry's face (cacheFaceExposed): its neighbour is not static solid.
+        work.openFaces = [grid = frameIn.grid](glm::ivec3 v) {
+            std::uint32_t open = 0;
+            for (int axis = 0; axis < 3; ++axis) {
+                glm::ivec3 step(0);
+                step[axis] = 1;
+                open += (grid->get(v - step) == world::kEmpty) + (grid->get(v + step) == world::kEmpty);
+            }
+            return open;
+        };
+    }
     if (!dynamicVoxels.empty()) {
         constexpr int kNearMovingObject = 8;  // voxels
         work.nearMin = glm::ivec3(std::numeric_limits<int>::max());

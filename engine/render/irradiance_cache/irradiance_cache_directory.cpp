@@ -143,9 +143,13 @@ CacheFrameLists IrradianceCacheDirectory::beginFrame(std::span<const CacheKey> v
     const auto order = [](std::uint64_t cls, std::uint64_t lastUpdate) {
         return cls << 56 | (lastUpdate & ((1ull << 56) - 1));
     };
-    // A coarse entry traces one face, a voxel's entry up to six.
+    // S rays per face traced (CacheWork): a coarse entry traces one face, a voxel's entry its open
+    // faces (at least one: a key comes from a visible face, or surrounds a moving object).
+    const std::uint32_t perFace = work.raysPerUpdate / shared::CACHE_FACES;
     const auto updateCost = [&](const CacheKey& key) {
-        return key.coarse != 0 ? work.raysPerUpdate / shared::CACHE_FACES : work.raysPerUpdate;
+        if (key.coarse != 0) return perFace;
+        if (key.set != shared::CACHE_SET_STATIC || !work.openFaces) return work.raysPerUpdate;
+        return perFace * std::clamp(work.openFaces(key.voxel), 1u, shared::CACHE_FACES);
     };
     std::vector<Candidate> candidates;
     candidates.reserve(seen.size() + fresh.size());

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <unordered_map>
 #include <vector>
@@ -44,13 +45,19 @@ std::uint32_t cacheKeyHash(const CacheKey& key);
 //      still tracing);
 //   4. converged static entries not updated for `refreshFrames` frames.
 // Without a budget (rayBudget 0) every visible entry is updated every frame.
+//
+// An update is charged for the faces it traces: S rays per face. The shaders skip a face whose
+// neighbour is static solid, so a static voxel's entry is charged for its open faces when
+// `openFaces` is given (a floor voxel traces one face, not six); a coarse entry traces one face;
+// a dynamic entry is charged all six (what moves in front of its faces is not known here).
 struct CacheWork {
     std::uint64_t rayBudget = 0;         // rays per frame; 0: no limit
-    std::uint32_t raysPerUpdate = 96;    // S rays on each of the six faces (a coarse entry traces one face: S)
+    std::uint32_t raysPerUpdate = 96;    // S rays on each of the six faces
     std::uint32_t phases = 8;            // K / S: the updates a (re)trace takes
     std::uint32_t convergedAfter = 33;   // about 1 / alpha
     std::uint32_t refreshFrames = 30;
     glm::ivec3 nearMin{0}, nearMax{-1};  // voxels near moving objects (class 2); empty when max < min
+    std::function<std::uint32_t(glm::ivec3)> openFaces;  // a static voxel's faces not against static solid; null: six
 };
 
 struct CacheFrameLists {
