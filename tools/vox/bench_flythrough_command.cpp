@@ -26,6 +26,7 @@
 #include "commands.h"
 #include "number_options.h"
 #include "gpu/context.h"
+#include "lighting_options.h"
 #include "metrics/image_metrics.h"
 #include "progress_line.h"
 #include "render/flythrough_player.h"
@@ -57,6 +58,7 @@ struct FlythroughOptions {
     // Cache runs: one per (fallback radius, ray budget) pair; an empty list: the cache's default.
     std::vector<std::uint32_t> cacheFallback;
     std::vector<std::uint32_t> cacheBudget;
+    std::vector<std::string> cacheVariants;  // "NAME:--knob value ...": one more cache run each
     std::uint32_t bounces = 1;
     std::string output = "out/flythrough";
 };
@@ -67,6 +69,7 @@ struct Run {
     std::uint32_t spp = 0;  // path: paths per pixel per frame
     std::optional<std::uint32_t> fallback;  // cache: the gather's fallback radius, when the run sets it
     std::optional<std::uint32_t> budget;    // cache: the ray budget, when the run sets it
+    std::string variant;                    // cache: a --cache-variant's name
     LightingSettings lighting;
     Scene scene;
     Flythrough fly;
@@ -76,10 +79,10 @@ struct Run {
     std::vector<double> mae;     // reference frames
     std::string label() const {
         if (method == "path") return fmt::format("path {} spp", spp);
-        std::string variant;
-        if (fallback) variant += fmt::format("fallback {}", *fallback);
-        if (budget) variant += fmt::format("{}budget {}", variant.empty() ? "" : ", ", *budget);
-        return variant.empty() ? method : fmt::format("{} ({})", method, variant);
+        std::string text = variant;
+        if (fallback) text += fmt::format("{}fallback {}", text.empty() ? "" : ", ", *fallback);
+        if (budget) text += fmt::format("{}budget {}", text.empty() ? "" : ", ", *budget);
+        return text.empty() ? method : fmt::format("{} ({})", method, text);
     }
 };
 
@@ -216,8 +219,8 @@ int runFlythroughBench(const FlythroughOptions& o) {
             r.spp = spp;
             r.lighting.indirect = indirect;
             r.lighting.cache.bounces = o.bounces;
-            r.lighting.path.samples = spp;
             r.lighting.path.bounces = o.bounces;
+            if (indirect == Indirect::Path) r.lighting.path.samples = spp;
             r.scene = *loaded;
             r.fly = *fly;
             if (engine::Status bound = r.fly.timeline.bind(r.scene); !bound) return bound;
@@ -241,6 +244,19 @@ int runFlythroughBench(const FlythroughOptions& o) {
                 if (fallback) r.lighting.cache.fallbackRadius = *fallback;
                 if (budget) r.lighting.cache.rayBudget = *budget;
             }
+        }
+        for (const std::string& v : o.cacheVariants) {
+            if (added) added = addRun("cache", 0, Indirect::Cache);
+            if (!added) break;
+            const std::size_t colon = v.find(':');
+            if (colon == std::string::npos || colon == 0) return fail(engine::makeError("--cache-variant '{}': expected NAME:--knob value ...", v));
+            auto values = knobValuesOf(v.substr(colon + 1), fmt::format("--cache-variant {}", v.substr(0, colon)));
+            if (!values) return fail(values.error());
+            Run& r = runs.back();
+            auto merged = engine::lighting::mergeLighting(r.lighting, *values);
+            if (!merged) return fail(merged.error());
+            r.lighting = *merged;
+            r.variant = v.substr(0, colon);
         }
         for (std::uint32_t spp : o.pathSpp)
             if (added) added = addRun("path", spp, Indirect::Path);
@@ -336,6 +352,8 @@ void addBenchFlythroughCommand(CLI::App& bench, int& exitCode) {
     cmd->add_option("--cache-budget", o->cacheBudget, "Cache runs, one per ray budget (0 = every visible entry every frame)")
         ->delimiter(',')
         ->check(numberIn(engine::wholeRange(0, 100000000, "rays")));
+    cmd->add_option("--cache-variant", o->cacheVariants,
+                    "One more cache run per value, NAME:--knob value ... (e.g. 'lod:--cache-lod-distance 24')");
     cmd->add_option("--bounces", o->bounces, "Bounces of the reference, the cache and the paths")->capture_default_str()
         ->check(numberIn(engine::wholeRange(1, 8, "bounces")));
     cmd->add_option("-o,--output", o->output, "Output folder (summary.csv, frames.csv, table.md)")->capture_default_str();

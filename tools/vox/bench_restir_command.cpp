@@ -21,6 +21,7 @@
 #include "core/atomic_file.h"
 #include "commands.h"
 #include "gpu/context.h"
+#include "lighting_options.h"
 #include "lighting/lighting_knobs.h"
 #include "metrics/seed_statistics.h"
 #include "number_options.h"
@@ -78,21 +79,6 @@ std::vector<std::string> splitOn(const std::string& s, char separator) {
 }
 
 const engine::lighting::Knob& knob(std::string_view option) { return *engine::lighting::knobForOption(option); }
-
-// "--method ris --sampling power" as knob values; `where` names the source in messages.
-engine::Result<std::vector<KnobValue>> knobValuesOf(const std::string& text, const std::string& where) {
-    std::vector<std::string> words = splitOn(text, ' ');
-    std::vector<KnobValue> out;
-    for (std::size_t i = 0; i < words.size(); i += 2) {
-        const std::string& option = words[i];
-        const engine::lighting::Knob* k =
-            option.rfind("--", 0) == 0 ? engine::lighting::knobForOption(option.substr(2)) : nullptr;
-        if (!k) return engine::makeError("{}: '{}' is not a lighting option (vox render --help lists them)", where, option);
-        if (i + 1 >= words.size()) return engine::makeError("{}: {} needs a value", where, option);
-        out.push_back({k, words[i + 1], fmt::format("{} {}", where, option)});
-    }
-    return out;
-}
 
 // The scaled knob follows the method, unless the row fixes it itself.
 EqualTime scaleOf(const LightingSettings& l, const std::vector<KnobValue>& given) {

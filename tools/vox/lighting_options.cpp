@@ -83,4 +83,25 @@ int showSettings(const std::string& world, const LightingOptions& options) {
     return 0;
 }
 
+engine::Result<std::vector<engine::lighting::KnobValue>> knobValuesOf(const std::string& text, const std::string& where) {
+    std::vector<std::string> words;
+    std::size_t at = 0;
+    while (at < text.size()) {
+        std::size_t end = text.find(' ', at);
+        if (end == std::string::npos) end = text.size();
+        if (end > at) words.push_back(text.substr(at, end - at));
+        at = end + 1;
+    }
+    std::vector<engine::lighting::KnobValue> out;
+    for (std::size_t i = 0; i < words.size(); i += 2) {
+        const std::string& option = words[i];
+        const engine::lighting::Knob* k =
+            option.rfind("--", 0) == 0 ? engine::lighting::knobForOption(option.substr(2)) : nullptr;
+        if (!k) return engine::makeError("{}: '{}' is not a lighting option (vox render --help lists them)", where, option);
+        if (i + 1 >= words.size()) return engine::makeError("{}: {} needs a value", where, option);
+        out.push_back({k, words[i + 1], fmt::format("{} {}", where, option)});
+    }
+    return out;
+}
+
 }  // namespace vox
