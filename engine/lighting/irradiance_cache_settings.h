@@ -33,17 +33,21 @@ struct IrradianceCacheSettings {
     // A ray cut short sees the sky, so it must cross the largest room: cornell needs 443.
     float maxRayLength = 500.0f;
     bool filter = true;                // 3^3 Gaussian over neighbouring voxels' faces
-    std::uint64_t budgetBytes = 64ull << 20;
+    // Slots beyond it evict the least recently seen. Buffers grow with the entries, so an unused
+    // budget costs nothing; 256 MiB holds a flythrough's entries long enough to converge (64 MiB
+    // evicted the Cornell box's: twice the error on a moving camera, docs/ACCURACY.md).
+    std::uint64_t budgetBytes = 256ull << 20;
     // Rays per frame the cache's updates may trace, spent by priority (new and edited entries,
     // moving objects, changed light, then the most stale); 0: update every visible entry each frame.
     std::uint32_t rayBudget = 150000;
     // Static faces at least this far along the view ray (voxels) share a coarse entry per open,
     // coplanar 2x2 patch (render/irradiance_cache/cache_lod.h); 0: every voxel its own entry.
-    float lodDistance = 0.0f;
+    // A quarter of the entries far away, each updated more often: lower error on a moving camera.
+    float lodDistance = 32.0f;
     // A pixel whose voxel has no entry yet (first seen this frame, or waiting for the ray budget)
     // reads the nearest entries of the same face within this many voxels in the face's plane,
     // reachable through the open space in front of it (never across a wall); 0: it reads nothing.
-    std::uint32_t fallbackRadius = 0;
+    std::uint32_t fallbackRadius = 4;
     // Of an update's hits per face that can receive light, how many sample the direct light there
     // (sun and one emitter, each with a shadow ray), a stratified subset weighted to stay unbiased;
     // 0: every one. The shadow rays are most of the bounce's cost; 8 makes cache.bounce ~0.6x as

@@ -41,30 +41,32 @@ vec4 gatherLevel(ivec3 voxel, uint face, uint set, vec3 p, uint coarse) {
 
 // A pixel whose voxel and its bilinear neighbours have no value yet — seen for the first time
 // (its entry comes a frame late) or waiting for the ray budget — reads the nearest square ring of
-// voxels around it in the face's plane, up to gCache.fallbackRadius away, whose entries have the
-// same face and whose front is reachable through the open space in front of the pixel's
-// (cacheFrontsConnected: never across a wall), weighted by inverse squared distance. A loop that
-// no lane enters costs nothing on lavapipe, so a view whose pixels all have entries pays little;
-// but pixels that find nothing search every ring, so it is off by default and, off, compiled out
-// (shared/shader_features.h).
+// entries around it in the face's plane, up to gCache.fallbackRadius voxels away, whose entries
+// have the same face and whose front is reachable through the open space in front of the pixel's
+// (cacheFrontsConnected: never across a wall), weighted by inverse squared distance. The rings
+// step over voxels' entries (step 1, `coarse` 0) or, for a far pixel in an open patch, over the
+// coarse entries of its plane's patches (step 2 from the patch's base). A loop that no lane enters
+// costs nothing on lavapipe, so a view whose pixels all have entries pays little; pixels that find
+// nothing search every ring. `fallback` 0 compiles it out (shared/shader_features.h).
 layout(constant_id = FEATURE_CACHE_FALLBACK) const bool kFallback = true;
-vec4 gatherFallback(ivec3 voxel, uint face, uint set, vec3 p) {
+vec4 gatherFallback(ivec3 voxel, uint face, uint set, vec3 p, ivec3 origin, int step, uint coarse) {
     uint axis = face >> 1u, ua = (axis + 1u) % 3u, va = (axis + 2u) % 3u;
     vec3 sum = vec3(0.0);
     float weights = 0.0;
-    int radius = int(gCache.fallbackRadius);
+    int radius = (int(gCache.fallbackRadius) + step - 1) / step;
     for (int ring = 1; weights == 0.0 && ring <= radius; ++ring) {
         for (int j = -ring; j <= ring; ++j) {
             // The whole row at the ring's top and bottom, its two ends in between.
             for (int i = -ring; i <= ring; i += abs(j) == ring ? 1 : 2 * ring) {
-                ivec3 v = voxel;
-                v[ua] += i;
-                v[va] += j;
-                uint slot = cacheLookupKey(v, set, 0u);
+                ivec3 v = origin;
+                v[ua] += step * i;
+                v[va] += step * j;
+                uint slot = cacheLookupKey(v, set, coarse);
                 if (slot == ~0u) continue;
                 vec4 e = gFiltered[slot * CACHE_FACES + face];
-                if (e.w == 0.0 || !cacheFrontsConnected(voxel, face, ivec2(i, j), set)) continue;
-                vec2 d = vec2(v[ua], v[va]) + 0.5 - vec2(p[ua], p[va]);
+                ivec2 offset = ivec2(v[ua] - voxel[ua], v[va] - voxel[va]);
+                if (e.w == 0.0 || !cacheFrontsConnected(voxel, face, offset, set)) continue;
+                vec2 d = vec2(v[ua], v[va]) + 0.5 * float(step) - vec2(p[ua], p[va]);
                 float w = 1.0 / max(dot(d, d), 0.25);
                 sum += w * e.rgb * cacheFade(slot);
                 weights += w;
@@ -92,7 +94,9 @@ void main() {
         bool far = uintBitsToFloat(g.data.y) >= gCache.lodDistance;
         vec4 r = gatherLevel(g.voxel.xyz, face, set, g.position.xyz, far ? coarse : 0u);
         if (r.w == 0.0 && coarse != 0u) r = gatherLevel(g.voxel.xyz, face, set, g.position.xyz, far ? 0u : coarse);
-        if (kFallback && r.w == 0.0) r = gatherFallback(g.voxel.xyz, face, set, g.position.xyz);
+        if (kFallback && r.w == 0.0) r = gatherFallback(g.voxel.xyz, face, set, g.position.xyz, g.voxel.xyz, 1, 0u);
+        if (kFallback && r.w == 0.0 && coarse != 0u)
+            r = gatherFallback(g.voxel.xyz, face, set, g.position.xyz, patchBase, 2, coarse);
         if (r.w > 0.0) indirect = materialAlbedo(g.data.x) / PI * (r.rgb / r.w);
     }
     gIndirect[index] = vec4(indirect, 1.0);

@@ -40,7 +40,11 @@ vec3 indirectLeaving(ivec3 voxel, vec3 o, vec3 d, uint packed) {
     ivec3 hv;
     Surface s = cacheHitSurface(voxel, o, d, packed, hv);
     if (!s.valid) return vec3(0.0);
-    uint hs = cacheLookup(hv, (packed & CACHE_HIT_DYNAMIC) != 0u ? CACHE_SET_DYNAMIC : CACHE_SET_STATIC);
+    uint set = (packed & CACHE_HIT_DYNAMIC) != 0u ? CACHE_SET_DYNAMIC : CACHE_SET_STATIC;
+    uint hs = cacheLookup(hv, set);
+    ivec3 base;
+    uint coarse = set == CACHE_SET_STATIC && hs == ~0u && gCache.lodDistance > 0.0 ? cacheCoarsePatch(hv, s.face, base) : 0u;
+    if (coarse != 0u) hs = cacheLookupKey(base, set, coarse);  // a far face: its patch's coarse entry (cache_lod.h)
     if (hs == ~0u || (gEntries[hs].flags & CACHE_ENTRY_RESET) != 0u) return vec3(0.0);
     return s.albedo / PI * gFiltered[hs * CACHE_FACES + s.face].rgb * cacheFade(hs);
 }

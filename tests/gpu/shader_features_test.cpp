@@ -79,7 +79,10 @@ TEST_F(ShaderFeatures, AFrameUsesOnlyTheFeaturesItsSettingsAskFor) {
     EXPECT_EQ(defaults[FEATURE_CANDIDATE_VISIBILITY], 1u);
     EXPECT_EQ(defaults[FEATURE_UNBIASED], 0u);
     EXPECT_EQ(defaults[FEATURE_CACHE_MULTI_BOUNCE], 0u);
-    EXPECT_EQ(defaults[FEATURE_CACHE_FALLBACK], 0u);
+    EXPECT_EQ(defaults[FEATURE_CACHE_FALLBACK], 1u);  // on by default (docs/IRRADIANCE_CACHE.md)
+    LightingSettings noFallback;
+    noFallback.cache.fallbackRadius = 0u;
+    EXPECT_EQ(engine::render::shaderFeatures(noFallback)[FEATURE_CACHE_FALLBACK], 0u);
     LightingSettings unbiased;
     unbiased.restir.unbiased = 1u;
     unbiased.restir.candidateVisibility = 0u;  // the unbiased mode tests its candidates anyway
