@@ -21,6 +21,13 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 
+def variant_of(row):
+    """A cache run's name: its --cache-variant, else its fallback and budget (older CSVs have only those)."""
+    if row.get("cache_variant"):
+        return row["cache_variant"]
+    return ", ".join(f"{k} {row[f'cache_{k}']}" for k in ("fallback", "budget") if row.get(f"cache_{k}"))
+
+
 def path_error_at(path, ms):
     """The path curve's relative MAE at `ms` and whether the path points bracket it."""
     pts = sorted((float(r["wall_ms_mean"]), float(r["relative_mae"])) for r in path)
@@ -64,7 +71,7 @@ def equal_time_table(rows):
         path = [r for r in rs if r["method"] == "path"]
         caches = [r for r in rs if r["method"] == "cache"]
         for c in caches:
-            variant = ", ".join(f"{k} {c[f'cache_{k}']}" for k in ("fallback", "budget") if c.get(f"cache_{k}"))
+            variant = variant_of(c)
             name = f"{scene} ({variant})" if len(caches) > 1 and variant else scene
             ms, mae = float(c["wall_ms_mean"]), float(c["relative_mae"])
             at, inside = path_error_at(path, ms)
@@ -108,14 +115,13 @@ def main():
         ax.plot(xs, ys, "o-", color="tab:blue", label="ReSTIR + path-traced indirect")
         for r, x, y in zip(path, xs, ys):
             ax.annotate(f"{r['spp']} spp", (x, y), textcoords="offset points", xytext=(4, 4), fontsize=8)
-        for method, style, colour, label in (("cache", "s", "tab:red", "ReSTIR + irradiance cache"),
-                                             ("none", "x", "grey", "ReSTIR, no indirect")):
+        cache_colours = iter(["tab:red", "tab:orange", "tab:purple", "tab:brown", "tab:pink", "tab:olive"])
+        for method, style, label in (("cache", "s", "ReSTIR + irradiance cache"), ("none", "x", "ReSTIR, no indirect")):
             for r in rs:
                 if r["method"] == method:
-                    variant = ", ".join(f"{k} {r[f'cache_{k}']}" for k in ("fallback", "budget")
-                                        if r.get(f"cache_{k}"))
-                    ax.plot(float(r["wall_ms_mean"]), 100 * float(r["relative_mae"]), style,
-                            color="tab:orange" if r.get("cache_fallback") == "0" else colour, markersize=9,
+                    variant = variant_of(r)
+                    colour = next(cache_colours, "tab:red") if method == "cache" else "grey"
+                    ax.plot(float(r["wall_ms_mean"]), 100 * float(r["relative_mae"]), style, color=colour, markersize=9,
                             label=f"{label} ({variant})" if variant else label)
         first = rs[0]
         ax.set_title(f"{scene} ({first['size']}, {first['reference_frames']} reference frames)", fontsize=10)

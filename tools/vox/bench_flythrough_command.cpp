@@ -194,7 +194,7 @@ int runFlythroughBench(const FlythroughOptions& o) {
     if (engine::Status s = summaryFile.open(out / "summary.csv"); !s) return fail(s.error());
     std::ostream& summary = summaryFile.stream();
     summary << "scene,method,spp,wall_ms_mean,wall_ms_median,indirect_mae,relative_mae,reference_mean_abs,frames,"
-               "reference_frames,size,reference_spp,bounces,cache_fallback,cache_budget\n";
+               "reference_frames,size,reference_spp,bounces,cache_fallback,cache_budget,cache_variant\n";
     std::string table = "| scene | method | wall ms/frame (mean) | indirect MAE | MAE / mean \\|indirect\\| |\n|---|---|---|---|---|\n";
 
     for (const std::string& world : o.worlds) {
@@ -303,11 +303,11 @@ int runFlythroughBench(const FlythroughOptions& o) {
         const double refMean = mean(referenceMeans);
         for (const Run& r : runs) {
             const double wall = mean(r.wallMs), mae = mean(r.mae);
-            summary << fmt::format("{},{},{},{:.3f},{:.3f},{:.6g},{:.4f},{:.6g},{},{},{}x{},{},{},{},{}\n", loaded->name, r.method,
+            summary << fmt::format("{},{},{},{:.3f},{:.3f},{:.6g},{:.4f},{:.6g},{},{},{}x{},{},{},{},{},\"{}\"\n", loaded->name, r.method,
                                    r.spp, wall, median(r.wallMs), mae, mae / std::max(refMean, 1e-12), refMean,
                                    r.wallMs.size(), r.mae.size(), frame.width, frame.height, o.referenceSpp, o.bounces,
                                    r.fallback ? std::to_string(*r.fallback) : std::string(),
-                                   r.budget ? std::to_string(*r.budget) : std::string());
+                                   r.budget ? std::to_string(*r.budget) : std::string(), r.variant);
             const std::string row = fmt::format("| {} | {} | {:.1f} | {:.4g} | {:.1f} % |\n", loaded->name, r.label(), wall,
                                                 mae, 100.0 * mae / std::max(refMean, 1e-12));
             table += row;
