@@ -49,7 +49,7 @@ struct IrradianceCacheSettings {
     // reachable through the open space in front of it (never across a wall); 0: it reads nothing.
     std::uint32_t fallbackRadius = 4;
     // Of an update's hits per face that can receive light, how many sample the direct light there
-    // (sun and one emitter, each with a shadow ray), a stratified subset weighted to stay unbiased;
+    // (sun and one emitter, one shadow ray for the two), a stratified subset weighted to stay unbiased;
     // 0: every one. The shadow rays are most of the bounce's cost; 8 makes cache.bounce ~0.6x as
     // dear but its MAE +8 % on the Cornell box (+12 % against the unbudgeted cache), so 0 stays
     // the default (docs/ACCURACY.md).

@@ -30,12 +30,17 @@ Surface surfaceFrom(GBufferTexel g) {
 float gbufferDistance(GBufferTexel g) { return uintBitsToFloat(g.data.y); }
 
 // Sun light (a directional light of irradiance sunRadiance) with one shadow ray.
-vec3 sunLight(Surface s, FrameParams f) {
-    vec3 l = f.sunDirection.xyz;
-    float cosine = dot(s.normal, l);
+vec3 sunUnshadowed(Surface s, FrameParams f) {
+    float cosine = dot(s.normal, f.sunDirection.xyz);
     if (cosine <= 0.0 || !any(greaterThan(f.sunRadiance.rgb, vec3(0.0)))) return vec3(0.0);
-    SceneHit hit = traceScene(s.position + s.normal * kRayOffset, l, 1.0e30);
-    return hit.hit ? vec3(0.0) : s.albedo / PI * f.sunRadiance.rgb * cosine;
+    return s.albedo / PI * f.sunRadiance.rgb * cosine;
+}
+
+vec3 sunLight(Surface s, FrameParams f) {
+    vec3 light = sunUnshadowed(s, f);
+    if (!any(greaterThan(light, vec3(0.0)))) return vec3(0.0);
+    SceneHit hit = traceScene(s.position + s.normal * kRayOffset, f.sunDirection.xyz, 1.0e30);
+    return hit.hit ? vec3(0.0) : light;
 }
 
 vec3 skyBackground(FrameParams f, vec3 dir) {

@@ -1,7 +1,8 @@
 #version 460
 // Irradiance cache, light bounce (§4.6): each face gathers the light leaving its rays' selected
-// hits — the direct light there from the sun and the emitter list (sampled, with shadow rays, at
-// a weighted subset of the hits: CacheParams::lightSamples), plus, with more than one bounce, the
+// hits — the direct light there from the sun and the emitter list (the sun and one emitter
+// sample, one of them shadow-tested: directLightOneShadowRay; at a weighted subset of the hits:
+// CacheParams::lightSamples), plus, with more than one bounce, the
 // cached irradiance of the hit face — or the sky where a ray escapes. Cosine-distributed
 // directions make E = pi * mean(L). The result is blended into the entry's running value.
 #extension GL_GOOGLE_include_directive : require
@@ -49,11 +50,12 @@ vec3 indirectLeaving(ivec3 voxel, vec3 o, vec3 d, uint packed) {
     return s.albedo / PI * gFiltered[hs * CACHE_FACES + s.face].rgb * cacheFade(hs);
 }
 
-// The direct light leaving a hit (sun and one emitter sample, each with a shadow ray).
+// The direct light leaving a hit: the sun and one emitter sample, one of them shadow-tested (a
+// shadow ray per hit, not two: the pass's cost is its shadow rays).
 vec3 directLeaving(ivec3 voxel, vec3 o, vec3 d, uint packed, inout uint rng) {
     ivec3 hv;
     Surface s = cacheHitSurface(voxel, o, d, packed, hv);
-    return s.valid ? directLightFromTiles(s, gFrame, rng) : vec3(0.0);
+    return s.valid ? directLightOneShadowRay(s, gFrame, rng) : vec3(0.0);
 }
 
 void main() {

@@ -67,4 +67,58 @@ vec3 directLightFromTiles(Surface s, FrameParams frame, inout uint rng) {
     return direct + f / pdf;
 }
 
+// One emitter sample for `s`, unshadowed: drawn from a random tile entry when the frame drew
+// tiles, else by power from the alias table; `value` is its contribution over its density, and
+// (toLight, dist) its shadow ray. False when there is no light or it cannot reach the surface.
+bool emitterSampleUnshadowed(Surface s, FrameParams frame, inout uint rng, out GpuEmitter e, out vec3 value,
+                             out vec3 toLight, out float dist) {
+    value = vec3(0.0);
+    toLight = vec3(0.0, 0.0, 1.0);
+    dist = 0.0;
+    float p;
+    if (lightTilesReady(frame)) {
+        LightTileSample t = lightTileSample(frame, lightTileRunStart(rng));
+        e = lightTileEmitter(t);
+        p = t.radiance.w;
+        if (!(p > 0.0)) return false;  // no lights this frame
+    } else {
+        uint slot;
+        if (!pickEmitter(rng, true, slot)) return false;
+        e = loadEmitter(slot);
+        p = emitterPdf(slot, true);
+    }
+    uint face;
+    float side = float(e.minCorner.w);
+    float pdf = p * pickFace(e, s.position, rngNext(rng), face) / (side * side);
+    vec2 uv = vec2(rngNext(rng), rngNext(rng));
+    if (!(pdf > 0.0)) return false;
+    vec3 f = lightContribution(s, e, face, uv, toLight, dist);
+    value = f / pdf;
+    return any(greaterThan(f, vec3(0.0)));
+}
+
+// The direct light at `s` with one shadow ray instead of two: the sun's unshadowed light and one
+// emitter sample's are both computed, one of them is picked with probability proportional to its
+// size and its shadow ray traced, and the survivor is divided by that probability. Unbiased (each
+// term's expectation is kept), and where neither is shadowed it returns their exact sum; the
+// variance it adds comes only from shadows. One traversal for every lane: the branch picks the
+// ray, not the trace (lavapipe would run both traces where lanes disagree).
+vec3 directLightOneShadowRay(Surface s, FrameParams frame, inout uint rng) {
+    vec3 sun = sunUnshadowed(s, frame);
+    GpuEmitter e;
+    vec3 emitted, toLight;
+    float dist;
+    if (!emitterSampleUnshadowed(s, frame, rng, e, emitted, toLight, dist)) emitted = vec3(0.0);
+    float ws = sun.r + sun.g + sun.b, we = emitted.r + emitted.g + emitted.b;
+    if (!(ws + we > 0.0)) return vec3(0.0);
+    float pSun = ws / (ws + we);
+    bool toSun = rngNext(rng) < pSun;
+    SceneHit hit = traceScene(s.position + s.normal * kRayOffset, toSun ? frame.sunDirection.xyz : toLight,
+                              toSun ? 1.0e30 : dist + kRayOffset);
+    if (toSun) return hit.hit ? vec3(0.0) : sun / pSun;
+    ivec3 lo = e.minCorner.xyz;  // as lightVisible: a hit on the emitter's own voxels is no shadow
+    bool visible = !hit.hit || (!hit.dynamicSet && all(greaterThanEqual(hit.voxel, lo)) && all(lessThan(hit.voxel, lo + e.minCorner.w)));
+    return visible ? emitted / (1.0 - pSun) : vec3(0.0);
+}
+
 #endif
