@@ -223,6 +223,7 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
         cacheInput.seed = lighting.seed;
         cacheInput.grid = &scene.grid;
         cacheInput.editedCellMins = editedCells;
+        cacheInput.objectsMoved = result.upload.dynamicBytes > 0;
         cacheInput.lightsChanged = (!lightEdit.full && (lightEdit.added || lightEdit.removed || lightEdit.changed)) ||
                                    (mPrevSky && !sameSky(*mPrevSky, scene.sky));
     }

@@ -84,6 +84,36 @@ TEST(IrradianceCacheDirectory, DynamicEntriesFadeAndStaticOnesStay) {
     EXPECT_EQ(dir.liveEntries(), 5u);
 }
 
+// While no object moves, the dynamic entries around objects hold what is true: they converge and
+// refresh like static entries instead of taking the budget every frame, and they do not fade.
+// When an object moves again they are updated every frame again.
+TEST(IrradianceCacheDirectory, DynamicEntriesOfObjectsAtRestConvergeLikeStaticOnes) {
+    IrradianceCacheDirectory dir(100);
+    const std::vector<CacheKey> keys = row(0, 5, shared::CACHE_SET_DYNAMIC);
+    CacheWork moving;
+    moving.rayBudget = 1000000;  // ample; a budget of 0 would update every entry every frame
+    moving.convergedAfter = 4;
+    moving.refreshFrames = 10;
+    CacheWork resting = moving;
+    resting.objectsMoved = false;
+    EXPECT_EQ(dir.beginFrame(keys, 0.0, 0.3f, moving).update.size(), 5u);
+    // At rest: three more updates converge them (4 in all), then nothing until the refresh.
+    std::vector<std::size_t> updated;
+    double t = 0.0;
+    for (int frame = 1; frame <= 12; ++frame) {
+        t = frame / 30.0;
+        updated.push_back(dir.beginFrame(keys, t, 0.3f, resting).update.size());
+    }
+    EXPECT_EQ(updated, (std::vector<std::size_t>{5, 5, 5, 0, 0, 0, 0, 0, 0, 0, 0, 0})) << "12 frames = 0.4 s, past the fade";
+    EXPECT_EQ(dir.liveEntries(), 5u) << "entries of objects at rest must not fade";
+    // Nothing visible but still at rest: kept alive.
+    EXPECT_EQ(dir.beginFrame({}, t + 1.0, 0.3f, resting).faded, 0u);
+    // Moving again: every frame, and they fade once unseen for the fade time.
+    EXPECT_EQ(dir.beginFrame(keys, t + 1.1, 0.3f, moving).update.size(), 5u);
+    EXPECT_EQ(dir.beginFrame(keys, t + 1.2, 0.3f, moving).update.size(), 5u);
+    EXPECT_EQ(dir.beginFrame({}, t + 1.6, 0.3f, moving).faded, 5u);
+}
+
 TEST(IrradianceCacheDirectory, InvalidationReachesOnlyEntriesWithinTheRayLength) {
     IrradianceCacheDirectory dir(1000);
     dir.beginFrame(row(0, 100), 0.0, 0.3f, oneTrace());

@@ -99,9 +99,9 @@ int runRender(const RenderOptions& o) {
     std::printf("emitters %u (list update %.3f ms CPU)\n", frame.emitters, results.front().emitterUpdateMs);
     if (frame.cacheUsed) {
         const auto& c = frame.cache;
-        std::printf("cache    %u visible static + %u dynamic voxels, %u entries updated (%u waiting for the ray budget), %u live, "
-                    "%.2f MiB GPU, %llu rays traced, %.2f ms CPU\n",
-                    c.visibleStatic, c.visibleDynamic, c.updated, c.waiting, c.entries, double(c.bytes) / 1048576.0,
+        std::printf("cache    %u visible static + %u dynamic voxels, %u entries updated (%u dynamic; %u waiting for the ray "
+                    "budget), %u live, %.2f MiB GPU, %llu rays traced, %.2f ms CPU\n",
+                    c.visibleStatic, c.visibleDynamic, c.updated, c.dynamicEntries, c.waiting, c.entries, double(c.bytes) / 1048576.0,
                     static_cast<unsigned long long>(c.raysTraced), frame.cachePrepareMs);
         if (c.coarseEntries) std::printf("cache    level of detail: %u of the visible static entries are coarse (2x2 patches)\n", c.coarseEntries);
     }

@@ -298,7 +298,8 @@ void IrradianceCache::prepare(const lighting::IrradianceCacheSettings& settings,
             return open;
         };
     }
-    if (!dynamicVoxels.empty()) {
+    work.objectsMoved = frameIn.objectsMoved;
+    if (!dynamicVoxels.empty() && frameIn.objectsMoved) {
         constexpr int kNearMovingObject = 8;  // voxels
         work.nearMin = glm::ivec3(std::numeric_limits<int>::max());
         work.nearMax = glm::ivec3(std::numeric_limits<int>::min());

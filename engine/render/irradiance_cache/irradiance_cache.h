@@ -61,6 +61,9 @@ struct CacheFrameInput {
     std::uint32_t seed = 0;                         // the lighting seed
     std::span<const glm::ivec3> editedCellMins;     // static 8^3 cells edited since the last frame
     bool lightsChanged = false;                     // an emitter or the sun changed: every entry restarts
+    // An object moved, appeared or vanished (the dynamic grid was rebuilt): dynamic entries and the
+    // static ones near objects are updated every frame only then.
+    bool objectsMoved = true;
 };
 
 class IrradianceCache {

@@ -98,9 +98,14 @@ CacheFrameLists IrradianceCacheDirectory::beginFrame(std::span<const CacheKey> v
     CacheFrameLists lists;
     const std::uint64_t frame = ++mFrame;
 
-    // Dynamic entries fade out after their last update; their slots come back.
+    // Dynamic entries fade out after their last update; their slots come back. While no object
+    // moves, what a dynamic entry holds stays true: its fade clock waits.
     for (std::uint32_t slot = 0; slot < mSlots.size(); ++slot) {
         Slot& s = mSlots[slot];
+        if (s.live && s.key.set == shared::CACHE_SET_DYNAMIC && !work.objectsMoved) {
+            s.lastUpdate = time;
+            mEntries[slot].updatedAt = static_cast<float>(time);
+        }
         if (s.live && s.key.set == shared::CACHE_SET_DYNAMIC && time - s.lastUpdate > fadeSeconds) {
             release(slot);
             ++lists.faded;
@@ -159,7 +164,16 @@ CacheFrameLists IrradianceCacheDirectory::beginFrame(std::span<const CacheKey> v
         const std::uint32_t update = updateCost(s.key);
         std::uint32_t cost = update;
         if (s.key.set == shared::CACHE_SET_DYNAMIC) {
-            cls = 1;
+            // Around a moving object, every frame; around objects at rest, like static entries.
+            if (work.objectsMoved) {
+                cls = 1;
+            } else if (s.updates < work.convergedAfter) {
+                cls = 3;
+            } else if (frame - s.lastUpdateFrame >= work.refreshFrames || work.rayBudget == 0) {
+                cls = 4;
+            } else {
+                continue;
+            }
         } else if (s.traced < work.phases) {
             // Invalidated by an edit and not updated since: as urgent as a new entry; its later
             // tracing updates converge like any other (they still trace, at twice the cost).

@@ -34,7 +34,9 @@ std::uint32_t cacheKeyHash(const CacheKey& key);
 
 // How a frame's rays are spent. Visible entries are taken in this order, the most stale first
 // within a class, while the budget lasts:
-//   1. dynamic entries (moving objects' surroundings), up to half the budget, first;
+//   1. dynamic entries (moving objects' surroundings), up to half the budget, first; while no
+//      object moves (`objectsMoved` false) they are classed as static entries are (3, 4) and do
+//      not fade;
 //   0. new static entries and those an edit invalidated, for their first update: on a moving
 //      camera every pixel should find an entry. A static entry traces S directions of its own
 //      through the static world per update (twice an update's rays) until all K are cached,
@@ -57,6 +59,7 @@ struct CacheWork {
     std::uint32_t convergedAfter = 33;   // about 1 / alpha
     std::uint32_t refreshFrames = 30;
     glm::ivec3 nearMin{0}, nearMax{-1};  // voxels near moving objects (class 2); empty when max < min
+    bool objectsMoved = true;            // an object moved, appeared or vanished since the last frame
     std::function<std::uint32_t(glm::ivec3)> openFaces;  // a static voxel's faces not against static solid; null: six
 };
 
