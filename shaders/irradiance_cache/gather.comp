@@ -32,7 +32,7 @@ vec4 gatherLevel(ivec3 voxel, uint face, uint set, vec3 p, uint coarse) {
             vec4 e = gFiltered[slot * CACHE_FACES + face];
             if (e.w == 0.0) continue;
             float w = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y) + 1e-6;
-            sum += w * e.rgb * cacheFade(slot);
+            sum += w * e.rgb * (set == CACHE_SET_STATIC ? 1.0 : cacheFade(slot));  // static entries never fade
             weights += w;
         }
     }
@@ -68,7 +68,7 @@ vec4 gatherFallback(ivec3 voxel, uint face, uint set, vec3 p, ivec3 origin, int 
                 if (e.w == 0.0 || !cacheFrontsConnected(voxel, face, offset, set)) continue;
                 vec2 d = vec2(v[ua], v[va]) + 0.5 * float(step) - vec2(p[ua], p[va]);
                 float w = 1.0 / max(dot(d, d), 0.25);
-                sum += w * e.rgb * cacheFade(slot);
+                sum += w * e.rgb * (set == CACHE_SET_STATIC ? 1.0 : cacheFade(slot));
                 weights += w;
             }
         }
@@ -88,11 +88,15 @@ void main() {
         // Level of detail (cache_lod.h): far static faces read their open patch's coarse entries.
         // The host chose from the previous frame's pixels, so where this frame's level has no
         // entry yet the other level (if the patch is open) stands in.
+        // A near pixel asks whether its patch is open (eight voxel reads) only when its own level
+        // has nothing.
+        bool lod = set == CACHE_SET_STATIC && gCache.lodDistance > 0.0;
+        bool far = uintBitsToFloat(g.data.y) >= gCache.lodDistance;
         uint coarse = 0u;
         ivec3 patchBase;
-        if (set == CACHE_SET_STATIC && gCache.lodDistance > 0.0) coarse = cacheCoarsePatch(g.voxel.xyz, face, patchBase);
-        bool far = uintBitsToFloat(g.data.y) >= gCache.lodDistance;
+        if (lod && far) coarse = cacheCoarsePatch(g.voxel.xyz, face, patchBase);
         vec4 r = gatherLevel(g.voxel.xyz, face, set, g.position.xyz, far ? coarse : 0u);
+        if (r.w == 0.0 && lod && !far) coarse = cacheCoarsePatch(g.voxel.xyz, face, patchBase);
         if (r.w == 0.0 && coarse != 0u) r = gatherLevel(g.voxel.xyz, face, set, g.position.xyz, far ? 0u : coarse);
         if (kFallback && r.w == 0.0) r = gatherFallback(g.voxel.xyz, face, set, g.position.xyz, g.voxel.xyz, 1, 0u);
         if (kFallback && r.w == 0.0 && coarse != 0u)
