@@ -28,7 +28,10 @@ struct IrradianceCacheSettings {
     std::uint32_t bounces = 1;         // 1 = the paper; more reads the cached irradiance at each ray's hit
     float alpha = 0.03f;               // temporal blend E = a E_new + (1 - a) E_old
     float fadeSeconds = 0.3f;          // dynamic entries fade to zero this long after their last update
-    std::uint32_t neighbourhood = 5;   // N^3 around each visible dynamic voxel (0, 3 or 5)
+    // N^3 around each visible dynamic voxel (0, 3 or 5): entries ready where a moving object is
+    // about to be. 3 (the paper's) covers a voxel a frame; 5 cost the sandbox's rolling cart 2.8x
+    // the dynamic updates for a small gain (docs/STABILITY.md).
+    std::uint32_t neighbourhood = 3;
     // Voxels (at most 500, shared::CACHE_MAX_RAY_LENGTH); also the reach of an edit's invalidation.
     // A ray cut short sees the sky, so it must cross the largest room: cornell needs 443.
     float maxRayLength = 500.0f;
@@ -39,7 +42,9 @@ struct IrradianceCacheSettings {
     std::uint64_t budgetBytes = 256ull << 20;
     // Rays per frame the cache's updates may trace, spent by priority (new and edited entries,
     // moving objects, changed light, then the most stale); 0: update every visible entry each frame.
-    std::uint32_t rayBudget = 150000;
+    // 100 000 keeps the sandbox's full frame near 10 fps on two cores at converged errors within
+    // 4 % of 150 000's (docs/ACCURACY.md).
+    std::uint32_t rayBudget = 100000;
     // Static faces at least this far along the view ray (voxels) share a coarse entry per open,
     // coplanar 2x2 patch (render/irradiance_cache/cache_lod.h); 0: every voxel its own entry.
     // A quarter of the entries far away, each updated more often: lower error on a moving camera.

@@ -146,6 +146,8 @@ std::vector<glm::vec4> cacheIndirectSeeded(Scene& scene, const engine::world::Ca
     l.cache.lodDistance = lodDistance;
     if (maxRay > 0.0f) l.cache.maxRayLength = maxRay;
     if (const char* v = std::getenv("VOX_MEASURE_LIGHT_SAMPLES")) l.cache.lightSamples = std::uint32_t(std::strtoul(v, nullptr, 10));
+    if (const char* v = std::getenv("VOX_MEASURE_BUDGET")) l.cache.rayBudget = std::uint32_t(std::strtoul(v, nullptr, 10));
+    if (const char* v = std::getenv("VOX_MEASURE_NEIGHBOURHOOD")) l.cache.neighbourhood = std::uint32_t(std::strtoul(v, nullptr, 10));
     l.seed = seed;
     Renderer r(gpu_testing::context());
     for (int i = 0; i < frames; ++i) r.render(scene, camera, frameAt(size, 0.0), l);
@@ -437,6 +439,7 @@ TEST_F(IrradianceCache, RayBudgetHoldsOnTheGpu) {
         Renderer r(gpu_testing::context());
         LightingSettings l = cacheLighting(1);
         l.cache.rayBudget = budget;
+        l.cache.neighbourhood = 5;  // the ball's 5^3 surroundings: demand far above the budget without one
         std::uint64_t most = 0, total = 0;
         std::uint32_t framesWaiting = 0;
         for (std::uint32_t i = 0; i < 40; ++i) {
@@ -557,6 +560,9 @@ void expectDivideAndWinExact(float lodDistance, std::uint32_t frames = 5, double
     // Enough rays that the last frame's list holds static (and coarse) entries besides the crate's
     // dynamic ones, which take up to half of any budget.
     ld.cache.rayBudget = lf.cache.rayBudget = 150000;
+    // The 5^3 neighbourhood: more dynamic entries, so more of them re-read cached static hits and
+    // face the crate (the default 3^3 leaves ~85 in the last list).
+    ld.cache.neighbourhood = lf.cache.neighbourhood = 5;
     lf.cache.fullRetrace = true;
     // The crate slides to the wall over these frames (by 2.4 s): static rays cached early see it arrive.
     for (std::uint32_t i = 0; i < frames; ++i) {
@@ -898,8 +904,9 @@ TEST_F(IrradianceCache, DirectionSetsAreCosineDistributedAndDifferPerEntry) {
 // Not a test: the per-scene figures of docs/IRRADIANCE_CACHE.md — the converged cache's indirect
 // term (one bounce) against the path tracer's (one bounce minus direct, two seeds averaged), on
 // the thesis scenes and thin_wall. Run with --gtest_also_run_disabled_tests; VOX_MEASURE_SIZE,
-// _FRAMES, _SPP (per reference seed), _K, _WORLD (one world), _MAX_RAY (the cache's ray length)
-// and _CACHE (a folder keeping the references) change it.
+// _FRAMES, _SPP (per reference seed), _K, _WORLD (one world), _MAX_RAY (the cache's ray length),
+// _LOD, _LIGHT_SAMPLES, _BUDGET, _NEIGHBOURHOOD (cache knobs) and _CACHE (a folder keeping the
+// references) change it.
 TEST_F(IrradianceCache, DISABLED_MeasureScenes) {
     const std::uint32_t size = envOr("VOX_MEASURE_SIZE", 64), frames = envOr("VOX_MEASURE_FRAMES", 64);
     const std::uint32_t spp = envOr("VOX_MEASURE_SPP", 1024), k = envOr("VOX_MEASURE_K", 128);
