@@ -86,7 +86,8 @@ TEST(IrradianceCacheDirectory, DynamicEntriesFadeAndStaticOnesStay) {
 
 // While no object moves, the dynamic entries around objects hold what is true: they converge and
 // refresh like static entries instead of taking the budget every frame, and they do not fade.
-// When an object moves again they are updated every frame again.
+// After a change of light they restart at once. When an object moves again they are updated
+// every frame again.
 TEST(IrradianceCacheDirectory, DynamicEntriesOfObjectsAtRestConvergeLikeStaticOnes) {
     IrradianceCacheDirectory dir(100);
     const std::vector<CacheKey> keys = row(0, 5, shared::CACHE_SET_DYNAMIC);
@@ -106,6 +107,10 @@ TEST(IrradianceCacheDirectory, DynamicEntriesOfObjectsAtRestConvergeLikeStaticOn
     }
     EXPECT_EQ(updated, (std::vector<std::size_t>{5, 5, 5, 0, 0, 0, 0, 0, 0, 0, 0, 0})) << "12 frames = 0.4 s, past the fade";
     EXPECT_EQ(dir.liveEntries(), 5u) << "entries of objects at rest must not fade";
+    // The lights changed: every one restarts at once (class 2), at rest or not.
+    dir.relightAll();
+    t += 1.0 / 30.0;
+    EXPECT_EQ(dir.beginFrame(keys, t, 0.3f, resting).update.size(), 5u);
     // Nothing visible but still at rest: kept alive.
     EXPECT_EQ(dir.beginFrame({}, t + 1.0, 0.3f, resting).faded, 0u);
     // Moving again: every frame, and they fade once unseen for the fade time.

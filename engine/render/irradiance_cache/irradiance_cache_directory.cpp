@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <optional>
 
 #include "core/hash.h"
 
@@ -157,38 +158,32 @@ CacheFrameLists IrradianceCacheDirectory::beginFrame(std::span<const CacheKey> v
         return perFace * std::clamp(work.openFaces(key.voxel), 1u, shared::CACHE_FACES);
     };
     std::vector<Candidate> candidates;
+    // An entry whose surroundings did not change: still converging (3), due a refresh (4), or
+    // converged and fresh enough (none).
+    const auto settledClass = [&](const Slot& s) -> std::optional<std::uint64_t> {
+        if (s.updates < work.convergedAfter) return 3;
+        if (frame - s.lastUpdateFrame >= work.refreshFrames || work.rayBudget == 0) return 4;
+        return std::nullopt;
+    };
     candidates.reserve(seen.size() + fresh.size());
     for (std::uint32_t slot : seen) {
         const Slot& s = mSlots[slot];
-        std::uint64_t cls;
         const std::uint32_t update = updateCost(s.key);
         std::uint32_t cost = update;
+        std::optional<std::uint64_t> cls;
         if (s.key.set == shared::CACHE_SET_DYNAMIC) {
             // Around a moving object, every frame; around objects at rest, like static entries.
-            if (work.objectsMoved) {
-                cls = 1;
-            } else if (s.updates < work.convergedAfter) {
-                cls = 3;
-            } else if (frame - s.lastUpdateFrame >= work.refreshFrames || work.rayBudget == 0) {
-                cls = 4;
-            } else {
-                continue;
-            }
+            cls = work.objectsMoved ? 1 : s.reset ? 2 : settledClass(s);
         } else if (s.traced < work.phases) {
             // Invalidated by an edit and not updated since: as urgent as a new entry; its later
             // tracing updates converge like any other (they still trace, at twice the cost).
             cls = s.traced == 0 ? 0 : 3;
             cost = 2 * update;
-        } else if (s.reset || near(s.key.voxel)) {
-            cls = 2;
-        } else if (s.updates < work.convergedAfter) {
-            cls = 3;
-        } else if (frame - s.lastUpdateFrame >= work.refreshFrames || work.rayBudget == 0) {
-            cls = 4;
         } else {
-            continue;  // converged and fresh enough
+            cls = s.reset || near(s.key.voxel) ? 2 : settledClass(s);
         }
-        candidates.push_back({order(cls, s.lastUpdateFrame), packCacheKey(s.key), slot, cost});
+        if (!cls) continue;
+        candidates.push_back({order(*cls, s.lastUpdateFrame), packCacheKey(s.key), slot, cost});
     }
     const auto firstFresh = static_cast<std::uint32_t>(mSlots.size());
     for (std::uint32_t i = 0; i < fresh.size(); ++i) {

@@ -35,8 +35,8 @@ std::uint32_t cacheKeyHash(const CacheKey& key);
 // How a frame's rays are spent. Visible entries are taken in this order, the most stale first
 // within a class, while the budget lasts:
 //   1. dynamic entries (moving objects' surroundings), up to half the budget, first; while no
-//      object moves (`objectsMoved` false) they are classed as static entries are (3, 4) and do
-//      not fade;
+//      object moves (`objectsMoved` false) they are classed as static entries are (2 after the
+//      lights changed, else 3, 4) and do not fade;
 //   0. new static entries and those an edit invalidated, for their first update: on a moving
 //      camera every pixel should find an entry. A static entry traces S directions of its own
 //      through the static world per update (twice an update's rays) until all K are cached,
