@@ -14,6 +14,22 @@ float powerHeuristic(float chosen, float other) {
     return 1.0 / (1.0 + ratio * ratio);
 }
 
+// A sample of emitter e, drawn with probability `chosen`, for surface s: a face by solid angle and
+// a uniform point on it (`face`). f is its unshadowed contribution, pdf its density (area
+// measure), and (toLight, dist) its shadow ray; false when the sample cannot light s.
+bool sampleEmitter(Surface s, GpuEmitter e, float chosen, inout uint rng, out vec3 f, out float pdf, out uint face,
+                   out vec3 toLight, out float dist) {
+    f = vec3(0.0);
+    toLight = vec3(0.0, 0.0, 1.0);
+    dist = 0.0;
+    float side = float(e.minCorner.w);
+    pdf = chosen * pickFace(e, s.position, rngNext(rng), face) / (side * side);
+    vec2 uv = vec2(rngNext(rng), rngNext(rng));
+    if (!(pdf > 0.0)) return false;
+    f = lightContribution(s, e, face, uv, toLight, dist);
+    return any(greaterThan(f, vec3(0.0)));
+}
+
 // With `misWithCosine`, the emitter sample is weighted against cosine-weighted BSDF sampling, for
 // a vertex that also traces a cosine-sampled ray counting the emission it hits (the reference
 // path tracer with MIS). The sun stays light-sampled only: a direction has zero chance of hitting
@@ -23,15 +39,11 @@ vec3 directLightSampled(Surface s, FrameParams frame, inout uint rng, bool misWi
     uint slot;
     if (!pickEmitter(rng, true, slot)) return direct;
     GpuEmitter e = loadEmitter(slot);
+    vec3 f, toLight;
+    float pdf, dist;
     uint face;
-    float side = float(e.minCorner.w);
-    float pdf = emitterPdf(slot, true) * pickFace(e, s.position, rngNext(rng), face) / (side * side);
-    vec2 uv = vec2(rngNext(rng), rngNext(rng));
-    if (!(pdf > 0.0)) return direct;
-    vec3 toLight;
-    float dist;
-    vec3 f = lightContribution(s, e, face, uv, toLight, dist);
-    if (!any(greaterThan(f, vec3(0.0))) || !lightVisible(s, e, toLight, dist)) return direct;
+    if (!sampleEmitter(s, e, emitterPdf(slot, true), rng, f, pdf, face, toLight, dist) || !lightVisible(s, e, toLight, dist))
+        return direct;
     float weight = 1.0;
     if (misWithCosine) {
         float cosLight = dot(faceNormalF(face), -toLight);

@@ -232,12 +232,16 @@ float lightSamplePdf(vec3 x, uint slot, uint face, bool byPower) {
 // Is the light sample visible from the surface? The first thing the shadow ray hits must be the
 // emitter itself (or nothing before the sample point); emitters are static, so an object's voxel
 // in the way occludes even inside the emitter's box.
-bool lightVisible(Surface s, GpuEmitter e, vec3 shadowDir, float shadowDist) {
-    SceneHit hit = traceScene(s.position + s.normal * kRayOffset, shadowDir, shadowDist + kRayOffset);
+// Whether a shadow ray towards emitter e reached it: it hit nothing, or the emitter's own voxels.
+bool shadowHitReachesEmitter(SceneHit hit, GpuEmitter e) {
     if (!hit.hit) return true;
     if (hit.dynamicSet) return false;
     ivec3 lo = e.minCorner.xyz;
     return all(greaterThanEqual(hit.voxel, lo)) && all(lessThan(hit.voxel, lo + e.minCorner.w));
+}
+
+bool lightVisible(Surface s, GpuEmitter e, vec3 shadowDir, float shadowDist) {
+    return shadowHitReachesEmitter(traceScene(s.position + s.normal * kRayOffset, shadowDir, shadowDist + kRayOffset), e);
 }
 
 #endif

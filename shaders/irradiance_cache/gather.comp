@@ -32,7 +32,7 @@ vec4 gatherLevel(ivec3 voxel, uint face, uint set, vec3 p, uint coarse) {
             vec4 e = gFiltered[slot * CACHE_FACES + face];
             if (e.w == 0.0) continue;
             float w = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y) + 1e-6;
-            sum += w * e.rgb * (set == CACHE_SET_STATIC ? 1.0 : cacheFade(slot));  // static entries never fade
+            sum += w * e.rgb * cacheFade(slot, set);
             weights += w;
         }
     }
@@ -68,7 +68,7 @@ vec4 gatherFallback(ivec3 voxel, uint face, uint set, vec3 p, ivec3 origin, int 
                 if (e.w == 0.0 || !cacheFrontsConnected(voxel, face, offset, set)) continue;
                 vec2 d = vec2(v[ua], v[va]) + 0.5 * float(step) - vec2(p[ua], p[va]);
                 float w = 1.0 / max(dot(d, d), 0.25);
-                sum += w * e.rgb * (set == CACHE_SET_STATIC ? 1.0 : cacheFade(slot));
+                sum += w * e.rgb * cacheFade(slot, set);
                 weights += w;
             }
         }

@@ -205,11 +205,11 @@ uint cacheLookupKey(ivec3 voxel, uint set, uint coarse) {
 }
 uint cacheLookup(ivec3 voxel, uint set) { return cacheLookupKey(voxel, set, 0u); }
 
-// A dynamic entry's irradiance dims linearly to zero over the fade time after its last update.
-float cacheFade(uint slot) {
-    CacheEntry e = gEntries[slot];
-    if (uint(e.voxel.w) == CACHE_SET_STATIC) return 1.0;
-    return clamp(1.0 - (gCache.time - e.updatedAt) / gCache.fadeSeconds, 0.0, 1.0);
+// A dynamic entry's irradiance dims linearly to zero over the fade time after its last update;
+// a static one's never does (its entry is not read).
+float cacheFade(uint slot, uint set) {
+    if (set == CACHE_SET_STATIC) return 1.0;
+    return clamp(1.0 - (gCache.time - gEntries[slot].updatedAt) / gCache.fadeSeconds, 0.0, 1.0);
 }
 
 #endif

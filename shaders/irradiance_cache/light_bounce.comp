@@ -47,7 +47,7 @@ vec3 indirectLeaving(ivec3 voxel, vec3 o, vec3 d, uint packed) {
     uint coarse = set == CACHE_SET_STATIC && hs == ~0u && gCache.lodDistance > 0.0 ? cacheCoarsePatch(hv, s.face, base) : 0u;
     if (coarse != 0u) hs = cacheLookupKey(base, set, coarse);  // a far face: its patch's coarse entry (cache_lod.h)
     if (hs == ~0u || (gEntries[hs].flags & CACHE_ENTRY_RESET) != 0u) return vec3(0.0);
-    return s.albedo / PI * gFiltered[hs * CACHE_FACES + s.face].rgb * cacheFade(hs);
+    return s.albedo / PI * gFiltered[hs * CACHE_FACES + s.face].rgb * cacheFade(hs, set);
 }
 
 // The direct light leaving a hit: the sun and one emitter sample, one of them shadow-tested (a

@@ -45,56 +45,33 @@ GpuEmitter lightTileEmitter(LightTileSample t) {
     return GpuEmitter(t.minCorner, t.radiance, uvec4(t.info.x, t.info.y, 0u, EMITTER_FLAG_ALIVE));
 }
 
-// directLight (common/direct_light.glsl) with the emitter taken from one random tile entry
-// instead of an alias-table draw: the sun with one shadow ray plus one emitter sample, face by
-// solid angle and a uniform point on it, with one shadow ray. Same estimator, same expectation;
-// falls back to directLight when the frame drew no tiles.
-vec3 directLightFromTiles(Surface s, FrameParams frame, inout uint rng) {
-    if (!lightTilesReady(frame)) return directLight(s, frame, rng);
-    vec3 direct = sunLight(s, frame);
-    LightTileSample t = lightTileSample(frame, lightTileRunStart(rng));
-    if (!(t.radiance.w > 0.0)) return direct;  // no lights this frame
-    GpuEmitter e = lightTileEmitter(t);
-    uint face;
-    float side = float(e.minCorner.w);
-    float pdf = t.radiance.w * pickFace(e, s.position, rngNext(rng), face) / (side * side);
-    vec2 uv = vec2(rngNext(rng), rngNext(rng));
-    if (!(pdf > 0.0)) return direct;
-    vec3 toLight;
-    float dist;
-    vec3 f = lightContribution(s, e, face, uv, toLight, dist);
-    if (!any(greaterThan(f, vec3(0.0))) || !lightVisible(s, e, toLight, dist)) return direct;
-    return direct + f / pdf;
-}
-
-// One emitter sample for `s`, unshadowed: drawn from a random tile entry when the frame drew
-// tiles, else by power from the alias table; `value` is its contribution over its density, and
-// (toLight, dist) its shadow ray. False when there is no light or it cannot reach the surface.
+// One emitter sample for `s`, unshadowed (sampleEmitter): the emitter drawn from a random tile
+// entry when the frame drew tiles, else by power from the alias table; `value` is its
+// contribution over its density, (toLight, dist) its shadow ray. False when there is no light or
+// it cannot reach the surface.
 bool emitterSampleUnshadowed(Surface s, FrameParams frame, inout uint rng, out GpuEmitter e, out vec3 value,
                              out vec3 toLight, out float dist) {
     value = vec3(0.0);
     toLight = vec3(0.0, 0.0, 1.0);
     dist = 0.0;
-    float p;
+    float chosen;
     if (lightTilesReady(frame)) {
         LightTileSample t = lightTileSample(frame, lightTileRunStart(rng));
         e = lightTileEmitter(t);
-        p = t.radiance.w;
-        if (!(p > 0.0)) return false;  // no lights this frame
+        chosen = t.radiance.w;
+        if (!(chosen > 0.0)) return false;  // no lights this frame
     } else {
         uint slot;
         if (!pickEmitter(rng, true, slot)) return false;
         e = loadEmitter(slot);
-        p = emitterPdf(slot, true);
+        chosen = emitterPdf(slot, true);
     }
+    vec3 f;
+    float pdf;
     uint face;
-    float side = float(e.minCorner.w);
-    float pdf = p * pickFace(e, s.position, rngNext(rng), face) / (side * side);
-    vec2 uv = vec2(rngNext(rng), rngNext(rng));
-    if (!(pdf > 0.0)) return false;
-    vec3 f = lightContribution(s, e, face, uv, toLight, dist);
+    if (!sampleEmitter(s, e, chosen, rng, f, pdf, face, toLight, dist)) return false;
     value = f / pdf;
-    return any(greaterThan(f, vec3(0.0)));
+    return true;
 }
 
 // The direct light at `s` with one shadow ray instead of two: the sun's unshadowed light and one
@@ -116,9 +93,7 @@ vec3 directLightOneShadowRay(Surface s, FrameParams frame, inout uint rng) {
     SceneHit hit = traceScene(s.position + s.normal * kRayOffset, toSun ? frame.sunDirection.xyz : toLight,
                               toSun ? 1.0e30 : dist + kRayOffset);
     if (toSun) return hit.hit ? vec3(0.0) : sun / pSun;
-    ivec3 lo = e.minCorner.xyz;  // as lightVisible: a hit on the emitter's own voxels is no shadow
-    bool visible = !hit.hit || (!hit.dynamicSet && all(greaterThanEqual(hit.voxel, lo)) && all(lessThan(hit.voxel, lo + e.minCorner.w)));
-    return visible ? emitted / (1.0 - pSun) : vec3(0.0);
+    return shadowHitReachesEmitter(hit, e) ? emitted / (1.0 - pSun) : vec3(0.0);
 }
 
 #endif

@@ -103,11 +103,12 @@ CacheFrameLists IrradianceCacheDirectory::beginFrame(std::span<const CacheKey> v
     // moves, what a dynamic entry holds stays true: its fade clock waits.
     for (std::uint32_t slot = 0; slot < mSlots.size(); ++slot) {
         Slot& s = mSlots[slot];
-        if (s.live && s.key.set == shared::CACHE_SET_DYNAMIC && !work.objectsMoved) {
+        if (!s.live || s.key.set != shared::CACHE_SET_DYNAMIC) continue;
+        if (!work.objectsMoved) {
             s.lastUpdate = time;
             mEntries[slot].updatedAt = static_cast<float>(time);
         }
-        if (s.live && s.key.set == shared::CACHE_SET_DYNAMIC && time - s.lastUpdate > fadeSeconds) {
+        if (time - s.lastUpdate > fadeSeconds) {
             release(slot);
             ++lists.faded;
             lists.tableChanged = true;
