@@ -209,9 +209,17 @@ Status Context::init(const ContextOptions& options) {
         VkPhysicalDeviceFeatures2 f2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
         f2.pNext = &f12;
         vkGetPhysicalDeviceFeatures2(d, &f2);
-        bool usable = props.apiVersion >= VK_API_VERSION_1_2 && f12.bufferDeviceAddress && f2.features.shaderInt64;
+        // ReSTIR's candidates are shared across a subgroup by shuffles (restir/initial_candidates.comp).
+        VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
+        VkPhysicalDeviceProperties2 props2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
+        props2.pNext = &subgroup;
+        vkGetPhysicalDeviceProperties2(d, &props2);
+        const bool shuffles = (subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) != 0 &&
+                              (subgroup.supportedOperations & VK_SUBGROUP_FEATURE_SHUFFLE_BIT) != 0;
+        bool usable = props.apiVersion >= VK_API_VERSION_1_2 && f12.bufferDeviceAddress && f2.features.shaderInt64 && shuffles;
         if (!usable) {
-            rejected += std::string(" ") + props.deviceName + " (needs Vulkan 1.2, bufferDeviceAddress, shaderInt64);";
+            rejected += std::string(" ") + props.deviceName +
+                        " (needs Vulkan 1.2, bufferDeviceAddress, shaderInt64, subgroup shuffles in compute);";
             continue;
         }
         if (mSurface && (!hasDeviceExtension(d, VK_KHR_SWAPCHAIN_EXTENSION_NAME) || !pickQueueFamily(d, mSurface))) {

@@ -3,12 +3,23 @@
 // pixel, drawn uniformly or by power, resampled by weighted reservoir sampling with the
 // unshadowed contribution's luminance as target pdf; optionally the chosen one is shadow-tested.
 // The weight W stays the unshadowed one (spatial neighbours reuse it as is); the shadow test's
-// answer goes to weights.w, which only this pixel's own reuse applies. With light tiles (by power),
-// the candidates are consecutive entries of one random presampled tile: the same probabilities,
-// read in order instead of drawn from the alias table. With ReGIR (sampling regir), each candidate
-// is a uniformly drawn entry of the world-space cell the surface lies in, weighted by the entry's
-// contribution weight in place of 1 / probability (RIS inside RIS; regir/regir.glsl).
+// answer goes to weights.w, which only this pixel's own reuse applies.
+//
+// Emitters drawn uniformly, by power or from light tiles are shared across the subgroup: in each
+// round every lane draws one emitter and loads it, and every lane then evaluates all of the
+// round's emitters at its own surface, with its own face and point on each. A pixel's M
+// candidates are still M independent draws with the sampler's probabilities (the estimators are
+// unchanged); a lane fetches one emitter per round instead of one per candidate, which on
+// lavapipe (8 lanes) is a quarter of the pass. Neighbouring pixels of a subgroup see the same
+// emitters in a frame, each at its own point. With light tiles (by power), a lane's draws are
+// consecutive entries of one random presampled tile: the same probabilities, read in order
+// instead of drawn from the alias table. With ReGIR (sampling regir), each candidate is a
+// uniformly drawn entry of the world-space cell the surface lies in, weighted by the entry's
+// contribution weight in place of 1 / probability (RIS inside RIS; regir/regir.glsl): those
+// depend on the pixel's cell, so each pixel draws its own.
 #extension GL_GOOGLE_include_directive : require
+#extension GL_KHR_shader_subgroup_basic : require
+#extension GL_KHR_shader_subgroup_shuffle : require
 
 #include "light_tiles/light_tiles.glsl"
 #include "regir/regir.glsl"
@@ -21,42 +32,52 @@ layout(set = 0, binding = RESTIR_BINDING_PARAMS, std430) readonly buffer Restir 
 layout(set = 0, binding = RESTIR_BINDING_GBUFFER) uniform usamplerBuffer gGBuffer;  // loadGBuffer
 layout(set = 0, binding = RESTIR_INITIAL_BINDING_OUT, std430) writeonly buffer Out { Reservoir gOut[]; };
 
-void main() {
-    uvec2 pixel = gl_GlobalInvocationID.xy;
-    if (any(greaterThanEqual(pixel, gFrame.imageSize.xy))) return;
-    uint index = pixel.x + pixel.y * gFrame.imageSize.x;
-    Surface s = surfaceFrom(loadGBuffer(gGBuffer, index));
-    Reservoir r = Reservoir(uvec4(RESERVOIR_EMPTY, 0u, 0u, 0u), vec4(0.0));
-    uint candidates = gRestir.knobs.candidates;
-    if (!s.valid || gLights.counts.x == 0u || candidates == 0u) {
-        gOut[index] = r;
-        return;
+// The pixel's reservoir under construction (weighted reservoir sampling).
+struct Stream {
+    Reservoir r;
+    float wSum;
+    float chosenTarget;
+};
+
+// Adds one candidate: emitter e in `slot`, drawn with probability `pdf`; area mode picks the face
+// and point here, with the pixel's own random numbers.
+void addCandidate(inout Stream st, Surface s, bool area, uint slot, GpuEmitter e, float pdf, inout uint rng) {
+    uint face = LIGHT_FACE_CENTRE;
+    vec2 uv = vec2(0.5);
+    if (area) {
+        float side = float(e.minCorner.w);
+        pdf *= pickFace(e, s.position, rngNext(rng), face) / (side * side);
+        // The reservoir stores uv in 16 bits; evaluate the point it will be able to recall.
+        uv = unpackUnorm2x16(packUnorm2x16(vec2(rngNext(rng), rngNext(rng))));
     }
-    bool area = !kPointLights || gRestir.area != 0u;
-    bool byPower = gRestir.byPower != 0u;
-    uint rng = rngInit(pixel, gRestir.frameIndex, 1u, gRestir.seed);
-    bool tiles = byPower && gRestir.knobs.lightTiles != 0u && lightTilesReady(gFrame);
+    float chooser = rngNext(rng);
+    if (!(pdf > 0.0)) return;
+    vec3 toLight;
+    float dist;
+    float target = luminance(lightContribution(s, e, face, uv, toLight, dist));
+    float w = target / pdf;
+    st.wSum += w;
+    if (w > 0.0 && chooser * st.wSum < w) {
+        st.r.light = uvec4(slot, e.info.y, face, packUnorm2x16(uv));
+        st.chosenTarget = target;
+    }
+}
+
+// ReGIR: every candidate from the surface's cell; a surface outside the grid draws by power.
+void regirCandidates(inout Stream st, Surface s, bool area, bool byPower, bool tiles, uint candidates, inout uint rng) {
     uint run = tiles ? lightTileRunStart(rng) : 0u;
-    // ReGIR: the first entry of the surface's cell (a surface outside the grid draws by power).
-    bool regir = regirReady(gFrame);
     // The header member by member from a pointer set up front: one struct load through a pointer
     // assigned in a branch read values that put every pixel outside the grid on lavapipe.
-    RegirGridBuffer grid = regirGrid(gFrame);  // dereferenced only when regir
-    uint cellEntries = 0u;
-    if (regir) {
-        RegirGridInfo info = RegirGridInfo(grid.info.origin, grid.info.dims, grid.info.build);
-        uint cell = regirSurfaceCell(info, s);
-        regir = cell < info.dims.w;
-        cellEntries = cell * REGIR_CELL_ENTRIES;
-    }
-
-    float wSum = 0.0;
-    float chosenTarget = 0.0;
+    RegirGridBuffer grid = regirGrid(gFrame);
+    RegirGridInfo info = RegirGridInfo(grid.info.origin, grid.info.dims, grid.info.build);
+    uint cell = regirSurfaceCell(info, s);
+    bool inGrid = cell < info.dims.w;
+    uint cellEntries = cell * REGIR_CELL_ENTRIES;
     for (uint i = 0u; i < candidates; ++i) {
         uint slot;
         GpuEmitter e;
         float pdf;
-        if (regir) {
+        if (inGrid) {
             RegirEntry entry = grid.entries[cellEntries + min(uint(rngNext(rng) * float(REGIR_CELL_ENTRIES)), REGIR_CELL_ENTRIES - 1u)];
             if (entry.slot == RESERVOIR_EMPTY) continue;  // no light reaches this cell: a zero-weight candidate
             slot = entry.slot;
@@ -72,28 +93,70 @@ void main() {
             e = loadEmitter(slot);
             pdf = emitterPdf(slot, byPower);
         }
-        uint face = LIGHT_FACE_CENTRE;
-        vec2 uv = vec2(0.5);
-        if (area) {
-            float side = float(e.minCorner.w);
-            pdf *= pickFace(e, s.position, rngNext(rng), face) / (side * side);
-            // The reservoir stores uv in 16 bits; evaluate the point it will be able to recall.
-            uv = unpackUnorm2x16(packUnorm2x16(vec2(rngNext(rng), rngNext(rng))));
+        addCandidate(st, s, area, slot, e, pdf, rng);
+    }
+}
+
+// Uniform, by power or from light tiles: rounds of one draw per lane, shared by the subgroup.
+// Every lane of the subgroup runs this (pixels off the image and sky pixels draw, but add
+// nothing), so the shuffles read only lanes that took part.
+void sharedCandidates(inout Stream st, Surface s, bool lit, bool area, bool byPower, bool tiles, uint candidates,
+                      inout uint rng) {
+    uint run = tiles ? lightTileRunStart(rng) : 0u;
+    uint lanes = gl_SubgroupSize;
+    for (uint round = 0u; round * lanes < candidates; ++round) {
+        uint ownSlot;
+        GpuEmitter own;
+        float ownPdf;
+        if (tiles) {
+            LightTileSample t = lightTileSample(gFrame, lightTileRunEntry(run, round));
+            ownSlot = t.info.z;
+            own = lightTileEmitter(t);
+            ownPdf = t.radiance.w;
+        } else {
+            pickEmitter(rng, byPower, ownSlot);
+            own = loadEmitter(ownSlot);
+            // emitterPdf's value, from the emitter just loaded.
+            ownPdf = byPower || !kUniformSampling ? own.radiance.w / gLights.power.x : 1.0 / float(gLights.counts.x);
         }
-        float chooser = rngNext(rng);
-        if (!(pdf > 0.0)) continue;
-        vec3 toLight;
-        float dist;
-        float target = luminance(lightContribution(s, e, face, uv, toLight, dist));
-        float w = target / pdf;
-        wSum += w;
-        if (w > 0.0 && chooser * wSum < w) {
-            r.light = uvec4(slot, e.info.y, face, packUnorm2x16(uv));
-            chosenTarget = target;
+        uint count = min(lanes, candidates - round * lanes);
+        for (uint j = 0u; j < count; ++j) {
+            uint slot = subgroupShuffle(ownSlot, j);
+            GpuEmitter e = GpuEmitter(subgroupShuffle(own.minCorner, j), subgroupShuffle(own.radiance, j),
+                                      subgroupShuffle(own.info, j));
+            float pdf = subgroupShuffle(ownPdf, j);
+            if (lit) addCandidate(st, s, area, slot, e, pdf, rng);
         }
     }
-    r.weights = vec4(chosenTarget > 0.0 ? wSum / (float(candidates) * chosenTarget) : 0.0, float(candidates),
-                     chosenTarget, 1.0);
+}
+
+void main() {
+    uvec2 pixel = gl_GlobalInvocationID.xy;
+    bool inImage = all(lessThan(pixel, gFrame.imageSize.xy));
+    uint index = pixel.x + pixel.y * gFrame.imageSize.x;
+    Surface s;
+    s.valid = false;
+    if (inImage) s = surfaceFrom(loadGBuffer(gGBuffer, index));
+    Stream st = Stream(Reservoir(uvec4(RESERVOIR_EMPTY, 0u, 0u, 0u), vec4(0.0)), 0.0, 0.0);
+    uint candidates = gRestir.knobs.candidates;
+    bool lit = inImage && s.valid;
+    if (gLights.counts.x != 0u && candidates != 0u) {
+        bool area = !kPointLights || gRestir.area != 0u;
+        bool byPower = gRestir.byPower != 0u;
+        bool tiles = byPower && gRestir.knobs.lightTiles != 0u && lightTilesReady(gFrame);
+        uint rng = rngInit(pixel, gRestir.frameIndex, 1u, gRestir.seed);
+        if (regirReady(gFrame)) {
+            if (lit) regirCandidates(st, s, area, byPower, tiles, candidates, rng);
+        } else {
+            sharedCandidates(st, s, lit, area, byPower, tiles, candidates, rng);
+        }
+    }
+    if (!inImage) return;
+    Reservoir r = st.r;
+    if (lit && candidates != 0u) {
+        r.weights = vec4(st.chosenTarget > 0.0 ? st.wSum / (float(candidates) * st.chosenTarget) : 0.0,
+                         float(candidates), st.chosenTarget, 1.0);
+    }
     if (kCandidateVisibility && gRestir.knobs.candidateVisibility != 0u && r.light.x != RESERVOIR_EMPTY) {
         GpuEmitter e = loadEmitter(r.light.x);
         vec3 toLight;
