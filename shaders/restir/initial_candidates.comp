@@ -20,6 +20,7 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_shuffle : require
+#extension GL_KHR_shader_subgroup_vote : require
 
 #include "light_tiles/light_tiles.glsl"
 #include "regir/regir.glsl"
@@ -104,7 +105,10 @@ void sharedCandidates(inout Stream st, Surface s, bool lit, bool area, bool byPo
                       inout uint rng) {
     uint run = tiles ? lightTileRunStart(rng) : 0u;
     uint lanes = gl_SubgroupSize;
-    for (uint round = 0u; round * lanes < candidates; ++round) {
+    // A subgroup of sky or off-image pixels skips the rounds: on lavapipe a loop no lane enters
+    // costs nothing, where the masked candidate maths would run for every lane.
+    bool any = subgroupAny(lit);
+    for (uint round = 0u; any && round * lanes < candidates; ++round) {
         uint ownSlot;
         GpuEmitter own;
         float ownPdf;
