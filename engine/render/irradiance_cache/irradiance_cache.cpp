@@ -241,10 +241,15 @@ void IrradianceCache::prepare(const lighting::IrradianceCacheSettings& settings,
     // skips the set's probe.
     KeySet seenStatic(frameIn.gbuffer.size()), seenDynamic(frameIn.gbuffer.size());
     std::uint64_t lastStatic = ~0ull, lastDynamic = ~0ull;
+    // A static pixel whose voxel, face and level are the previous pixel's has its key already.
+    glm::ivec4 lastVoxelFace(-1);
+    bool lastFar = false;
+    std::optional<StaticKeys> staticKeys;
     // A static pixel far enough away reads a coarse entry where its face's 2x2 patch is open.
     std::vector<CacheKey> visible;
     std::vector<glm::ivec3> dynamicVoxels;
     const bool lod = settings.lodDistance > 0.0f && frameIn.grid != nullptr;
+    if (lod) staticKeys.emplace(*frameIn.grid, settings.lodDistance);
     for (const shared::GBufferTexel& g : frameIn.gbuffer) {
         const auto face = static_cast<std::uint32_t>(g.voxel.w);
         if (face >= 6u) continue;
@@ -255,8 +260,12 @@ void IrradianceCache::prepare(const lighting::IrradianceCacheSettings& settings,
             lastDynamic = packed;
             continue;
         }
-        const CacheKey key = lod ? staticKeyFor(*frameIn.grid, v, face, std::bit_cast<float>(g.data.y), settings.lodDistance)
-                                 : CacheKey{v, shared::CACHE_SET_STATIC};
+        const float distance = std::bit_cast<float>(g.data.y);
+        const bool far = lod && distance >= settings.lodDistance;
+        if (g.voxel == lastVoxelFace && far == lastFar) continue;
+        lastVoxelFace = g.voxel;
+        lastFar = far;
+        const CacheKey key = lod ? staticKeys->keyFor(v, face, distance) : CacheKey{v, shared::CACHE_SET_STATIC};
         const std::uint64_t packed = packCacheKey(key);
         if (packed != lastStatic && seenStatic.insert(packed)) visible.push_back(key);
         lastStatic = packed;
