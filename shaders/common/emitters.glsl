@@ -51,11 +51,14 @@ bool emitterCurrent(uint slot, uint generation) {
     return (e.info.w & EMITTER_FLAG_ALIVE) != 0u && e.info.y == generation;
 }
 
-// Probability of choosing `slot` as a candidate.
-float emitterPdf(uint slot, bool byPower) {
-    if (byPower || !kUniformSampling) return loadEmitter(slot).radiance.w / gLights.power.x;
+// Probability of choosing emitter e as a candidate (the emitter already loaded).
+float emitterPdfOf(GpuEmitter e, bool byPower) {
+    if (byPower || !kUniformSampling) return e.radiance.w / gLights.power.x;
     return 1.0 / float(gLights.counts.x);
 }
+
+// Probability of choosing `slot` as a candidate.
+float emitterPdf(uint slot, bool byPower) { return emitterPdfOf(loadEmitter(slot), byPower); }
 
 // Draws an emitter slot uniformly or by power (alias table); false when there are no lights.
 bool pickEmitter(inout uint rng, bool byPower, out uint slot) {

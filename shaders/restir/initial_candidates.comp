@@ -64,6 +64,22 @@ void addCandidate(inout Stream st, Surface s, bool area, uint slot, GpuEmitter e
     }
 }
 
+// One emitter drawn without ReGIR: entry i of the pixel's light-tile run, else from the alias table
+// (by power) or uniformly; its slot, the emitter and the probability it was drawn with.
+void drawEmitter(bool byPower, bool tiles, uint run, uint i, inout uint rng, out uint slot, out GpuEmitter e,
+                 out float pdf) {
+    if (tiles) {
+        LightTileSample t = lightTileSample(gFrame, lightTileRunEntry(run, i));
+        slot = t.info.z;
+        e = lightTileEmitter(t);
+        pdf = t.radiance.w;
+    } else {
+        pickEmitter(rng, byPower, slot);
+        e = loadEmitter(slot);
+        pdf = emitterPdfOf(e, byPower);
+    }
+}
+
 // ReGIR: every candidate from the surface's cell; a surface outside the grid draws by power.
 void regirCandidates(inout Stream st, Surface s, bool area, bool byPower, bool tiles, uint candidates, inout uint rng) {
     uint run = tiles ? lightTileRunStart(rng) : 0u;
@@ -84,15 +100,8 @@ void regirCandidates(inout Stream st, Surface s, bool area, bool byPower, bool t
             slot = entry.slot;
             e = loadEmitter(slot);
             pdf = 1.0 / entry.weight;
-        } else if (tiles) {
-            LightTileSample t = lightTileSample(gFrame, lightTileRunEntry(run, i));
-            slot = t.info.z;
-            e = lightTileEmitter(t);
-            pdf = t.radiance.w;
         } else {
-            pickEmitter(rng, byPower, slot);
-            e = loadEmitter(slot);
-            pdf = emitterPdf(slot, byPower);
+            drawEmitter(byPower, tiles, run, i, rng, slot, e, pdf);
         }
         addCandidate(st, s, area, slot, e, pdf, rng);
     }
@@ -112,17 +121,7 @@ void sharedCandidates(inout Stream st, Surface s, bool lit, bool area, bool byPo
         uint ownSlot;
         GpuEmitter own;
         float ownPdf;
-        if (tiles) {
-            LightTileSample t = lightTileSample(gFrame, lightTileRunEntry(run, round));
-            ownSlot = t.info.z;
-            own = lightTileEmitter(t);
-            ownPdf = t.radiance.w;
-        } else {
-            pickEmitter(rng, byPower, ownSlot);
-            own = loadEmitter(ownSlot);
-            // emitterPdf's value, from the emitter just loaded.
-            ownPdf = byPower || !kUniformSampling ? own.radiance.w / gLights.power.x : 1.0 / float(gLights.counts.x);
-        }
+        drawEmitter(byPower, tiles, run, round, rng, ownSlot, own, ownPdf);
         uint count = min(lanes, candidates - round * lanes);
         for (uint j = 0u; j < count; ++j) {
             uint slot = subgroupShuffle(ownSlot, j);
@@ -144,7 +143,8 @@ void main() {
     Stream st = Stream(Reservoir(uvec4(RESERVOIR_EMPTY, 0u, 0u, 0u), vec4(0.0)), 0.0, 0.0);
     uint candidates = gRestir.knobs.candidates;
     bool lit = inImage && s.valid;
-    if (gLights.counts.x != 0u && candidates != 0u) {
+    bool draws = gLights.counts.x != 0u && candidates != 0u;
+    if (draws) {
         bool area = !kPointLights || gRestir.area != 0u;
         bool byPower = gRestir.byPower != 0u;
         bool tiles = byPower && gRestir.knobs.lightTiles != 0u && lightTilesReady(gFrame);
@@ -157,7 +157,7 @@ void main() {
     }
     if (!inImage) return;
     Reservoir r = st.r;
-    if (lit && candidates != 0u) {
+    if (lit && draws) {
         r.weights = vec4(st.chosenTarget > 0.0 ? st.wSum / (float(candidates) * st.chosenTarget) : 0.0,
                          float(candidates), st.chosenTarget, 1.0);
     }
