@@ -55,6 +55,14 @@ SceneHit traceScene(vec3 o, vec3 d, float tMax) {
 }
 
 uint staticVoxelMaterial(ivec3 v) { return gridVoxelMaterial(false, v); }
+bool staticVoxelSolid(ivec3 v) { return gridVoxelSolid(false, v); }
+
+// World coordinates; false outside or with no dynamic grid.
+bool dynamicVoxelSolid(ivec3 v) {
+    if (!dynamicGridPresent()) return false;
+    loadDynamicGrid();
+    return gridVoxelSolid(true, v - gDynHeader.origin.xyz);
+}
 
 // World coordinates; 0 = empty, outside or no dynamic grid.
 uint dynamicVoxelMaterial(ivec3 v) {

@@ -184,6 +184,23 @@ uint gridVoxelMaterial(bool dyn, ivec3 v) {
     return gridBrickMaterial(dyn, cell - 1u, uint(l.x + 8 * l.y + 64 * l.z));
 }
 
+// Whether a grid-local voxel is solid (outside: no), from the occupancy masks: the same answer
+// as gridVoxelMaterial(dyn, v) != 0u, but all texel fetches, where a static brick's material is a
+// page-table fetch and a device-address read (a loop over the SIMD lanes on llvmpipe). For
+// callers that ask many voxels per pixel (the cache's exposure, level-of-detail and fallback tests).
+bool gridVoxelSolid(bool dyn, ivec3 v) {
+    ivec3 size = gridSizeInVoxels(dyn);
+    if (any(lessThan(v, ivec3(0))) || any(greaterThanEqual(v, size))) return false;
+    ivec3 cells = gridSizeInCells(dyn);
+    uint cell = gridCellIn(dyn, cells, v >> 3);
+    if (cell == CELL_EMPTY) return false;
+    if ((cell & CELL_HOMOGENEOUS) != 0u) return true;
+    ivec3 l = v & 7;
+    uint bit = uint(l.x + 8 * l.y + 64 * l.z);
+    uint first = gridBrickMaskIndex(dyn, dyn ? 0u : maskBase(cells, gridSizeInSuperCells(dyn)), cell - 1u);
+    return ((gridMaskWordAt(dyn, first + (bit >> 5u)) >> (bit & 31u)) & 1u) != 0u;
+}
+
 ivec3 faceNormal(uint face) {
     ivec3 n = ivec3(0);
     if (face < 6u) n[face >> 1u] = (face & 1u) != 0u ? 1 : -1;

@@ -132,8 +132,8 @@ uint cacheHitFace(uint packed) { return (packed >> 27u) & CACHE_HIT_FACE_MASK; }
 // A face is worth caching when light can reach it: its neighbour is not static solid.
 bool cacheFaceExposed(ivec3 voxel, uint face, uint set) {
     ivec3 n = voxel + faceNormal(face);
-    if (staticVoxelMaterial(n) != 0u) return false;
-    return set == CACHE_SET_STATIC || dynamicVoxelMaterial(n) == 0u;
+    if (staticVoxelSolid(n)) return false;
+    return set == CACHE_SET_STATIC || !dynamicVoxelSolid(n);
 }
 
 // The coarse key (cacheKeyWords' `coarse` = 1 + face, at the patch's lowest voxel) of `face` of
@@ -151,7 +151,7 @@ uint cacheCoarsePatch(ivec3 voxel, uint face, out ivec3 base) {
             ivec3 v = base;
             v[ua] += i;
             v[va] += j;
-            if (staticVoxelMaterial(v) == 0u || staticVoxelMaterial(v + n) != 0u) return 0u;
+            if (!staticVoxelSolid(v) || staticVoxelSolid(v + n)) return 0u;
         }
     }
     return 1u + face;
@@ -163,7 +163,7 @@ uint cacheCoarsePatch(ivec3 voxel, uint face, out ivec3 base) {
 // between two faces of one plane, however thin, stands in that layer, so the gather's fallback
 // never reads light from its other side.
 bool cacheFrontOpen(ivec3 v, uint set) {
-    return staticVoxelMaterial(v) == 0u && (set == CACHE_SET_STATIC || dynamicVoxelMaterial(v) == 0u);
+    return !staticVoxelSolid(v) && (set == CACHE_SET_STATIC || !dynamicVoxelSolid(v));
 }
 bool cacheFrontWalkOpen(ivec3 front, uint ua, uint va, ivec2 d, bool uFirst, uint set) {
     ivec2 steps = abs(d), dir = sign(d);
