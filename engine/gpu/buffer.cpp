@@ -20,7 +20,7 @@ Buffer::Buffer(Context& ctx, BufferKind kind, std::uint64_t bytes, const std::st
         case BufferKind::Storage:
             info.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT |
                          VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
-                         VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
+                         VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT;
             preferred = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
             break;
         case BufferKind::Staging:

@@ -16,7 +16,7 @@ namespace engine::gpu {
 class Context;
 
 enum class BufferKind {
-    Storage,   // device-local storage buffer, transfer source and destination
+    Storage,   // device-local storage buffer, transfer source and destination, indirect dispatch arguments
     Staging,   // host-visible, transfer source
     Readback,  // host-visible, transfer destination
 };

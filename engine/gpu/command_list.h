@@ -40,7 +40,8 @@ public:
     void beginPass(const std::string& name);
     void endPass();
 
-    // Make writes of the previous commands (compute or transfer) visible to the next ones.
+    // Make writes of the previous commands (compute or transfer) visible to the next ones, the
+    // arguments of an indirect dispatch included.
     void barrier();
     void copyBuffer(const Buffer& src, const Buffer& dst, const std::vector<VkBufferCopy>& regions);
     void fillBuffer(const Buffer& dst, std::uint32_t value);

@@ -160,6 +160,19 @@ VkPipeline ComputePipeline::variant(std::span<const std::uint32_t> specializatio
 
 void ComputePipeline::dispatch(CommandList& cmd, std::span<const Buffer* const> buffers, std::uint32_t groupsX,
                                std::uint32_t groupsY, std::uint32_t groupsZ) {
+    bind(cmd, buffers);
+    vkCmdDispatch(cmd.handle(), groupsX, groupsY, groupsZ);
+}
+
+void ComputePipeline::dispatchIndirect(CommandList& cmd, std::span<const Buffer* const> buffers, const Buffer& args,
+                                       std::uint64_t offset) {
+    CHECK_MSG(args.valid() && offset % 4 == 0 && offset + 12 <= args.size(), "%s: indirect arguments at %llu of %s",
+              mName.c_str(), static_cast<unsigned long long>(offset), args.name().c_str());
+    bind(cmd, buffers);
+    vkCmdDispatchIndirect(cmd.handle(), args.handle(), offset);
+}
+
+void ComputePipeline::bind(CommandList& cmd, std::span<const Buffer* const> buffers) {
     CHECK_MSG(buffers.size() == mBindingCount, "%s: %zu buffers for %u bindings", mName.c_str(), buffers.size(),
               mBindingCount);
     VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
@@ -198,7 +211,6 @@ void ComputePipeline::dispatch(CommandList& cmd, std::span<const Buffer* const> 
     vkUpdateDescriptorSets(mCtx.device(), static_cast<std::uint32_t>(writes.size()), writes.data(), 0, nullptr);
     vkCmdBindPipeline(cmd.handle(), VK_PIPELINE_BIND_POINT_COMPUTE, variant(cmd.specialization()));
     vkCmdBindDescriptorSets(cmd.handle(), VK_PIPELINE_BIND_POINT_COMPUTE, mLayout, 0, 1, &set, 0, nullptr);
-    vkCmdDispatch(cmd.handle(), groupsX, groupsY, groupsZ);
 }
 
 }  // namespace engine::gpu

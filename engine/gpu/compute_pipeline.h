@@ -36,6 +36,10 @@ public:
     }
     void dispatch(CommandList& cmd, std::span<const Buffer* const> buffers, std::uint32_t groupsX,
                   std::uint32_t groupsY = 1, std::uint32_t groupsZ = 1);
+    // The same, with the workgroup counts read on the GPU from `args` at `offset` (three uints,
+    // VkDispatchIndirectCommand), as an earlier pass wrote them.
+    void dispatchIndirect(CommandList& cmd, std::span<const Buffer* const> buffers, const Buffer& args,
+                          std::uint64_t offset);
 
     // The constant_ids the shader declares, ascending.
     const std::vector<std::uint32_t>& specializationIds() const { return mSpecIds; }
@@ -43,6 +47,8 @@ public:
     const std::vector<VkDescriptorType>& bindingTypes() const { return mTypes; }
 
 private:
+    // Allocates, fills and binds a descriptor set of `buffers`, and binds the pipeline.
+    void bind(CommandList& cmd, std::span<const Buffer* const> buffers);
     // The pipeline for these values of the shader's constants (empty: every default).
     VkPipeline variant(std::span<const std::uint32_t> specialization);
 

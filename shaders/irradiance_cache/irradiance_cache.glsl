@@ -25,6 +25,7 @@ layout(set = 0, binding = CACHE_BINDING_GBUFFER) uniform usamplerBuffer gGBuffer
 layout(set = 0, binding = CACHE_BINDING_RADIANCE, std430) buffer Radiance { vec4 gRadiance[]; };
 layout(set = 0, binding = CACHE_BINDING_INDIRECT, std430) writeonly buffer Indirect { vec4 gIndirect[]; };
 layout(set = 0, binding = CACHE_BINDING_COUNTERS, std430) buffer Counters { uint gCounters[CACHE_COUNTER_COUNT]; };
+layout(set = 0, binding = CACHE_BINDING_LATE_PIXELS, std430) buffer LatePixels { uint gLatePixels[]; };
 
 uint cacheThread() { return gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * CACHE_DISPATCH_ROW; }
 

@@ -102,9 +102,15 @@ SHARED_CONST uint CACHE_BINDING_GBUFFER = LIT_PASS_BINDING_FIRST + 10u;       //
 SHARED_CONST uint CACHE_BINDING_RADIANCE = LIT_PASS_BINDING_FIRST + 11u;      // vec4 per pixel, read and written
 SHARED_CONST uint CACHE_BINDING_INDIRECT = LIT_PASS_BINDING_FIRST + 12u;      // vec4 per pixel: the indirect term alone
 SHARED_CONST uint CACHE_BINDING_COUNTERS = LIT_PASS_BINDING_FIRST + 13u;      // uint[CACHE_COUNTER_COUNT]
+SHARED_CONST uint CACHE_BINDING_LATE_PIXELS = LIT_PASS_BINDING_FIRST + 14u;   // uint per pixel: gather_late's list
 
+// The counters (reset to 0 every frame). 1..3 count the face lists (irradiance_cache.glsl).
 SHARED_CONST uint CACHE_COUNTER_RAYS = 0u;  // rays the cache's passes traced this frame (not the bounce's shadow rays)
-SHARED_CONST uint CACHE_COUNTER_COUNT = 4u;
+SHARED_CONST uint CACHE_COUNTER_LATE_PIXELS = 4u;  // pixels cache.gather left to cache.gather_late
+// gather_late's workgroups as VkDispatchIndirectCommand (x, y, z), written by cache.gather.
+SHARED_CONST uint CACHE_COUNTER_LATE_GROUPS = 5u;
+SHARED_CONST uint CACHE_GATHER_LATE_GROUP_SIZE = 64u;
+SHARED_CONST uint CACHE_COUNTER_COUNT = 8u;
 
 SHARED_END
 

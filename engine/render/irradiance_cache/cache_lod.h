@@ -5,7 +5,7 @@
 // empty. Only such fully open, coplanar patches are coarse, so no one-voxel wall can stand between
 // two faces of one entry, nor between two neighbouring coarse entries (their fronts touch); where
 // the patch is not open the voxel keeps its fine entry. The gather (shaders/irradiance_cache/
-// gather.comp, cacheCoarseKeyFor) applies the same rule per pixel.
+// gather.glsl, gatherPixel) applies the same rule per pixel.
 #pragma once
 
 #include <optional>

@@ -34,6 +34,7 @@ struct CachePassIo {
     gpu::Buffer& radiance;  // read and written: the indirect term is added
     gpu::Buffer& indirect;  // written: the indirect term alone
     gpu::Buffer& counters;
+    gpu::Buffer& latePixels;
     auto bindings() const {
         return std::to_array<PassBinding>({{shared::CACHE_BINDING_PARAMS, &params},
                                            {shared::CACHE_BINDING_FRAME, &frameParams},
@@ -48,7 +49,8 @@ struct CachePassIo {
                                            {shared::CACHE_BINDING_GBUFFER, &gbuffer},
                                            {shared::CACHE_BINDING_RADIANCE, &radiance},
                                            {shared::CACHE_BINDING_INDIRECT, &indirect},
-                                           {shared::CACHE_BINDING_COUNTERS, &counters}});
+                                           {shared::CACHE_BINDING_COUNTERS, &counters},
+                                           {shared::CACHE_BINDING_LATE_PIXELS, &latePixels}});
     }
 };
 constexpr std::uint32_t kOwnBindings = bindingCount<CachePassIo>();
@@ -143,7 +145,8 @@ IrradianceCache::IrradianceCache(gpu::Context& ctx)
       mVisibilityDynamicFull(ctx, "cache.visibility_dynamic", "irradiance_cache/visibility_dynamic_full", kOwnBindings),
       mBounce(ctx, "cache.bounce", "irradiance_cache/light_bounce", kOwnBindings),
       mFilter(ctx, "cache.filter", "irradiance_cache/filter", kOwnBindings),
-      mGather(ctx, "cache.gather", "irradiance_cache/gather", kOwnBindings) {
+      mGather(ctx, "cache.gather", "irradiance_cache/gather", kOwnBindings),
+      mGatherLate(ctx, "cache.gather_late", "irradiance_cache/gather_late", kOwnBindings) {
     mParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::CacheParams), "cache.params");
     mCounters = gpu::Buffer(ctx, gpu::BufferKind::Storage, shared::CACHE_COUNTER_COUNT * 4, "cache.counters");
     mCountersHost = gpu::Buffer(ctx, gpu::BufferKind::Readback, shared::CACHE_COUNTER_COUNT * 4, "cache.countersHost");
@@ -334,6 +337,11 @@ void IrradianceCache::prepare(const lighting::IrradianceCacheSettings& settings,
     mStats.rays = lists.rays;
     mFrameIndex = frameIn.frameIndex;
     mImage = frameIn.size;
+    const std::uint64_t latePixelBytes = std::max<std::uint64_t>(std::uint64_t(mImage.x) * mImage.y, 1) * 4;
+    if (!mLatePixels.valid() || mLatePixels.size() != latePixelBytes) {
+        if (mLatePixels.valid()) mRetired.push_back(std::move(mLatePixels));
+        mLatePixels = gpu::Buffer(mCtx, gpu::BufferKind::Storage, latePixelBytes, "cache.latePixels");
+    }
 
     ensureCapacity(std::max(mDirectory.usedSlots(), 1u), cmd);
     if (lists.tableChanged || !mTable.valid()) {
@@ -366,7 +374,7 @@ void IrradianceCache::prepare(const lighting::IrradianceCacheSettings& settings,
     uploader.write(mParams, 0, &params, sizeof(params));
 
     mStats.bytes = mParams.size() + mDirectionBuffer.size() + mEntries.size() + mTable.size() + mLists.size() +
-                   mStaticHits.size() + mSelectedHits.size() + mIrradiance.size() + mFiltered.size();
+                   mStaticHits.size() + mSelectedHits.size() + mIrradiance.size() + mFiltered.size() + mLatePixels.size();
 }
 
 void IrradianceCache::collect() {
@@ -376,7 +384,8 @@ void IrradianceCache::collect() {
 void IrradianceCache::record(gpu::CommandList& cmd, const SceneBindings& scene, const Io& io) {
     CHECK(mConfigured);
     const CachePassIo own{mParams,     io.frameParams, mDirectionBuffer, mEntries,    mTable,      mLists,      mStaticHits,
-                          mSelectedHits, mIrradiance,  mFiltered,        io.gbuffer, io.radiance, io.indirect, mCounters};
+                          mSelectedHits, mIrradiance,  mFiltered,        io.gbuffer, io.radiance, io.indirect, mCounters,
+                          mLatePixels};
     const auto bindings = own.bindings();
     const std::uint64_t faces = shared::CACHE_FACES;
     cmd.fillBuffer(mCounters, 0);
@@ -392,6 +401,8 @@ void IrradianceCache::record(gpu::CommandList& cmd, const SceneBindings& scene, 
     mBounce.record(cmd, scene, bindings, threadGroups(mUpdate.size() * faces));
     mFilter.record(cmd, scene, bindings, threadGroups(mUpdate.size() * faces));
     mGather.record(cmd, scene, bindings, screenGroups(mImage));
+    // The pixels the gather found no value for, in as many workgroups as it counted.
+    mGatherLate.recordIndirect(cmd, scene, bindings, mCounters, shared::CACHE_COUNTER_LATE_GROUPS * 4);
     cmd.copyBuffer(mCounters, mCountersHost, {{0, 0, mCounters.size()}});
     cmd.barrier();
 }

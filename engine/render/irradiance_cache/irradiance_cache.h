@@ -14,7 +14,9 @@
 //                       first update of each phase (its hits are cached like the static entries')
 //   cache.bounce        light leaving each ray's hit -> E_new, blended into the entry
 //   cache.filter        3^3 filter over neighbouring entries of the same set
-//   cache.gather        per pixel: albedo/pi * E from the pixel's set, added to the radiance
+//   cache.gather        per pixel: albedo/pi * E from the pixel's set at its level, added to the
+//                       radiance; lists the pixels that find no value there
+//   cache.gather_late   those pixels only (an indirect dispatch): the other level, the fallback
 // GPU storage grows with the entries (doubling) up to the budget; it never depends on the world's size.
 #pragma once
 
@@ -108,7 +110,7 @@ private:
     void ensureCapacity(std::uint32_t slots, gpu::CommandList& cmd);
 
     gpu::Context& mCtx;
-    LitPass mFaces, mTraceStatic, mVisibilityStatic, mVisibilityStaticFull, mVisibilityDynamic, mVisibilityDynamicFull, mBounce, mFilter, mGather;
+    LitPass mFaces, mTraceStatic, mVisibilityStatic, mVisibilityStaticFull, mVisibilityDynamic, mVisibilityDynamicFull, mBounce, mFilter, mGather, mGatherLate;
     lighting::IrradianceCacheSettings mSettings;
     bool mConfigured = false;
     bool mDirectionsUploaded = false;
@@ -123,6 +125,7 @@ private:
     IrradianceCacheStats mStats;
     gpu::Buffer mParams, mDirectionBuffer, mEntries, mTable, mLists, mStaticHits, mSelectedHits, mIrradiance, mFiltered;
     gpu::Buffer mCounters, mCountersHost;
+    gpu::Buffer mLatePixels;  // cache.gather's list for cache.gather_late, one uint per pixel
     std::vector<gpu::Buffer> mRetired;  // replaced buffers, kept until the frame that copied them is done
 };
 

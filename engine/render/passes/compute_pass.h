@@ -13,6 +13,7 @@
 #include <string>
 #include <tuple>
 #include <utility>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -57,8 +58,14 @@ public:
     // Binds every buffer at its binding (each of 0..bindingCount-1 exactly once) and dispatches
     // `groups` workgroups; a zero count records only the label. A barrier follows.
     void record(gpu::CommandList& cmd, std::span<const PassBinding> bindings, glm::uvec2 groups);
+    // The same with the workgroup counts an earlier pass wrote into `args` at `offset` (three
+    // uints): for work whose size only the GPU knows, such as the pixels a pass set aside.
+    void recordIndirect(gpu::CommandList& cmd, std::span<const PassBinding> bindings, const gpu::Buffer& args,
+                        std::uint64_t offset);
 
 private:
+    std::vector<const gpu::Buffer*> bound(std::span<const PassBinding> bindings) const;
+
     std::string mName;
     std::uint32_t mBindingCount;
     gpu::ComputePipeline mPipeline;
