@@ -146,7 +146,7 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
     result.dynamicUpdateMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
     // Every pass compiled without the code of the features this frame does not use.
-    const ShaderFeatures features = shaderFeatures(lighting);
+    const ShaderFeatures features = shaderFeatures(lighting, scene.dynamic.present());
     const std::span<const std::uint32_t> specialization = mSpecializeShaders ? std::span(features) : std::span<const std::uint32_t>();
     gpu::CommandList cmd(mCtx, &mTimer);
     cmd.setSpecialization(specialization);

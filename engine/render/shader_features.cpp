@@ -6,7 +6,7 @@
 
 namespace engine::render {
 
-ShaderFeatures shaderFeatures(const lighting::LightingSettings& l) {
+ShaderFeatures shaderFeatures(const lighting::LightingSettings& l, bool dynamicGrid) {
     const shared::RestirParams restir = restirParams(l, 0);
     ShaderFeatures f{};
     f[FEATURE_REGIR] = regirUsed(l) ? 1u : 0u;
@@ -17,6 +17,7 @@ ShaderFeatures shaderFeatures(const lighting::LightingSettings& l) {
     f[FEATURE_UNBIASED] = restir.knobs.unbiased;
     f[FEATURE_CACHE_MULTI_BOUNCE] = l.cache.bounces > 1u ? 1u : 0u;
     f[FEATURE_CACHE_FALLBACK] = l.cache.fallbackRadius > 0u ? 1u : 0u;
+    f[FEATURE_DYNAMIC_GRID] = dynamicGrid ? 1u : 0u;
     return f;
 }
 

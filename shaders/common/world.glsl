@@ -12,6 +12,7 @@
 #include "shared/brick_grid.h"
 #include "shared/dynamic_grid.h"
 #include "shared/material.h"
+#include "shared/shader_features.h"
 
 layout(buffer_reference, std430, buffer_reference_align = 4) readonly buffer BrickPage { uint words[]; };
 
@@ -70,7 +71,10 @@ uint brickMaterial(uint brick, uint voxelIndex) {
     return (word >> ((voxelIndex & 1u) * 16u)) & 0xFFFFu;
 }
 
-bool dynamicGridPresent() { return gWorld.dynamicGrid.x != 0u; }
+// A scene without objects compiles the dynamic grid's code out (render/shader_features.h): lavapipe
+// runs every traceScene's second traversal, loop and all, even when the flag below is 0 for all.
+layout(constant_id = FEATURE_DYNAMIC_GRID) const bool kDynamicGrid = true;
+bool dynamicGridPresent() { return kDynamicGrid && gWorld.dynamicGrid.x != 0u; }
 
 uint dynamicTexel(uint i) { return texelFetch(gDynamicTexels, int(i)).x; }
 

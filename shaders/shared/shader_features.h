@@ -17,6 +17,7 @@
 #define FEATURE_UNBIASED 5              // ReSTIR's pairwise MIS (restir-unbiased)
 #define FEATURE_CACHE_MULTI_BOUNCE 6    // the cache's bounce reads the cache at its hits
 #define FEATURE_CACHE_FALLBACK 7        // the cache's gather searches the plane for pixels without an entry
-#define FEATURE_COUNT 8
+#define FEATURE_DYNAMIC_GRID 8          // rays and voxel reads see the dynamic grid (the scene has objects)
+#define FEATURE_COUNT 9
 
 #endif

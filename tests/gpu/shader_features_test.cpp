@@ -68,10 +68,24 @@ TEST_F(ShaderFeatures, SpecialisedFramesEqualTheGenericOnes) {
         EXPECT_EQ(0, std::memcmp(generic.data(), specialised.data(), generic.size() * sizeof(glm::vec4))) << c.name;
         EXPECT_GT(meanLuminance(specialised), 0.0) << c.name;
     }
+    // The sandbox above has an object (its cart): the dynamic grid's code stays. A world without
+    // objects compiles it out, and must render the same.
+    engine::world::Scene cornell = loadWorld("cornell.toml");
+    ASSERT_FALSE(cornell.dynamic.present());
+    LightingSettings cached;
+    cached.indirect = engine::lighting::Indirect::Cache;
+    for (const LightingSettings& lighting : {LightingSettings{}, cached}) {
+        const std::vector<glm::vec4> generic = radianceAfter(cornell, lighting, false);
+        const std::vector<glm::vec4> specialised = radianceAfter(cornell, lighting, true);
+        ASSERT_EQ(generic.size(), specialised.size());
+        EXPECT_EQ(0, std::memcmp(generic.data(), specialised.data(), generic.size() * sizeof(glm::vec4)))
+            << "cornell without objects, indirect " << int(lighting.indirect);
+        EXPECT_GT(meanLuminance(specialised), 0.0);
+    }
 }
 
 TEST_F(ShaderFeatures, AFrameUsesOnlyTheFeaturesItsSettingsAskFor) {
-    const engine::render::ShaderFeatures defaults = engine::render::shaderFeatures({});
+    const engine::render::ShaderFeatures defaults = engine::render::shaderFeatures({}, true);
     EXPECT_EQ(defaults[FEATURE_REGIR], 0u);
     EXPECT_EQ(defaults[FEATURE_LIGHT_TILES], 0u);
     EXPECT_EQ(defaults[FEATURE_UNIFORM_SAMPLING], 0u);
@@ -80,14 +94,16 @@ TEST_F(ShaderFeatures, AFrameUsesOnlyTheFeaturesItsSettingsAskFor) {
     EXPECT_EQ(defaults[FEATURE_UNBIASED], 0u);
     EXPECT_EQ(defaults[FEATURE_CACHE_MULTI_BOUNCE], 0u);
     EXPECT_EQ(defaults[FEATURE_CACHE_FALLBACK], 1u);  // on by default (docs/IRRADIANCE_CACHE.md)
+    EXPECT_EQ(defaults[FEATURE_DYNAMIC_GRID], 1u);
+    EXPECT_EQ(engine::render::shaderFeatures({}, false)[FEATURE_DYNAMIC_GRID], 0u);
     LightingSettings noFallback;
     noFallback.cache.fallbackRadius = 0u;
-    EXPECT_EQ(engine::render::shaderFeatures(noFallback)[FEATURE_CACHE_FALLBACK], 0u);
+    EXPECT_EQ(engine::render::shaderFeatures(noFallback, true)[FEATURE_CACHE_FALLBACK], 0u);
     LightingSettings unbiased;
     unbiased.restir.unbiased = 1u;
     unbiased.restir.candidateVisibility = 0u;  // the unbiased mode tests its candidates anyway
-    EXPECT_EQ(engine::render::shaderFeatures(unbiased)[FEATURE_UNBIASED], 1u);
-    EXPECT_EQ(engine::render::shaderFeatures(unbiased)[FEATURE_CANDIDATE_VISIBILITY], 1u);
+    EXPECT_EQ(engine::render::shaderFeatures(unbiased, true)[FEATURE_UNBIASED], 1u);
+    EXPECT_EQ(engine::render::shaderFeatures(unbiased, true)[FEATURE_CANDIDATE_VISIBILITY], 1u);
 }
 
 TEST_F(ShaderFeatures, PipelinesFindTheConstantsTheirShaderDeclares) {
