@@ -69,7 +69,7 @@ uint selectHit(uint slot, ivec3 voxel, vec3 o, uint rotation, uint phase, uint f
 #endif
 }
 
-// One invocation per exposed face of an entry (faces.comp; closed faces got their misses there),
+// One invocation per exposed face of an entry (faces.comp; closed faces have no rays),
 // looping over its S rays: the entry is read once, not per ray.
 void main() {
     uint S = gCache.raysPerUpdate;

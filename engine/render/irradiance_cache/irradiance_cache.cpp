@@ -5,6 +5,7 @@
 #include <limits>
 #include <cmath>
 #include <numeric>
+#include <utility>
 
 #include "core/check.h"
 #include "core/hash.h"
@@ -212,21 +213,30 @@ void IrradianceCache::reset(const lighting::IrradianceCacheSettings& settings, s
 void IrradianceCache::ensureCapacity(std::uint32_t slots, gpu::CommandList& cmd) {
     if (slots <= mCapacity) return;
     std::uint32_t capacity = std::min(std::max(std::bit_ceil(slots), 1024u), std::max(mDirectory.maxSlots(), slots));
+    // Every new buffer is cleared once, when made: lavapipe's device memory is host memory whose
+    // pages are mapped at their first write, and a pass that first writes them pays for the page
+    // faults (on a moving camera the slots' static hits came to trace_static unwritten, and the
+    // faults doubled its time).
+    auto make = [&](gpu::Buffer& buffer, std::uint64_t bytes, const char* name) {
+        buffer = gpu::Buffer(mCtx, gpu::BufferKind::Storage, bytes, name);
+        cmd.fillBuffer(buffer, 0);
+    };
+    std::vector<std::pair<gpu::Buffer*, gpu::Buffer>> grown;  // (buffer, its old contents)
     auto grow = [&](gpu::Buffer& buffer, std::uint64_t bytesPerSlot, const char* name) {
-        gpu::Buffer bigger(mCtx, gpu::BufferKind::Storage, capacity * bytesPerSlot, name);
-        if (buffer.valid()) {
-            cmd.copyBuffer(buffer, bigger, {{0, 0, buffer.size()}});
-            mRetired.push_back(std::move(buffer));
-        }
-        buffer = std::move(bigger);
+        if (buffer.valid()) grown.emplace_back(&buffer, std::move(buffer));
+        make(buffer, capacity * bytesPerSlot, name);
     };
     grow(mStaticHits, shared::CACHE_FACES * mSettings.directions * 4ull, "cache.staticHits");
     grow(mIrradiance, shared::CACHE_FACES * sizeof(glm::vec4), "cache.irradiance");
     grow(mFiltered, shared::CACHE_FACES * sizeof(glm::vec4), "cache.filtered");
-    mEntries = gpu::Buffer(mCtx, gpu::BufferKind::Storage, capacity * sizeof(shared::CacheEntry), "cache.entries");
-    mLists = gpu::Buffer(mCtx, gpu::BufferKind::Storage, kListWordsPerSlot * capacity * 4, "cache.lists");
-    mSelectedHits = gpu::Buffer(mCtx, gpu::BufferKind::Storage,
-                                std::uint64_t(capacity) * shared::CACHE_FACES * mSettings.raysPerUpdate * 4, "cache.selectedHits");
+    make(mEntries, capacity * sizeof(shared::CacheEntry), "cache.entries");
+    make(mLists, kListWordsPerSlot * capacity * 4, "cache.lists");
+    make(mSelectedHits, std::uint64_t(capacity) * shared::CACHE_FACES * mSettings.raysPerUpdate * 4, "cache.selectedHits");
+    cmd.barrier();
+    for (auto& [buffer, old] : grown) {
+        cmd.copyBuffer(old, *buffer, {{0, 0, old.size()}});
+        mRetired.push_back(std::move(old));
+    }
     mCapacity = capacity;
     cmd.barrier();
 }
