@@ -1,7 +1,7 @@
 #version 460
 // Irradiance cache, this frame's face lists (see cacheListedFace in irradiance_cache.glsl): one
 // invocation per face of every entry in the update and trace lists; faces with work are appended
-// to their list, closed faces get their result here (irradiance 0). A closed face has no rays, so
+// to their list, closed faces get their result here (irradiance 0, filtered and not). A closed face has no rays, so
 // no pass reads its hits and none are written (on lavapipe every store loop here ran for every
 // face: 3.5 of this pass's 4.7 ms); an edit that opens it makes its entry trace again. A list's
 // order follows the atomics, which changes no result: each face's depends only on its entry and face.
@@ -36,6 +36,7 @@ void main() {
             for (uint j = 0u; untraced && j < S; ++j)
                 gStaticHits[(slot * CACHE_FACES + face) * gCache.directions + cacheDirectionIndex(entry.phase, j)] = CACHE_HIT_UNTRACED;
             gIrradiance[slot * CACHE_FACES + face] = vec4(0.0);
+            gFiltered[slot * CACHE_FACES + face] = vec4(0.0);  // the filter runs over exposed faces
         }
     }
     if (item < gCache.traces) {

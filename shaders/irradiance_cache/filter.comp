@@ -10,10 +10,11 @@
 layout(local_size_x = CACHE_GROUP_SIZE) in;
 
 void main() {
-    uint thread = cacheThread();
-    uint item = thread / CACHE_FACES;
-    if (item >= gCache.updates) return;
-    uint face = thread % CACHE_FACES;
+    // One invocation per listed (exposed) face, as the bounce; closed faces got 0 in cache.faces.
+    uint thread = cacheThread(), item, face;
+    uint staticFaces = gCounters[CACHE_LIST_STATIC];
+    if (!(thread < staticFaces ? cacheListedFace(CACHE_LIST_STATIC, thread, item, face)
+                               : cacheListedFace(CACHE_LIST_DYNAMIC, thread - staticFaces, item, face))) return;
     uint slot = gLists[item];
     CacheEntry entry = gEntries[slot];
     uint index = slot * CACHE_FACES + face;

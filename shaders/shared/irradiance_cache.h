@@ -110,7 +110,13 @@ SHARED_CONST uint CACHE_COUNTER_LATE_PIXELS = 4u;  // pixels cache.gather left t
 // gather_late's workgroups as VkDispatchIndirectCommand (x, y, z), written by cache.gather.
 SHARED_CONST uint CACHE_COUNTER_LATE_GROUPS = 5u;
 SHARED_CONST uint CACHE_GATHER_LATE_GROUP_SIZE = 64u;
-SHARED_CONST uint CACHE_COUNTER_COUNT = 8u;
+// The workgroups of the passes that run over the face lists, as VkDispatchIndirectCommand (x, y,
+// z), written by cache.list_dispatch from the lists' lengths after cache.faces built them.
+SHARED_CONST uint CACHE_COUNTER_ARGS_TRACE = 8u;     // cache.trace_static: the trace list's faces
+SHARED_CONST uint CACHE_COUNTER_ARGS_STATIC = 11u;   // cache.visibility_static: the static updates' faces
+SHARED_CONST uint CACHE_COUNTER_ARGS_DYNAMIC = 14u;  // cache.visibility_dynamic: the dynamic updates' faces
+SHARED_CONST uint CACHE_COUNTER_ARGS_UPDATES = 17u;  // cache.bounce and cache.filter: both
+SHARED_CONST uint CACHE_COUNTER_COUNT = 20u;
 
 SHARED_END
 

@@ -139,6 +139,7 @@ glm::uvec2 threadGroups(std::uint64_t threads) {
 IrradianceCache::IrradianceCache(gpu::Context& ctx)
     : mCtx(ctx),
       mFaces(ctx, "cache.faces", "irradiance_cache/faces", kOwnBindings),
+      mListDispatch(ctx, "cache.list_dispatch", "irradiance_cache/list_dispatch", kOwnBindings),
       mTraceStatic(ctx, "cache.trace_static", "irradiance_cache/trace_static", kOwnBindings),
       mVisibilityStatic(ctx, "cache.visibility_static", "irradiance_cache/visibility_static", kOwnBindings),
       mVisibilityStaticFull(ctx, "cache.visibility_static", "irradiance_cache/visibility_static_full", kOwnBindings),
@@ -400,16 +401,18 @@ void IrradianceCache::record(gpu::CommandList& cmd, const SceneBindings& scene, 
     const std::uint64_t faces = shared::CACHE_FACES;
     cmd.fillBuffer(mCounters, 0);
     cmd.barrier();
-    // The passes with ray loops run over the face lists this pass builds; their dispatches are
-    // sized for every face, and invocations past a list's end return at once.
+    // The passes with ray loops run over the face lists this pass builds, in the workgroups
+    // cache.list_dispatch counts for them (CACHE_COUNTER_ARGS_*).
     mFaces.record(cmd, scene, bindings, threadGroups(std::max(mUpdate.size(), mTrace.size()) * faces));
-    mTraceStatic.record(cmd, scene, bindings, threadGroups(mTrace.size() * faces));
+    mListDispatch.record(cmd, scene, bindings, {1, 1});
+    auto args = [](std::uint32_t counter) { return std::uint64_t(counter) * 4; };
+    mTraceStatic.recordIndirect(cmd, scene, bindings, mCounters, args(shared::CACHE_COUNTER_ARGS_TRACE));
     (mSettings.fullRetrace ? mVisibilityStaticFull : mVisibilityStatic)
-        .record(cmd, scene, bindings, threadGroups(mStaticUpdates * faces));
+        .recordIndirect(cmd, scene, bindings, mCounters, args(shared::CACHE_COUNTER_ARGS_STATIC));
     (mSettings.fullRetrace ? mVisibilityDynamicFull : mVisibilityDynamic)
-        .record(cmd, scene, bindings, threadGroups((mUpdate.size() - mStaticUpdates) * faces));
-    mBounce.record(cmd, scene, bindings, threadGroups(mUpdate.size() * faces));
-    mFilter.record(cmd, scene, bindings, threadGroups(mUpdate.size() * faces));
+        .recordIndirect(cmd, scene, bindings, mCounters, args(shared::CACHE_COUNTER_ARGS_DYNAMIC));
+    mBounce.recordIndirect(cmd, scene, bindings, mCounters, args(shared::CACHE_COUNTER_ARGS_UPDATES));
+    mFilter.recordIndirect(cmd, scene, bindings, mCounters, args(shared::CACHE_COUNTER_ARGS_UPDATES));
     mGather.record(cmd, scene, bindings, screenGroups(mImage));
     // The pixels the gather found no value for, in as many workgroups as it counted.
     mGatherLate.recordIndirect(cmd, scene, bindings, mCounters, shared::CACHE_COUNTER_LATE_GROUPS * 4);

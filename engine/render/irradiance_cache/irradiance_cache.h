@@ -7,6 +7,7 @@
 // neighbourhood around visible dynamic voxels), lets the directory pick this frame's updates
 // within the ray budget, and queues the uploads; record() then runs the stages, each a timed pass:
 //   cache.faces         which faces have work: the passes below run one invocation per such face
+//   cache.list_dispatch the workgroups of those passes (indirect dispatches), from the lists' lengths
 //   cache.trace_static  new or invalidated static entries trace S of their K directions per face
 //                       (their phase's), until all K are cached
 //   cache.visibility_static   static entries re-trace only the dynamic grid (divide and win)
@@ -110,7 +111,7 @@ private:
     void ensureCapacity(std::uint32_t slots, gpu::CommandList& cmd);
 
     gpu::Context& mCtx;
-    LitPass mFaces, mTraceStatic, mVisibilityStatic, mVisibilityStaticFull, mVisibilityDynamic, mVisibilityDynamicFull, mBounce, mFilter, mGather, mGatherLate;
+    LitPass mFaces, mListDispatch, mTraceStatic, mVisibilityStatic, mVisibilityStaticFull, mVisibilityDynamic, mVisibilityDynamicFull, mBounce, mFilter, mGather, mGatherLate;
     lighting::IrradianceCacheSettings mSettings;
     bool mConfigured = false;
     bool mDirectionsUploaded = false;
