@@ -1,14 +1,21 @@
 // gpu::ComputePipeline reads each binding's descriptor type from the shader's SPIR-V: the world's
 // cell, page-table and dynamic-grid reads are texel fetches (usamplerBuffer), so those bindings
-// must be uniform texel buffers and every other binding stays a storage buffer.
+// must be uniform texel buffers and every other binding stays a storage buffer. And an indirect
+// dispatch runs the workgroups its arguments buffer names.
 #include <gtest/gtest.h>
 
 #include <utility>
 #include <vector>
 
+#include <glm/glm.hpp>
+
+#include "gpu/buffer.h"
+#include "gpu/command_list.h"
 #include "gpu/compute_pipeline.h"
 #include "gpu/gpu_test_context.h"
+#include "gpu/uploader.h"
 #include "shared/bindings.h"
+#include "shared/frame_params.h"
 #include "shared/light_sampling.h"
 #include "shared/restir.h"
 #include "shared/trace_rays.h"
@@ -89,4 +96,52 @@ TEST_F(ComputePipelineBindings, RestirPassesReadWhatTheyOnlyReadAsTexels) {
 TEST_F(ComputePipelineBindings, ShadersWithoutTexelReadsKeepStorageBuffers) {
     engine::gpu::ComputePipeline tonemap(context(), "post/tonemap", shared::TONEMAP_BINDING_LDR + 1u);
     for (VkDescriptorType t : tonemap.bindingTypes()) EXPECT_EQ(t, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+}
+
+// dispatchIndirect runs the workgroups an earlier command wrote into its arguments: none for
+// (0, 0, 0), the first two 8x8 tiles of the image for (2, 1, 1) — the tonemap, which writes
+// each pixel of its workgroups, shows which ran.
+TEST_F(ComputePipelineBindings, IndirectDispatchRunsTheWorkgroupsItsArgumentsName) {
+    using engine::gpu::Buffer;
+    using engine::gpu::BufferKind;
+    engine::gpu::Context& ctx = context();
+    const glm::uvec2 size(32, 16);  // 4 x 2 workgroups
+    const std::uint32_t pixels = size.x * size.y;
+    shared::FrameParams frame{};
+    frame.imageSize = glm::uvec4(size, 0u, 0u);
+    frame.exposure = glm::vec4(1.0f);
+    const std::vector<glm::vec4> radiance(pixels, glm::vec4(1.0f));
+    Buffer params(ctx, BufferKind::Storage, sizeof(frame), "test.frame");
+    Buffer light(ctx, BufferKind::Storage, pixels * sizeof(glm::vec4), "test.radiance");
+    Buffer ldr(ctx, BufferKind::Storage, pixels * 4, "test.ldr");
+    Buffer args(ctx, BufferKind::Storage, 16, "test.args");
+    Buffer host(ctx, BufferKind::Readback, pixels * 4, "test.readback");
+    engine::gpu::ComputePipeline tonemap(context(), "post/tonemap", shared::TONEMAP_BINDING_LDR + 1u);
+    const std::vector<const Buffer*> buffers{&params, &light, &ldr};
+    engine::gpu::Uploader uploader(ctx);
+    for (glm::uvec3 groups : {glm::uvec3(0u), glm::uvec3(2u, 1u, 1u)}) {
+        uploader.write(params, 0, &frame, sizeof(frame));
+        uploader.write(light, 0, radiance.data(), pixels * sizeof(glm::vec4));
+        uploader.write(args, 0, &groups, sizeof(groups));
+        engine::gpu::CommandList cmd(ctx);
+        cmd.begin();
+        cmd.fillBuffer(ldr, 0);
+        cmd.barrier();
+        uploader.record(cmd);
+        cmd.barrier();
+        tonemap.dispatchIndirect(cmd, buffers, args, 0);
+        cmd.barrier();
+        cmd.copyBuffer(ldr, host, {{0, 0, pixels * 4ull}});
+        cmd.barrier();
+        cmd.submitAndWait();
+        auto out = host.view<std::uint32_t>();
+        std::uint32_t written = 0, outside = 0;
+        for (std::uint32_t i = 0; i < pixels; ++i) {
+            const bool inTiles = i % size.x < 8u * groups.x && i / size.x < 8u * groups.y;
+            written += out[i] != 0u;
+            outside += out[i] != 0u && !inTiles;
+        }
+        EXPECT_EQ(written, 64u * groups.x * groups.y) << "groups " << groups.x << "," << groups.y << "," << groups.z;
+        EXPECT_EQ(outside, 0u);
+    }
 }
