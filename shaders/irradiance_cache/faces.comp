@@ -1,10 +1,10 @@
 #version 460
 // Irradiance cache, this frame's face lists (see cacheListedFace in irradiance_cache.glsl): one
 // invocation per face of every entry in the update and trace lists; faces with work are appended
-// to their list, closed faces get their result here (irradiance 0, filtered and not). A closed face has no rays, so
-// no pass reads its hits and none are written (on lavapipe every store loop here ran for every
-// face: 3.5 of this pass's 4.7 ms); an edit that opens it makes its entry trace again. A list's
-// order follows the atomics, which changes no result: each face's depends only on its entry and face.
+// to their list, closed faces get their result here (irradiance 0, filtered and not). A closed
+// face has no rays, so no pass reads its hits and none are written (on lavapipe every store loop
+// here ran for every face); an edit that opens it makes its entry trace again. A list's order
+// follows the atomics, which changes no result: each face's depends only on its entry and face.
 #extension GL_GOOGLE_include_directive : require
 
 #include "irradiance_cache/irradiance_cache.glsl"

@@ -11,10 +11,8 @@ layout(local_size_x = CACHE_GROUP_SIZE) in;
 
 void main() {
     // One invocation per listed (exposed) face, as the bounce; closed faces got 0 in cache.faces.
-    uint thread = cacheThread(), item, face;
-    uint staticFaces = gCounters[CACHE_LIST_STATIC];
-    if (!(thread < staticFaces ? cacheListedFace(CACHE_LIST_STATIC, thread, item, face)
-                               : cacheListedFace(CACHE_LIST_DYNAMIC, thread - staticFaces, item, face))) return;
+    uint item, face;
+    if (!cacheUpdateListedFace(cacheThread(), item, face)) return;
     uint slot = gLists[item];
     CacheEntry entry = gEntries[slot];
     uint index = slot * CACHE_FACES + face;

@@ -42,9 +42,9 @@ vec4 gatherLevel(ivec3 voxel, uint face, uint set, vec3 p, uint coarse) {
 // have the same face and whose front is reachable through the open space in front of the pixel's
 // (cacheFrontsConnected: never across a wall), weighted by inverse squared distance. The rings
 // step over voxels' entries (step 1, `coarse` 0) or, for a far pixel in an open patch, over the
-// coarse entries of its plane's patches (step 2 from the patch's base). A loop that no lane enters
-// costs nothing on lavapipe, so a view whose pixels all have entries pays little; pixels that find
-// nothing search every ring. `fallback` 0 compiles it out (shared/shader_features.h).
+// coarse entries of its plane's patches (step 2 from the patch's base). It runs in
+// cache.gather_late, over only the pixels that need it; pixels that find nothing search every
+// ring. `fallback` 0 compiles it out (shared/shader_features.h).
 layout(constant_id = FEATURE_CACHE_FALLBACK) const bool kFallback = true;
 vec4 gatherFallback(ivec3 voxel, uint face, uint set, vec3 p, ivec3 origin, int step, uint coarse) {
     uint axis = face >> 1u, ua = (axis + 1u) % 3u, va = (axis + 2u) % 3u;

@@ -60,6 +60,14 @@ bool cacheListedFace(uint list, uint i, out uint item, out uint face) {
     return true;
 }
 
+// Thread `thread` of a pass over both update lists (the bounce, the filter): the static list's
+// faces, then the dynamic list's.
+bool cacheUpdateListedFace(uint thread, out uint item, out uint face) {
+    uint staticFaces = gCounters[CACHE_LIST_STATIC];
+    return thread < staticFaces ? cacheListedFace(CACHE_LIST_STATIC, thread, item, face)
+                                : cacheListedFace(CACHE_LIST_DYNAMIC, thread - staticFaces, item, face);
+}
+
 // Which of the rotated direction sets entry (voxel, set) uses, and how it is mirrored: a hash of
 // the key and the lighting seed, so neighbours' finite sets err independently and a run repeats
 // exactly. IrradianceCache::directionRotation is the host's copy.

@@ -61,10 +61,8 @@ vec3 directLeaving(ivec3 voxel, vec3 o, vec3 d, uint packed, inout uint rng) {
 void main() {
     uint S = gCache.raysPerUpdate;
     // One invocation per listed face (faces.comp): the static updates' list, then the dynamic one's.
-    uint thread = cacheThread(), item, face;
-    uint staticFaces = gCounters[CACHE_LIST_STATIC];
-    if (!(thread < staticFaces ? cacheListedFace(CACHE_LIST_STATIC, thread, item, face)
-                               : cacheListedFace(CACHE_LIST_DYNAMIC, thread - staticFaces, item, face))) return;
+    uint item, face;
+    if (!cacheUpdateListedFace(cacheThread(), item, face)) return;
     uint slot = gLists[item];
     CacheEntry entry = gEntries[slot];
     ivec3 voxel = entry.voxel.xyz;
