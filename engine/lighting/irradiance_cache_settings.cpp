@@ -1,32 +1,29 @@
 #include "lighting/irradiance_cache_settings.h"
 
-#include <fmt/format.h>
-
 namespace engine::lighting {
 
 const char* indirectName(Indirect i) {
     switch (i) {
-        case Indirect::None: return "none";
-        case Indirect::Cache: return "cache";
-        case Indirect::Path: return "path";
-        case Indirect::Reference: return "reference";
-        case Indirect::Vct: return "vct";
+        case Indirect::None:
+            return "none";
+        case Indirect::Cache:
+            return "cache";
+        case Indirect::Path:
+            return "path";
+        case Indirect::Reference:
+            return "reference";
+        case Indirect::Vct:
+            return "vct";
     }
     return "?";
 }
 
 Result<Indirect> parseIndirect(std::string_view name) {
-    for (Indirect i : {Indirect::None, Indirect::Cache, Indirect::Path, Indirect::Reference, Indirect::Vct}) {
+    for (Indirect i :
+         {Indirect::None, Indirect::Cache, Indirect::Path, Indirect::Reference, Indirect::Vct}) {
         if (name == indirectName(i)) return i;
     }
     return makeError("unknown indirect mode '{}' (known: none, cache, path, reference, vct)", name);
-}
-
-std::string IrradianceCacheSettings::describe() const {
-    return fmt::format("cache K={} S={} bounces={} alpha={:g} N={} {} budget={}", directions, raysPerUpdate, bounces, alpha,
-                       neighbourhood, filter ? "filtered" : "unfiltered",
-                       rayBudget ? fmt::format("{} rays", rayBudget) : std::string("none")) +
-           (lodDistance > 0.0f ? fmt::format(" lod={:g}", lodDistance) : std::string());
 }
 
 }  // namespace engine::lighting

@@ -1,11 +1,11 @@
 #include "lighting/lighting_knobs.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <cstdio>
 #include <type_traits>
-
-#include <fmt/format.h>
 
 namespace engine::lighting {
 namespace {
@@ -13,14 +13,19 @@ namespace {
 // Accessors for knobs stored in a field of LightingSettings or of one of its parts.
 template <typename T>
 double knobValue(T v) {
-    if constexpr (std::is_enum_v<T>) return static_cast<double>(static_cast<std::underlying_type_t<T>>(v));
-    else return static_cast<double>(v);
+    if constexpr (std::is_enum_v<T>)
+        return static_cast<double>(static_cast<std::underlying_type_t<T>>(v));
+    else
+        return static_cast<double>(v);
 }
 template <typename T>
 T fromKnobValue(double v) {
-    if constexpr (std::is_enum_v<T>) return static_cast<T>(static_cast<std::underlying_type_t<T>>(v));
-    else if constexpr (std::is_same_v<T, bool>) return v != 0.0;
-    else return static_cast<T>(v);
+    if constexpr (std::is_enum_v<T>)
+        return static_cast<T>(static_cast<std::underlying_type_t<T>>(v));
+    else if constexpr (std::is_same_v<T, bool>)
+        return v != 0.0;
+    else
+        return static_cast<T>(v);
 }
 template <auto Field>
 double getField(const LightingSettings& s) {
@@ -40,21 +45,18 @@ void setPartField(LightingSettings& s, double v) {
     (s.*Part).*Field = fromKnobValue<std::remove_cvref_t<decltype((s.*Part).*Field)>>(v);
 }
 
+// Knob relevance: which techniques run is lighting_settings.h's (usesCache, usesVct, …).
 bool isRestir(const LightingSettings& s) { return s.method == Method::Restir; }
-bool resamples(const LightingSettings& s) { return s.method == Method::Restir || s.method == Method::Ris; }
 bool samplesEmitters(const LightingSettings& s) { return s.method != Method::Preview; }
 bool isUniform(const LightingSettings& s) { return s.method == Method::Uniform; }
 bool isReference(const LightingSettings& s) { return s.method == Method::Reference; }
-bool usesCache(const LightingSettings& s) { return s.indirect == Indirect::Cache && s.method != Method::Reference; }
-bool drawsLightsByPower(const LightingSettings& s) { return s.byPower && (resamples(s) || usesCache(s)); }
-bool usesRegir(const LightingSettings& s) { return s.regir.enabled != 0u && resamples(s); }
-bool usesPath(const LightingSettings& s) { return s.indirect == Indirect::Path && s.method != Method::Reference; }
-bool usesVct(const LightingSettings& s) { return s.indirect == Indirect::Vct && s.method != Method::Reference; }
 bool vctMitigates(const LightingSettings& s) { return usesVct(s) && s.vct.leakMitigation; }
 
 // --sampling: uniform, power (alias table) or regir (ReGIR's grid for ReSTIR and RIS, whose cells
 // draw by power; the other methods take power).
-double getSampling(const LightingSettings& s) { return s.regir.enabled ? 2.0 : s.byPower ? 1.0 : 0.0; }
+double getSampling(const LightingSettings& s) {
+    return s.regir.enabled ? 2.0 : s.byPower ? 1.0 : 0.0;
+}
 void setSampling(LightingSettings& s, double v) {
     s.byPower = v >= 1.0;
     s.regir.enabled = v >= 2.0 ? 1u : 0u;
@@ -81,26 +83,38 @@ Status parseSpatialKnob(LightingSettings& s, std::string_view text) {
     float radius = 0.0f;
     char extra = 0;
     std::string t(text);
-    if (std::sscanf(t.c_str(), "%u,%f%c", &taps, &radius, &extra) != 2 || taps > 16 || !(radius > 0.0f && radius <= 256.0f))
-        return makeError("spatial: expected TAPS,RADIUS with taps in 0..16 and radius in (0, 256], or 0; got '{}'", text);
+    if (std::sscanf(t.c_str(), "%u,%f%c", &taps, &radius, &extra) != 2 || taps > 16 ||
+        !(radius > 0.0f && radius <= 256.0f))
+        return makeError(
+            "spatial: expected TAPS,RADIUS with taps in 0..16 and radius in (0, 256], or 0; got "
+            "'{}'",
+            text);
     s.restir.spatial = taps > 0;
     s.restir.spatialTaps = taps;
     s.restir.spatialRadius = radius;
     return {};
 }
 std::string formatSpatialKnob(const LightingSettings& s) {
-    return s.restir.spatial ? fmt::format("{},{}", s.restir.spatialTaps, s.restir.spatialRadius) : "0";
+    return s.restir.spatial ? fmt::format("{},{}", s.restir.spatialTaps, s.restir.spatialRadius)
+                            : "0";
 }
 Status checkSpatialKnob(const LightingSettings& s) {
-    if (s.restir.spatial && (s.restir.spatialTaps < 1 || s.restir.spatialTaps > 16 || !(s.restir.spatialRadius > 0.0f && s.restir.spatialRadius <= 256.0f)))
-        return makeError("spatial: taps must be in 1..16 and radius in (0, 256], not {},{}", s.restir.spatialTaps, s.restir.spatialRadius);
+    if (s.restir.spatial && (s.restir.spatialTaps < 1 || s.restir.spatialTaps > 16 ||
+                             !(s.restir.spatialRadius > 0.0f && s.restir.spatialRadius <= 256.0f)))
+        return makeError("spatial: taps must be in 1..16 and radius in (0, 256], not {},{}",
+                         s.restir.spatialTaps, s.restir.spatialRadius);
     return {};
 }
 
-double getBudgetMb(const LightingSettings& s) { return static_cast<double>(s.cache.budgetBytes) / 1048576.0; }
-void setBudgetMb(LightingSettings& s, double mb) { s.cache.budgetBytes = static_cast<std::uint64_t>(mb * 1048576.0); }
+double getBudgetMb(const LightingSettings& s) {
+    return static_cast<double>(s.cache.budgetBytes) / 1048576.0;
+}
+void setBudgetMb(LightingSettings& s, double mb) {
+    s.cache.budgetBytes = static_cast<std::uint64_t>(mb * 1048576.0);
+}
 
-constexpr std::array<std::string_view, 6> kMethods{"preview", "restir", "ris", "uniform", "bruteforce", "reference"};
+constexpr std::array<std::string_view, 6> kMethods{"preview", "restir",     "ris",
+                                                   "uniform", "bruteforce", "reference"};
 // In the order of enum Indirect.
 // In the order of enum Sky.
 constexpr std::array<std::string_view, 3> kSky{"none", "dvf", "reference"};
@@ -115,169 +129,374 @@ using R = shared::RestirKnobs;
 
 const Knob kLighting[] = {
     {.name = "method",
-     .help = "Lighting: restir | restir-unbiased | ris | uniform | bruteforce | reference | preview (restir: "
-             "M-weighted reuse, unbiased for a still camera; restir-unbiased: pairwise MIS, unbiased when it moves)",
+     .help = "Lighting: restir | restir-unbiased | ris | uniform | bruteforce | reference | "
+             "preview (restir: "
+             "M-weighted reuse, unbiased for a still camera; restir-unbiased: pairwise MIS, "
+             "unbiased when it moves)",
      .kind = KnobKind::Custom,
      .choices = kMethods,
      .parse = parseMethodKnob,
      .format = formatMethodKnob},
-    {.name = "seed", .help = "Random seed", .kind = KnobKind::Count, .min = 0, .max = 4294967295.0,
-     .get = getField<&S::seed>, .set = setField<&S::seed>},
+    {.name = "seed",
+     .help = "Random seed",
+     .kind = KnobKind::Count,
+     .min = 0,
+     .max = 4294967295.0,
+     .get = getField<&S::seed>,
+     .set = setField<&S::seed>},
     {.name = "indirect",
-     .help = "Indirect light: none | cache (voxel-face irradiance cache) | path (path-traced bounces from the "
-             "G-buffer, accumulated while still) | reference (the path tracer replaces the method) | vct (voxel cone "
+     .help = "Indirect light: none | cache (voxel-face irradiance cache) | path (path-traced "
+             "bounces from the "
+             "G-buffer, accumulated while still) | reference (the path tracer replaces the method) "
+             "| vct (voxel cone "
              "tracing: cheap, leaks through thin walls); a scene's [indirect] mode, else none",
-     .kind = KnobKind::Choice, .choices = kIndirect, .get = getField<&S::indirect>, .set = setField<&S::indirect>},
+     .kind = KnobKind::Choice,
+     .choices = kIndirect,
+     .get = getField<&S::indirect>,
+     .set = setField<&S::indirect>},
     {.name = "sky",
-     .help = "Sky light: none | dvf (discrete visibility fields: per-cell masks of the sky directions) | reference "
-             "(cosine rays per pixel, accumulated while still); added without an indirect method, whose rays see the "
+     .help = "Sky light: none | dvf (discrete visibility fields: per-cell masks of the sky "
+             "directions) | reference "
+             "(cosine rays per pixel, accumulated while still); added without an indirect method, "
+             "whose rays see the "
              "sky already, and not to preview or reference",
-     .kind = KnobKind::Choice, .choices = kSky, .get = getField<&S::sky>, .set = setField<&S::sky>},
+     .kind = KnobKind::Choice,
+     .choices = kSky,
+     .get = getField<&S::sky>,
+     .set = setField<&S::sky>},
 };
 
 const Knob kEmitters[] = {
-    {.name = "mode", .help = "Emitters as point or area lights", .kind = KnobKind::Choice, .choices = kModes,
-     .get = getField<&S::area>, .set = setField<&S::area>, .relevant = samplesEmitters},
+    {.name = "mode",
+     .help = "Emitters as point or area lights",
+     .kind = KnobKind::Choice,
+     .choices = kModes,
+     .get = getField<&S::area>,
+     .set = setField<&S::area>,
+     .relevant = samplesEmitters},
     {.name = "sampling",
-     .help = "Candidate emitters: uniform, by power (alias table), or regir (ReSTIR/RIS: from a world-space grid of "
+     .help = "Candidate emitters: uniform, by power (alias table), or regir (ReSTIR/RIS: from a "
+             "world-space grid of "
              "lights resampled per cell by power and distance; other methods by power)",
-     .kind = KnobKind::Choice, .choices = kSampling, .get = getSampling, .set = setSampling, .relevant = samplesEmitters},
-    {.name = "brick_lights", .help = "Uniform emissive bricks as one light", .kind = KnobKind::Switch,
-     .get = getField<&S::brickLights>, .set = setField<&S::brickLights>, .relevant = samplesEmitters},
+     .kind = KnobKind::Choice,
+     .choices = kSampling,
+     .get = getSampling,
+     .set = setSampling,
+     .relevant = samplesEmitters},
+    {.name = "brick_lights",
+     .help = "Uniform emissive bricks as one light",
+     .kind = KnobKind::Switch,
+     .get = getField<&S::brickLights>,
+     .set = setField<&S::brickLights>,
+     .relevant = samplesEmitters},
 };
 
 // Voxel ReSTIR (Bitterli et al.; candidates also drive RIS).
 const Knob kRestir[] = {
-    {.name = "candidates", .help = "ReSTIR/RIS candidates per pixel (M)", .kind = KnobKind::Count, .min = 1, .max = 1024,
-     .get = getPartField<&S::restir, &R::candidates>, .set = setPartField<&S::restir, &R::candidates>, .relevant = resamples},
-    {.name = "temporal", .help = "Temporal reuse", .kind = KnobKind::Switch, .get = getPartField<&S::restir, &R::temporal>,
-     .set = setPartField<&S::restir, &R::temporal>, .relevant = isRestir},
-    {.name = "spatial", .help = "Spatial reuse taps,radius in pixels (0 = off)", .kind = KnobKind::Custom,
-     .relevant = isRestir, .parse = parseSpatialKnob, .format = formatSpatialKnob, .check = checkSpatialKnob},
-    {.name = "unbiased", .help = "Pairwise MIS in spatial reuse, balance heuristic with last frame's visibility in temporal reuse (restir-unbiased)", .kind = KnobKind::Switch,
-     .get = getPartField<&S::restir, &R::unbiased>, .set = setPartField<&S::restir, &R::unbiased>, .relevant = isRestir},
-    {.name = "temporal_cap", .help = "Last frame's M is capped at this times M", .kind = KnobKind::Real, .min = 1, .max = 1000,
-     .get = getPartField<&S::restir, &R::temporalCap>, .set = setPartField<&S::restir, &R::temporalCap>, .relevant = isRestir},
-    {.name = "depth_tolerance", .help = "Reuse between pixels whose depths agree within this fraction", .kind = KnobKind::Real,
-     .min = 0, .max = 10, .get = getPartField<&S::restir, &R::depthTolerance>, .set = setPartField<&S::restir, &R::depthTolerance>, .relevant = isRestir},
-    {.name = "candidate_visibility", .help = "Shadow-test the chosen candidate before reuse", .kind = KnobKind::Switch,
-     .get = getPartField<&S::restir, &R::candidateVisibility>, .set = setPartField<&S::restir, &R::candidateVisibility>, .relevant = isRestir},
+    {.name = "candidates",
+     .help = "ReSTIR/RIS candidates per pixel (M)",
+     .kind = KnobKind::Count,
+     .min = 1,
+     .max = 1024,
+     .get = getPartField<&S::restir, &R::candidates>,
+     .set = setPartField<&S::restir, &R::candidates>,
+     .relevant = resamples},
+    {.name = "temporal",
+     .help = "Temporal reuse",
+     .kind = KnobKind::Switch,
+     .get = getPartField<&S::restir, &R::temporal>,
+     .set = setPartField<&S::restir, &R::temporal>,
+     .relevant = isRestir},
+    {.name = "spatial",
+     .help = "Spatial reuse taps,radius in pixels (0 = off)",
+     .kind = KnobKind::Custom,
+     .relevant = isRestir,
+     .parse = parseSpatialKnob,
+     .format = formatSpatialKnob,
+     .check = checkSpatialKnob},
+    {.name = "unbiased",
+     .help = "Pairwise MIS in spatial reuse, balance heuristic with last frame's visibility in "
+             "temporal reuse (restir-unbiased)",
+     .kind = KnobKind::Switch,
+     .get = getPartField<&S::restir, &R::unbiased>,
+     .set = setPartField<&S::restir, &R::unbiased>,
+     .relevant = isRestir},
+    {.name = "temporal_cap",
+     .help = "Last frame's M is capped at this times M",
+     .kind = KnobKind::Real,
+     .min = 1,
+     .max = 1000,
+     .get = getPartField<&S::restir, &R::temporalCap>,
+     .set = setPartField<&S::restir, &R::temporalCap>,
+     .relevant = isRestir},
+    {.name = "depth_tolerance",
+     .help = "Reuse between pixels whose depths agree within this fraction",
+     .kind = KnobKind::Real,
+     .min = 0,
+     .max = 10,
+     .get = getPartField<&S::restir, &R::depthTolerance>,
+     .set = setPartField<&S::restir, &R::depthTolerance>,
+     .relevant = isRestir},
+    {.name = "candidate_visibility",
+     .help = "Shadow-test the chosen candidate before reuse",
+     .kind = KnobKind::Switch,
+     .get = getPartField<&S::restir, &R::candidateVisibility>,
+     .set = setPartField<&S::restir, &R::candidateVisibility>,
+     .relevant = isRestir},
     {.name = "light_tiles",
-     .help = "ReSTIR candidates and cache bounce lights by power from presampled light tiles (RTXDI) instead of "
+     .help = "ReSTIR candidates and cache bounce lights by power from presampled light tiles "
+             "(RTXDI) instead of "
              "alias-table draws: same probabilities, cheaper reads",
-     .kind = KnobKind::Switch, .get = getPartField<&S::restir, &R::lightTiles>, .set = setPartField<&S::restir, &R::lightTiles>,
+     .kind = KnobKind::Switch,
+     .get = getPartField<&S::restir, &R::lightTiles>,
+     .set = setPartField<&S::restir, &R::lightTiles>,
      .relevant = drawsLightsByPower},
 };
 
 const Knob kBaselines[] = {
-    {.name = "shadow_rays", .help = "uniform: light samples (and shadow rays) per pixel", .kind = KnobKind::Count, .min = 1,
-     .max = 4096, .get = getField<&S::shadowRays>, .set = setField<&S::shadowRays>, .relevant = isUniform},
+    {.name = "shadow_rays",
+     .help = "uniform: light samples (and shadow rays) per pixel",
+     .kind = KnobKind::Count,
+     .min = 1,
+     .max = 4096,
+     .get = getField<&S::shadowRays>,
+     .set = setField<&S::shadowRays>,
+     .relevant = isUniform},
 };
 
 const Knob kReference[] = {
-    {.name = "bounces", .help = "reference: indirect bounces (0 = direct light only)", .kind = KnobKind::Count, .min = 0,
-     .max = 64, .get = getField<&S::bounces>, .set = setField<&S::bounces>, .relevant = isReference},
+    {.name = "bounces",
+     .help = "reference: indirect bounces (0 = direct light only)",
+     .kind = KnobKind::Count,
+     .min = 0,
+     .max = 64,
+     .get = getField<&S::bounces>,
+     .set = setField<&S::bounces>,
+     .relevant = isReference},
     {.name = "pixel_filter",
-     .help = "reference: box (jittered over the pixel) | centre (one ray through the pixel centre, the pixel the other "
+     .help = "reference: box (jittered over the pixel) | centre (one ray through the pixel centre, "
+             "the pixel the other "
              "methods shade)",
-     .kind = KnobKind::Choice, .choices = kPixelFilters, .get = getField<&S::referenceFilter>,
-     .set = setField<&S::referenceFilter>, .relevant = isReference},
+     .kind = KnobKind::Choice,
+     .choices = kPixelFilters,
+     .get = getField<&S::referenceFilter>,
+     .set = setField<&S::referenceFilter>,
+     .relevant = isReference},
 };
 
 // The voxel-face irradiance cache (Cosin Ayerbe et al.).
 const Knob kCache[] = {
-    {.name = "directions", .help = "cache: K directions per voxel face", .kind = KnobKind::Count, .min = 16, .max = 256,
-     .get = getPartField<&S::cache, &C::directions>, .set = setPartField<&S::cache, &C::directions>, .relevant = usesCache},
-    {.name = "rays", .help = "cache: of the K, rays per face per frame, a divisor of K", .kind = KnobKind::Count, .min = 1,
-     .max = 256, .get = getPartField<&S::cache, &C::raysPerUpdate>, .set = setPartField<&S::cache, &C::raysPerUpdate>, .relevant = usesCache},
-    {.name = "bounces", .help = "cache: 1 = one bounce (the paper); more reads the cache at each hit", .kind = KnobKind::Count,
-     .min = 1, .max = 8, .get = getPartField<&S::cache, &C::bounces>, .set = setPartField<&S::cache, &C::bounces>, .relevant = usesCache},
-    {.name = "alpha", .help = "cache: temporal blend factor", .kind = KnobKind::Real, .min = 0.001, .max = 1,
-     .get = getPartField<&S::cache, &C::alpha>, .set = setPartField<&S::cache, &C::alpha>, .relevant = usesCache},
-    {.name = "neighbourhood", .help = "cache: N^3 around visible dynamic voxels: 0, 3 or 5", .kind = KnobKind::Count,
-     .min = 0, .max = 5, .get = getPartField<&S::cache, &C::neighbourhood>, .set = setPartField<&S::cache, &C::neighbourhood>,
+    {.name = "directions",
+     .help = "cache: K directions per voxel face",
+     .kind = KnobKind::Count,
+     .min = 16,
+     .max = 256,
+     .get = getPartField<&S::cache, &C::directions>,
+     .set = setPartField<&S::cache, &C::directions>,
      .relevant = usesCache},
-    {.name = "max_ray", .help = "cache: ray length in voxels, also an edit's reach", .kind = KnobKind::Real, .min = 1,
-     .max = 500, .get = getPartField<&S::cache, &C::maxRayLength>, .set = setPartField<&S::cache, &C::maxRayLength>, .relevant = usesCache},
-    {.name = "filter", .help = "cache: 3^3 filter over neighbouring faces", .kind = KnobKind::Switch,
-     .get = getPartField<&S::cache, &C::filter>, .set = setPartField<&S::cache, &C::filter>, .relevant = usesCache},
-    {.name = "fade", .help = "cache: seconds a dynamic entry takes to fade after its last update", .kind = KnobKind::Real,
-     .min = 0.001, .max = 60, .get = getPartField<&S::cache, &C::fadeSeconds>, .set = setPartField<&S::cache, &C::fadeSeconds>,
+    {.name = "rays",
+     .help = "cache: of the K, rays per face per frame, a divisor of K",
+     .kind = KnobKind::Count,
+     .min = 1,
+     .max = 256,
+     .get = getPartField<&S::cache, &C::raysPerUpdate>,
+     .set = setPartField<&S::cache, &C::raysPerUpdate>,
      .relevant = usesCache},
-    {.name = "budget_mb", .help = "cache: memory budget in MiB; least recently seen evicted", .kind = KnobKind::Real,
-     .min = 1, .max = 16384, .get = getBudgetMb, .set = setBudgetMb, .relevant = usesCache},
-    {.name = "budget", .help = "cache: rays per frame, spent on new, edited, moving and stale entries first; 0 = all every frame",
-     .kind = KnobKind::Count, .min = 0, .max = 100000000, .get = getPartField<&S::cache, &C::rayBudget>,
-     .set = setPartField<&S::cache, &C::rayBudget>, .relevant = usesCache},
-    {.name = "lod_distance", .help = "cache: static faces this far (voxels) share an entry per open 2x2 patch; 0 = off",
-     .kind = KnobKind::Real, .min = 0, .max = 100000, .get = getPartField<&S::cache, &C::lodDistance>,
-     .set = setPartField<&S::cache, &C::lodDistance>, .relevant = usesCache},
-    {.name = "fallback", .help = "cache: voxels a pixel without an entry searches in its face's plane for entries; 0 = off",
-     .kind = KnobKind::Count, .min = 0, .max = 16, .get = getPartField<&S::cache, &C::fallbackRadius>,
-     .set = setPartField<&S::cache, &C::fallbackRadius>, .relevant = usesCache},
-    {.name = "light_samples", .help = "cache: hits per face update that sample direct light (weighted subset); 0 = all",
-     .kind = KnobKind::Count, .min = 0, .max = 256, .get = getPartField<&S::cache, &C::lightSamples>,
-     .set = setPartField<&S::cache, &C::lightSamples>, .relevant = usesCache},
+    {.name = "bounces",
+     .help = "cache: 1 = one bounce (the paper); more reads the cache at each hit",
+     .kind = KnobKind::Count,
+     .min = 1,
+     .max = 8,
+     .get = getPartField<&S::cache, &C::bounces>,
+     .set = setPartField<&S::cache, &C::bounces>,
+     .relevant = usesCache},
+    {.name = "alpha",
+     .help = "cache: temporal blend factor",
+     .kind = KnobKind::Real,
+     .min = 0.001,
+     .max = 1,
+     .get = getPartField<&S::cache, &C::alpha>,
+     .set = setPartField<&S::cache, &C::alpha>,
+     .relevant = usesCache},
+    {.name = "neighbourhood",
+     .help = "cache: N^3 around visible dynamic voxels: 0, 3 or 5",
+     .kind = KnobKind::Count,
+     .min = 0,
+     .max = 5,
+     .get = getPartField<&S::cache, &C::neighbourhood>,
+     .set = setPartField<&S::cache, &C::neighbourhood>,
+     .relevant = usesCache},
+    {.name = "max_ray",
+     .help = "cache: ray length in voxels, also an edit's reach",
+     .kind = KnobKind::Real,
+     .min = 1,
+     .max = 500,
+     .get = getPartField<&S::cache, &C::maxRayLength>,
+     .set = setPartField<&S::cache, &C::maxRayLength>,
+     .relevant = usesCache},
+    {.name = "filter",
+     .help = "cache: 3^3 filter over neighbouring faces",
+     .kind = KnobKind::Switch,
+     .get = getPartField<&S::cache, &C::filter>,
+     .set = setPartField<&S::cache, &C::filter>,
+     .relevant = usesCache},
+    {.name = "fade",
+     .help = "cache: seconds a dynamic entry takes to fade after its last update",
+     .kind = KnobKind::Real,
+     .min = 0.001,
+     .max = 60,
+     .get = getPartField<&S::cache, &C::fadeSeconds>,
+     .set = setPartField<&S::cache, &C::fadeSeconds>,
+     .relevant = usesCache},
+    {.name = "budget_mb",
+     .help = "cache: memory budget in MiB; least recently seen evicted",
+     .kind = KnobKind::Real,
+     .min = 1,
+     .max = 16384,
+     .get = getBudgetMb,
+     .set = setBudgetMb,
+     .relevant = usesCache},
+    {.name = "budget",
+     .help = "cache: rays per frame, spent on new, edited, moving and stale entries first; 0 = all "
+             "every frame",
+     .kind = KnobKind::Count,
+     .min = 0,
+     .max = 100000000,
+     .get = getPartField<&S::cache, &C::rayBudget>,
+     .set = setPartField<&S::cache, &C::rayBudget>,
+     .relevant = usesCache},
+    {.name = "lod_distance",
+     .help = "cache: static faces this far (voxels) share an entry per open 2x2 patch; 0 = off",
+     .kind = KnobKind::Real,
+     .min = 0,
+     .max = 100000,
+     .get = getPartField<&S::cache, &C::lodDistance>,
+     .set = setPartField<&S::cache, &C::lodDistance>,
+     .relevant = usesCache},
+    {.name = "fallback",
+     .help =
+         "cache: voxels a pixel without an entry searches in its face's plane for entries; 0 = off",
+     .kind = KnobKind::Count,
+     .min = 0,
+     .max = 16,
+     .get = getPartField<&S::cache, &C::fallbackRadius>,
+     .set = setPartField<&S::cache, &C::fallbackRadius>,
+     .relevant = usesCache},
+    {.name = "light_samples",
+     .help = "cache: hits per face update that sample direct light (weighted subset); 0 = all",
+     .kind = KnobKind::Count,
+     .min = 0,
+     .max = 256,
+     .get = getPartField<&S::cache, &C::lightSamples>,
+     .set = setPartField<&S::cache, &C::lightSamples>,
+     .relevant = usesCache},
 };
 
 // Path-traced indirect light beside the direct method (render/path_indirect/). The names carry
 // the prefix themselves: a scene's [indirect] table holds them beside the cache's.
 using P = PathIndirectSettings;
 const Knob kPath[] = {
-    {.name = "path_spp", .help = "path: bounce paths per pixel per frame", .kind = KnobKind::Count, .min = 1, .max = 256,
-     .get = getPartField<&S::path, &P::samples>, .set = setPartField<&S::path, &P::samples>, .relevant = usesPath},
-    {.name = "path_bounces", .help = "path: bounces per path (1 = one bounce, as the cache)", .kind = KnobKind::Count,
-     .min = 1, .max = 16, .get = getPartField<&S::path, &P::bounces>, .set = setPartField<&S::path, &P::bounces>,
+    {.name = "path_spp",
+     .help = "path: bounce paths per pixel per frame",
+     .kind = KnobKind::Count,
+     .min = 1,
+     .max = 256,
+     .get = getPartField<&S::path, &P::samples>,
+     .set = setPartField<&S::path, &P::samples>,
      .relevant = usesPath},
-    {.name = "path_accumulate", .help = "path: average over frames while camera and world are still", .kind = KnobKind::Switch,
-     .get = getPartField<&S::path, &P::accumulate>, .set = setPartField<&S::path, &P::accumulate>, .relevant = usesPath},
+    {.name = "path_bounces",
+     .help = "path: bounces per path (1 = one bounce, as the cache)",
+     .kind = KnobKind::Count,
+     .min = 1,
+     .max = 16,
+     .get = getPartField<&S::path, &P::bounces>,
+     .set = setPartField<&S::path, &P::bounces>,
+     .relevant = usesPath},
+    {.name = "path_accumulate",
+     .help = "path: average over frames while camera and world are still",
+     .kind = KnobKind::Switch,
+     .get = getPartField<&S::path, &P::accumulate>,
+     .set = setPartField<&S::path, &P::accumulate>,
+     .relevant = usesPath},
 };
 
 // ReGIR's world-space grid (render/regir/), with sampling regir.
 using G = shared::RegirKnobs;
 const Knob kRegir[] = {
-    {.name = "regir_cell", .help = "regir: smallest cell size in voxels (grown until the world fits in 4096 cells)",
-     .kind = KnobKind::Real, .min = 1, .max = 256, .get = getPartField<&S::regir, &G::cellSize>,
-     .set = setPartField<&S::regir, &G::cellSize>, .relevant = usesRegir},
-    {.name = "regir_candidates", .help = "regir: power-drawn candidates resampled into each cell entry per frame",
-     .kind = KnobKind::Count, .min = 1, .max = 256, .get = getPartField<&S::regir, &G::buildCandidates>,
-     .set = setPartField<&S::regir, &G::buildCandidates>, .relevant = usesRegir},
+    {.name = "regir_cell",
+     .help = "regir: smallest cell size in voxels (grown until the world fits in 4096 cells)",
+     .kind = KnobKind::Real,
+     .min = 1,
+     .max = 256,
+     .get = getPartField<&S::regir, &G::cellSize>,
+     .set = setPartField<&S::regir, &G::cellSize>,
+     .relevant = usesRegir},
+    {.name = "regir_candidates",
+     .help = "regir: power-drawn candidates resampled into each cell entry per frame",
+     .kind = KnobKind::Count,
+     .min = 1,
+     .max = 256,
+     .get = getPartField<&S::regir, &G::buildCandidates>,
+     .set = setPartField<&S::regir, &G::buildCandidates>,
+     .relevant = usesRegir},
 };
 
 // Voxel cone tracing (render/vct/; the Wicked Engine's voxel GI after Crassin et al.), prefixed
 // like the path term's knobs.
 using V = VctSettings;
 const Knob kVct[] = {
-    {.name = "vct_levels", .help = "vct: clipmap levels of 32^3 texels (2, 4, 8, 16 voxels wide; reach 64..512 voxels)",
-     .kind = KnobKind::Count, .min = 1, .max = 4, .get = getPartField<&S::vct, &V::levels>,
-     .set = setPartField<&S::vct, &V::levels>, .relevant = usesVct},
+    {.name = "vct_levels",
+     .help = "vct: clipmap levels of 32^3 texels (2, 4, 8, 16 voxels wide; reach 64..512 voxels)",
+     .kind = KnobKind::Count,
+     .min = 1,
+     .max = 4,
+     .get = getPartField<&S::vct, &V::levels>,
+     .set = setPartField<&S::vct, &V::levels>,
+     .relevant = usesVct},
     {.name = "vct_leak_mitigation",
-     .help = "vct: directional texels and a cone start offset (off: isotropic texels, cones from the surface)",
-     .kind = KnobKind::Switch, .get = getPartField<&S::vct, &V::leakMitigation>,
-     .set = setPartField<&S::vct, &V::leakMitigation>, .relevant = usesVct},
-    {.name = "vct_offset", .help = "vct: cone start along the normal in level-0 texels (with leak mitigation)",
-     .kind = KnobKind::Real, .min = 0, .max = 4, .get = getPartField<&S::vct, &V::startOffset>,
-     .set = setPartField<&S::vct, &V::startOffset>, .relevant = vctMitigates},
-    {.name = "vct_bounce", .help = "vct: a second bounce, injected from the last frame's volume", .kind = KnobKind::Switch,
-     .get = getPartField<&S::vct, &V::extraBounce>, .set = setPartField<&S::vct, &V::extraBounce>, .relevant = usesVct},
+     .help = "vct: directional texels and a cone start offset (off: isotropic texels, cones from "
+             "the surface)",
+     .kind = KnobKind::Switch,
+     .get = getPartField<&S::vct, &V::leakMitigation>,
+     .set = setPartField<&S::vct, &V::leakMitigation>,
+     .relevant = usesVct},
+    {.name = "vct_offset",
+     .help = "vct: cone start along the normal in level-0 texels (with leak mitigation)",
+     .kind = KnobKind::Real,
+     .min = 0,
+     .max = 4,
+     .get = getPartField<&S::vct, &V::startOffset>,
+     .set = setPartField<&S::vct, &V::startOffset>,
+     .relevant = vctMitigates},
+    {.name = "vct_bounce",
+     .help = "vct: a second bounce, injected from the last frame's volume",
+     .kind = KnobKind::Switch,
+     .get = getPartField<&S::vct, &V::extraBounce>,
+     .set = setPartField<&S::vct, &V::extraBounce>,
+     .relevant = usesVct},
     {.name = "vct_refresh",
-     .help = "vct: texels staying in view are re-injected every N frames, in turn (1 = all every frame); edits, light "
+     .help = "vct: texels staying in view are re-injected every N frames, in turn (1 = all every "
+             "frame); edits, light "
              "changes and new texels at once",
-     .kind = KnobKind::Count, .min = 1, .max = 64, .get = getPartField<&S::vct, &V::refreshPeriod>,
-     .set = setPartField<&S::vct, &V::refreshPeriod>, .relevant = usesVct},
+     .kind = KnobKind::Count,
+     .min = 1,
+     .max = 64,
+     .get = getPartField<&S::vct, &V::refreshPeriod>,
+     .set = setPartField<&S::vct, &V::refreshPeriod>,
+     .relevant = usesVct},
 };
 
 const KnobGroup kGroups[] = {
-    {"lighting", "", kLighting}, {"emitters", "", kEmitters},   {"restir", "", kRestir},
+    {"lighting", "", kLighting},   {"emitters", "", kEmitters},   {"restir", "", kRestir},
     {"baselines", "", kBaselines}, {"reference", "", kReference}, {"cache", "cache-", kCache},
-    {"path", "", kPath}, {"regir", "", kRegir},
-    {"vct", "", kVct},
+    {"path", "", kPath},           {"regir", "", kRegir},         {"vct", "", kVct},
 };
 
 // Rules between knobs that no single range expresses.
 Status checkCombinations(const LightingSettings& s) {
     if (s.cache.directions % std::max(s.cache.raysPerUpdate, 1u) != 0)
-        return makeError("cache rays ({}) must divide cache directions ({})", s.cache.raysPerUpdate, s.cache.directions);
+        return makeError("cache rays ({}) must divide cache directions ({})", s.cache.raysPerUpdate,
+                         s.cache.directions);
     if (s.cache.neighbourhood != 0 && s.cache.neighbourhood != 3 && s.cache.neighbourhood != 5)
         return makeError("cache neighbourhood must be 0, 3 or 5, not {}", s.cache.neighbourhood);
     return {};
@@ -298,7 +517,8 @@ void normalise(LightingSettings& s) {
 
 Status applyValues(LightingSettings& s, std::span<const KnobValue> values) {
     for (const KnobValue& v : values) {
-        if (Status ok = setKnob(*v.knob, s, v.text); !ok) return makeError("{}: {}", v.where, ok.error().message);
+        if (Status ok = setKnob(*v.knob, s, v.text); !ok)
+            return makeError("{}: {}", v.where, ok.error().message);
     }
     return {};
 }
@@ -338,12 +558,6 @@ Status validate(const LightingSettings& s) {
     return checkCombinations(s);
 }
 
-Status validate(const IrradianceCacheSettings& c) {
-    LightingSettings s;
-    s.cache = c;
-    return validate(s);
-}
-
 Result<LightingSettings> mergeLighting(LightingSettings base, std::span<const KnobValue> values) {
     if (Status ok = applyValues(base, values); !ok) return ok.error();
     normalise(base);
@@ -359,7 +573,8 @@ Result<LightingSettings> mergeLighting(std::span<const std::vector<KnobValue>> l
     return mergeLighting(s, {});
 }
 
-std::vector<KnobValue> knobValues(const KnobGroup& group, const LightingSettings& s, std::string_view where) {
+std::vector<KnobValue> knobValues(const KnobGroup& group, const LightingSettings& s,
+                                  std::string_view where) {
     std::vector<KnobValue> out;
     for (const Knob& k : group.knobs) out.push_back({&k, knobText(k, s), std::string(where)});
     return out;

@@ -42,32 +42,45 @@ enum class Sky { None, Dvf, Reference };
 
 struct LightingSettings {
     Method method = Method::Restir;
-    bool area = true;            // area lights (else point lights at the centres of their exposed surfaces)
-    bool byPower = true;         // candidates from the alias table over power (else uniform)
-    shared::RegirKnobs regir;    // ReGIR's world-space candidates (sampling regir: regir.enabled, by power too)
+    bool area = true;  // area lights (else point lights at the centres of their exposed surfaces)
+    bool byPower = true;  // candidates from the alias table over power (else uniform)
+    shared::RegirKnobs
+        regir;  // ReGIR's world-space candidates (sampling regir: regir.enabled, by power too)
     bool brickLights = true;
-    shared::RestirKnobs restir;  // ReSTIR's knobs and their defaults (M also drives RIS)
-    std::uint32_t shadowRays = 1;        // Uniform: samples (and shadow rays) per pixel
-    std::uint32_t samplesPerFrame = 1;   // Reference: samples per pixel added per frame
-    std::uint32_t bounces = 0;           // Reference: 0 = direct light only
+    shared::RestirKnobs restir;         // ReSTIR's knobs and their defaults (M also drives RIS)
+    std::uint32_t shadowRays = 1;       // Uniform: samples (and shadow rays) per pixel
+    std::uint32_t samplesPerFrame = 1;  // Reference: samples per pixel added per frame
+    std::uint32_t bounces = 0;          // Reference: 0 = direct light only
     ReferenceFilter referenceFilter = ReferenceFilter::Box;
-    bool referenceMis = true;            // Reference: MIS of light and cosine sampling (false: light sampling only)
+    bool referenceMis =
+        true;  // Reference: MIS of light and cosine sampling (false: light sampling only)
     ReferenceProbe referenceProbe = ReferenceProbe::None;
     std::uint32_t seed = 1;
-    Indirect indirect = Indirect::None;  // Cache, Path and Vct add their term to any method but Reference
+    Indirect indirect =
+        Indirect::None;  // Cache, Path and Vct add their term to any method but Reference
     IrradianceCacheSettings cache;
     PathIndirectSettings path;
     VctSettings vct;
     Sky sky = Sky::None;
 
-    // Whether the frame adds a sky term (see Sky).
-    bool skyTermUsed() const {
-        return sky != Sky::None && method != Method::Preview && method != Method::Reference && indirect == Indirect::None;
-    }
-
     bool operator==(const LightingSettings&) const = default;
-    std::string describe() const;
 };
+
+// Which techniques a frame lit with `s` runs: the one answer to "is X on?". The knob tables'
+// relevance (lighting_knobs.cpp) and the renderer's frame plan (render/frame_plan.h: what runs,
+// its shader features, the memory plan) all ask these.
+bool resamples(const LightingSettings& s);              // ReSTIR's or RIS's candidates
+bool samplesLightsPerPixel(const LightingSettings& s);  // the baselines: uniform, bruteforce
+bool usesCache(const LightingSettings& s);
+bool usesPath(const LightingSettings& s);
+bool usesVct(const LightingSettings& s);
+bool usesRegir(const LightingSettings& s);  // ReSTIR and RIS with sampling regir
+// Lights drawn by power from the alias table: ReSTIR/RIS candidates and the cache's bounce.
+bool drawsLightsByPower(const LightingSettings& s);
+// Those draws from presampled light tiles instead (the light_tiles knob).
+bool usesLightTiles(const LightingSettings& s);
+// A sky term (see Sky): added to every method but Preview and Reference, without an indirect one.
+bool usesSkyTerm(const LightingSettings& s);
 
 const char* methodName(Method m);
 Result<Method> parseMethod(std::string_view name);

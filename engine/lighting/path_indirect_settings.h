@@ -3,7 +3,6 @@
 #pragma once
 
 #include <cstdint>
-#include <string>
 
 namespace engine::lighting {
 
@@ -13,7 +12,6 @@ struct PathIndirectSettings {
     bool accumulate = true;     // average over frames while camera and world stay still
 
     bool operator==(const PathIndirectSettings&) const = default;
-    std::string describe() const;
 };
 
 }  // namespace engine::lighting

@@ -4,21 +4,21 @@
 #pragma once
 
 #include <cstdint>
-#include <string>
 
 namespace engine::lighting {
 
 struct VctSettings {
-    std::uint32_t levels = 4;     // clipmap levels of 32^3 texels, 2, 4, 8, 16 voxels wide (1..4)
-    bool leakMitigation = true;   // directional texels + cone start offset (off: isotropic, from the surface)
-    float startOffset = 1.0f;     // cone start along the normal, in level-0 texels (2 voxels), with mitigation
-    bool extraBounce = false;     // inject a second bounce from the last frame's volume
+    std::uint32_t levels = 4;  // clipmap levels of 32^3 texels, 2, 4, 8, 16 voxels wide (1..4)
+    bool leakMitigation =
+        true;  // directional texels + cone start offset (off: isotropic, from the surface)
+    float startOffset =
+        1.0f;  // cone start along the normal, in level-0 texels (2 voxels), with mitigation
+    bool extraBounce = false;  // inject a second bounce from the last frame's volume
     // Texels that stay in the clipmap are re-injected every this many frames, in turn (new ones,
     // those near dynamic objects and every texel after an edit or a light change at once).
     std::uint32_t refreshPeriod = 8;
 
     bool operator==(const VctSettings&) const = default;
-    std::string describe() const;
 };
 
 }  // namespace engine::lighting

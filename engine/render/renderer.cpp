@@ -1,28 +1,27 @@
 #include "render/renderer.h"
 
 #include <chrono>
-#include <cmath>
 #include <cstring>
 
+#include "core/check.h"
 #include "core/memory_budget.h"
 #include "gpu/command_list.h"
 #include "gpu/presenter.h"
-#include "render/baselines/light_sampling_params.h"
+#include "render/dvf_sky/dvf_sky.h"
+#include "render/frame_commands.h"
+#include "render/frame_plan.h"
+#include "render/irradiance_cache/irradiance_cache.h"
+#include "render/light_tiles/light_tiles.h"
 #include "render/memory_plan.h"
-#include "render/reference/reference_params.h"
-#include "render/restir/restir_params.h"
-#include "render/shader_features.h"
+#include "render/regir/regir_grid.h"
 
 namespace engine::render {
 
 namespace {
 
-bool sameView(const world::CameraPreset& a, const world::CameraPreset& b) {
-    return a.position == b.position && a.target == b.target && a.fovYDegrees == b.fovYDegrees;
-}
-
-bool sameSky(const world::SkyLight& a, const world::SkyLight& b) {
-    return a.sunDirection == b.sunDirection && a.sunRadiance == b.sunRadiance && a.skyRadiance == b.skyRadiance;
+double msSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
 }
 
 }  // namespace
@@ -45,370 +44,177 @@ Renderer::Renderer(gpu::Context& ctx)
       mWorld(ctx),
       mGpuEmitters(ctx),
       mUploader(ctx),
-      mCacheUploader(ctx),
       mTimer(ctx, 24),
       mPresentTimer(ctx, 1),
-      mLateTimer(ctx, 16),
+      mLateTimer(ctx, 24),
       mPrimary(ctx),
-      mPreview(ctx),
-      mRestirInitial(ctx),
-      mRestirTemporal(ctx),
-      mRestirSpatial(ctx),
-      mRestirShade(ctx),
-      mLightSampling(ctx),
-      mReference(ctx),
-      mTonemap(ctx),
-      mCache(ctx),
-      mLightTiles(ctx),
-      mRegir(ctx),
-      mPathIndirect(ctx),
-      mDvfSky(ctx),
-      mVct(ctx) {
-    mFrameParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::FrameParams), "frame.params");
-    mRestirParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::RestirParams), "restir.params");
-    mLightSamplingParams =
-        gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::LightSamplingParams), "baselines.params");
-    mReferenceParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::ReferenceParams), "reference.params");
+      mTonemap(ctx) {
+    for (const TechniqueEntry& t : techniqueRegistry()) mTechniques.push_back(t.make(ctx));
+    mFrameParams =
+        gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::FrameParams), "frame.params");
 }
+
+Renderer::~Renderer() = default;
+
+template <class T>
+T& Renderer::technique(std::string_view name) const {
+    const std::span<const TechniqueEntry> registry = techniqueRegistry();
+    for (std::size_t i = 0; i < registry.size(); ++i) {
+        if (registry[i].name == name) return dynamic_cast<T&>(*mTechniques[i]);
+    }
+    CHECK_MSG(false, "no technique '%.*s'", int(name.size()), name.data());
+    std::abort();
+}
+
+const IrradianceCache& Renderer::irradianceCache() const {
+    return technique<IrradianceCache>("cache");
+}
+const LightTiles& Renderer::lightTiles() const { return technique<LightTiles>("light_tiles"); }
+const RegirGrid& Renderer::regirGrid() const { return technique<RegirGrid>("regir"); }
+DvfSky& Renderer::dvfSky() { return technique<DvfSky>("sky"); }
 
 std::uint64_t Renderer::frameBytesPerPixel() {
     // The buffers resize() makes, per pixel; keep the two in step.
-    return 3 * sizeof(shared::GBufferTexel) + 4 * sizeof(shared::Reservoir) + 3 * sizeof(glm::vec4) +
-           sizeof(std::uint32_t) + sizeof(glm::uvec4);
+    return 2 * sizeof(shared::GBufferTexel) + 2 * sizeof(glm::vec4) + sizeof(std::uint32_t) +
+           sizeof(glm::uvec4);
 }
 
-void Renderer::resize(std::uint32_t width, std::uint32_t height) {
-    if (mSize == glm::uvec2(width, height)) return;
-    mSize = {width, height};
-    std::uint64_t pixels = std::uint64_t(width) * height;
+void Renderer::resize(glm::uvec2 size) {
+    if (mSize == size) return;
+    mSize = size;
+    const std::uint64_t pixels = std::uint64_t(size.x) * size.y;
+    using gpu::BufferKind;
     for (int i = 0; i < 2; ++i) {
-        mGBuffers[i] = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(shared::GBufferTexel),
+        mGBuffers[i] = gpu::Buffer(mCtx, BufferKind::Storage, pixels * sizeof(shared::GBufferTexel),
                                    i ? "frame.gbuffer1" : "frame.gbuffer0");
-        mFinalReservoirs[i] = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(shared::Reservoir),
-                                          i ? "restir.reservoirs1" : "restir.reservoirs0");
+        // Passes that only read it fetch it as uvec4 texels (loadGBuffer): one gather per 16 B on
+        // lavapipe, where a storage-buffer read at a lane-varying index loops over the lanes.
+        mGBuffers[i].setTexelFormat(VK_FORMAT_R32G32B32A32_UINT);
     }
-    mCandidates = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(shared::Reservoir), "restir.candidates");
-    mOwnReservoirs = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(shared::Reservoir), "restir.own");
-    // Passes that only read these fetch them as uvec4 texels (loadGBuffer, loadReservoir): one gather
-    // per 16 B on lavapipe, where a storage-buffer read at a lane-varying index loops over the lanes.
-    for (gpu::Buffer* b : {&mGBuffers[0], &mGBuffers[1], &mFinalReservoirs[0], &mFinalReservoirs[1], &mCandidates, &mOwnReservoirs}) {
-        b->setTexelFormat(VK_FORMAT_R32G32B32A32_UINT);
-    }
-    mAccumulation = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(glm::vec4), "reference.accumulation");
-    mRadiance = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(glm::vec4), "frame.radiance");
-    mLdr = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(std::uint32_t), "frame.ldr");
-    mRayStats = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(glm::uvec4), "frame.rayStats");
-    mIndirect = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(glm::vec4), "frame.indirect");
-    mGBufferHost = gpu::Buffer(mCtx, gpu::BufferKind::Readback, pixels * sizeof(shared::GBufferTexel), "frame.gbufferHost");
-    mGBufferHostValid = false;
+    mRadiance =
+        gpu::Buffer(mCtx, BufferKind::Storage, pixels * sizeof(glm::vec4), "frame.radiance");
+    mLdr = gpu::Buffer(mCtx, BufferKind::Storage, pixels * sizeof(std::uint32_t), "frame.ldr");
+    mRayStats =
+        gpu::Buffer(mCtx, BufferKind::Storage, pixels * sizeof(glm::uvec4), "frame.rayStats");
+    mIndirect =
+        gpu::Buffer(mCtx, BufferKind::Storage, pixels * sizeof(glm::vec4), "frame.indirect");
     resetHistory();
 }
 
 void Renderer::resetHistory() {
-    mHistoryValid = false;
-    mAccumulatedSamples = 0;
-    mPrevCamera.reset();
+    mChanges.forgetHistory();
     mPrevTime.reset();
 }
 
-FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& camera, const FrameSettings& settings,
-                             const lighting::LightingSettings& lighting, gpu::Presenter* presenter) {
-    if (mSize != glm::uvec2(settings.width, settings.height) || mWorld.needsFullUpload(scene.grid)) {
-        // About to allocate the frame's buffers or the world's GPU copy: refuse, with the plan,
-        // what would not fit, before allocating any of it.
-        const MemoryPlan plan = planMemory(scene, {settings.width, settings.height}, lighting);
-        if (Status s = checkMemoryPlan(plan, memoryBudgetBytes(), "world '" + scene.name + "'"); !s)
-            throw MemoryBudgetExceeded(s.error().message);
-    }
-    resize(settings.width, settings.height);
-    if (mPrevLighting && !(*mPrevLighting == lighting)) {
-        mHistoryValid = false;
-        mAccumulatedSamples = 0;
-    }
-    FrameResult result;
+void Renderer::checkMemory(const world::Scene& scene, glm::uvec2 size,
+                           const lighting::LightingSettings& lighting) {
+    if (mSize == size && !mWorld.needsFullUpload(scene.grid)) return;
+    // About to allocate the frame's buffers or the world's GPU copy: refuse, with the plan, what
+    // would not fit, before allocating any of it.
+    const MemoryPlan memory = planMemory(scene, size, lighting);
+    if (Status s = checkMemoryPlan(memory, memoryBudgetBytes(), "world '" + scene.name + "'"); !s)
+        throw MemoryBudgetExceeded(s.error().message);
+}
 
-    // CPU side first: the emitter list reads the grid's touched cells before they are cleared.
+void Renderer::updateScene(world::Scene& scene, const FrameSettings& settings,
+                           const lighting::LightingSettings& lighting, FrameResult& result) {
+    // The emitter list reads the grid's touched cells before they are cleared.
     auto start = std::chrono::steady_clock::now();
     mEmitters.setSettings({lighting.brickLights});
     result.emitterUpdate = mEmitters.update(scene);
-    result.emitterUpdateMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    result.emitterUpdateMs = msSince(start);
     result.emitters = mEmitters.aliveCount();
-    // A light added, removed or changed: last frame's reservoirs were resampled from the old set
-    // of lights, so their weights are wrong for the new one — too bright for the lights that
-    // remain after a removal, blind to a new light for as long as their M outweighs the fresh
-    // candidates. One frame without temporal reuse starts the history from the current lights.
-    const lighting::EmitterUpdateStats& lightEdit = result.emitterUpdate;
-    if (!lightEdit.full && (lightEdit.added || lightEdit.removed || lightEdit.changed)) mHistoryValid = false;
     // Objects at this frame's time; their previous pose is at the last frame's (this one's on a
     // first frame, like the camera), so motion vectors follow them.
     start = std::chrono::steady_clock::now();
-    world::updateDynamicObjects(scene.objects, scene.dynamic, settings.timeSeconds, mPrevTime.value_or(settings.timeSeconds));
-    result.dynamicUpdateMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    world::updateDynamicObjects(scene.objects, scene.dynamic, settings.timeSeconds,
+                                mPrevTime.value_or(settings.timeSeconds));
+    result.dynamicUpdateMs = msSince(start);
+    mPrevTime = settings.timeSeconds;
+}
 
-    // Every pass compiled without the code of the features this frame does not use.
-    const ShaderFeatures features = shaderFeatures(lighting, scene.dynamic.present());
-    const std::span<const std::uint32_t> specialization = mSpecializeShaders ? std::span(features) : std::span<const std::uint32_t>();
-    gpu::CommandList cmd(mCtx, &mTimer);
-    cmd.setSpecialization(specialization);
-    cmd.begin();
+void Renderer::prepareFrame(gpu::CommandList& cmd, world::Scene& scene, const FrameInput& in,
+                            const FramePlan& plan, FrameResult& result) {
     cmd.beginPass("upload");
     result.upload = mWorld.sync(scene, mUploader);
-    const bool useCache = lighting.indirect == lighting::Indirect::Cache && lighting.method != lighting::Method::Reference;
-    const bool usePath = lighting.indirect == lighting::Indirect::Path && lighting.method != lighting::Method::Reference;
-    const bool useVct = lighting.indirect == lighting::Indirect::Vct && lighting.method != lighting::Method::Reference;
-    std::vector<glm::ivec3> editedCells;  // for the cache: static rays through them are stale
-    if (useCache && !result.upload.full) {
-        const glm::ivec3 cells = scene.grid.sizeInCells();
-        for (std::uint32_t c : scene.grid.touchedCells()) {
-            editedCells.push_back(glm::ivec3(c % cells.x, (c / cells.x) % cells.y, c / (cells.x * cells.y)) * 8);
-        }
-    } else if (useCache) {
-        mCache.clear();  // a new world
-    }
-    const bool useSky = lighting.skyTermUsed() && DvfSky::supports(scene.grid.sizeInCells());
-    if (!useSky) mDvfSky.suspend();
-    DvfSky::FrameInput skyInput;
-    if (useSky) {
-        // Regions whose voxels changed: the touched cells, and the objects' old and new bounds.
-        skyInput.newWorld = result.upload.full;
-        const glm::ivec3 cells = scene.grid.sizeInCells();
-        for (std::uint32_t c : scene.grid.touchedCells()) {
-            const glm::ivec3 cell(c % cells.x, (c / cells.x) % cells.y, c / (cells.x * cells.y));
-            skyInput.edits.push_back(glm::vec4(glm::vec3(cell * 8) + 4.0f, 4.0f * std::sqrt(3.0f)));
-        }
-        if (result.upload.dynamicBytes || (mPrevDynamicBounds && !scene.dynamic.present())) {
-            if (mPrevDynamicBounds) skyInput.edits.push_back(*mPrevDynamicBounds);
-            mPrevDynamicBounds.reset();
-            if (scene.dynamic.present()) {
-                const glm::vec3 size(scene.dynamic.grid.sizeInVoxels());
-                mPrevDynamicBounds = glm::vec4(glm::vec3(scene.dynamic.origin) + size * 0.5f, glm::length(size) * 0.5f);
-                skyInput.edits.push_back(*mPrevDynamicBounds);
-            }
-        }
-    }
-    scene.grid.clearDirty();
-    EmitterUploadStats lightUpload = mGpuEmitters.sync(mEmitters, mUploader);
-    const bool worldChanged = result.upload.bricks || result.upload.cells || result.upload.dynamicBytes ||
-                              lightUpload.slots || lightUpload.aliveAndAlias;
+    const EmitterUploadStats lightUpload = mGpuEmitters.sync(mEmitters, mUploader);
+    const FrameChanges changes = mChanges.observe(
+        {scene, in.camera, in.size, in.lighting, result.upload, result.emitterUpdate, lightUpload});
+    scene.grid.clearDirty();  // every consumer has seen them (changes.editedCells)
 
-    shared::FrameParams params = makeFrameParams(camera, scene.sky, settings);
-    shared::FrameParams prev = makeFrameParams(mPrevCamera.value_or(camera), scene.sky, settings);
+    shared::FrameParams params = makeFrameParams(in.camera, scene.sky, in.settings);
+    const shared::FrameParams prev =
+        makeFrameParams(changes.previousCamera, scene.sky, in.settings);
     params.prevCameraPosition = prev.cameraPosition;
     params.prevCameraForward = prev.cameraForward;
     params.prevCameraRight = prev.cameraRight;
     params.prevCameraUp = prev.cameraUp;
-    if (lightTilesUsed(lighting)) {
-        params.lightTiles = mLightTiles.frameField();
-        mLightTiles.writeParams(mUploader, mFrameIndex, lighting.seed);
-    }
-    if (regirUsed(lighting)) {
-        mRegir.prepare(mUploader, scene.grid.sizeInVoxels(), lighting.regir, mFrameIndex, lighting.seed);
-        params.regirGrid = mRegir.frameField();
+    for (std::size_t i = 0; i < mTechniques.size(); ++i) {
+        if (plan.steps[i].plan.runs)
+            mTechniques[i]->prepare(changes, in, mUploader, params);
+        else
+            mTechniques[i]->skip();
     }
     mUploader.write(mFrameParams, 0, &params, sizeof(params));
-    writeMethodParams(lighting);
-
-    // The cache picks this frame's updates from the last frame's visible voxels, so its host work
-    // (cache.prepare) needs nothing of this frame: the frame goes to the GPU in two submissions,
-    // the host picks the cache's updates while lavapipe runs the first (primary rays and direct
-    // light), and the second (the cache's passes, tonemapping) follows without a wait between.
-    // Without last frame's voxels (the cache's first frame, a new size) the frame is split: up to
-    // the G-buffer, read back, wait, then the rest.
-    const bool splitFrame = useCache && !(mGBufferHostValid && mCache.configured());
-    CacheFrameInput cacheInput;
-    if (useCache) {
-        cacheInput.size = mSize;
-        cacheInput.timeSeconds = settings.timeSeconds;
-        cacheInput.frameIndex = mFrameIndex;
-        cacheInput.seed = lighting.seed;
-        cacheInput.grid = &scene.grid;
-        cacheInput.editedCellMins = editedCells;
-        cacheInput.objectsMoved = result.upload.dynamicBytes > 0;
-        cacheInput.lightsChanged = (!lightEdit.full && (lightEdit.added || lightEdit.removed || lightEdit.changed)) ||
-                                   (mPrevSky && !sameSky(*mPrevSky, scene.sky));
-    }
-    auto prepareCache = [&](gpu::CommandList& list) {
-        start = std::chrono::steady_clock::now();
-        cacheInput.gbuffer = mGBufferHost.view<shared::GBufferTexel>();
-        mCache.prepare(lighting.cache, cacheInput, mCacheUploader, list);
-        result.cachePrepareMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    };
-    // What the accumulating estimators restart on (besides new settings, which drop the history).
-    const bool viewOrWorldChanged = worldChanged || !mPrevCamera || !sameView(*mPrevCamera, camera);
-    if (usePath) mPathIndirect.prepare(lighting, mSize, mFrameIndex, !mHistoryValid || viewOrWorldChanged, mUploader);
-    if (useSky) {
-        skyInput.mode = lighting.sky;
-        skyInput.size = mSize;
-        skyInput.frameIndex = mFrameIndex;
-        skyInput.seed = lighting.seed;
-        skyInput.viewOrWorldChanged = !mHistoryValid || viewOrWorldChanged;
-        mDvfSky.prepare(skyInput, mUploader);
-    }
-    if (useVct) {
-        VoxelConeTracing::Frame vctFrame;
-        vctFrame.cameraPosition = camera.position;
-        vctFrame.frameIndex = mFrameIndex;
-        vctFrame.changed = result.upload.full || result.upload.bricks || result.upload.cells || lightUpload.slots ||
-                           lightUpload.aliveAndAlias || (mPrevSky && !sameSky(*mPrevSky, scene.sky));
-        if (scene.dynamic.present()) {
-            vctFrame.dynamicMin = scene.dynamic.origin;
-            vctFrame.dynamicMax = scene.dynamic.origin + scene.dynamic.grid.sizeInVoxels();
-        }
-        mVct.prepare(lighting, vctFrame, mUploader);
-    }
     mUploader.record(cmd);
-    if (lighting.method == lighting::Method::Reference && (mAccumulatedSamples == 0 || viewOrWorldChanged)) {
-        cmd.fillBuffer(mAccumulation, 0);
-        cmd.barrier();
-        mAccumulatedSamples = 0;
-    }
-    if (!useCache && !usePath && !useVct) cmd.fillBuffer(mIndirect, 0);
+    if (!plan.addsIndirect) cmd.fillBuffer(mIndirect, 0);  // no technique writes the term
     cmd.endPass();
+}
 
-    mPrimary.record(cmd, {mWorld, mFrameParams, mGBuffers[mCurrent]}, mSize);
-    gpu::CommandList late(mCtx, &mLateTimer);
-    late.setSpecialization(specialization);
-    auto beginLate = [&] {
-        late.begin();
-        late.barrier();  // the first submission's writes (G-buffer, radiance, light tiles) before what reads them
-        late.beginPass("cache.prepare");
-        prepareCache(late);
-        mCacheUploader.record(late);
-        late.endPass();
-    };
-    gpu::CommandList* rest = &cmd;
-    if (splitFrame) {
-        cmd.copyBuffer(mGBuffers[mCurrent], mGBufferHost, {{0, 0, mGBuffers[mCurrent].size()}});
-        cmd.barrier();
-        cmd.submitAndWait();
-        beginLate();
-        rest = &late;
+FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& camera,
+                             const FrameSettings& settings,
+                             const lighting::LightingSettings& lighting,
+                             gpu::Presenter* presenter) {
+    const glm::uvec2 size(settings.width, settings.height);
+    checkMemory(scene, size, lighting);
+    resize(size);
+    FrameResult result;
+    updateScene(scene, settings, lighting, result);
+    const FramePlan frame = planFrame(lighting, sceneShape(scene), size);
+    // Every pass compiled without the code of the features this frame does not use.
+    const std::span<const std::uint32_t> specialization =
+        mSpecializeShaders ? std::span<const std::uint32_t>(frame.features)
+                           : std::span<const std::uint32_t>();
+    FrameCommands commands(mCtx, mTimer, mLateTimer, specialization);
+    const FrameInput in{scene, camera, settings, lighting, mSize, mFrameIndex};
+    prepareFrame(commands.current(), scene, in, frame, result);
+
+    gpu::Buffer& gbuffer = mGBuffers[mCurrent];
+    mPrimary.record(commands.current(), {mWorld, mFrameParams, gbuffer}, mSize);
+    const FrameBuffers buffers{{mWorld, mGpuEmitters},
+                               mFrameParams,
+                               gbuffer,
+                               mGBuffers[mCurrent ^ 1u],
+                               mRadiance,
+                               mIndirect,
+                               mRayStats,
+                               mSize,
+                               mCurrent};
+    for (std::size_t i = 0; i < mTechniques.size(); ++i) {
+        if (frame.steps[i].plan.runs) mTechniques[i]->record(commands, buffers);
     }
-    recordLighting(*rest, lighting, mHistoryValid);
-    if (useSky) mDvfSky.record(*rest, {mWorld, mGpuEmitters}, {mFrameParams, mGBuffers[mCurrent], mRadiance});
-    if (usePath)
-        mPathIndirect.record(*rest, {mWorld, mGpuEmitters}, {mFrameParams, mGBuffers[mCurrent], mRadiance, mIndirect});
-    if (useVct) mVct.record(*rest, {mWorld, mGpuEmitters}, {mFrameParams, mGBuffers[mCurrent], mRadiance, mIndirect}, mSize);
-    const bool overlapped = useCache && !splitFrame;
-    if (overlapped) {
-        cmd.submit();
-        beginLate();  // the host's cache work, while lavapipe runs the submission above
-        rest = &late;
-    }
-    if (useCache) {
-        mCache.record(*rest, {mWorld, mGpuEmitters}, {mFrameParams, mGBuffers[mCurrent], mRadiance, mIndirect});
-        // This frame's visible voxels, for the next frame's cache updates.
-        rest->copyBuffer(mGBuffers[mCurrent], mGBufferHost, {{0, 0, mGBuffers[mCurrent].size()}});
-        rest->barrier();
-    }
-    mTonemap.record(*rest, {mFrameParams, mRadiance, mLdr}, mSize);
-    rest->submitAndWait();
-    if (overlapped) cmd.wait();  // done already: the queue runs submissions in order
-    result.passMs = mTimer.results();
-    if (useCache) {
-        for (const auto& pass : mLateTimer.results()) result.passMs.push_back(pass);
-    }
-    if (useCache) {
-        mCache.collect();
-        mGBufferHostValid = true;
-        result.cacheUsed = true;
-        result.cacheSplitFrame = splitFrame;
-        result.cache = mCache.stats();
-    } else {
-        mGBufferHostValid = false;
-    }
-    mPrevSky = scene.sky;
-    if (useSky) {
-        mDvfSky.collect();
-        result.skyUsed = true;
-        result.sky = mDvfSky.stats();
+    mTonemap.record(commands.current(), {mFrameParams, mRadiance, mLdr}, mSize);
+    commands.finish();
+    result.passMs = commands.passMs();
+    for (std::size_t i = 0; i < mTechniques.size(); ++i) {
+        if (frame.steps[i].plan.runs) mTechniques[i]->collect(result);
     }
 
-    if (lighting.method == lighting::Method::Reference) mAccumulatedSamples += std::max(lighting.samplesPerFrame, 1u);
-    result.referenceSamples = mAccumulatedSamples;
-    mPrevCamera = camera;
-    mPrevTime = settings.timeSeconds;
-    mPrevLighting = lighting;
-    mHistoryValid = true;
     mCurrent ^= 1u;
     ++mFrameIndex;
-    if (presenter) {
-        // A submission of its own, so only this pass waits for the swapchain image. The tonemap
-        // pass's barrier orders the LDR writes before the copy in submission order.
-        gpu::CommandList present(mCtx, &mPresentTimer);
-        present.begin();
-        presenter->record(present, mLdr, mSize);
-        present.submitAndWait(presenter->submitSync());
-        presenter->endFrame();
-        for (const auto& pass : mPresentTimer.results()) result.passMs.push_back(pass);
-    }
+    if (presenter) present(*presenter, result);
     return result;
 }
 
-void Renderer::writeMethodParams(const lighting::LightingSettings& lighting) {
-    using lighting::Method;
-    switch (lighting.method) {
-        case Method::Preview:
-            break;
-        case Method::Restir:
-        case Method::Ris: {
-            const shared::RestirParams p = restirParams(lighting, mFrameIndex);
-            mUploader.write(mRestirParams, 0, &p, sizeof(p));
-            break;
-        }
-        case Method::Uniform:
-        case Method::BruteForce: {
-            const shared::LightSamplingParams p = lightSamplingParams(lighting, mFrameIndex);
-            mUploader.write(mLightSamplingParams, 0, &p, sizeof(p));
-            break;
-        }
-        case Method::Reference: {
-            const shared::ReferenceParams p = referenceParams(lighting);
-            mUploader.write(mReferenceParams, 0, &p, sizeof(p));
-            break;
-        }
-    }
-}
-
-void Renderer::recordLighting(gpu::CommandList& cmd, const lighting::LightingSettings& lighting, bool historyValid) {
-    using lighting::Method;
-    const SceneBindings scene{mWorld, mGpuEmitters};
-    gpu::Buffer& gbuffer = mGBuffers[mCurrent];
-    if (lightTilesUsed(lighting)) mLightTiles.record(cmd, scene);  // before ReSTIR and the cache read them
-    if (regirUsed(lighting)) mRegir.record(cmd, scene, mFrameParams, gbuffer, mSize);  // before the candidates
-    switch (lighting.method) {
-        case Method::Preview:
-            mPreview.record(cmd, {mWorld, mFrameParams, gbuffer, mRadiance, mRayStats}, mSize);
-            break;
-        case Method::Restir:
-        case Method::Ris: {
-            gpu::Buffer& final = mFinalReservoirs[mCurrent];
-            mRestirInitial.record(cmd, scene, {mFrameParams, mRestirParams, gbuffer, mCandidates}, mSize);
-            gpu::Buffer* own = &mCandidates;
-            if (lighting.method == Method::Restir && lighting.restir.temporal && historyValid) {
-                mRestirTemporal.record(cmd, scene,
-                                       {mFrameParams, mRestirParams, gbuffer, mGBuffers[mCurrent ^ 1u], mCandidates,
-                                        mFinalReservoirs[mCurrent ^ 1u], mOwnReservoirs},
-                                       mSize);
-                own = &mOwnReservoirs;
-            }
-            if (lighting.method == Method::Restir && lighting.restir.spatial) {
-                mRestirSpatial.record(cmd, scene, {mFrameParams, mRestirParams, gbuffer, *own, mCandidates, final}, mSize);
-            } else {
-                cmd.copyBuffer(*own, final, {{0, 0, own->size()}});
-                cmd.barrier();
-            }
-            mRestirShade.record(cmd, scene, {mFrameParams, mRestirParams, gbuffer, final, mRadiance}, mSize);
-            break;
-        }
-        case Method::Uniform:
-        case Method::BruteForce:
-            mLightSampling.record(cmd, scene, {mFrameParams, mLightSamplingParams, gbuffer, mRadiance}, mSize);
-            break;
-        case Method::Reference:
-            mReference.record(cmd, scene, {mFrameParams, mReferenceParams, mAccumulation, mRadiance}, mSize);
-            break;
-    }
+void Renderer::present(gpu::Presenter& presenter, FrameResult& result) {
+    // A submission of its own, so only this pass waits for the swapchain image. The tonemap
+    // pass's barrier orders the LDR writes before the copy in submission order.
+    gpu::CommandList cmd(mCtx, &mPresentTimer);
+    cmd.begin();
+    presenter.record(cmd, mLdr, mSize);
+    cmd.submitAndWait(presenter.submitSync());
+    presenter.endFrame();
+    for (const auto& pass : mPresentTimer.results()) result.passMs.push_back(pass);
 }
 
 FrameImages Renderer::readback() {

@@ -1,5 +1,7 @@
 // Presampled light tiles (render/light_tiles/): the tiles hold emitters drawn by power with their
 // true probabilities, and resampling from them converges to the same image as alias-table draws.
+#include "render/light_tiles/light_tiles.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -22,25 +24,28 @@ constexpr MaterialId kWhite = 1, kLamp = 2, kDim = 3;
 // A floor and wall under one bright 8^3 brick light and three dim voxel lamps (powers far apart,
 // so a wrong probability shows in the counts).
 Scene lampScene() {
-    Scene scene = paletteScene({48, 32, 48},
-                               {Material{"white", glm::vec3(0.75f)},
-                                Material{"lamp", glm::vec3(0.8f), glm::vec3(1.0f, 0.85f, 0.6f), 4.0f},
-                                Material{"dim", glm::vec3(0.8f), glm::vec3(0.3f, 0.5f, 1.0f), 2.0f}},
-                               true);
+    Scene scene =
+        paletteScene({48, 32, 48},
+                     {Material{"white", glm::vec3(0.75f)},
+                      Material{"lamp", glm::vec3(0.8f), glm::vec3(1.0f, 0.85f, 0.6f), 4.0f},
+                      Material{"dim", glm::vec3(0.8f), glm::vec3(0.3f, 0.5f, 1.0f), 2.0f}},
+                     true);
     fillBox(scene.grid, Box{{0, 0, 0}, {48, 2, 48}}, kWhite);
     fillBox(scene.grid, Box{{0, 2, 40}, {48, 32, 48}}, kWhite);
     fillBox(scene.grid, Box{{24, 16, 16}, {32, 24, 24}}, kLamp);
     scene.grid.set({8, 3, 8}, kDim);
     scene.grid.set({40, 6, 12}, kDim);
     scene.grid.set({12, 10, 30}, kDim);
-    scene.cameras.push_back(CameraPreset{"front", {24.0f, 28.0f, -16.0f}, {24.0f, 4.0f, 24.0f}, 60.0f});
+    scene.cameras.push_back(
+        CameraPreset{"front", {24.0f, 28.0f, -16.0f}, {24.0f, 4.0f, 24.0f}, 60.0f});
     scene.grid.clearDirty();
     return scene;
 }
 
 std::vector<shared::LightTileSample> readTiles(const Renderer& r) {
     const engine::gpu::Buffer& tiles = r.lightTiles().samples();
-    engine::gpu::Buffer readback(context(), engine::gpu::BufferKind::Readback, tiles.size(), "test.tiles");
+    engine::gpu::Buffer readback(context(), engine::gpu::BufferKind::Readback, tiles.size(),
+                                 "test.tiles");
     engine::gpu::CommandList cmd(context());
     cmd.begin();
     cmd.copyBuffer(tiles, readback, {{0, 0, tiles.size()}});
@@ -84,8 +89,8 @@ TEST_F(LightTiles, EntriesAreEmittersDrawnByPower) {
     for (std::uint32_t slot : list.aliveSlots()) {
         const double p = list.slots()[slot].radiance.w / list.totalPower();
         const double sigma = std::sqrt(n * p * (1.0 - p));
-        std::printf("slot %u: probability %.5f, %d of %.0f entries (expected %.1f +- %.1f)\n", slot, p, counts[slot], n,
-                    n * p, sigma);
+        std::printf("slot %u: probability %.5f, %d of %.0f entries (expected %.1f +- %.1f)\n", slot,
+                    p, counts[slot], n, n * p, sigma);
         EXPECT_NEAR(counts[slot], n * p, 5.0 * sigma + 1.0);
     }
 }
@@ -108,9 +113,10 @@ TEST_F(LightTiles, ResamplingFromTilesMatchesAliasDraws) {
         return meanOfMeans(means);
     };
     const MeanAndError alias = frameMeans(false), tiles = frameMeans(true);
-    const double sigma = std::sqrt(alias.standardError * alias.standardError + tiles.standardError * tiles.standardError);
-    std::printf("mean brightness: alias draws %.5f +- %.5f, light tiles %.5f +- %.5f\n", alias.mean, alias.standardError,
-                tiles.mean, tiles.standardError);
+    const double sigma = std::sqrt(alias.standardError * alias.standardError +
+                                   tiles.standardError * tiles.standardError);
+    std::printf("mean brightness: alias draws %.5f +- %.5f, light tiles %.5f +- %.5f\n", alias.mean,
+                alias.standardError, tiles.mean, tiles.standardError);
     ASSERT_GT(alias.mean, 1e-3);
     EXPECT_LT(std::abs(tiles.mean - alias.mean), 4.0 * sigma + 1e-4 * alias.mean);
 }

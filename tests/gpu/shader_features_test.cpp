@@ -2,6 +2,8 @@
 // compiled out of its pipelines. These tests render the same frames with the specialised
 // pipelines and with the generic ones, which read every knob at run time: a feature compiled out
 // while the frame needs it changes the image.
+#include "render/shader_features.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,7 +11,6 @@
 
 #include "gpu/compute_pipeline.h"
 #include "gpu/gpu_test_setup.h"
-#include "render/shader_features.h"
 #include "shared/restir.h"
 
 using namespace gpu_testing;
@@ -18,7 +19,8 @@ class ShaderFeatures : public GpuTest {};
 
 namespace {
 
-std::vector<glm::vec4> radianceAfter(engine::world::Scene& scene, const LightingSettings& lighting, bool specialise) {
+std::vector<glm::vec4> radianceAfter(engine::world::Scene& scene, const LightingSettings& lighting,
+                                     bool specialise) {
     Renderer renderer(context());
     renderer.setSpecializeShaders(specialise);
     return renderFrames(renderer, scene, lighting, frame(48, 32), 3).radiance;
@@ -65,7 +67,9 @@ TEST_F(ShaderFeatures, SpecialisedFramesEqualTheGenericOnes) {
         const std::vector<glm::vec4> generic = radianceAfter(scene, c.lighting, false);
         const std::vector<glm::vec4> specialised = radianceAfter(scene, c.lighting, true);
         ASSERT_EQ(generic.size(), specialised.size());
-        EXPECT_EQ(0, std::memcmp(generic.data(), specialised.data(), generic.size() * sizeof(glm::vec4))) << c.name;
+        EXPECT_EQ(
+            0, std::memcmp(generic.data(), specialised.data(), generic.size() * sizeof(glm::vec4)))
+            << c.name;
         EXPECT_GT(meanLuminance(specialised), 0.0) << c.name;
     }
     // The sandbox above has an object (its cart): the dynamic grid's code stays. A world without
@@ -78,7 +82,8 @@ TEST_F(ShaderFeatures, SpecialisedFramesEqualTheGenericOnes) {
         const std::vector<glm::vec4> generic = radianceAfter(cornell, lighting, false);
         const std::vector<glm::vec4> specialised = radianceAfter(cornell, lighting, true);
         ASSERT_EQ(generic.size(), specialised.size());
-        EXPECT_EQ(0, std::memcmp(generic.data(), specialised.data(), generic.size() * sizeof(glm::vec4)))
+        EXPECT_EQ(
+            0, std::memcmp(generic.data(), specialised.data(), generic.size() * sizeof(glm::vec4)))
             << "cornell without objects, indirect " << int(lighting.indirect);
         EXPECT_GT(meanLuminance(specialised), 0.0);
     }
@@ -93,10 +98,14 @@ TEST_F(ShaderFeatures, AFrameUsesOnlyTheFeaturesItsSettingsAskFor) {
     EXPECT_EQ(defaults[FEATURE_CANDIDATE_VISIBILITY], 1u);
     EXPECT_EQ(defaults[FEATURE_UNBIASED], 0u);
     EXPECT_EQ(defaults[FEATURE_CACHE_MULTI_BOUNCE], 0u);
-    EXPECT_EQ(defaults[FEATURE_CACHE_FALLBACK], 1u);  // on by default (docs/IRRADIANCE_CACHE.md)
+    EXPECT_EQ(defaults[FEATURE_CACHE_FALLBACK], 0u);  // no cache, none of its code
     EXPECT_EQ(defaults[FEATURE_DYNAMIC_GRID], 1u);
     EXPECT_EQ(engine::render::shaderFeatures({}, false)[FEATURE_DYNAMIC_GRID], 0u);
-    LightingSettings noFallback;
+    LightingSettings cache;
+    cache.indirect = engine::lighting::Indirect::Cache;
+    EXPECT_EQ(engine::render::shaderFeatures(cache, true)[FEATURE_CACHE_FALLBACK],
+              1u);  // on by default (docs/IRRADIANCE_CACHE.md)
+    LightingSettings noFallback = cache;
     noFallback.cache.fallbackRadius = 0u;
     EXPECT_EQ(engine::render::shaderFeatures(noFallback, true)[FEATURE_CACHE_FALLBACK], 0u);
     LightingSettings unbiased;
@@ -107,9 +116,11 @@ TEST_F(ShaderFeatures, AFrameUsesOnlyTheFeaturesItsSettingsAskFor) {
 }
 
 TEST_F(ShaderFeatures, PipelinesFindTheConstantsTheirShaderDeclares) {
-    engine::gpu::ComputePipeline initial(context(), "restir/initial_candidates", shared::RESTIR_INITIAL_BINDING_OUT + 1);
+    engine::gpu::ComputePipeline initial(context(), "restir/initial_candidates",
+                                         shared::RESTIR_INITIAL_BINDING_OUT + 1);
     const std::vector<std::uint32_t>& ids = initial.specializationIds();
-    for (std::uint32_t id : {FEATURE_REGIR, FEATURE_LIGHT_TILES, FEATURE_POINT_LIGHTS, FEATURE_CANDIDATE_VISIBILITY}) {
+    for (std::uint32_t id :
+         {FEATURE_REGIR, FEATURE_LIGHT_TILES, FEATURE_POINT_LIGHTS, FEATURE_CANDIDATE_VISIBILITY}) {
         EXPECT_TRUE(std::find(ids.begin(), ids.end(), id) != ids.end()) << "constant_id " << id;
     }
     engine::gpu::ComputePipeline tonemap(context(), "post/tonemap", 3);

@@ -1,8 +1,10 @@
 // The one settings path: knob tables, the merge of a scene's settings with overrides, and the
 // validation every entry point shares.
+#include "lighting/lighting_knobs.h"
+
 #include <gtest/gtest.h>
 
-#include "lighting/lighting_knobs.h"
+#include "render/frame_plan.h"
 #include "scene/scene_lighting.h"
 #include "world/scene.h"
 
@@ -49,7 +51,8 @@ TEST(LightingKnobs, OutOfRangeIsRefusedTheSameWayFromTextAndFromCode) {
     Status fromCode = validate(s);
     ASSERT_FALSE(fromCode.ok());
     EXPECT_EQ(fromText.error().message, fromCode.error().message);
-    EXPECT_NE(fromText.error().message.find("candidates must be positive, not 0; allowed: 1..1024"), std::string::npos);
+    EXPECT_NE(fromText.error().message.find("candidates must be positive, not 0; allowed: 1..1024"),
+              std::string::npos);
 
     LightingSettings c;
     c.cache.raysPerUpdate = 7;  // not a divisor of 128
@@ -82,11 +85,13 @@ TEST(LightingKnobs, MethodsImplyTheirSettings) {
     ASSERT_TRUE(ris.ok());
     EXPECT_FALSE(ris->restir.temporal);
     EXPECT_FALSE(ris->restir.spatial);
-    auto unbiased = mergeLighting(LightingSettings{}, std::vector<KnobValue>{option("method", "restir-unbiased")});
+    auto unbiased = mergeLighting(LightingSettings{},
+                                  std::vector<KnobValue>{option("method", "restir-unbiased")});
     ASSERT_TRUE(unbiased.ok());
     EXPECT_EQ(unbiased->method, Method::Restir);
     EXPECT_TRUE(unbiased->restir.unbiased);
-    auto reference = mergeLighting(LightingSettings{}, std::vector<KnobValue>{option("indirect", "reference")});
+    auto reference =
+        mergeLighting(LightingSettings{}, std::vector<KnobValue>{option("indirect", "reference")});
     ASSERT_TRUE(reference.ok());
     EXPECT_EQ(reference->method, Method::Reference);
     EXPECT_GE(reference->bounces, 1u);
@@ -103,13 +108,16 @@ TEST(LightingKnobs, ErrorsNameWhereTheValueCameFrom) {
 TEST(LightingKnobs, PathIndirectKnobsFromSceneAndCommandLine) {
     engine::world::Scene scene;
     scene.indirect = {{"mode", "path"}, {"path_spp", "4"}};
-    auto s = engine::scene::lightingFor(&scene, std::vector<KnobValue>{option("path-bounces", "2")});
+    auto s =
+        engine::scene::lightingFor(&scene, std::vector<KnobValue>{option("path-bounces", "2")});
     ASSERT_TRUE(s.ok()) << s.error().message;
     EXPECT_EQ(s->indirect, Indirect::Path);
     EXPECT_EQ(s->path.samples, 4u);   // the scene's
     EXPECT_EQ(s->path.bounces, 2u);   // the command line's
     EXPECT_TRUE(s->path.accumulate);  // the default
-    EXPECT_NE(s->describe().find("path 4 spp 2 bounce(s)"), std::string::npos) << s->describe();
+    EXPECT_NE(engine::render::describeLighting(*s).find("path 4 spp 2 bounce(s)"),
+              std::string::npos)
+        << engine::render::describeLighting(*s);
 
     auto bad = mergeLighting(LightingSettings{}, std::vector<KnobValue>{option("path-spp", "0")});
     ASSERT_FALSE(bad.ok());
@@ -117,7 +125,7 @@ TEST(LightingKnobs, PathIndirectKnobsFromSceneAndCommandLine) {
 }
 
 // --sampling regir is ReGIR's switch beside drawing by power (its cells draw by power); uniform and
-// power turn it off again, and describe() names it.
+// power turn it off again, and the lighting's description (render::describeLighting) names it.
 TEST(LightingKnobs, SamplingChoosesUniformPowerOrRegir) {
     LightingSettings s;
     const Knob& sampling = *knobForOption("sampling");
@@ -125,7 +133,7 @@ TEST(LightingKnobs, SamplingChoosesUniformPowerOrRegir) {
     EXPECT_TRUE(s.byPower);
     EXPECT_EQ(s.regir.enabled, 1u);
     EXPECT_EQ(knobText(sampling, s), "regir");
-    EXPECT_NE(s.describe().find("regir"), std::string::npos);
+    EXPECT_NE(engine::render::describeLighting(s).find("regir"), std::string::npos);
     ASSERT_TRUE(setKnob(sampling, s, "uniform").ok());
     EXPECT_FALSE(s.byPower);
     EXPECT_EQ(s.regir.enabled, 0u);
@@ -140,13 +148,17 @@ TEST(LightingKnobs, SamplingChoosesUniformPowerOrRegir) {
 TEST(LightingKnobs, VctKnobsFromSceneAndCommandLine) {
     engine::world::Scene scene;
     scene.indirect = {{"mode", "vct"}, {"vct_levels", "3"}};
-    auto s = engine::scene::lightingFor(&scene, std::vector<KnobValue>{option("vct-leak-mitigation", "off")});
+    auto s = engine::scene::lightingFor(
+        &scene, std::vector<KnobValue>{option("vct-leak-mitigation", "off")});
     ASSERT_TRUE(s.ok()) << s.error().message;
     EXPECT_EQ(s->indirect, Indirect::Vct);
-    EXPECT_EQ(s->vct.levels, 3u);          // the scene's
-    EXPECT_FALSE(s->vct.leakMitigation);   // the command line's
-    EXPECT_FALSE(s->vct.extraBounce);      // the default
-    EXPECT_NE(s->describe().find("vct 3 level(s) refresh 1/8 no leak mitigation"), std::string::npos) << s->describe();
+    EXPECT_EQ(s->vct.levels, 3u);         // the scene's
+    EXPECT_FALSE(s->vct.leakMitigation);  // the command line's
+    EXPECT_FALSE(s->vct.extraBounce);     // the default
+    EXPECT_NE(
+        engine::render::describeLighting(*s).find("vct 3 level(s) refresh 1/8 no leak mitigation"),
+        std::string::npos)
+        << engine::render::describeLighting(*s);
 
     auto bad = mergeLighting(LightingSettings{}, std::vector<KnobValue>{option("vct-levels", "5")});
     ASSERT_FALSE(bad.ok());

@@ -25,6 +25,7 @@
 #include "lighting_options.h"
 #include "progress_line.h"
 #include "render/flythrough_player.h"
+#include "render/frame_plan.h"
 #include "shared/brick_grid.h"
 #include "scene/path_file.h"
 
@@ -173,7 +174,7 @@ int runCapture(const CaptureOptions& o) {
                 fly->timeline.events().size());
     std::printf("frames   %u..%u of 0..%u, after %u warm-up frame(s); %ux%u\n", first, last,
                 count - 1, first - start, (*size).x, (*size).y);
-    std::printf("lighting %s\n", l.describe().c_str());
+    std::printf("lighting %s\n", engine::render::describeLighting(l).c_str());
     std::fflush(stdout);  // before the progress line on stderr
 
     // Thumbnails: `sheet` frames spread evenly over the written ones, first and last included.

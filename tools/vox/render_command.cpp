@@ -10,6 +10,7 @@
 #include "number_options.h"
 #include "gpu/context.h"
 #include "io/image_io.h"
+#include "render/frame_plan.h"
 #include "render/renderer.h"
 
 namespace vox {
@@ -81,7 +82,7 @@ int runRender(const RenderOptions& o) {
         l.samplesPerFrame = std::min<std::uint32_t>(o.spp, 16);
         frames = (o.spp + l.samplesPerFrame - 1) / l.samplesPerFrame;
     }
-    std::printf("lighting %s, %u frame(s)\n", l.describe().c_str(), frames);
+    std::printf("lighting %s, %u frame(s)\n", engine::render::describeLighting(l).c_str(), frames);
     engine::render::FrameResult frame;
     std::vector<engine::render::FrameResult> results;
     for (std::uint32_t i = 0; i < frames; ++i) {
@@ -114,7 +115,7 @@ int runRender(const RenderOptions& o) {
         engine::AtomicFile file;
         if (engine::Status s = file.open(o.timings); !s) return fail(s.error());
         std::ostream& json = file.stream();
-        json << "{\"world\": \"" << scene->name << "\", \"lighting\": \"" << l.describe() << "\", \"size\": ["
+        json << "{\"world\": \"" << scene->name << "\", \"lighting\": \"" << engine::render::describeLighting(l) << "\", \"size\": ["
              << settings.width << ", " << settings.height << "], \"emitters\": " << frame.emitters << ", \"frames\": [\n";
         for (std::size_t i = 0; i < results.size(); ++i) {
             json << "  {";

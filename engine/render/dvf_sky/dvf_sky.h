@@ -8,18 +8,21 @@
 // mask is traced in a later frame's dvf.build, at most `kMasksPerFrame` masks per frame. An edit
 // (and a moving object's old and new bounds) marks, in every slot, only the directions that can
 // pass through the changed region (dvf.invalidate); those alone are traced again. The table has a
-// fixed size (DVF_CAPACITY slots, 3 MiB, allocated on first use); when it is three-quarters full the host clears it and the
-// view refills it. All in the frame's one submission; the header (slots used, queue, rays traced)
-// is copied to the host after the frame for the statistics.
+// fixed size (DVF_CAPACITY slots, 3 MiB, allocated on first use); when it is three-quarters full
+// the host clears it and the view refills it. All in the frame's one submission; the header (slots
+// used, queue, rays traced) is copied to the host after the frame for the statistics.
 #pragma once
 
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "gpu/buffer.h"
 #include "gpu/uploader.h"
 #include "lighting/lighting_settings.h"
 #include "render/dvf_sky/dvf_sky_passes.h"
+#include "render/technique.h"
 
 namespace engine::render {
 
@@ -31,35 +34,28 @@ struct DvfSkyStats {
     std::uint64_t tableBytes = 0;   // device bytes of the table, queue and weights (fixed)
 };
 
-class DvfSky {
+// Runs with a sky term (lighting::usesSkyTerm) on a world its keys cover (supports()).
+class DvfSky : public Technique {
 public:
     static constexpr std::uint32_t kMasksPerFrame = 1024;  // build workgroups per frame
     static constexpr std::uint32_t kReferenceRaysPerFrame = 16;
 
     explicit DvfSky(gpu::Context& ctx);
+    static TechniquePlan plan(const lighting::LightingSettings& l, const SceneShape& scene,
+                              glm::uvec2 size);
+    static std::string describe(const lighting::LightingSettings& l);
 
-    struct FrameInput {
-        lighting::Sky mode = lighting::Sky::None;
-        glm::uvec2 size{0};
-        std::uint32_t frameIndex = 0;
-        std::uint32_t seed = 1;
-        bool newWorld = false;         // a different world: every mask is stale
-        bool viewOrWorldChanged = false;  // the reference restarts its running sum
-        std::vector<glm::vec4> edits;  // bounding spheres (xyz centre, w radius) of changed regions
-    };
-    // Before the frame's uploads are recorded.
-    void prepare(const FrameInput& input, gpu::Uploader& uploader);
-    struct Io {
-        const gpu::Buffer& frameParams;  // read
-        const gpu::Buffer& gbuffer;      // read
-        gpu::Buffer& radiance;           // the term is added
-    };
-    // After the direct lighting.
-    void record(gpu::CommandList& cmd, const SceneBindings& scene, const Io& io);
-    // After the frame's submission completed: reads the copied header.
-    void collect();
-    // A frame without the sky term: its edits are not seen, so the next frame with it starts afresh.
-    void suspend() { mMode = lighting::Sky::None; }
+    // Before the frame's uploads are recorded: the regions whose voxels changed (the edited
+    // cells, the objects' old and new bounds) mark the masks' directions through them stale.
+    void prepare(const FrameChanges& changes, const FrameInput& in, gpu::Uploader& uploader,
+                 shared::FrameParams& params) override;
+    // After the direct lighting: the term is added to the radiance.
+    void record(FrameCommands& commands, const FrameBuffers& frame) override;
+    // Reads the copied header.
+    void collect(FrameResult& result) override;
+    // A frame without the sky term: its edits are not seen, so the next frame with it starts
+    // afresh.
+    void skip() override { mMode = lighting::Sky::None; }
 
     const DvfSkyStats& stats() const { return mStats; }
     // Test hooks: the table and the last frame's sky term per pixel, read back.
@@ -71,6 +67,10 @@ public:
     static bool supports(glm::ivec3 sizeInCells);
 
 private:
+    void allocate();
+    // Bounding spheres (xyz centre, w radius) of the regions whose voxels changed.
+    std::vector<glm::vec4> changedRegions(const FrameChanges& changes, const world::Scene& scene);
+
     gpu::Context& mCtx;
     DvfSkyPass mInvalidate, mTakeBatch, mBuild, mShade, mReference;
     gpu::Buffer mParams, mHeader, mHeaderHost, mSlots, mQueue, mWeights, mSky;
@@ -79,6 +79,7 @@ private:
     bool mClear = true;  // the table must be emptied before the next frame's passes
     bool mWeightsUploaded = false;
     std::uint32_t mEditCount = 0;
+    std::optional<glm::vec4> mPrevDynamicBounds;  // the objects' last bounding sphere
     DvfSkyStats mStats;
 };
 

@@ -1,38 +1,50 @@
 #include "render/light_tiles/light_tiles.h"
 
+#include "gpu/command_list.h"
 #include "gpu/uploader.h"
+#include "render/frame_commands.h"
 #include "shared/light_tiles.h"
+#include "shared/shader_features.h"
 
 namespace engine::render {
 
-bool lightTilesUsed(const lighting::LightingSettings& l) {
-    using lighting::Method;
-    const bool candidates = l.method == Method::Restir || l.method == Method::Ris;
-    const bool cache = l.indirect == lighting::Indirect::Cache && l.method != Method::Reference;
-    return l.byPower && l.restir.lightTiles && (candidates || cache);
+namespace {
+constexpr std::uint64_t kSampleBytes = std::uint64_t(shared::LIGHT_TILE_COUNT) *
+                                       shared::LIGHT_TILE_SIZE * sizeof(shared::LightTileSample);
+}  // namespace
+
+LightTiles::LightTiles(gpu::Context& ctx)
+    : mCtx(ctx), mPass(ctx, "light_tiles", "light_tiles/presample", 2) {}
+
+std::uint64_t LightTiles::deviceBytes() { return sizeof(shared::LightTilesParams) + kSampleBytes; }
+
+TechniquePlan LightTiles::plan(const lighting::LightingSettings& l, const SceneShape&, glm::uvec2) {
+    TechniquePlan p;
+    p.runs = lighting::usesLightTiles(l);
+    p.deviceBytes = deviceBytes();
+    p.features = {{FEATURE_LIGHT_TILES, 1u}};
+    return p;
 }
 
-LightTiles::LightTiles(gpu::Context& ctx) : mPass(ctx, "light_tiles", "light_tiles/presample", 2) {
-    mParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::LightTilesParams), "light_tiles.params");
-    mSamples = gpu::Buffer(ctx, gpu::BufferKind::Storage,
-                           std::uint64_t(shared::LIGHT_TILE_COUNT) * shared::LIGHT_TILE_SIZE * sizeof(shared::LightTileSample),
-                           "light_tiles.samples");
-}
-
-void LightTiles::writeParams(gpu::Uploader& uploader, std::uint32_t frameIndex, std::uint32_t seed) {
-    const shared::LightTilesParams p{frameIndex, seed, 0u, 0u};
+void LightTiles::prepare(const FrameChanges&, const FrameInput& in, gpu::Uploader& uploader,
+                         shared::FrameParams& params) {
+    if (!mSamples.valid()) {  // first use
+        mParams = gpu::Buffer(mCtx, gpu::BufferKind::Storage, sizeof(shared::LightTilesParams),
+                              "light_tiles.params");
+        mSamples = gpu::Buffer(mCtx, gpu::BufferKind::Storage, kSampleBytes, "light_tiles.samples");
+    }
+    const shared::LightTilesParams p{in.frameIndex, in.lighting.seed, 0u, 0u};
     uploader.write(mParams, 0, &p, sizeof(p));
-}
-
-void LightTiles::record(gpu::CommandList& cmd, const SceneBindings& scene) {
-    const PassBinding own[] = {{shared::LIGHT_TILES_BINDING_PARAMS, &mParams}, {shared::LIGHT_TILES_BINDING_SAMPLES, &mSamples}};
-    const std::uint32_t entries = shared::LIGHT_TILE_COUNT * shared::LIGHT_TILE_SIZE;
-    mPass.record(cmd, scene, own, glm::uvec2(entries / shared::LIGHT_TILES_GROUP_SIZE, 1u));
-}
-
-glm::uvec4 LightTiles::frameField() const {
     const std::uint64_t address = mSamples.deviceAddress();
-    return glm::uvec4(std::uint32_t(address), std::uint32_t(address >> 32), 0u, 0u);
+    params.lightTiles = glm::uvec4(std::uint32_t(address), std::uint32_t(address >> 32), 0u, 0u);
+}
+
+void LightTiles::record(FrameCommands& commands, const FrameBuffers& frame) {
+    const PassBinding own[] = {{shared::LIGHT_TILES_BINDING_PARAMS, &mParams},
+                               {shared::LIGHT_TILES_BINDING_SAMPLES, &mSamples}};
+    const std::uint32_t entries = shared::LIGHT_TILE_COUNT * shared::LIGHT_TILE_SIZE;
+    mPass.record(commands.current(), frame.scene, own,
+                 glm::uvec2(entries / shared::LIGHT_TILES_GROUP_SIZE, 1u));
 }
 
 }  // namespace engine::render

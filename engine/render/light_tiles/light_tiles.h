@@ -8,40 +8,37 @@
 #pragma once
 
 #include <cstdint>
-
 #include <glm/glm.hpp>
+#include <string>
 
 #include "gpu/buffer.h"
-#include "lighting/lighting_settings.h"
 #include "render/passes/lit_pass.h"
-
-namespace engine::gpu {
-class CommandList;
-class Uploader;
-}  // namespace engine::gpu
+#include "render/technique.h"
 
 namespace engine::render {
 
-// Does a frame lit with `l` read the tiles? With the light_tiles knob on and lights drawn by power:
-// ReSTIR/RIS candidates and the irradiance cache's light bounce (which otherwise draws from the
-// alias table, as does everything when the knob is off).
-bool lightTilesUsed(const lighting::LightingSettings& l);
-
-class LightTiles {
+// Runs when lights are drawn by power with the light_tiles knob on (lighting::usesLightTiles):
+// ReSTIR/RIS candidates and the irradiance cache's light bounce, which otherwise draw from the
+// alias table.
+class LightTiles : public Technique {
 public:
     explicit LightTiles(gpu::Context& ctx);
+    static TechniquePlan plan(const lighting::LightingSettings& l, const SceneShape& scene,
+                              glm::uvec2 size);
+    static std::string describe(const lighting::LightingSettings&) { return ""; }
+    static std::uint64_t deviceBytes();
 
-    // Queues this frame's randomness (the lighting seed and the frame index, as every pass).
-    void writeParams(gpu::Uploader& uploader, std::uint32_t frameIndex, std::uint32_t seed);
-    // The presample pass, "light_tiles"; record it after the emitter list's upload and before the
-    // passes that read the tiles.
-    void record(gpu::CommandList& cmd, const SceneBindings& scene);
-    // FrameParams::lightTiles for a frame that draws the tiles.
-    glm::uvec4 frameField() const;
+    // Queues this frame's randomness (the lighting seed and the frame index, as every pass) and
+    // sets FrameParams::lightTiles.
+    void prepare(const FrameChanges& changes, const FrameInput& in, gpu::Uploader& uploader,
+                 shared::FrameParams& params) override;
+    // The presample pass, "light_tiles", before the passes that read the tiles.
+    void record(FrameCommands& commands, const FrameBuffers& frame) override;
     // The last drawn tiles (LightTileSample per entry), for tests.
     const gpu::Buffer& samples() const { return mSamples; }
 
 private:
+    gpu::Context& mCtx;
     LitPass mPass;
     gpu::Buffer mParams, mSamples;
 };

@@ -3,34 +3,32 @@
 // Per pixel and frame, `samples` bounce paths from the G-buffer's surface (the reference path
 // tracer's walk from the first bounce on), averaged over frames while camera and world stay still
 // and restarted when either changes — on a flythrough every frame starts afresh.
-// Owns the running sum and the parameters; the renderer passes the frame's buffers.
-// Each frame: prepare() (before the frame's uploads are recorded), then record() after the
-// direct lighting.
+// Owns the running sum and the parameters.
 #pragma once
 
 #include <cstdint>
+#include <string>
 
 #include "gpu/buffer.h"
 #include "gpu/uploader.h"
 #include "lighting/lighting_settings.h"
 #include "render/path_indirect/path_indirect_pass.h"
+#include "render/technique.h"
 
 namespace engine::render {
 
-class PathIndirect {
+// Runs with `--indirect path` beside any method but the reference (lighting::usesPath).
+class PathIndirect : public Technique {
 public:
     explicit PathIndirect(gpu::Context& ctx);
+    static TechniquePlan plan(const lighting::LightingSettings& l, const SceneShape& scene,
+                              glm::uvec2 size);
+    static std::string describe(const lighting::LightingSettings& l);
 
-    // `restart`: the camera moved, the world changed or the history is otherwise gone.
-    void prepare(const lighting::LightingSettings& lighting, glm::uvec2 size, std::uint32_t frameIndex, bool restart,
-                 gpu::Uploader& uploader);
-    struct Io {
-        const gpu::Buffer& frameParams;  // read
-        const gpu::Buffer& gbuffer;      // read
-        gpu::Buffer& radiance;           // the term is added
-        gpu::Buffer& indirect;           // write: the term alone
-    };
-    void record(gpu::CommandList& cmd, const SceneBindings& scene, const Io& io);
+    // Restarts the running sum when the camera moved, the world changed or the history is gone.
+    void prepare(const FrameChanges& changes, const FrameInput& in, gpu::Uploader& uploader,
+                 shared::FrameParams& params) override;
+    void record(FrameCommands& commands, const FrameBuffers& frame) override;
 
     // Paths per pixel in the running sum after the last prepared frame.
     std::uint32_t accumulatedPaths() const { return mPaths; }

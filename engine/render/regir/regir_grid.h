@@ -13,44 +13,40 @@
 #pragma once
 
 #include <cstdint>
-
 #include <glm/glm.hpp>
+#include <string>
 
 #include "gpu/buffer.h"
-#include "lighting/lighting_settings.h"
 #include "render/passes/lit_pass.h"
+#include "render/technique.h"
 #include "shared/regir.h"
 
-namespace engine::gpu {
-class CommandList;
-class Uploader;
-}  // namespace engine::gpu
-
 namespace engine::render {
-
-// Does a frame lit with `l` fill and read the grid? ReSTIR and RIS with sampling regir.
-bool regirUsed(const lighting::LightingSettings& l);
 
 // The grid over a world of `worldVoxels`: cells of at least `cellSize` voxels, as few more as
 // keep the count within REGIR_MAX_CELLS.
 shared::RegirGridInfo regirGridFor(glm::ivec3 worldVoxels, const shared::RegirKnobs& knobs);
 
-class RegirGrid {
+// Runs for ReSTIR and RIS with sampling regir (lighting::usesRegir).
+class RegirGrid : public Technique {
 public:
     explicit RegirGrid(gpu::Context& ctx);
+    static TechniquePlan plan(const lighting::LightingSettings& l, const SceneShape& scene,
+                              glm::uvec2 size);
+    // Sampling regir is part of ReSTIR's and RIS's description.
+    static std::string describe(const lighting::LightingSettings&) { return ""; }
+    // The grid and its marks over a world of `worldVoxels`.
+    static std::uint64_t deviceBytes(glm::ivec3 worldVoxels, const shared::RegirKnobs& knobs);
 
-    // Sizes the grid for the world and queues this frame's header (grid, candidates, randomness).
-    void prepare(gpu::Uploader& uploader, glm::ivec3 worldVoxels, const shared::RegirKnobs& knobs,
-                 std::uint32_t frameIndex, std::uint32_t seed);
-    // Clears the marks, then the two passes; record after the G-buffer and before the candidates.
-    void record(gpu::CommandList& cmd, const SceneBindings& scene, const gpu::Buffer& frameParams,
-                const gpu::Buffer& gbuffer, glm::uvec2 imageSize);
-    // FrameParams::regirGrid for a frame that fills the grid.
-    glm::uvec4 frameField() const;
+    // Sizes the grid for the world, queues this frame's header (grid, candidates, randomness) and
+    // sets FrameParams::regirGrid.
+    void prepare(const FrameChanges& changes, const FrameInput& in, gpu::Uploader& uploader,
+                 shared::FrameParams& params) override;
+    // Clears the marks, then the two passes; after the G-buffer and before the candidates.
+    void record(FrameCommands& commands, const FrameBuffers& frame) override;
     const shared::RegirGridInfo& info() const { return mInfo; }
     // The grid buffer (RegirGridInfo, then RegirEntry per cell x entry), for tests.
     const gpu::Buffer& grid() const { return mGrid; }
-    std::uint64_t deviceBytes() const { return mGrid.size() + mMarks.size(); }
 
 private:
     gpu::Context& mCtx;
