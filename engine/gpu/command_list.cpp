@@ -1,5 +1,7 @@
 #include "gpu/command_list.h"
 
+#include <algorithm>
+
 #include "core/check.h"
 #include "gpu/buffer.h"
 #include "gpu/context.h"
@@ -41,11 +43,20 @@ void CommandList::begin() {
     VK_CHECK(vkBeginCommandBuffer(mCmd, &info));
     if (mTimer) mTimer->reset(mCmd);
     mRecording = true;
+    mRead.clear();
+    mWritten.clear();
+}
+
+void CommandList::finishRecording() {
+    // The last commands' writes before the host reads them and before the next submission's
+    // commands, which track their own accesses from none.
+    if (!mRead.empty() || !mWritten.empty()) barrier();
+    VK_CHECK(vkEndCommandBuffer(mCmd));
 }
 
 void CommandList::submitAndWait(const SubmitSync& sync) {
     CHECK(mRecording);
-    VK_CHECK(vkEndCommandBuffer(mCmd));
+    finishRecording();
     mRecording = false;
     mCtx.submitAndWait(mCmd, sync);
     releaseSubmissionResources();
@@ -53,7 +64,7 @@ void CommandList::submitAndWait(const SubmitSync& sync) {
 
 void CommandList::submit(const SubmitSync& sync) {
     CHECK(mRecording);
-    VK_CHECK(vkEndCommandBuffer(mCmd));
+    finishRecording();
     mRecording = false;
     if (!mFence) {
         VkFenceCreateInfo info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
@@ -99,14 +110,38 @@ void CommandList::barrier() {
     VkPipelineStageFlags stages = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT;
     vkCmdPipelineBarrier(mCmd, stages, stages | VK_PIPELINE_STAGE_HOST_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT, 0, 1,
                          &b, 0, nullptr, 0, nullptr);
+    mRead.clear();
+    mWritten.clear();
+    ++mBarriers;
+}
+
+void CommandList::access(std::span<const Buffer* const> reads, std::span<const Buffer* const> writes) {
+    auto in = [](const std::vector<VkBuffer>& set, const Buffer* b) {
+        return std::find(set.begin(), set.end(), b->handle()) != set.end();
+    };
+    bool dependent = false;
+    for (const Buffer* b : reads) dependent = dependent || in(mWritten, b);  // read after write
+    for (const Buffer* b : writes) dependent = dependent || in(mWritten, b) || in(mRead, b);  // after a write or read
+    if (dependent) barrier();
+    for (const Buffer* b : reads) {
+        if (!in(mRead, b)) mRead.push_back(b->handle());
+    }
+    for (const Buffer* b : writes) {
+        if (!in(mWritten, b)) mWritten.push_back(b->handle());
+    }
 }
 
 void CommandList::copyBuffer(const Buffer& src, const Buffer& dst, const std::vector<VkBufferCopy>& regions) {
     if (regions.empty()) return;
+    const Buffer* read[] = {&src};
+    const Buffer* written[] = {&dst};
+    access(read, written);
     vkCmdCopyBuffer(mCmd, src.handle(), dst.handle(), static_cast<std::uint32_t>(regions.size()), regions.data());
 }
 
 void CommandList::fillBuffer(const Buffer& dst, std::uint32_t value) {
+    const Buffer* written[] = {&dst};
+    access({}, written);
     vkCmdFillBuffer(mCmd, dst.handle(), 0, VK_WHOLE_SIZE, value);
 }
 

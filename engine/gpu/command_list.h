@@ -1,6 +1,13 @@
 // gpu::CommandList: one primary command buffer plus what must live until it completes
 // (descriptor sets). Passes record into it between beginPass/endPass, which add a debug label
 // and a GPU timestamp with the pass's name.
+//
+// Barriers follow from what each command declares it reads and writes (access()): a command
+// waits behind a barrier only when it reads or writes a buffer written since the last barrier,
+// or writes one read since then; commands that share nothing run without one between them
+// (kajiya's render graph, Falcor's reflect()). Dispatches, copies and fills declare their
+// buffers themselves. What is read by device address (the world's brick pages, the light tiles,
+// ReGIR's grid) is not declared by its readers: its writer ends with barrier().
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -41,8 +48,13 @@ public:
     void endPass();
 
     // Make writes of the previous commands (compute or transfer) visible to the next ones, the
-    // arguments of an indirect dispatch included.
+    // arguments of an indirect dispatch and host reads after the submission included.
     void barrier();
+    // The next command reads `reads` and writes (or reads and writes) `writes`: records a barrier
+    // first when it depends on an earlier command since the last one.
+    void access(std::span<const Buffer* const> reads, std::span<const Buffer* const> writes);
+    // Barriers recorded so far (explicit and derived), for tests.
+    std::uint32_t barrierCount() const { return mBarriers; }
     void copyBuffer(const Buffer& src, const Buffer& dst, const std::vector<VkBufferCopy>& regions);
     void fillBuffer(const Buffer& dst, std::uint32_t value);
 
@@ -56,6 +68,7 @@ public:
     void retainDescriptorSet(VkDescriptorPool pool, VkDescriptorSet set) { mDescriptorSets.emplace_back(pool, set); }
 
 private:
+    void finishRecording();
     void releaseSubmissionResources();
 
     Context& mCtx;
@@ -66,6 +79,9 @@ private:
     bool mPending = false;            // submitted, not yet waited for
     std::vector<std::pair<VkDescriptorPool, VkDescriptorSet>> mDescriptorSets;
     std::vector<std::uint32_t> mSpecialization;
+    // Buffers read and written since the last barrier.
+    std::vector<VkBuffer> mRead, mWritten;
+    std::uint32_t mBarriers = 0;
 };
 
 }  // namespace engine::gpu

@@ -73,6 +73,45 @@ std::vector<VkDescriptorType> declaredBindingTypes(std::span<const std::uint32_t
     }
     return types;
 }
+
+// Which bindings 0..count-1 of set 0 the SPIR-V module may write: a storage buffer block none of
+// whose members (nor the variable) is decorated NonWritable (GLSL `readonly`). Texel buffers and
+// bindings the shader does not declare are read-only.
+std::vector<bool> writableBindings(std::span<const std::uint32_t> code, std::uint32_t count) {
+    constexpr std::uint32_t kOpTypeStruct = 30, kOpTypePointer = 32, kOpVariable = 59, kOpDecorate = 71,
+                            kOpMemberDecorate = 72, kHeaderWords = 5;
+    constexpr std::uint32_t kDecorationBinding = 33, kDecorationDescriptorSet = 34, kDecorationNonWritable = 24;
+    std::unordered_map<std::uint32_t, std::uint32_t> binding, set, pointee, variableType, members, readonlyMembers;
+    std::unordered_map<std::uint32_t, bool> readonlyVariable;
+    for (std::size_t i = kHeaderWords; i < code.size();) {
+        const std::uint32_t words = code[i] >> 16, opcode = code[i] & 0xFFFFu;
+        if (words == 0 || i + words > code.size()) break;
+        const std::uint32_t* w = &code[i];
+        if (opcode == kOpDecorate && words >= 3) {
+            if (w[2] == kDecorationBinding && words >= 4) binding[w[1]] = w[3];
+            if (w[2] == kDecorationDescriptorSet && words >= 4) set[w[1]] = w[3];
+            if (w[2] == kDecorationNonWritable) readonlyVariable[w[1]] = true;
+        } else if (opcode == kOpMemberDecorate && words >= 4 && w[3] == kDecorationNonWritable) {
+            ++readonlyMembers[w[1]];
+        } else if (opcode == kOpTypeStruct && words >= 2) {
+            members[w[1]] = words - 2;
+        } else if (opcode == kOpTypePointer && words >= 4) {
+            pointee[w[1]] = w[3];
+        } else if (opcode == kOpVariable && words >= 4) {
+            variableType[w[2]] = w[1];
+        }
+        i += words;
+    }
+    std::vector<bool> writable(count, false);
+    for (auto [variable, b] : binding) {
+        if (b >= count || set[variable] != 0 || !variableType.contains(variable)) continue;
+        const std::uint32_t type = pointee[variableType[variable]];
+        if (!members.contains(type) || readonlyVariable[variable]) continue;  // a texel buffer, or readonly
+        writable[b] = readonlyMembers[type] < members[type];
+    }
+    return writable;
+}
+
 }  // namespace
 
 ComputePipeline::ComputePipeline(Context& ctx, const std::string& shader, std::uint32_t bindingCount)
@@ -82,6 +121,7 @@ ComputePipeline::ComputePipeline(Context& ctx, const std::string& shader, std::u
     VkDevice device = ctx.device();
 
     mTypes = declaredBindingTypes(code, bindingCount);
+    mWritable = writableBindings(code, bindingCount);
     std::vector<VkDescriptorSetLayoutBinding> bindings(bindingCount);
     for (std::uint32_t i = 0; i < bindingCount; ++i) {
         bindings[i] = {i, mTypes[i], 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
@@ -159,17 +199,38 @@ VkPipeline ComputePipeline::variant(std::span<const std::uint32_t> specializatio
 }
 
 void ComputePipeline::dispatch(CommandList& cmd, std::span<const Buffer* const> buffers, std::uint32_t groupsX,
-                               std::uint32_t groupsY, std::uint32_t groupsZ) {
+                               std::uint32_t groupsY, std::uint32_t groupsZ, std::span<const std::uint8_t> declaredWrites) {
+    declareAccess(cmd, buffers, declaredWrites, nullptr);
     bind(cmd, buffers);
     vkCmdDispatch(cmd.handle(), groupsX, groupsY, groupsZ);
 }
 
 void ComputePipeline::dispatchIndirect(CommandList& cmd, std::span<const Buffer* const> buffers, const Buffer& args,
-                                       std::uint64_t offset) {
+                                       std::uint64_t offset, std::span<const std::uint8_t> declaredWrites) {
     CHECK_MSG(args.valid() && offset % 4 == 0 && offset + 12 <= args.size(), "%s: indirect arguments at %llu of %s",
               mName.c_str(), static_cast<unsigned long long>(offset), args.name().c_str());
+    declareAccess(cmd, buffers, declaredWrites, &args);
     bind(cmd, buffers);
     vkCmdDispatchIndirect(cmd.handle(), args.handle(), offset);
+}
+
+void ComputePipeline::declareAccess(CommandList& cmd, std::span<const Buffer* const> buffers,
+                                    std::span<const std::uint8_t> declaredWrites, const Buffer* args) const {
+    CHECK_MSG(declaredWrites.empty() || declaredWrites.size() == buffers.size(), "%s: %zu accesses for %zu buffers",
+              mName.c_str(), declaredWrites.size(), buffers.size());
+    std::vector<const Buffer*> reads, writes;
+    if (args) reads.push_back(args);
+    for (std::size_t b = 0; b < buffers.size(); ++b) {
+        const bool shaderWrites = b < mWritable.size() && mWritable[b];
+        // A declaration may say more than the shader does (one Io for several passes), never less:
+        // the barriers follow it.
+        CHECK_MSG(declaredWrites.empty() || declaredWrites[b] || !shaderWrites,
+                  "%s: binding %zu (%s) is declared read, but the shader may write it (not readonly)", mName.c_str(), b,
+                  buffers[b] ? buffers[b]->name().c_str() : "none");
+        const bool written = declaredWrites.empty() ? shaderWrites : declaredWrites[b];
+        if (buffers[b]) (written ? writes : reads).push_back(buffers[b]);
+    }
+    cmd.access(reads, writes);
 }
 
 void ComputePipeline::bind(CommandList& cmd, std::span<const Buffer* const> buffers) {

@@ -106,8 +106,9 @@ void Presenter::record(CommandList& cmd, const Buffer& ldr, glm::uvec2 ldrSize) 
     VkExtent2D extent = mSwapchain->extent();
     cmd.beginPass("present");
 
-    // LDR buffer -> source image. The tonemap pass's barrier made the buffer readable by transfers;
-    // the previous frame's blit read the image, hence the transfer source stage.
+    // LDR buffer -> source image. The barrier that ends the frame's submission (CommandList) made
+    // the buffer readable by transfers; the previous frame's blit read the image, hence the
+    // transfer source stage.
     imageBarrier(c, mSource, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                  VK_PIPELINE_STAGE_TRANSFER_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
     VkBufferImageCopy copy{};

@@ -51,6 +51,7 @@ void Uploader::copyQueued(CommandList& cmd, Buffer& staging, UploadStats& stats)
         stats.regions += copies.size();
     }
     stats.bytes += mData.size();
+    // The world's brick pages are read by address, which declares no binding: wait here.
     cmd.barrier();
     mData.clear();
     mCopies.clear();

@@ -25,9 +25,9 @@ gpu::CommandList& FrameCommands::submitAndContinue(bool wait) {
         mFirstPending = true;
     }
     mContinued = true;
+    // The first submission ended with a barrier (gpu::CommandList), which orders its writes
+    // before what the second reads of them.
     mSecond.begin();
-    // The first submission's writes before what the second reads of them.
-    mSecond.barrier();
     return mSecond;
 }
 

@@ -207,8 +207,8 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
 }
 
 void Renderer::present(gpu::Presenter& presenter, FrameResult& result) {
-    // A submission of its own, so only this pass waits for the swapchain image. The tonemap
-    // pass's barrier orders the LDR writes before the copy in submission order.
+    // A submission of its own, so only this pass waits for the swapchain image. The barrier that
+    // ends the frame's submission orders the LDR writes before the copy.
     gpu::CommandList cmd(mCtx, &mPresentTimer);
     cmd.begin();
     presenter.record(cmd, mLdr, mSize);
@@ -233,7 +233,6 @@ FrameImages Renderer::readback() {
         cmd.copyBuffer(*b, readback, {{0, offset, b->size()}});
         offset += b->size();
     }
-    cmd.barrier();
     cmd.submitAndWait();
 
     const auto* bytes = static_cast<const std::uint8_t*>(readback.mapped());

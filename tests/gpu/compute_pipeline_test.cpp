@@ -145,3 +145,54 @@ TEST_F(ComputePipelineBindings, IndirectDispatchRunsTheWorkgroupsItsArgumentsNam
         EXPECT_EQ(outside, 0u);
     }
 }
+
+// What a shader may write is read from its SPIR-V (a storage buffer not declared `readonly`): the
+// check behind every pass's declared writes (ComputePipeline::dispatch).
+TEST_F(ComputePipelineBindings, WritableBindingsFollowTheShaderDeclarations) {
+    engine::gpu::ComputePipeline tonemap(context(), "post/tonemap", shared::TONEMAP_BINDING_LDR + 1u);
+    const std::vector<bool>& writable = tonemap.writableBindings();
+    EXPECT_FALSE(writable[shared::TONEMAP_BINDING_FRAME]);
+    EXPECT_FALSE(writable[shared::TONEMAP_BINDING_RADIANCE]);
+    EXPECT_TRUE(writable[shared::TONEMAP_BINDING_LDR]);  // writeonly is still a write
+    const std::uint32_t count = shared::TRACE_BINDING_HITS + 1u;
+    engine::gpu::ComputePipeline trace(context(), "world/trace_rays_hierarchical", count);
+    for (std::uint32_t b = 0; b < count; ++b) {
+        // The world's texel buffers and its readonly blocks are read; the hits written.
+        EXPECT_EQ(trace.writableBindings()[b], b == shared::TRACE_BINDING_HITS) << "binding " << b;
+    }
+}
+
+// Barriers follow from what commands read and write: commands that share no buffer run without
+// one between them, a read of what an earlier command wrote (or a write of what it read or
+// wrote) waits behind exactly one.
+TEST_F(ComputePipelineBindings, BarriersOnlyBetweenDependentCommands) {
+    using engine::gpu::Buffer;
+    using engine::gpu::BufferKind;
+    engine::gpu::Context& ctx = context();
+    const glm::uvec2 size(16, 8);
+    const std::uint32_t pixels = size.x * size.y;
+    Buffer params(ctx, BufferKind::Storage, sizeof(shared::FrameParams), "test.frame");
+    Buffer lightA(ctx, BufferKind::Storage, pixels * sizeof(glm::vec4), "test.radianceA");
+    Buffer lightB(ctx, BufferKind::Storage, pixels * sizeof(glm::vec4), "test.radianceB");
+    Buffer ldrA(ctx, BufferKind::Storage, pixels * 4, "test.ldrA");
+    Buffer ldrB(ctx, BufferKind::Storage, pixels * 4, "test.ldrB");
+    engine::gpu::ComputePipeline tonemap(ctx, "post/tonemap", shared::TONEMAP_BINDING_LDR + 1u);
+    engine::gpu::CommandList cmd(ctx);
+    cmd.begin();
+    cmd.fillBuffer(params, 0);
+    cmd.fillBuffer(lightA, 0);
+    cmd.fillBuffer(lightB, 0);  // three fills of three buffers: no barrier between them
+    EXPECT_EQ(cmd.barrierCount(), 0u);
+    tonemap.dispatch(cmd, {&params, &lightA, &ldrA}, 2, 1);  // reads what the fills wrote
+    EXPECT_EQ(cmd.barrierCount(), 1u);
+    tonemap.dispatch(cmd, {&params, &lightB, &ldrB}, 2, 1);  // shares only reads with the first
+    EXPECT_EQ(cmd.barrierCount(), 1u);
+    cmd.fillBuffer(lightA, 0);  // writes what the first dispatch read
+    EXPECT_EQ(cmd.barrierCount(), 2u);
+    tonemap.dispatch(cmd, {&params, &lightB, &ldrB}, 2, 1);  // its writes are behind barrier 2
+    EXPECT_EQ(cmd.barrierCount(), 2u);
+    tonemap.dispatch(cmd, {&params, &lightA, &ldrA}, 2, 1);  // reads what the fill wrote
+    EXPECT_EQ(cmd.barrierCount(), 3u);
+    cmd.submitAndWait();
+    EXPECT_EQ(cmd.barrierCount(), 4u);  // the one that ends a submission: the host and later lists
+}

@@ -161,7 +161,6 @@ void DvfSky::record(FrameCommands& commands, const FrameBuffers& frame) {
     if (mClear) {
         cmd.fillBuffer(mSlots, 0);  // every key DVF_EMPTY_KEY, every state 0
         cmd.fillBuffer(mHeader, 0);
-        cmd.barrier();
         mClear = false;
         mStats.queued = 0;
         mStats.usedSlots = 0;
@@ -174,8 +173,7 @@ void DvfSky::record(FrameCommands& commands, const FrameBuffers& frame) {
         mEditCount ? kMasksPerFrame : std::min(kMasksPerFrame, mStats.queued);
     mBuild.record(cmd, scene, all, {buildGroups, 1});
     mShade.record(cmd, scene, all, screenGroups(mSize));
-    cmd.copyBuffer(mHeader, mHeaderHost, {{0, 0, mHeader.size()}});
-    cmd.barrier();
+    cmd.copyBuffer(mHeader, mHeaderHost, {{0, 0, mHeader.size()}});  // read after the submission
 }
 
 void DvfSky::collect(FrameResult& result) {

@@ -27,22 +27,23 @@ namespace engine::render {
 namespace {
 
 // The buffers every cache pass binds (shaders/irradiance_cache/irradiance_cache.glsl).
+// One declaration for all the passes: a buffer any of them writes is written.
 struct CachePassIo {
-    const gpu::Buffer& params;
-    const gpu::Buffer& frameParams;
-    const gpu::Buffer& directions;
-    const gpu::Buffer& entries;
-    const gpu::Buffer& table;
-    const gpu::Buffer& lists;
-    gpu::Buffer& staticHits;
-    gpu::Buffer& selectedHits;
-    gpu::Buffer& irradiance;
-    gpu::Buffer& filtered;
-    const gpu::Buffer& gbuffer;
-    gpu::Buffer& radiance;  // read and written: the indirect term is added
-    gpu::Buffer& indirect;  // written: the indirect term alone
-    gpu::Buffer& counters;
-    gpu::Buffer& latePixels;
+    const gpu::Buffer& params;       // read
+    const gpu::Buffer& frameParams;  // read
+    const gpu::Buffer& directions;   // read
+    const gpu::Buffer& entries;      // read
+    const gpu::Buffer& table;        // read
+    gpu::Buffer& lists;         // the update and trace lists read; the face lists (faces) written
+    gpu::Buffer& staticHits;    // read and written
+    gpu::Buffer& selectedHits;  // read and written
+    gpu::Buffer& irradiance;    // read and written
+    gpu::Buffer& filtered;      // read and written
+    const gpu::Buffer& gbuffer;  // read
+    gpu::Buffer& radiance;       // read and written: the indirect term is added
+    gpu::Buffer& indirect;       // written: the indirect term alone
+    gpu::Buffer& counters;       // read and written; also the indirect dispatches' arguments
+    gpu::Buffer& latePixels;     // written by the gather, read by the late gather
     auto bindings() const {
         return std::to_array<PassBinding>({{shared::CACHE_BINDING_PARAMS, &params},
                                            {shared::CACHE_BINDING_FRAME, &frameParams},
@@ -321,13 +322,11 @@ void IrradianceCache::ensureCapacity(std::uint32_t slots, gpu::CommandList& cmd)
     make(mLists, kListWordsPerSlot * capacity * 4, "cache.lists");
     make(mSelectedHits, std::uint64_t(capacity) * shared::CACHE_FACES * mSettings.raysPerUpdate * 4,
          "cache.selectedHits");
-    cmd.barrier();
     for (auto& [buffer, old] : grown) {
         cmd.copyBuffer(old, *buffer, {{0, 0, old.size()}});
         mRetired.push_back(std::move(old));
     }
     mCapacity = capacity;
-    cmd.barrier();
 }
 
 void IrradianceCache::pickUpdates(const lighting::IrradianceCacheSettings& settings,
@@ -491,10 +490,7 @@ void IrradianceCache::prepare(const FrameChanges& changes, const FrameInput& in,
 void IrradianceCache::record(FrameCommands& commands, const FrameBuffers& frame) {
     mSplitFrame = !(mGBufferHostValid && mConfigured);
     const VkBufferCopy wholeGBuffer{0, 0, frame.gbuffer.size()};
-    if (mSplitFrame) {
-        commands.current().copyBuffer(frame.gbuffer, mGBufferHost, {wholeGBuffer});
-        commands.current().barrier();
-    }
+    if (mSplitFrame) commands.current().copyBuffer(frame.gbuffer, mGBufferHost, {wholeGBuffer});
     // The host picks while the GPU runs what was recorded so far (or, split, after it ran).
     gpu::CommandList& cmd = commands.submitAndContinue(mSplitFrame);
     cmd.beginPass("cache.prepare");
@@ -509,7 +505,6 @@ void IrradianceCache::record(FrameCommands& commands, const FrameBuffers& frame)
                  {frame.frameParams, frame.gbuffer, frame.radiance, frame.indirect});
     // This frame's visible voxels, for the next frame's pick.
     cmd.copyBuffer(frame.gbuffer, mGBufferHost, {wholeGBuffer});
-    cmd.barrier();
 }
 
 void IrradianceCache::collect(FrameResult& result) {
@@ -530,7 +525,6 @@ void IrradianceCache::recordPasses(gpu::CommandList& cmd, const SceneBindings& s
     const auto bindings = own.bindings();
     const std::uint64_t faces = shared::CACHE_FACES;
     cmd.fillBuffer(mCounters, 0);
-    cmd.barrier();
     // The passes with ray loops run over the face lists this pass builds, in the workgroups
     // cache.list_dispatch counts for them (CACHE_COUNTER_ARGS_*).
     mFaces.record(cmd, scene, bindings,
@@ -551,8 +545,7 @@ void IrradianceCache::recordPasses(gpu::CommandList& cmd, const SceneBindings& s
     // The pixels the gather found no value for, in as many workgroups as it counted.
     mGatherLate.recordIndirect(cmd, scene, bindings, mCounters,
                                shared::CACHE_COUNTER_LATE_GROUPS * 4);
-    cmd.copyBuffer(mCounters, mCountersHost, {{0, 0, mCounters.size()}});
-    cmd.barrier();
+    cmd.copyBuffer(mCounters, mCountersHost, {{0, 0, mCounters.size()}});  // read by collect()
 }
 
 }  // namespace engine::render

@@ -1,5 +1,7 @@
 #include "render/light_tiles/light_tiles.h"
 
+#include <utility>
+
 #include "gpu/command_list.h"
 #include "gpu/uploader.h"
 #include "render/frame_commands.h"
@@ -40,11 +42,13 @@ void LightTiles::prepare(const FrameChanges&, const FrameInput& in, gpu::Uploade
 }
 
 void LightTiles::record(FrameCommands& commands, const FrameBuffers& frame) {
-    const PassBinding own[] = {{shared::LIGHT_TILES_BINDING_PARAMS, &mParams},
+    const PassBinding own[] = {{shared::LIGHT_TILES_BINDING_PARAMS, &std::as_const(mParams)},
                                {shared::LIGHT_TILES_BINDING_SAMPLES, &mSamples}};
     const std::uint32_t entries = shared::LIGHT_TILE_COUNT * shared::LIGHT_TILE_SIZE;
-    mPass.record(commands.current(), frame.scene, own,
-                 glm::uvec2(entries / shared::LIGHT_TILES_GROUP_SIZE, 1u));
+    gpu::CommandList& cmd = commands.current();
+    mPass.record(cmd, frame.scene, own, glm::uvec2(entries / shared::LIGHT_TILES_GROUP_SIZE, 1u));
+    // The candidates and the cache read the tiles by address, which declares no binding: wait here.
+    cmd.barrier();
 }
 
 }  // namespace engine::render

@@ -10,31 +10,30 @@ namespace engine::render {
 ComputePass::ComputePass(gpu::Context& ctx, std::string name, const std::string& shader, std::uint32_t bindingCount)
     : mName(std::move(name)), mBindingCount(bindingCount), mPipeline(ctx, shader, bindingCount) {}
 
-std::vector<const gpu::Buffer*> ComputePass::bound(std::span<const PassBinding> bindings) const {
+ComputePass::Bound ComputePass::bound(std::span<const PassBinding> bindings) const {
     CHECK(bindings.size() == mBindingCount);
-    std::vector<const gpu::Buffer*> buffers(mBindingCount, nullptr);
+    Bound out{std::vector<const gpu::Buffer*>(mBindingCount, nullptr), std::vector<std::uint8_t>(mBindingCount, 0)};
     for (const PassBinding& b : bindings) {
-        CHECK(b.binding < mBindingCount && buffers[b.binding] == nullptr && b.buffer != nullptr);
-        buffers[b.binding] = b.buffer;
+        CHECK(b.binding < mBindingCount && out.buffers[b.binding] == nullptr && b.buffer != nullptr);
+        out.buffers[b.binding] = b.buffer;
+        out.writes[b.binding] = b.writes ? 1 : 0;
     }
-    return buffers;
+    return out;
 }
 
 void ComputePass::recordIndirect(gpu::CommandList& cmd, std::span<const PassBinding> bindings, const gpu::Buffer& args,
                                  std::uint64_t offset) {
-    const std::vector<const gpu::Buffer*> buffers = bound(bindings);
+    const Bound b = bound(bindings);
     cmd.beginPass(mName);
-    mPipeline.dispatchIndirect(cmd, buffers, args, offset);
+    mPipeline.dispatchIndirect(cmd, b.buffers, args, offset, b.writes);
     cmd.endPass();
-    cmd.barrier();
 }
 
 void ComputePass::record(gpu::CommandList& cmd, std::span<const PassBinding> bindings, glm::uvec2 groups) {
-    const std::vector<const gpu::Buffer*> buffers = bound(bindings);
+    const Bound b = bound(bindings);
     cmd.beginPass(mName);
-    if (groups.x > 0 && groups.y > 0) mPipeline.dispatch(cmd, buffers, groups.x, groups.y);
+    if (groups.x > 0 && groups.y > 0) mPipeline.dispatch(cmd, b.buffers, groups.x, groups.y, 1, b.writes);
     cmd.endPass();
-    cmd.barrier();
 }
 
 }  // namespace engine::render

@@ -27,10 +27,17 @@ class Context;
 
 namespace engine::render {
 
-// One storage buffer at one binding number of set 0.
+// One storage buffer at one binding number of set 0, and whether the pass writes it: an Io
+// struct holds what a pass reads as `const gpu::Buffer&` and what it writes (or reads and
+// writes) as `gpu::Buffer&`, and that constness is the declaration the barriers follow
+// (gpu::CommandList::access).
 struct PassBinding {
-    std::uint32_t binding;
-    const gpu::Buffer* buffer;
+    constexpr PassBinding() = default;
+    constexpr PassBinding(std::uint32_t b, const gpu::Buffer* read) : binding(b), buffer(read) {}
+    constexpr PassBinding(std::uint32_t b, gpu::Buffer* written) : binding(b), buffer(written), writes(true) {}
+    std::uint32_t binding = 0;
+    const gpu::Buffer* buffer = nullptr;
+    bool writes = false;
 };
 
 // The number of bindings an Io struct lists: the size of the array its bindings() returns.
@@ -56,7 +63,8 @@ public:
     // `shader` is the path under shaders/ without ".comp"; `name` labels and times the dispatch.
     ComputePass(gpu::Context& ctx, std::string name, const std::string& shader, std::uint32_t bindingCount);
     // Binds every buffer at its binding (each of 0..bindingCount-1 exactly once) and dispatches
-    // `groups` workgroups; a zero count records only the label. A barrier follows.
+    // `groups` workgroups; a zero count records only the label. The dispatch waits for the
+    // earlier commands that wrote what it reads or touched what it writes (PassBinding::writes).
     void record(gpu::CommandList& cmd, std::span<const PassBinding> bindings, glm::uvec2 groups);
     // The same with the workgroup counts an earlier pass wrote into `args` at `offset` (three
     // uints): for work whose size only the GPU knows, such as the pixels a pass set aside.
@@ -64,7 +72,12 @@ public:
                         std::uint64_t offset);
 
 private:
-    std::vector<const gpu::Buffer*> bound(std::span<const PassBinding> bindings) const;
+    // The buffers by binding number, and which of them the pass writes.
+    struct Bound {
+        std::vector<const gpu::Buffer*> buffers;
+        std::vector<std::uint8_t> writes;
+    };
+    Bound bound(std::span<const PassBinding> bindings) const;
 
     std::string mName;
     std::uint32_t mBindingCount;

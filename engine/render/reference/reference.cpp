@@ -48,10 +48,7 @@ void Reference::prepare(const FrameChanges& changes, const FrameInput& in, gpu::
 
 void Reference::record(FrameCommands& commands, const FrameBuffers& frame) {
     gpu::CommandList& cmd = commands.current();
-    if (mRestart) {
-        cmd.fillBuffer(mAccumulation, 0);
-        cmd.barrier();
-    }
+    if (mRestart) cmd.fillBuffer(mAccumulation, 0);
     mPass.record(cmd, frame.scene, {frame.frameParams, mParams, mAccumulation, frame.radiance},
                  mSize);
 }

@@ -68,7 +68,6 @@ void RegirGrid::prepare(const FrameChanges&, const FrameInput& in, gpu::Uploader
 void RegirGrid::record(FrameCommands& commands, const FrameBuffers& frame) {
     gpu::CommandList& cmd = commands.current();
     cmd.fillBuffer(mMarks, 0);
-    cmd.barrier();
     const PassBinding own[] = {{shared::REGIR_BINDING_FRAME, &frame.frameParams},
                                {shared::REGIR_BINDING_GBUFFER, &frame.gbuffer},
                                {shared::REGIR_BINDING_MARKS, &mMarks},
@@ -78,6 +77,8 @@ void RegirGrid::record(FrameCommands& commands, const FrameBuffers& frame) {
     mBuild.record(
         cmd, frame.scene, own,
         glm::uvec2((threads + shared::REGIR_GROUP_SIZE - 1) / shared::REGIR_GROUP_SIZE, 1u));
+    // The candidates read the grid by address, which declares no binding: wait here.
+    cmd.barrier();
 }
 
 }  // namespace engine::render

@@ -90,7 +90,6 @@ void Restir::record(FrameCommands& commands, const FrameBuffers& frame) {
                         mSize);
     } else {
         cmd.copyBuffer(*own, final, {{0, 0, own->size()}});
-        cmd.barrier();
     }
     mShade.record(cmd, scene, {frame.frameParams, mParams, frame.gbuffer, final, frame.radiance},
                   mSize);
