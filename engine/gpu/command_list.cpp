@@ -84,7 +84,8 @@ void CommandList::wait() {
 }
 
 void CommandList::releaseSubmissionResources() {
-    for (auto [pool, set] : mDescriptorSets) VK_CHECK(vkFreeDescriptorSets(mCtx.device(), pool, 1, &set));
+    for (auto [pool, set] : mDescriptorSets)
+        VK_CHECK(vkFreeDescriptorSets(mCtx.device(), pool, 1, &set));
     mDescriptorSets.clear();
 }
 
@@ -105,23 +106,28 @@ void CommandList::endPass() {
 void CommandList::barrier() {
     VkMemoryBarrier b{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
     b.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
-    b.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_READ_BIT |
-                      VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_HOST_READ_BIT | VK_ACCESS_INDIRECT_COMMAND_READ_BIT;
-    VkPipelineStageFlags stages = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT;
-    vkCmdPipelineBarrier(mCmd, stages, stages | VK_PIPELINE_STAGE_HOST_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT, 0, 1,
-                         &b, 0, nullptr, 0, nullptr);
+    b.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT |
+                      VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT |
+                      VK_ACCESS_HOST_READ_BIT | VK_ACCESS_INDIRECT_COMMAND_READ_BIT;
+    VkPipelineStageFlags stages =
+        VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT;
+    vkCmdPipelineBarrier(mCmd, stages,
+                         stages | VK_PIPELINE_STAGE_HOST_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT,
+                         0, 1, &b, 0, nullptr, 0, nullptr);
     mRead.clear();
     mWritten.clear();
     ++mBarriers;
 }
 
-void CommandList::access(std::span<const Buffer* const> reads, std::span<const Buffer* const> writes) {
+void CommandList::access(std::span<const Buffer* const> reads,
+                         std::span<const Buffer* const> writes) {
     auto in = [](const std::vector<VkBuffer>& set, const Buffer* b) {
         return std::find(set.begin(), set.end(), b->handle()) != set.end();
     };
     bool dependent = false;
     for (const Buffer* b : reads) dependent = dependent || in(mWritten, b);  // read after write
-    for (const Buffer* b : writes) dependent = dependent || in(mWritten, b) || in(mRead, b);  // after a write or read
+    for (const Buffer* b : writes)
+        dependent = dependent || in(mWritten, b) || in(mRead, b);  // after a write or read
     if (dependent) barrier();
     for (const Buffer* b : reads) {
         if (!in(mRead, b)) mRead.push_back(b->handle());
@@ -131,12 +137,14 @@ void CommandList::access(std::span<const Buffer* const> reads, std::span<const B
     }
 }
 
-void CommandList::copyBuffer(const Buffer& src, const Buffer& dst, const std::vector<VkBufferCopy>& regions) {
+void CommandList::copyBuffer(const Buffer& src, const Buffer& dst,
+                             const std::vector<VkBufferCopy>& regions) {
     if (regions.empty()) return;
     const Buffer* read[] = {&src};
     const Buffer* written[] = {&dst};
     access(read, written);
-    vkCmdCopyBuffer(mCmd, src.handle(), dst.handle(), static_cast<std::uint32_t>(regions.size()), regions.data());
+    vkCmdCopyBuffer(mCmd, src.handle(), dst.handle(), static_cast<std::uint32_t>(regions.size()),
+                    regions.data());
 }
 
 void CommandList::fillBuffer(const Buffer& dst, std::uint32_t value) {

@@ -61,11 +61,15 @@ public:
     // Values of the specialization constants (by constant_id) of every pipeline this list
     // dispatches from now on; empty (the start) leaves each constant at its default. The values
     // are copied.
-    void setSpecialization(std::span<const std::uint32_t> values) { mSpecialization.assign(values.begin(), values.end()); }
+    void setSpecialization(std::span<const std::uint32_t> values) {
+        mSpecialization.assign(values.begin(), values.end());
+    }
     std::span<const std::uint32_t> specialization() const { return mSpecialization; }
 
     // Descriptor sets allocated for this recording; freed after completion.
-    void retainDescriptorSet(VkDescriptorPool pool, VkDescriptorSet set) { mDescriptorSets.emplace_back(pool, set); }
+    void retainDescriptorSet(VkDescriptorPool pool, VkDescriptorSet set) {
+        mDescriptorSets.emplace_back(pool, set);
+    }
 
 private:
     void finishRecording();

@@ -23,7 +23,8 @@ std::vector<std::uint32_t> declaredSpecIds(std::span<const std::uint32_t> code) 
     for (std::size_t i = kHeaderWords; i < code.size();) {
         const std::uint32_t words = code[i] >> 16, opcode = code[i] & 0xFFFFu;
         if (words == 0 || i + words > code.size()) break;
-        if (opcode == kOpDecorate && words >= 4 && code[i + 2] == kDecorationSpecId) ids.push_back(code[i + 3]);
+        if (opcode == kOpDecorate && words >= 4 && code[i + 2] == kDecorationSpecId)
+            ids.push_back(code[i + 3]);
         i += words;
     }
     std::sort(ids.begin(), ids.end());
@@ -34,13 +35,16 @@ std::vector<std::uint32_t> declaredSpecIds(std::span<const std::uint32_t> code) 
 // The descriptor type of each binding 0..count-1 of set 0, as the SPIR-V module declares it: a
 // `uniform usamplerBuffer` (OpTypeImage, Dim Buffer, Sampled 1) is a uniform texel buffer;
 // anything else (a `buffer` block, or a binding the shader does not declare) a storage buffer.
-std::vector<VkDescriptorType> declaredBindingTypes(std::span<const std::uint32_t> code, std::uint32_t count) {
-    constexpr std::uint32_t kOpTypeImage = 25, kOpTypeSampledImage = 27, kOpTypePointer = 32, kOpVariable = 59,
-                            kOpDecorate = 71, kHeaderWords = 5;
+std::vector<VkDescriptorType> declaredBindingTypes(std::span<const std::uint32_t> code,
+                                                   std::uint32_t count) {
+    constexpr std::uint32_t kOpTypeImage = 25, kOpTypeSampledImage = 27, kOpTypePointer = 32,
+                            kOpVariable = 59, kOpDecorate = 71, kHeaderWords = 5;
     constexpr std::uint32_t kDecorationBinding = 33, kDecorationDescriptorSet = 34;
     constexpr std::uint32_t kStorageUniformConstant = 0, kDimBuffer = 5;
-    std::unordered_map<std::uint32_t, std::uint32_t> binding, set, pointerClass, pointee, variableType, sampledImage;
-    std::unordered_map<std::uint32_t, std::pair<std::uint32_t, std::uint32_t>> image;  // id -> (Dim, Sampled)
+    std::unordered_map<std::uint32_t, std::uint32_t> binding, set, pointerClass, pointee,
+        variableType, sampledImage;
+    std::unordered_map<std::uint32_t, std::pair<std::uint32_t, std::uint32_t>>
+        image;  // id -> (Dim, Sampled)
     for (std::size_t i = kHeaderWords; i < code.size();) {
         const std::uint32_t words = code[i] >> 16, opcode = code[i] & 0xFFFFu;
         if (words == 0 || i + words > code.size()) break;
@@ -67,7 +71,8 @@ std::vector<VkDescriptorType> declaredBindingTypes(std::span<const std::uint32_t
         std::uint32_t type = pointee[pointer];
         if (sampledImage.contains(type)) type = sampledImage[type];
         if (pointerClass[pointer] == kStorageUniformConstant && image.contains(type)) {
-            CHECK_MSG(image[type] == std::make_pair(kDimBuffer, 1u), "binding %u: only sampled buffer images", b);
+            CHECK_MSG(image[type] == std::make_pair(kDimBuffer, 1u),
+                      "binding %u: only sampled buffer images", b);
             types[b] = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
         }
     }
@@ -77,11 +82,13 @@ std::vector<VkDescriptorType> declaredBindingTypes(std::span<const std::uint32_t
 // Which bindings 0..count-1 of set 0 the SPIR-V module may write: a storage buffer block none of
 // whose members (nor the variable) is decorated NonWritable (GLSL `readonly`). Texel buffers and
 // bindings the shader does not declare are read-only.
-std::vector<bool> writableBindings(std::span<const std::uint32_t> code, std::uint32_t count) {
-    constexpr std::uint32_t kOpTypeStruct = 30, kOpTypePointer = 32, kOpVariable = 59, kOpDecorate = 71,
-                            kOpMemberDecorate = 72, kHeaderWords = 5;
-    constexpr std::uint32_t kDecorationBinding = 33, kDecorationDescriptorSet = 34, kDecorationNonWritable = 24;
-    std::unordered_map<std::uint32_t, std::uint32_t> binding, set, pointee, variableType, members, readonlyMembers;
+std::vector<bool> declaredWritableBindings(std::span<const std::uint32_t> code, std::uint32_t count) {
+    constexpr std::uint32_t kOpTypeStruct = 30, kOpTypePointer = 32, kOpVariable = 59,
+                            kOpDecorate = 71, kOpMemberDecorate = 72, kHeaderWords = 5;
+    constexpr std::uint32_t kDecorationBinding = 33, kDecorationDescriptorSet = 34,
+                            kDecorationNonWritable = 24;
+    std::unordered_map<std::uint32_t, std::uint32_t> binding, set, pointee, variableType, members,
+        readonlyMembers;
     std::unordered_map<std::uint32_t, bool> readonlyVariable;
     for (std::size_t i = kHeaderWords; i < code.size();) {
         const std::uint32_t words = code[i] >> 16, opcode = code[i] & 0xFFFFu;
@@ -106,7 +113,8 @@ std::vector<bool> writableBindings(std::span<const std::uint32_t> code, std::uin
     for (auto [variable, b] : binding) {
         if (b >= count || set[variable] != 0 || !variableType.contains(variable)) continue;
         const std::uint32_t type = pointee[variableType[variable]];
-        if (!members.contains(type) || readonlyVariable[variable]) continue;  // a texel buffer, or readonly
+        if (!members.contains(type) || readonlyVariable[variable])
+            continue;  // a texel buffer, or readonly
         writable[b] = readonlyMembers[type] < members[type];
     }
     return writable;
@@ -114,14 +122,15 @@ std::vector<bool> writableBindings(std::span<const std::uint32_t> code, std::uin
 
 }  // namespace
 
-ComputePipeline::ComputePipeline(Context& ctx, const std::string& shader, std::uint32_t bindingCount)
+ComputePipeline::ComputePipeline(Context& ctx, const std::string& shader,
+                                 std::uint32_t bindingCount)
     : mCtx(ctx), mName(shader), mBindingCount(bindingCount) {
     std::span<const std::uint32_t> code = shaderCode(shader);
     CHECK_MSG(!code.empty(), "no embedded shader named '%s'", shader.c_str());
     VkDevice device = ctx.device();
 
     mTypes = declaredBindingTypes(code, bindingCount);
-    mWritable = writableBindings(code, bindingCount);
+    mWritable = declaredWritableBindings(code, bindingCount);
     std::vector<VkDescriptorSetLayoutBinding> bindings(bindingCount);
     for (std::uint32_t i = 0; i < bindingCount; ++i) {
         bindings[i] = {i, mTypes[i], 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
@@ -173,7 +182,8 @@ VkPipeline ComputePipeline::variant(std::span<const std::uint32_t> specializatio
     std::vector<VkSpecializationMapEntry> entries;
     for (std::uint32_t id : mSpecIds) {
         if (id >= specialization.size()) continue;  // keeps its default
-        entries.push_back({id, static_cast<std::uint32_t>(values.size() * sizeof(std::uint32_t)), sizeof(std::uint32_t)});
+        entries.push_back({id, static_cast<std::uint32_t>(values.size() * sizeof(std::uint32_t)),
+                           sizeof(std::uint32_t)});
         values.push_back(specialization[id]);
     }
     for (auto& [key, pipeline] : mVariants) {
@@ -193,40 +203,47 @@ VkPipeline ComputePipeline::variant(std::span<const std::uint32_t> specializatio
     info.layout = mLayout;
     VkPipeline pipeline;
     VK_CHECK(vkCreateComputePipelines(mCtx.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
-    mCtx.setObjectName(VK_OBJECT_TYPE_PIPELINE, reinterpret_cast<std::uint64_t>(pipeline), mName.c_str());
+    mCtx.setObjectName(VK_OBJECT_TYPE_PIPELINE, reinterpret_cast<std::uint64_t>(pipeline),
+                       mName.c_str());
     mVariants.emplace_back(std::move(values), pipeline);
     return pipeline;
 }
 
-void ComputePipeline::dispatch(CommandList& cmd, std::span<const Buffer* const> buffers, std::uint32_t groupsX,
-                               std::uint32_t groupsY, std::uint32_t groupsZ, std::span<const std::uint8_t> declaredWrites) {
+void ComputePipeline::dispatch(CommandList& cmd, std::span<const Buffer* const> buffers,
+                               std::uint32_t groupsX, std::uint32_t groupsY, std::uint32_t groupsZ,
+                               std::span<const std::uint8_t> declaredWrites) {
     declareAccess(cmd, buffers, declaredWrites, nullptr);
     bind(cmd, buffers);
     vkCmdDispatch(cmd.handle(), groupsX, groupsY, groupsZ);
 }
 
-void ComputePipeline::dispatchIndirect(CommandList& cmd, std::span<const Buffer* const> buffers, const Buffer& args,
-                                       std::uint64_t offset, std::span<const std::uint8_t> declaredWrites) {
-    CHECK_MSG(args.valid() && offset % 4 == 0 && offset + 12 <= args.size(), "%s: indirect arguments at %llu of %s",
-              mName.c_str(), static_cast<unsigned long long>(offset), args.name().c_str());
+void ComputePipeline::dispatchIndirect(CommandList& cmd, std::span<const Buffer* const> buffers,
+                                       const Buffer& args, std::uint64_t offset,
+                                       std::span<const std::uint8_t> declaredWrites) {
+    CHECK_MSG(args.valid() && offset % 4 == 0 && offset + 12 <= args.size(),
+              "%s: indirect arguments at %llu of %s", mName.c_str(),
+              static_cast<unsigned long long>(offset), args.name().c_str());
     declareAccess(cmd, buffers, declaredWrites, &args);
     bind(cmd, buffers);
     vkCmdDispatchIndirect(cmd.handle(), args.handle(), offset);
 }
 
 void ComputePipeline::declareAccess(CommandList& cmd, std::span<const Buffer* const> buffers,
-                                    std::span<const std::uint8_t> declaredWrites, const Buffer* args) const {
-    CHECK_MSG(declaredWrites.empty() || declaredWrites.size() == buffers.size(), "%s: %zu accesses for %zu buffers",
-              mName.c_str(), declaredWrites.size(), buffers.size());
+                                    std::span<const std::uint8_t> declaredWrites,
+                                    const Buffer* args) const {
+    CHECK_MSG(declaredWrites.empty() || declaredWrites.size() == buffers.size(),
+              "%s: %zu accesses for %zu buffers", mName.c_str(), declaredWrites.size(),
+              buffers.size());
     std::vector<const Buffer*> reads, writes;
     if (args) reads.push_back(args);
     for (std::size_t b = 0; b < buffers.size(); ++b) {
         const bool shaderWrites = b < mWritable.size() && mWritable[b];
         // A declaration may say more than the shader does (one Io for several passes), never less:
         // the barriers follow it.
-        CHECK_MSG(declaredWrites.empty() || declaredWrites[b] || !shaderWrites,
-                  "%s: binding %zu (%s) is declared read, but the shader may write it (not readonly)", mName.c_str(), b,
-                  buffers[b] ? buffers[b]->name().c_str() : "none");
+        CHECK_MSG(
+            declaredWrites.empty() || declaredWrites[b] || !shaderWrites,
+            "%s: binding %zu (%s) is declared read, but the shader may write it (not readonly)",
+            mName.c_str(), b, buffers[b] ? buffers[b]->name().c_str() : "none");
         const bool written = declaredWrites.empty() ? shaderWrites : declaredWrites[b];
         if (buffers[b]) (written ? writes : reads).push_back(buffers[b]);
     }
@@ -234,8 +251,8 @@ void ComputePipeline::declareAccess(CommandList& cmd, std::span<const Buffer* co
 }
 
 void ComputePipeline::bind(CommandList& cmd, std::span<const Buffer* const> buffers) {
-    CHECK_MSG(buffers.size() == mBindingCount, "%s: %zu buffers for %u bindings", mName.c_str(), buffers.size(),
-              mBindingCount);
+    CHECK_MSG(buffers.size() == mBindingCount, "%s: %zu buffers for %u bindings", mName.c_str(),
+              buffers.size(), mBindingCount);
     VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
     alloc.descriptorPool = mPool;
     alloc.descriptorSetCount = 1;
@@ -258,7 +275,8 @@ void ComputePipeline::bind(CommandList& cmd, std::span<const Buffer* const> buff
         w.descriptorCount = 1;
         w.descriptorType = mTypes[binding];
         if (w.descriptorType == VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER) {
-            CHECK_MSG(b->texelView(), "%s: binding %u reads texels of %s, which has no texel format", mName.c_str(),
+            CHECK_MSG(b->texelView(),
+                      "%s: binding %u reads texels of %s, which has no texel format", mName.c_str(),
                       binding, b->name().c_str());
             views.push_back(b->texelView());
             w.pTexelBufferView = &views.back();
@@ -269,9 +287,11 @@ void ComputePipeline::bind(CommandList& cmd, std::span<const Buffer* const> buff
         writes.push_back(w);
         ++binding;
     }
-    vkUpdateDescriptorSets(mCtx.device(), static_cast<std::uint32_t>(writes.size()), writes.data(), 0, nullptr);
+    vkUpdateDescriptorSets(mCtx.device(), static_cast<std::uint32_t>(writes.size()), writes.data(),
+                           0, nullptr);
     vkCmdBindPipeline(cmd.handle(), VK_PIPELINE_BIND_POINT_COMPUTE, variant(cmd.specialization()));
-    vkCmdBindDescriptorSets(cmd.handle(), VK_PIPELINE_BIND_POINT_COMPUTE, mLayout, 0, 1, &set, 0, nullptr);
+    vkCmdBindDescriptorSets(cmd.handle(), VK_PIPELINE_BIND_POINT_COMPUTE, mLayout, 0, 1, &set, 0,
+                            nullptr);
 }
 
 }  // namespace engine::gpu

@@ -1,9 +1,10 @@
 // gpu::ComputePipeline: one compute shader (embedded SPIR-V, by name) whose bindings are buffers
 // in set 0, numbered 0..bindingCount-1. Each binding's descriptor type follows the shader's
 // declaration (read from the SPIR-V): a `buffer` block is a storage buffer, a `usamplerBuffer` a
-// uniform texel buffer (bound through the Buffer's texel view, Buffer::setTexelFormat). Its specialization constants take their
-// values from the command list's (CommandList::setSpecialization, indexed by constant_id); one
-// pipeline is compiled per combination of the values the shader declares, when first used.
+// uniform texel buffer (bound through the Buffer's texel view, Buffer::setTexelFormat). Its
+// specialization constants take their values from the command list's
+// (CommandList::setSpecialization, indexed by constant_id); one pipeline is compiled per
+// combination of the values the shader declares, when first used.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -33,16 +34,19 @@ public:
     // dispatch after what it depends on (CommandList::access) by `declaredWrites` — which buffers
     // the caller declares written (a pass's Io struct; it must cover every binding the shader may
     // write) — or, without it, by the shader's own declarations (`readonly`).
-    void dispatch(CommandList& cmd, std::initializer_list<const Buffer*> buffers, std::uint32_t groupsX,
-                  std::uint32_t groupsY = 1, std::uint32_t groupsZ = 1) {
-        dispatch(cmd, std::span<const Buffer* const>(buffers.begin(), buffers.size()), groupsX, groupsY, groupsZ);
+    void dispatch(CommandList& cmd, std::initializer_list<const Buffer*> buffers,
+                  std::uint32_t groupsX, std::uint32_t groupsY = 1, std::uint32_t groupsZ = 1) {
+        dispatch(cmd, std::span<const Buffer* const>(buffers.begin(), buffers.size()), groupsX,
+                 groupsY, groupsZ);
     }
     void dispatch(CommandList& cmd, std::span<const Buffer* const> buffers, std::uint32_t groupsX,
-                  std::uint32_t groupsY = 1, std::uint32_t groupsZ = 1, std::span<const std::uint8_t> declaredWrites = {});
+                  std::uint32_t groupsY = 1, std::uint32_t groupsZ = 1,
+                  std::span<const std::uint8_t> declaredWrites = {});
     // The same, with the workgroup counts read on the GPU from `args` at `offset` (three uints,
     // VkDispatchIndirectCommand), as an earlier pass wrote them.
-    void dispatchIndirect(CommandList& cmd, std::span<const Buffer* const> buffers, const Buffer& args,
-                          std::uint64_t offset, std::span<const std::uint8_t> declaredWrites = {});
+    void dispatchIndirect(CommandList& cmd, std::span<const Buffer* const> buffers,
+                          const Buffer& args, std::uint64_t offset,
+                          std::span<const std::uint8_t> declaredWrites = {});
 
     // The constant_ids the shader declares, ascending.
     const std::vector<std::uint32_t>& specializationIds() const { return mSpecIds; }
@@ -55,8 +59,8 @@ private:
     // Allocates, fills and binds a descriptor set of `buffers`, and binds the pipeline.
     void bind(CommandList& cmd, std::span<const Buffer* const> buffers);
     // Tells the list what the dispatch reads and writes (`args`: its indirect arguments).
-    void declareAccess(CommandList& cmd, std::span<const Buffer* const> buffers, std::span<const std::uint8_t> declaredWrites,
-                       const Buffer* args) const;
+    void declareAccess(CommandList& cmd, std::span<const Buffer* const> buffers,
+                       std::span<const std::uint8_t> declaredWrites, const Buffer* args) const;
     // The pipeline for these values of the shader's constants (empty: every default).
     VkPipeline variant(std::span<const std::uint32_t> specialization);
 

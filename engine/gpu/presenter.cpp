@@ -16,8 +16,9 @@ namespace {
 bool isSrgb(VkFormat f) { return f == VK_FORMAT_B8G8R8A8_SRGB || f == VK_FORMAT_R8G8B8A8_SRGB; }
 bool isBgra(VkFormat f) { return f == VK_FORMAT_B8G8R8A8_SRGB || f == VK_FORMAT_B8G8R8A8_UNORM; }
 
-void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageLayout from, VkImageLayout to, VkPipelineStageFlags srcStage,
-                  VkAccessFlags srcAccess, VkPipelineStageFlags dstStage, VkAccessFlags dstAccess) {
+void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageLayout from, VkImageLayout to,
+                  VkPipelineStageFlags srcStage, VkAccessFlags srcAccess,
+                  VkPipelineStageFlags dstStage, VkAccessFlags dstAccess) {
     VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
     b.oldLayout = from;
     b.newLayout = to;
@@ -37,9 +38,11 @@ Presenter::Presenter(Context& ctx, glm::uvec2 framebufferSize, bool overlay) : m
     mSwapchainGeneration = mSwapchain->generation();
     if (overlay) {
         // The render pass depends only on the format, which a rebuild keeps.
-        VkFormat format = mSwapchain->format() != VK_FORMAT_UNDEFINED ? mSwapchain->format() : VK_FORMAT_B8G8R8A8_UNORM;
-        mOverlay = std::make_unique<ImGuiOverlay>(ctx, format, mSwapchain->minImageCount(),
-                                                  std::max(mSwapchain->imageCount(), mSwapchain->minImageCount()));
+        VkFormat format = mSwapchain->format() != VK_FORMAT_UNDEFINED ? mSwapchain->format()
+                                                                      : VK_FORMAT_B8G8R8A8_UNORM;
+        mOverlay = std::make_unique<ImGuiOverlay>(
+            ctx, format, mSwapchain->minImageCount(),
+            std::max(mSwapchain->imageCount(), mSwapchain->minImageCount()));
     }
 }
 
@@ -78,11 +81,13 @@ void Presenter::ensureSourceImage(glm::uvec2 size) {
     vkGetImageMemoryRequirements(mCtx.device(), mSource, &req);
     VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
     alloc.allocationSize = req.size;
-    alloc.memoryTypeIndex = mCtx.findMemoryType(req.memoryTypeBits, 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    alloc.memoryTypeIndex =
+        mCtx.findMemoryType(req.memoryTypeBits, 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
     CHECK(alloc.memoryTypeIndex != UINT32_MAX);
     VK_CHECK(vkAllocateMemory(mCtx.device(), &alloc, nullptr, &mSourceMemory));
     VK_CHECK(vkBindImageMemory(mCtx.device(), mSource, mSourceMemory, 0));
-    mCtx.setObjectName(VK_OBJECT_TYPE_IMAGE, reinterpret_cast<std::uint64_t>(mSource), "present.source");
+    mCtx.setObjectName(VK_OBJECT_TYPE_IMAGE, reinterpret_cast<std::uint64_t>(mSource),
+                       "present.source");
     mSourceSize = size;
 }
 
@@ -110,25 +115,31 @@ void Presenter::record(CommandList& cmd, const Buffer& ldr, glm::uvec2 ldrSize) 
     // the buffer readable by transfers; the previous frame's blit read the image, hence the
     // transfer source stage.
     imageBarrier(c, mSource, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                 VK_PIPELINE_STAGE_TRANSFER_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+                 VK_PIPELINE_STAGE_TRANSFER_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                 VK_ACCESS_TRANSFER_WRITE_BIT);
     VkBufferImageCopy copy{};
     copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     copy.imageExtent = {ldrSize.x, ldrSize.y, 1};
-    vkCmdCopyBufferToImage(c, ldr.handle(), mSource, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
-    imageBarrier(c, mSource, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                 VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+    vkCmdCopyBufferToImage(c, ldr.handle(), mSource, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
+                           &copy);
+    imageBarrier(c, mSource, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                 VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                 VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
                  VK_ACCESS_TRANSFER_READ_BIT);
 
     // Source -> window image, scaled. The acquire semaphore is waited on at the transfer stage.
     imageBarrier(c, target, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                 VK_PIPELINE_STAGE_TRANSFER_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+                 VK_PIPELINE_STAGE_TRANSFER_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                 VK_ACCESS_TRANSFER_WRITE_BIT);
     VkImageBlit blit{};
     blit.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    blit.srcOffsets[1] = {static_cast<std::int32_t>(ldrSize.x), static_cast<std::int32_t>(ldrSize.y), 1};
+    blit.srcOffsets[1] = {static_cast<std::int32_t>(ldrSize.x),
+                          static_cast<std::int32_t>(ldrSize.y), 1};
     blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    blit.dstOffsets[1] = {static_cast<std::int32_t>(extent.width), static_cast<std::int32_t>(extent.height), 1};
-    vkCmdBlitImage(c, mSource, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
-                   &blit, VK_FILTER_NEAREST);
+    blit.dstOffsets[1] = {static_cast<std::int32_t>(extent.width),
+                          static_cast<std::int32_t>(extent.height), 1};
+    vkCmdBlitImage(c, mSource, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target,
+                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_NEAREST);
 
     VkImageLayout layout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
     VkPipelineStageFlags stage = VK_PIPELINE_STAGE_TRANSFER_BIT;
@@ -153,7 +164,8 @@ void Presenter::record(CommandList& cmd, const Buffer& ldr, glm::uvec2 ldrSize) 
         VkBufferImageCopy back{};
         back.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
         back.imageExtent = {extent.width, extent.height, 1};
-        vkCmdCopyImageToBuffer(c, target, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, mCaptureBuffer.handle(), 1, &back);
+        vkCmdCopyImageToBuffer(c, target, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                               mCaptureBuffer.handle(), 1, &back);
         VkBufferMemoryBarrier host{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER};
         host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
         host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
@@ -161,8 +173,8 @@ void Presenter::record(CommandList& cmd, const Buffer& ldr, glm::uvec2 ldrSize) 
         host.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
         host.buffer = mCaptureBuffer.handle();
         host.size = VK_WHOLE_SIZE;
-        vkCmdPipelineBarrier(c, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1, &host, 0,
-                             nullptr);
+        vkCmdPipelineBarrier(c, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 0,
+                             nullptr, 1, &host, 0, nullptr);
         layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
         stage = VK_PIPELINE_STAGE_TRANSFER_BIT;
         access = 0;  // reads need no availability
@@ -170,8 +182,8 @@ void Presenter::record(CommandList& cmd, const Buffer& ldr, glm::uvec2 ldrSize) 
         mCaptureRequested = false;
     }
     // Presentation needs no access mask: the present semaphore orders it after the submission.
-    imageBarrier(c, target, layout, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, stage, access, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT,
-                 0);
+    imageBarrier(c, target, layout, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, stage, access,
+                 VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0);
     cmd.endPass();
 }
 
@@ -189,12 +201,15 @@ void Presenter::endFrame() {
         mCapture.rgba8.resize(std::size_t(extent.width) * extent.height);
         std::memcpy(mCapture.rgba8.data(), mCaptureBuffer.mapped(), mCapture.rgba8.size() * 4u);
         if (isBgra(mSwapchain->format())) {
-            for (std::uint32_t& p : mCapture.rgba8) p = (p & 0xFF00FF00u) | ((p >> 16) & 0xFFu) | ((p & 0xFFu) << 16);
+            for (std::uint32_t& p : mCapture.rgba8)
+                p = (p & 0xFF00FF00u) | ((p >> 16) & 0xFFu) | ((p & 0xFFu) << 16);
         }
         mCaptureRecorded = false;
     }
 }
 
-glm::uvec2 Presenter::windowExtent() const { return {mSwapchain->extent().width, mSwapchain->extent().height}; }
+glm::uvec2 Presenter::windowExtent() const {
+    return {mSwapchain->extent().width, mSwapchain->extent().height};
+}
 
 }  // namespace engine::gpu

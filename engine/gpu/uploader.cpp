@@ -12,7 +12,8 @@ namespace engine::gpu {
 
 Uploader::Uploader(Context& ctx, std::uint64_t chunkBytes) : mCtx(ctx), mChunkBytes(chunkBytes) {}
 
-void Uploader::write(const Buffer& dst, std::uint64_t offset, const void* data, std::uint64_t bytes) {
+void Uploader::write(const Buffer& dst, std::uint64_t offset, const void* data,
+                     std::uint64_t bytes) {
     if (bytes == 0) return;
     CHECK_MSG(offset + bytes <= dst.size(), "upload past the end of %s", dst.name().c_str());
     if (!mData.empty() && mData.size() + bytes > mChunkBytes) sendChunk();
@@ -37,8 +38,9 @@ UploadStats Uploader::record(CommandList& cmd) {
               "Uploader::record twice in one submission would overwrite staging memory in use");
     mLastRecordSubmission = mCtx.completedSubmissions();
     if (!mStaging.valid() || mStaging.size() < mData.size()) {
-        mStaging = Buffer(mCtx, BufferKind::Staging, std::bit_ceil(std::max<std::uint64_t>(mData.size(), 1 << 16)),
-                          "upload.staging");
+        mStaging =
+            Buffer(mCtx, BufferKind::Staging,
+                   std::bit_ceil(std::max<std::uint64_t>(mData.size(), 1 << 16)), "upload.staging");
     }
     copyQueued(cmd, mStaging, stats);
     return stats;
@@ -59,7 +61,8 @@ void Uploader::copyQueued(CommandList& cmd, Buffer& staging, UploadStats& stats)
 
 void Uploader::sendChunk() {
     if (!mChunkStaging.valid() || mChunkStaging.size() < mData.size()) {
-        mChunkStaging = Buffer(mCtx, BufferKind::Staging, std::bit_ceil(std::max<std::uint64_t>(mData.size(), 1 << 16)),
+        mChunkStaging = Buffer(mCtx, BufferKind::Staging,
+                               std::bit_ceil(std::max<std::uint64_t>(mData.size(), 1 << 16)),
                                "upload.chunkStaging");
     }
     CommandList cmd(mCtx);

@@ -2,16 +2,16 @@
 // cell, page-table and dynamic-grid reads are texel fetches (usamplerBuffer), so those bindings
 // must be uniform texel buffers and every other binding stays a storage buffer. And an indirect
 // dispatch runs the workgroups its arguments buffer names.
+#include "gpu/compute_pipeline.h"
+
 #include <gtest/gtest.h>
 
+#include <glm/glm.hpp>
 #include <utility>
 #include <vector>
 
-#include <glm/glm.hpp>
-
 #include "gpu/buffer.h"
 #include "gpu/command_list.h"
-#include "gpu/compute_pipeline.h"
 #include "gpu/gpu_test_context.h"
 #include "gpu/uploader.h"
 #include "shared/bindings.h"
@@ -30,9 +30,10 @@ TEST_F(ComputePipelineBindings, TypesFollowTheShaderDeclarations) {
     const std::vector<VkDescriptorType>& types = trace.bindingTypes();
     ASSERT_EQ(types.size(), count);
     for (std::uint32_t b = 0; b < count; ++b) {
-        const bool texel = b == shared::WORLD_BINDING_CELLS || b == shared::WORLD_BINDING_PAGES || b == shared::WORLD_BINDING_PALETTE ||
-                           b == shared::WORLD_BINDING_DYNAMIC;
-        EXPECT_EQ(types[b], texel ? VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER)
+        const bool texel = b == shared::WORLD_BINDING_CELLS || b == shared::WORLD_BINDING_PAGES ||
+                           b == shared::WORLD_BINDING_PALETTE || b == shared::WORLD_BINDING_DYNAMIC;
+        EXPECT_EQ(types[b], texel ? VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER
+                                  : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER)
             << "binding " << b;
     }
 }
@@ -50,10 +51,12 @@ TEST_F(ComputePipelineBindings, LightPassesReadTheEmittersAndAliasTableAsTexels)
 // The ReSTIR passes fetch the G-buffer and the reservoirs they only read as texels; a buffer a pass
 // writes (its output, shade's final reservoirs) stays a storage buffer.
 TEST_F(ComputePipelineBindings, RestirPassesReadWhatTheyOnlyReadAsTexels) {
-    const VkDescriptorType texel = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    const VkDescriptorType texel = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER,
+                           storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     struct Expected {
         const char* shader;
-        std::vector<std::pair<std::uint32_t, VkDescriptorType>> own;  // the pass's own bindings, in order
+        std::vector<std::pair<std::uint32_t, VkDescriptorType>>
+            own;  // the pass's own bindings, in order
     };
     const Expected passes[] = {
         {"restir/initial_candidates",
@@ -89,13 +92,16 @@ TEST_F(ComputePipelineBindings, RestirPassesReadWhatTheyOnlyReadAsTexels) {
         const std::vector<VkDescriptorType>& types = pipeline.bindingTypes();
         ASSERT_EQ(types.size(), count) << pass.shader;
         EXPECT_EQ(types[shared::LIGHTS_BINDING_EMITTERS], texel) << pass.shader;
-        for (auto [binding, type] : pass.own) EXPECT_EQ(types[binding], type) << pass.shader << " binding " << binding;
+        for (auto [binding, type] : pass.own)
+            EXPECT_EQ(types[binding], type) << pass.shader << " binding " << binding;
     }
 }
 
 TEST_F(ComputePipelineBindings, ShadersWithoutTexelReadsKeepStorageBuffers) {
-    engine::gpu::ComputePipeline tonemap(context(), "post/tonemap", shared::TONEMAP_BINDING_LDR + 1u);
-    for (VkDescriptorType t : tonemap.bindingTypes()) EXPECT_EQ(t, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+    engine::gpu::ComputePipeline tonemap(context(), "post/tonemap",
+                                         shared::TONEMAP_BINDING_LDR + 1u);
+    for (VkDescriptorType t : tonemap.bindingTypes())
+        EXPECT_EQ(t, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
 }
 
 // dispatchIndirect runs the workgroups an earlier command wrote into its arguments: none for
@@ -116,7 +122,8 @@ TEST_F(ComputePipelineBindings, IndirectDispatchRunsTheWorkgroupsItsArgumentsNam
     Buffer ldr(ctx, BufferKind::Storage, pixels * 4, "test.ldr");
     Buffer args(ctx, BufferKind::Storage, 16, "test.args");
     Buffer host(ctx, BufferKind::Readback, pixels * 4, "test.readback");
-    engine::gpu::ComputePipeline tonemap(context(), "post/tonemap", shared::TONEMAP_BINDING_LDR + 1u);
+    engine::gpu::ComputePipeline tonemap(context(), "post/tonemap",
+                                         shared::TONEMAP_BINDING_LDR + 1u);
     const std::vector<const Buffer*> buffers{&params, &light, &ldr};
     engine::gpu::Uploader uploader(ctx);
     for (glm::uvec3 groups : {glm::uvec3(0u), glm::uvec3(2u, 1u, 1u)}) {
@@ -141,7 +148,8 @@ TEST_F(ComputePipelineBindings, IndirectDispatchRunsTheWorkgroupsItsArgumentsNam
             written += out[i] != 0u;
             outside += out[i] != 0u && !inTiles;
         }
-        EXPECT_EQ(written, 64u * groups.x * groups.y) << "groups " << groups.x << "," << groups.y << "," << groups.z;
+        EXPECT_EQ(written, 64u * groups.x * groups.y)
+            << "groups " << groups.x << "," << groups.y << "," << groups.z;
         EXPECT_EQ(outside, 0u);
     }
 }
@@ -149,7 +157,8 @@ TEST_F(ComputePipelineBindings, IndirectDispatchRunsTheWorkgroupsItsArgumentsNam
 // What a shader may write is read from its SPIR-V (a storage buffer not declared `readonly`): the
 // check behind every pass's declared writes (ComputePipeline::dispatch).
 TEST_F(ComputePipelineBindings, WritableBindingsFollowTheShaderDeclarations) {
-    engine::gpu::ComputePipeline tonemap(context(), "post/tonemap", shared::TONEMAP_BINDING_LDR + 1u);
+    engine::gpu::ComputePipeline tonemap(context(), "post/tonemap",
+                                         shared::TONEMAP_BINDING_LDR + 1u);
     const std::vector<bool>& writable = tonemap.writableBindings();
     EXPECT_FALSE(writable[shared::TONEMAP_BINDING_FRAME]);
     EXPECT_FALSE(writable[shared::TONEMAP_BINDING_RADIANCE]);

@@ -34,11 +34,11 @@ struct CachePassIo {
     const gpu::Buffer& directions;   // read
     const gpu::Buffer& entries;      // read
     const gpu::Buffer& table;        // read
-    gpu::Buffer& lists;         // the update and trace lists read; the face lists (faces) written
-    gpu::Buffer& staticHits;    // read and written
-    gpu::Buffer& selectedHits;  // read and written
-    gpu::Buffer& irradiance;    // read and written
-    gpu::Buffer& filtered;      // read and written
+    gpu::Buffer& lists;          // the update and trace lists read; the face lists (faces) written
+    gpu::Buffer& staticHits;     // read and written
+    gpu::Buffer& selectedHits;   // read and written
+    gpu::Buffer& irradiance;     // read and written
+    gpu::Buffer& filtered;       // read and written
     const gpu::Buffer& gbuffer;  // read
     gpu::Buffer& radiance;       // read and written: the indirect term is added
     gpu::Buffer& indirect;       // written: the indirect term alone

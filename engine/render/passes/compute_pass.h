@@ -9,13 +9,12 @@
 
 #include <array>
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <span>
 #include <string>
 #include <tuple>
 #include <utility>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "gpu/compute_pipeline.h"
 
@@ -34,7 +33,8 @@ namespace engine::render {
 struct PassBinding {
     constexpr PassBinding() = default;
     constexpr PassBinding(std::uint32_t b, const gpu::Buffer* read) : binding(b), buffer(read) {}
-    constexpr PassBinding(std::uint32_t b, gpu::Buffer* written) : binding(b), buffer(written), writes(true) {}
+    constexpr PassBinding(std::uint32_t b, gpu::Buffer* written)
+        : binding(b), buffer(written), writes(true) {}
     std::uint32_t binding = 0;
     const gpu::Buffer* buffer = nullptr;
     bool writes = false;
@@ -43,12 +43,14 @@ struct PassBinding {
 // The number of bindings an Io struct lists: the size of the array its bindings() returns.
 template <class Io>
 constexpr std::uint32_t bindingCount() {
-    return static_cast<std::uint32_t>(std::tuple_size_v<decltype(std::declval<const Io&>().bindings())>);
+    return static_cast<std::uint32_t>(
+        std::tuple_size_v<decltype(std::declval<const Io&>().bindings())>);
 }
 
 // `a`'s bindings, then `b`'s.
 template <std::size_t A, std::size_t B>
-std::array<PassBinding, A + B> joinBindings(const std::array<PassBinding, A>& a, const std::array<PassBinding, B>& b) {
+std::array<PassBinding, A + B> joinBindings(const std::array<PassBinding, A>& a,
+                                            const std::array<PassBinding, B>& b) {
     std::array<PassBinding, A + B> out{};
     for (std::size_t i = 0; i < A; ++i) out[i] = a[i];
     for (std::size_t i = 0; i < B; ++i) out[A + i] = b[i];
@@ -61,15 +63,16 @@ inline glm::uvec2 screenGroups(glm::uvec2 size) { return (size + 7u) / 8u; }
 class ComputePass {
 public:
     // `shader` is the path under shaders/ without ".comp"; `name` labels and times the dispatch.
-    ComputePass(gpu::Context& ctx, std::string name, const std::string& shader, std::uint32_t bindingCount);
+    ComputePass(gpu::Context& ctx, std::string name, const std::string& shader,
+                std::uint32_t bindingCount);
     // Binds every buffer at its binding (each of 0..bindingCount-1 exactly once) and dispatches
     // `groups` workgroups; a zero count records only the label. The dispatch waits for the
     // earlier commands that wrote what it reads or touched what it writes (PassBinding::writes).
     void record(gpu::CommandList& cmd, std::span<const PassBinding> bindings, glm::uvec2 groups);
     // The same with the workgroup counts an earlier pass wrote into `args` at `offset` (three
     // uints): for work whose size only the GPU knows, such as the pixels a pass set aside.
-    void recordIndirect(gpu::CommandList& cmd, std::span<const PassBinding> bindings, const gpu::Buffer& args,
-                        std::uint64_t offset);
+    void recordIndirect(gpu::CommandList& cmd, std::span<const PassBinding> bindings,
+                        const gpu::Buffer& args, std::uint64_t offset);
 
 private:
     // The buffers by binding number, and which of them the pass writes.
