@@ -10,8 +10,9 @@ set -u
 vox="$1"; out="$2"; edits="${3:-2000}"
 bound_mib=8
 
-if ! command -v xvfb-run >/dev/null 2>&1; then
-    echo "SKIP: xvfb-run not found (apt-get install xvfb; tools/setup.sh installs it)"
+source "$(dirname "$0")/own_display.sh"
+if ! own_display_available; then
+    echo "SKIP: Xvfb not found (apt-get install xvfb; tools/setup.sh installs it)"
     exit 77
 fi
 rm -rf "$out" && mkdir -p "$out" && cd "$out" || exit 1
@@ -34,9 +35,9 @@ failures=0
     echo "+1 click right"
 } >soak.script
 
-# Sample VmRSS (KiB) of vox itself, not of xvfb-run, every 0.2 s while it runs.
-xvfb-run -a -n $((100 + RANDOM % 800)) -s "-screen 0 640x480x24" \
-    bash -c '"$0" "$@" & echo $! >vox.pid; wait $!' "$vox" play sandbox --script soak.script --size 320x180 \
+# Sample VmRSS (KiB) of vox itself every 0.2 s while it runs.
+start_own_display 640x480 || exit 1
+bash -c '"$0" "$@" & echo $! >vox.pid; wait $!' "$vox" play sandbox --script soak.script --size 320x180 \
     --render-scale 0.5 --method preview --undo-mb 1 --autosave-minutes 0 --frames $((edits + 200)) \
     >play.out 2>play.err &
 runner=$!
