@@ -2,9 +2,11 @@
 # Soak: `vox play` under Xvfb for 2000 scripted edits — a voxel placed and removed again on
 # alternate frames, so the world returns to the same state — at a 320x180 window, with the undo
 # history held to 1 MiB so it fills during the warm-up. The process's resident memory (VmRSS
-# from /proc/PID/status) is sampled through the run; after the warm-up (the first quarter of the
-# samples) it must stay flat: its largest sample at most BOUND_MIB above the first sample after
-# the warm-up. Memory, not time, is asserted.
+# from /proc/PID/status) is sampled through the run, each sample with the number of edits done
+# by then; after the warm-up (the first quarter of the edits: counted in edits, not in samples, so
+# a slow start on a loaded machine does not end the warm-up before the first edit) it must stay
+# flat: its largest sample at most BOUND_MIB above the first sample after the warm-up. Memory, not
+# time, is asserted.
 # Usage: soak_test.sh VOX OUT [EDITS=2000]
 set -u
 vox="$1"; out="$2"; edits="${3:-2000}"
@@ -45,7 +47,8 @@ for _ in $(seq 50); do [ -s vox.pid ] && break; sleep 0.1; done
 pid=$(cat vox.pid 2>/dev/null)
 : >rss.txt
 while [ -n "$pid" ] && [ -e "/proc/$pid/status" ]; do
-    awk '/^VmRSS:/ { print $2 }' "/proc/$pid/status" >>rss.txt 2>/dev/null
+    rss=$(awk '/^VmRSS:/ { print $2 }' "/proc/$pid/status" 2>/dev/null)
+    [ -n "$rss" ] && echo "$(grep -c -e ': place voxel' -e ': remove voxel' play.out) $rss" >>rss.txt
     sleep 0.2
 done
 wait "$runner"
@@ -60,11 +63,13 @@ echo "edits: $placed placed, $removed removed (of $edits scripted)"
 grep -q "nothing changed" play.out && fail "an edit changed nothing: $(grep -m1 'nothing changed' play.out)"
 
 samples=$(grep -c . rss.txt)
-[ "$samples" -ge 20 ] || fail "only $samples RSS samples"
-# After the warm-up: the first sample, the largest and the last, in MiB.
-read -r first peak last < <(awk -v n="$samples" 'NR > int(n / 4) { if (!f) f = $1; if ($1 > m) m = $1; l = $1 }
+after=$(awk -v warm=$((edits / 4)) '$1 >= warm' rss.txt | grep -c .)
+[ "$after" -ge 20 ] || fail "only $after RSS samples after the warm-up (of $samples)"
+# After the warm-up (samples taken once a quarter of the edits were done): the first sample, the
+# largest and the last, in MiB.
+read -r first peak last < <(awk -v warm=$((edits / 4)) '$1 >= warm { if (!f) f = $2; if ($2 > m) m = $2; l = $2 }
     END { printf "%.1f %.1f %.1f\n", f / 1024, m / 1024, l / 1024 }' rss.txt)
-startup=$(awk 'NR == 1 { printf "%.1f", $1 / 1024 }' rss.txt)
+startup=$(awk 'NR == 1 { printf "%.1f", $2 / 1024 }' rss.txt)
 echo "RSS: $samples samples; first $startup MiB; after warm-up first $first, peak $peak, last $last MiB (bound +$bound_mib MiB)"
 awk -v a="$first" -v b="$peak" -v bound="$bound_mib" 'BEGIN { exit !(b - a <= bound) }' ||
     fail "RSS grew by more than $bound_mib MiB after the warm-up ($first -> $peak MiB)"
