@@ -36,10 +36,18 @@ assert rows["restir"]["equal_time"] is None and rows["restir-point"]["equal_time
 assert "--mode point" in rows["restir-point"]["settings"], rows["restir-point"]
 assert "--method uniform" in rows["uniform"]["settings"] and "--shadow-rays" in rows["uniform"]["settings"], rows["uniform"]
 assert rows["restir"]["versus"]["restir"]["mse_ratio"]["median"] == 1.0
+# MSE x time per seed over ReSTIR's, with its interval: two seeds cannot reach 90 %, so no verdict.
+for name, r in rows.items():
+    w = r["versus"]["restir"]["mse_time_ratio"]
+    ps, ref = r["per_seed"], rows["restir"]["per_seed"]
+    expect = sorted(m * t / (rm * rt) for m, t, rm, rt in zip(ps["mse"], ps["ms"], ref["mse"], ref["ms"]))
+    assert math.isclose(w["low"], expect[0]) and math.isclose(w["high"], expect[1]), (name, w, expect)
+    assert math.isclose(w["median"], sum(expect) / 2) and w["coverage"] == 0.5, (name, w)
+    assert w["verdict"] == "unresolved", (name, w)
 PY
 
 # The table: a header naming the ratio columns, one line per row.
-grep -q "^| scene | emitters | row | equal time | ms (÷ restir) | MSE | MAE | mean ratio | MSE ÷ restir | MAE ÷ restir |$" "$tmp/r.md" \
+grep -q "^| scene | emitters | row | equal time | ms (÷ restir) | MSE | MAE | mean ratio | MSE ÷ restir | MAE ÷ restir | MSE×time ÷ restir \[90 % interval\] |$" "$tmp/r.md" \
     || fail "markdown header: $(head -1 "$tmp/r.md")"
 [ "$(grep -c '^| cornell |' "$tmp/r.md")" -eq 5 ] || fail "markdown rows: $(cat "$tmp/r.md")"
 grep -q "^| cornell | [0-9]* | uniform | [0-9]* rays | " "$tmp/r.md" || fail "uniform's ray count: $(cat "$tmp/r.md")"

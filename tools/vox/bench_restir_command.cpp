@@ -5,9 +5,13 @@
 // median of per-seed ratios. A run's time is, on a CPU device (lavapipe), the process's CPU time
 // per frame, else its fastest frame's GPU time: on a shared machine, wall-clock and GPU
 // timestamps also count the waits for a core. Equal time: the baselines (uniform: shadow rays;
-// RIS: candidates) get as many as fit in ReSTIR's frame time, from a linear fit of their own
-// timings, once per scene, each timing taken next to one of ReSTIR's; then each seed renders every
-// row back to back. Rows are lighting knobs, so new modes are rows without code:
+// RIS: candidates) get as many as fit in ReSTIR's frame time, from a linear fit of their time as a
+// ratio to ReSTIR's, measured in interleaved rounds (metrics/interleaved_rounds.h: a drifting
+// machine slows both alike); then each seed renders every row back to back, the order reversed on
+// every other seed. A comparison is MSE x time per seed (the work-normalised error, which an
+// imperfect fit does not move), its median over seeds and the sign test's interval; a verdict
+// ("> 1": the versus row wins) only when the interval excludes 1 (--confidence), else
+// "unresolved". Rows are lighting knobs, so new modes are rows without code:
 // --variant "NAME:--knob value ..." and --sampling LIST.
 #include <algorithm>
 #include <chrono>
@@ -23,6 +27,8 @@
 #include "gpu/context.h"
 #include "lighting_options.h"
 #include "lighting/lighting_knobs.h"
+#include "metrics/interleaved_rounds.h"
+#include "metrics/median_interval.h"
 #include "metrics/seed_statistics.h"
 #include "number_options.h"
 #include "render/renderer.h"
@@ -47,6 +53,7 @@ struct RestirBenchOptions {
     std::string sampling;  // empty: the sampling knob's default
     std::vector<std::string> variants;
     std::string versus;  // empty: every ReSTIR row at defaults (one per --sampling value)
+    double confidence = 0.9;  // of the verdicts' intervals; 5 seeds' min-max covers 93.75 %
     std::string clock = "auto";  // gpu: fastest frame's GPU timestamps; cpu: the process's CPU time; auto: cpu on a CPU device
     bool quick = false;
     std::string output = "out/bench_restir.json";  // and the summary CSV beside it (.csv), for vox bench recommend
@@ -206,6 +213,23 @@ std::string cell(const SeedSummary& s, const char* format) {
                        fmt::format(fmt::runtime(format), s.max));
 }
 
+// A row's MSE x time over the versus row's, per seed: the work-normalised error ratio (inverse
+// relative efficiency), which an imperfect equal-time fit barely moves (MSE ~ 1 / samples). Its
+// median over seeds with the sign test's interval.
+engine::metrics::MedianInterval workNormalisedRatio(const RowResult& r, const RowResult& versus, double confidence) {
+    std::vector<double> row, yardstick;
+    for (std::size_t s = 0; s < std::min(r.mse.size(), versus.mse.size()); ++s) {
+        row.push_back(r.mse[s] * r.ms[s]);
+        yardstick.push_back(versus.mse[s] * versus.ms[s]);
+    }
+    return engine::metrics::medianInterval(engine::metrics::perSeedRatios(row, yardstick), confidence);
+}
+
+std::string jsonInterval(const engine::metrics::MedianInterval& m, double confidence) {
+    return fmt::format("{{\"median\": {}, \"low\": {}, \"high\": {}, \"coverage\": {}, \"verdict\": \"{}\"}}", m.median,
+                       m.low, m.high, m.covered, engine::metrics::verdictName(engine::metrics::verdictOf(m, confidence)));
+}
+
 std::string scaledText(const Row& row, const RowResult& r) {
     if (row.scale == EqualTime::ShadowRays) return fmt::format("{} rays", r.scaledTo);
     if (row.scale == EqualTime::Candidates) return fmt::format("M = {}", r.scaledTo);
@@ -269,8 +293,9 @@ int runRestirBench(RestirBenchOptions o) {
                                     (*rows)[(*versus)[0]].name);
     std::string rule = "| --- | ---: | --- | ---: | ---: | ---: | ---: | ---: |";
     for (std::size_t v : *versus) {
-        table += fmt::format(" MSE ÷ {0} | MAE ÷ {0} |", (*rows)[v].name);
-        rule += " ---: | ---: |";
+        table += fmt::format(" MSE ÷ {0} | MAE ÷ {0} | MSE×time ÷ {0} [{1:.0f} % interval] |", (*rows)[v].name,
+                             100.0 * o.confidence);
+        rule += " ---: | ---: | ---: |";
     }
     table += "\n" + rule + "\n";
 
@@ -290,8 +315,15 @@ int runRestirBench(RestirBenchOptions o) {
         const std::size_t timed = (*versus)[0];
         std::vector<LightingSettings> settings;
         for (const Row& row : *rows) settings.push_back(row.lighting);
-        auto timeOf = [&](const LightingSettings& l) {
-            return timeOfPoint(measureSetting(renderer, scene, camera, fs, l, o.frames, reference, ""));
+        // A setting's time as a ratio to the yardstick's: the median of per-round ratios over
+        // interleaved rounds, so a machine that slows down during the fit slows both.
+        const engine::metrics::RoundsPlan fitRounds{1, 6, 10, 0.95, 0.05};
+        auto ratioToYardstick = [&](const LightingSettings& l) {
+            const LightingSettings* pair[2] = {&settings[timed], &l};
+            auto t = engine::metrics::measureInterleaved(2, [&](std::size_t k) {
+                return timeOfPoint(measureSetting(renderer, scene, camera, fs, *pair[k], o.frames, reference, ""));
+            }, fitRounds);
+            return t.ratioToFirst[1];
         };
         for (std::size_t i = 0; i < rows->size(); ++i) {
             const Row& row = (*rows)[i];
@@ -301,37 +333,37 @@ int runRestirBench(RestirBenchOptions o) {
             const std::uint32_t maxN = row.scale == EqualTime::ShadowRays ? 4096u : 1024u;  // the knobs' ranges
             std::fprintf(stderr, "  %s: %s: fitting its time to %s's\n", scene.name.c_str(), row.name.c_str(),
                          (*rows)[timed].name.c_str());
-            // Fit time = base + slope x n from n = 1 and 16, pick n for the yardstick's time, then
-            // up to three correction steps until within 10 % (timings are noisy and not quite
-            // linear). Times are each measurement's fastest frame, the least disturbed one.
-            double target = timeOf(settings[timed]);
+            // Fit ratio = base + slope x n from n = 1 and 16 (in units of the yardstick's time),
+            // pick n for a ratio of 1, then up to three correction steps until within 10 %
+            // (timings are not quite linear).
             n = 1;
-            double t1 = timeOf(l);
+            const double r1 = ratioToYardstick(l).median;
             n = 16;
-            double t16 = timeOf(l);
-            double slope = std::max((t16 - t1) / 15.0, 1e-3 * std::max(t1, 1e-3));
-            double base = t1 - slope;
-            auto countFor = [&](double perUnit) {  // at least 1: the target may be below the fitted base
-                return std::uint32_t(std::clamp(std::round((target - base) / perUnit), 1.0, double(maxN)));
+            const double r16 = ratioToYardstick(l).median;
+            const double slope = std::max((r16 - r1) / 15.0, 1e-3 * std::max(r1, 1e-3));
+            const double base = r1 - slope;
+            auto countFor = [&](double perUnit) {  // at least 1: the yardstick may be below the fitted base
+                return std::uint32_t(std::clamp(std::round((1.0 - base) / perUnit), 1.0, double(maxN)));
             };
-            std::fprintf(stderr, "    %s: 1: %.2f ms, 16: %.2f ms; %s: %.2f ms\n", row.name.c_str(), t1, t16,
-                         (*rows)[timed].name.c_str(), target);
+            std::fprintf(stderr, "    %s: time / %s's: %.3f at 1, %.3f at 16\n", row.name.c_str(),
+                         (*rows)[timed].name.c_str(), r1, r16);
             n = countFor(slope);
             for (int step = 0; step < 3; ++step) {
-                double tn = timeOf(l);
-                std::fprintf(stderr, "    %s: %u: %.2f ms against %.2f ms\n", row.name.c_str(), n, tn, target);
-                if (std::abs(tn - target) < 0.1 * target) break;
-                std::uint32_t next = countFor(std::max((tn - base) / double(n), 1e-6));
+                const engine::metrics::MedianInterval rn = ratioToYardstick(l);
+                std::fprintf(stderr, "    %s: %u: %.3f (%.3f–%.3f) of %s's time\n", row.name.c_str(), n, rn.median, rn.low,
+                             rn.high, (*rows)[timed].name.c_str());
+                if (std::abs(rn.median - 1.0) < 0.1) break;
+                std::uint32_t next = countFor(std::max((rn.median - base) / double(n), 1e-6));
                 if (next == n) break;
                 n = next;
-                target = timeOf(settings[timed]);
             }
             results[i].scaledTo = n;
         }
         // Then the seeds, every row of a seed back to back: the per-seed time ratios compare
         // measurements close in time.
         for (std::uint32_t seed = 0; seed < o.seeds; ++seed) {
-            for (std::size_t i = 0; i < rows->size(); ++i) {
+            for (std::size_t k = 0; k < rows->size(); ++k) {
+                const std::size_t i = seed % 2 == 0 ? k : rows->size() - 1 - k;  // A B .., .. B A: drift cancels
                 LightingSettings l = settings[i];
                 l.seed += seed * 104729u;  // far apart: memoryless rows step the seed per frame
                 std::fprintf(stderr, "  [%zu/%zu] %s: %s, seed %u/%u\n", ++done, total, scene.name.c_str(),
@@ -391,16 +423,20 @@ int runRestirBench(RestirBenchOptions o) {
                 SeedSummary mseRatio = engine::metrics::summarize(engine::metrics::perSeedRatios(r.mse, d.mse));
                 SeedSummary maeRatio = engine::metrics::summarize(engine::metrics::perSeedRatios(r.mae, d.mae));
                 SeedSummary msRatio = engine::metrics::summarize(engine::metrics::perSeedRatios(r.ms, d.ms));
-                json << fmt::format("{}{}: {{\"mse_ratio\": {}, \"mae_ratio\": {}, \"ms_ratio\": {}}}", k ? ", " : "",
-                                    jsonString((*rows)[(*versus)[k]].name), jsonSummary(mseRatio), jsonSummary(maeRatio),
-                                    jsonSummary(msRatio));
+                const engine::metrics::MedianInterval work = workNormalisedRatio(r, d, o.confidence);
+                const std::string_view verdict = engine::metrics::verdictName(engine::metrics::verdictOf(work, o.confidence));
+                json << fmt::format("{}{}: {{\"mse_ratio\": {}, \"mae_ratio\": {}, \"ms_ratio\": {}, \"mse_time_ratio\": {}}}",
+                                    k ? ", " : "", jsonString((*rows)[(*versus)[k]].name), jsonSummary(mseRatio),
+                                    jsonSummary(maeRatio), jsonSummary(msRatio), jsonInterval(work, o.confidence));
                 if ((*versus)[k] == i) {
-                    table += " — | — |";
+                    table += " — | — | — |";
                     continue;
                 }
-                table += fmt::format(" **{:.2f}×** ({:.2f}–{:.2f}) | {:.2f}× ({:.2f}–{:.2f}) |", mseRatio.median, mseRatio.min,
-                                     mseRatio.max, maeRatio.median, maeRatio.min, maeRatio.max);
-                std::printf("  ÷%s MSE %.2fx MAE %.2fx", (*rows)[(*versus)[k]].name.c_str(), mseRatio.median, maeRatio.median);
+                table += fmt::format(" **{:.2f}×** ({:.2f}–{:.2f}) | {:.2f}× ({:.2f}–{:.2f}) | {:.2f}× [{:.2f}–{:.2f}] {} |",
+                                     mseRatio.median, mseRatio.min, mseRatio.max, maeRatio.median, maeRatio.min,
+                                     maeRatio.max, work.median, work.low, work.high, verdict);
+                std::printf("  ÷%s MSE %.2fx MAE %.2fx MSE×time %.2fx [%.2f–%.2f] %s", (*rows)[(*versus)[k]].name.c_str(),
+                            mseRatio.median, maeRatio.median, work.median, work.low, work.high, std::string(verdict).c_str());
             }
             std::printf("\n");
             table += "\n";
@@ -413,6 +449,9 @@ int runRestirBench(RestirBenchOptions o) {
     if (engine::Status s = jsonFile.commit(); !s) return fail(s.error());
     if (engine::Status s = csvFile.commit(); !s) return fail(s.error());
     std::printf("\nratio = row / versus row per seed, median (min–max): above 1 favours the versus row (ReSTIR)\n");
+    std::printf("MSE×time: the work-normalised ratio with the sign test's %.0f %% interval over seeds; \"> 1\" (the "
+                "versus row wins) or \"< 1\" only when the interval excludes 1, else unresolved\n",
+                100.0 * o.confidence);
     std::printf("wall time %.0f s (references included; cached ones are read back)\n", seconds);
     std::printf("wrote    %s\nwrote    %s\n", out.string().c_str(), csvPath.string().c_str());
     if (!o.markdown.empty()) {
@@ -457,6 +496,10 @@ void addBenchRestirCommand(CLI::App& bench, int& exitCode) {
                     "auto (cpu on a CPU device such as lavapipe)")
         ->capture_default_str()
         ->check(CLI::IsMember({"auto", "gpu", "cpu"}));
+    cmd->add_option("--confidence", o->confidence,
+                    "Confidence of the intervals behind a verdict (5 seeds' min-max covers 93.75 %: 0.95 needs 6)")
+        ->capture_default_str()
+        ->check(CLI::Range(0.5, 0.999));
     cmd->add_flag("--quick", o->quick, "A first look: 64x40, 8 frames, 256 spp reference (over --size, --frames, --ref-spp)");
     cmd->add_option("-o,--output", o->output, "JSON results file")->capture_default_str();
     cmd->add_option("--markdown", o->markdown, "Also write the table as markdown here");
