@@ -72,14 +72,17 @@ int runImport(const std::string& input, const std::string& output, bool dryRun, 
         if (engine::Status s = engine::io::exportVdb(*scene, payload); !s) return fail(s.error());
     } else {
         // Atomic as a pair (scene/world_pair.h): the payload gets a new name WORLD.N.vdb, so the
-        // input and the previous import stay intact until the scene file naming it is in place.
+        // input and the previous import stay intact until the scene file naming it is in place;
+        // then only the earlier payloads of this world go (never the input, nor a VDB sequence
+        // it belongs to).
         auto text = [&](const std::string& payloadName) {
             payload = out.parent_path() / payloadName;
             std::vector<engine::world::GeneratorRecord> generators{engine::scene::vdbPayloadGenerator(payloadName, /*ids=*/false)};
             std::string comment = fmt::format(
-                "Imported by `vox import` from {}.\nVoxels and palette live in {} (voxengine's VDB layout, docs/VDB.md);\n"
+                "{} from {}.\nVoxels and palette live in {} (voxengine's VDB layout, "
+                "docs/VDB.md);\n"
                 "a [[material]] defined here with the same name overrides the payload's.",
-                fs::path(input).filename().string(), payloadName);
+                engine::scene::kImportMarker, fs::path(input).filename().string(), payloadName);
             return engine::scene::sceneText(*scene, {.headerComment = comment, .generators = &generators});
         };
         if (engine::Status s = engine::scene::writeWorldPair(*scene, out, text, {.keep = {fs::path(input)}}); !s)
