@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 #include <filesystem>
 
+#include "command_files.h"
 #include "commands.h"
 #include "io/vdb_export.h"
 #include "io/vdb_import.h"
@@ -62,10 +63,21 @@ int runImport(const std::string& input, const std::string& output, bool dryRun, 
     }
     if (output.empty()) return fail(engine::makeError("{}: give -o WORLD.toml or WORLD.vdb (or --dry-run)", input));
     if (ext != ".toml" && ext != ".vdb") return fail(engine::makeError("-o {}: the file must end in .toml or .vdb", output));
+    if (engine::Status s = checkCommandFiles({{"the input", input}}, {{"-o", output}}); !s)
+        return fail(s.error());
+    // A scene file is replaced only if vox wrote it (an import or a save): a hand-written one
+    // may hold cameras, sky and generators nobody could restore.
+    std::error_code ec;
+    if (ext == ".toml" && fs::is_regular_file(out, ec) &&
+        !engine::scene::sceneFileMarked(out, engine::scene::kImportMarker) &&
+        !engine::scene::sceneFileMarked(out, engine::scene::kSaveMarker))
+        return fail(engine::makeError(
+            "{}: a scene file not written by vox import or vox play; refusing to replace it "
+            "(give -o a new name)",
+            output));
 
     auto scene = importFile(input, *options, reportText, peakBytes);
     if (!scene) return fail(scene.error());
-    std::error_code ec;
     if (out.has_parent_path()) fs::create_directories(out.parent_path(), ec);  // like every output of vox
     fs::path payload = out;
     if (ext == ".vdb") {
