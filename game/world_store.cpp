@@ -1,10 +1,10 @@
 #include "game/world_store.h"
 
-#include <cctype>
 #include <string>
 
 #include <fmt/format.h>
 
+#include "game/world_file_stem.h"
 #include "io/vdb_export.h"
 #include "io/vdb_import.h"
 #include "io/vox_import.h"
@@ -103,14 +103,7 @@ private:
 }  // namespace
 
 fs::path defaultSavePath(std::string_view worldName) {
-    std::string safe;
-    for (char c : worldName) {
-        const bool allowed = std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.' || c == ' ';
-        if (safe.size() < 64) safe += allowed ? c : '_';
-    }
-    while (!safe.empty() && (safe.front() == '.' || safe.front() == ' ')) safe.erase(safe.begin());  // no "..", no hidden file
-    if (safe.empty()) safe = "untitled";
-    return fs::path("saves") / (safe + ".toml");
+    return fs::path("saves") / (worldFileStem(worldName) + ".toml");
 }
 
 std::unique_ptr<WorldStore> makeWorldStore(SaveFaults faults) { return std::make_unique<VdbWorldStore>(std::move(faults)); }

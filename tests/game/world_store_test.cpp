@@ -529,6 +529,21 @@ TEST(WorldStore, ASecondWriterOfOneWorldIsRefusedWhileTheFirstWrites) {
     EXPECT_EQ(countFiles(dir.path(), ".vdb"), 1u);
 }
 
+// Issue 41, item 13: the names ".", "" and "   " all saved to saves/untitled.toml (and "a/b",
+// "a\\b", "a_b" all to saves/a_b.toml), so a later save silently replaced another world's.
+TEST(WorldStore, DifferentWorldNamesNeverShareADefaultSave) {
+    const char* names[] = {".",   "",     "   ", "untitled", "..",  "....",
+                           "a/b", "a\\b", "a_b", "x\ny",     "x y", "/"};
+    std::set<fs::path> paths;
+    for (const char* name : names) {
+        const fs::path p = game::defaultSavePath(name);
+        EXPECT_TRUE(paths.insert(p).second) << "'" << name << "' shares " << p;
+        EXPECT_EQ(p.parent_path(), fs::path("saves")) << p;
+    }
+    EXPECT_EQ(game::defaultSavePath("a_b"),
+              fs::path("saves/a_b.toml"));  // a name that is safe stays as it is
+}
+
 // Issue 41, item 11 for saves: a scene file name near NAME_MAX (255 bytes) left no room for the
 // payload's ".N.vdb" or an object's ".object-HASH.vdb"; their stem is shortened instead.
 TEST(WorldStore, ASaveWithAFileNameNearTheLimitWorks) {
