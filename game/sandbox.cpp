@@ -26,6 +26,7 @@
 #include "game/undo_history.h"
 #include "game/walk_controller.h"
 #include "game/window.h"
+#include "game/world_file_stem.h"
 #include "game/world_store.h"
 #include "gpu/context.h"
 #include "gpu/presenter.h"
@@ -508,7 +509,9 @@ void Sandbox::handleInput(float dt) {
     if (mInput.pressed(GLFW_KEY_TAB)) mHud.visible = !mHud.visible;
     if (mInput.pressed(GLFW_KEY_F1)) mHud.showKeys = !mHud.showKeys;
     if (mInput.pressed(GLFW_KEY_F12)) {
-        fs::path path = fs::path("screenshots") / fmt::format("{}-{}.png", mScene.name, mFrame);
+        // Named after the world, made safe: a scene's `name` is any text ("../x", "/").
+        fs::path path =
+            fs::path("screenshots") / fmt::format("{}-{}.png", worldFileStem(mScene.name), mFrame);
         if (mInput.shift()) {
             mPendingRenderPath = path;
         } else {

@@ -49,6 +49,13 @@ engine::Result<engine::world::Scene> loadWorld(const std::string& nameOrPath) {
     return engine::scene::loadSceneFile(*path);
 }
 
+std::filesystem::path worldFileOf(const std::string& nameOrPath) {
+    const std::string ext = std::filesystem::path(nameOrPath).extension().string();
+    if (ext == ".vdb" || ext == ".vox") return nameOrPath;
+    auto path = engine::scene::resolveWorldPath(nameOrPath.empty() ? "sandbox" : nameOrPath);
+    return path ? *path : std::filesystem::path();
+}
+
 engine::Result<std::filesystem::path> resolvePathFile(const std::string& arg) {
     namespace fs = std::filesystem;
     std::error_code ec;
