@@ -6,15 +6,16 @@
 # Usage: screenshot_names_test.sh VOX
 set -u
 vox="$1"
-if ! command -v xvfb-run >/dev/null 2>&1; then
-    echo "SKIP: xvfb-run not found (apt-get install xvfb; tools/setup.sh installs it)"
+source "$(dirname "$0")/own_display.sh"
+if ! own_display_available; then
+    echo "SKIP: Xvfb not found (apt-get install xvfb; tools/setup.sh installs it)"
     exit 77
 fi
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
-xvfb() { xvfb-run -a -n $((100 + RANDOM % 800)) -s "-screen 0 640x480x24" "$@"; }
+start_own_display 640x480 || exit 1
 
 printf '2 tap F12\n+2 quit\n' > "$tmp/f12.script"
 i=0
@@ -25,7 +26,7 @@ for name in "../outside" "$tmp/absolute" "/" "a/../../b" ".hidden"; do
     printf '[world]\nname = "%s"\nsize = [32, 16, 32]\n[[material]]\nname = "a"\n[[generator]]\ntype = "box"\nmin = [0, 0, 0]\nmax = [32, 4, 32]\nmaterial = "a"\n' \
         "$name" > "$run/world.toml"
     atRoot=$(find / -xdev -maxdepth 1 -name '*.png' 2>/dev/null | sort)
-    (cd "$run" && xvfb "$vox" play world.toml --script "$tmp/f12.script" --size 320x180 --method preview >play.out 2>play.err)
+    (cd "$run" && "$vox" play world.toml --script "$tmp/f12.script" --size 320x180 --method preview >play.out 2>play.err)
     rc=$?
     stray=$(comm -13 <(echo "$atRoot") <(find / -xdev -maxdepth 1 -name '*.png' 2>/dev/null | sort))
     [ -n "$stray" ] && rm -f -- $stray
