@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# Prints one line per render of a fixed set: the world, the method and the MD5 of the linear EXR.
+# Prints one line per render of a fixed set: the world, the technique and the MD5 of the linear EXR.
+# Every technique is in the set: each direct method, the indirect terms (cache, path, VCT), the
+# sky terms (DVF and its reference), ReGIR sampling and light tiles.
 # A refactor that must not change images runs this before and after and diffs the two lists:
 #   tools/render_fingerprints.sh build/release/tools/vox/vox > before.txt
 set -euo pipefail
@@ -16,6 +18,16 @@ methods=(
   "preview:--method preview"
   "reference:--method reference --spp 2 --bounces 1"
   "cache:--method restir --indirect cache --frames 3"
+  "bruteforce:--method bruteforce"
+  "regir:--method restir --sampling regir --frames 3"
+  "ris-regir:--method ris --sampling regir"
+  "light-tiles:--method restir --light-tiles on --frames 3"
+  "cache-tiles:--method ris --indirect cache --light-tiles on --frames 2"
+  "path:--method restir --indirect path --frames 2"
+  "vct:--method restir --indirect vct --frames 3"
+  "vct-bounce:--method ris --indirect vct --vct-bounce on --vct-leak-mitigation off --frames 2"
+  "sky-dvf:--method restir --sky dvf --frames 3"
+  "sky-reference:--method uniform --sky reference --frames 2"
 )
 for world in "${worlds[@]}"; do
   for entry in "${methods[@]}"; do
