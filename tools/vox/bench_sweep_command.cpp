@@ -1,6 +1,6 @@
 // vox bench sweep: lighting methods x settings on each scene, each point's time and error from
 // the same run, written as CSV/JSON and charted (error against milliseconds, Pareto front joined,
-// tools/plot_sweep.py; the points: sweep_points.h).
+// tools/plot_sweep.py); with --scheduler its points become the tasks of a job (sweep_job.h).
 // vox bench recommend: the cheapest setting a sweep found that meets a target error on a scene —
 // model no more than the scene needs; with --sampling, ReSTIR's candidate sampling per scene from
 // `vox bench restir`'s seeds.
@@ -16,8 +16,10 @@
 #include "commands.h"
 #include "core/atomic_file.h"
 #include "gpu/context.h"
+#include "job_status.h"
 #include "lighting_options.h"
 #include "number_options.h"
+#include "sweep_job.h"
 #include "sweep_points.h"
 #include "sweep_runner.h"
 
@@ -29,6 +31,10 @@ using engine::lighting::LightingSettings;
 using engine::lighting::Method;
 
 int runSweep(const SweepOptions& o) {
+    if (!o.status.empty()) return job::printJobStatus(o.status);
+    if (!o.join.empty()) return joinSweep(o.join);
+    if (o.jobTask) return runSweepTask(o);
+    if (!o.job.scheduler.empty()) return submitSweepJob(o);
     auto plan = planSweep(o);
     if (!plan) return fail(plan.error());
     auto ctx = engine::gpu::Context::create({});
@@ -208,6 +214,12 @@ void addBenchSweepCommand(CLI::App& bench, int& exitCode) {
         ->capture_default_str()
         ->check(numberIn(kSamplesRange));
     cmd->add_option("-o,--output", o->output, "Output folder")->capture_default_str();
+    job::addJobOptions(*cmd, o->job);
+    cmd->add_option("--join", o->join, "Join the sweep job in DIR: the CSV and charts of one run")
+        ->type_name("DIR");
+    cmd->add_option("--status", o->status, "Where the sweep job in DIR stands")->type_name("DIR");
+    cmd->add_option("--job-task", o->jobTask, "Measure task I's points of the job in --output")
+        ->group("");
     cmd->callback([o, &exitCode] { exitCode = runSweep(*o); });
 
     auto* rec = bench.add_subcommand("recommend", "The cheapest swept setting that meets a target MAE on a scene");

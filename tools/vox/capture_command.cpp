@@ -1,7 +1,9 @@
 // vox capture: plays a world's flythrough (camera path + timed events) headless and writes every
 // frame as PNG (and linear EXR on request), a per-frame CSV of GPU pass timings and counts, a
-// contact sheet and, when ffmpeg is on PATH, an MP4. `--frames A:B --warmup W` renders a slice
-// so a long capture can be split across machines (docs/CAPTURE.md).
+// contact sheet and, when ffmpeg is on PATH, an MP4. `--frames A:B --warmup W` renders a slice;
+// `--scheduler slurm|parallel|local --tasks N` splits the capture into a job of slices, resumed
+// by the same command, followed with `--status DIR` and joined by `--join DIR` (capture_job.h,
+// docs/CAPTURE.md).
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -10,6 +12,8 @@
 #include <vector>
 
 #include "capture_csv.h"
+#include "capture_job.h"
+#include "capture_join.h"
 #include "capture_options.h"
 #include "capture_render.h"
 #include "capture_sheet.h"
@@ -18,6 +22,7 @@
 #include "core/folder_lock.h"
 #include "ffmpeg_video.h"
 #include "gpu/context.h"
+#include "job_status.h"
 #include "lighting_options.h"
 #include "number_options.h"
 
@@ -110,6 +115,18 @@ int runCapture(const CaptureOptions& o) {
     return 0;
 }
 
+int runCaptureCommand(const CaptureOptions& o) {
+    if (!o.status.empty()) return job::printJobStatus(o.status);
+    if (!o.join.empty()) return joinCapture(o.join);
+    if (o.jobTask) {
+        if (o.out.empty())
+            return fail(engine::makeError("--job-task: give the job's folder with --out"));
+        return runCaptureTask(o);
+    }
+    if (!o.job.scheduler.empty()) return submitCaptureJob(o);
+    return runCapture(o);
+}
+
 }  // namespace
 
 void addCaptureCommand(CLI::App& app, int& exitCode) {
@@ -120,7 +137,7 @@ void addCaptureCommand(CLI::App& app, int& exitCode) {
                     "World name (worlds/NAME.toml) or scene file; default: sandbox");
     cmd->add_option("--path", o->path,
                     "Path file or name in worlds/paths/ (default: the world's own [path])");
-    cmd->add_option("--out", o->out, "Output folder")->required();
+    cmd->add_option("--out", o->out, "Output folder");
     cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
     cmd->add_option("--fps", o->fps, "Frames per second (default: the path's fps, else 30)")
         ->check(numberIn(engine::world::kFpsRange));
@@ -138,7 +155,17 @@ void addCaptureCommand(CLI::App& app, int& exitCode) {
         ->capture_default_str()
         ->check(numberIn(kExposureRange));
     addLightingOptions(*cmd, o->lighting);
-    cmd->callback([o, &exitCode] { exitCode = runCapture(*o); });
+    job::addJobOptions(*cmd, o->job);
+    cmd->add_option("--join", o->join,
+                    "Join the job in DIR: one CSV, contact sheet and MP4; refuses while frames are "
+                    "missing or damaged")
+        ->type_name("DIR");
+    cmd->add_option("--status", o->status,
+                    "Where the job in DIR stands: frames per task, states, failures, ETA")
+        ->type_name("DIR");
+    // What a scheduler runs for task I (through `vox job run`), not for people: hidden.
+    cmd->add_option("--job-task", o->jobTask, "Render task I of the job in --out")->group("");
+    cmd->callback([o, &exitCode] { exitCode = runCaptureCommand(*o); });
 }
 
 }  // namespace vox

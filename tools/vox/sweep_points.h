@@ -1,7 +1,7 @@
 // The points of `vox bench sweep`: every world × (the direct-light settings, then the indirect-
 // light series), numbered in that order from 0, each measured on a fresh renderer against its
 // world's cached reference — so a point's errors do not depend on which points ran before it, in
-// this process or another.
+// this process or another, and a job's tasks (sweep_job.h) give the same rows as one process.
 #pragma once
 
 #include <cstdint>
@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "job_scheduler.h"
 #include "lighting/lighting_settings.h"
 
 namespace engine::gpu {
@@ -37,6 +38,10 @@ struct SweepOptions {
     std::uint32_t indirectBounces = 3;
     std::uint32_t indirectReferenceSpp = 512;
     std::string output = "out/sweep";
+    job::JobOptions job;       // --scheduler …: points as the tasks of a job (sweep_job.h)
+    std::string join, status;  // --join DIR, --status DIR
+    // --job-task I: measure task I's points of the job in --output
+    std::optional<std::uint32_t> jobTask;
 };
 
 std::vector<std::string> splitList(const std::string& s);
