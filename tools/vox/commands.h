@@ -23,6 +23,7 @@ void addCompareCommand(CLI::App& app, int& exitCode);
 void addCaptureCommand(CLI::App& app, int& exitCode);
 void addExportCommand(CLI::App& app, int& exitCode);
 void addImportCommand(CLI::App& app, int& exitCode);
+void addJobCommand(CLI::App& app, int& exitCode);
 void addBenchTraverseCommand(CLI::App& bench, int& exitCode);
 void addBenchEmittersCommand(CLI::App& bench, int& exitCode);
 void addBenchRestirCommand(CLI::App& bench, int& exitCode);

@@ -131,6 +131,7 @@ int main(int argc, char** argv) {
     vox::addCaptureCommand(app, exitCode);
     vox::addExportCommand(app, exitCode);
     vox::addImportCommand(app, exitCode);
+    vox::addJobCommand(app, exitCode);
     CLI::App* bench = app.add_subcommand("bench", "Benchmarks (results as CSV/JSON under out/)");
     bench->require_subcommand(1);
     vox::addBenchTraverseCommand(*bench, exitCode);
