@@ -608,7 +608,7 @@ void addBenchRestirCommand(CLI::App& bench, int& exitCode) {
                     "Confidence of the intervals behind a verdict (5 seeds' min-max covers 93.75 "
                     "%: 0.95 needs 6)")
         ->capture_default_str()
-        ->check(CLI::Range(0.5, 0.999));
+        ->check(numberIn(engine::closedRange(0.5, 0.999)));
     cmd->add_flag(
         "--quick", o->quick,
         "A first look: 64x40, 8 frames, 256 spp reference (over --size, --frames, --ref-spp)");
