@@ -6,9 +6,11 @@ namespace engine::metrics {
 
 namespace {
 
-std::vector<MedianInterval> ratiosToFirst(const std::vector<std::vector<double>>& times, double confidence) {
+std::vector<MedianInterval> ratiosToFirst(const std::vector<std::vector<double>>& times,
+                                          double confidence) {
     std::vector<MedianInterval> out;
-    for (const std::vector<double>& t : times) out.push_back(medianInterval(perSeedRatios(t, times[0]), confidence));
+    for (const std::vector<double>& t : times)
+        out.push_back(medianInterval(perSeedRatios(t, times[0]), confidence));
     return out;
 }
 
@@ -22,7 +24,8 @@ bool narrowEnough(const std::vector<MedianInterval>& ratios, const RoundsPlan& p
 
 }  // namespace
 
-InterleavedTimes measureInterleaved(std::size_t alternatives, const std::function<double(std::size_t)>& measure,
+InterleavedTimes measureInterleaved(std::size_t alternatives,
+                                    const std::function<double(std::size_t)>& measure,
                                     const RoundsPlan& plan) {
     InterleavedTimes out;
     out.times.resize(alternatives);

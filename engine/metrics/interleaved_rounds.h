@@ -26,13 +26,15 @@ struct RoundsPlan {
 
 struct InterleavedTimes {
     std::vector<std::vector<double>> times;  // [alternative][round], warm-up excluded
-    std::vector<MedianInterval> ratioToFirst;  // per alternative: time / the first's time, per round
+    std::vector<MedianInterval>
+        ratioToFirst;  // per alternative: time / the first's time, per round
     std::uint32_t rounds = 0;
     bool converged = false;  // every ratio reached the half width within the budget
 };
 
 // measure(i) measures alternative i once and returns its time (any unit, > 0).
-InterleavedTimes measureInterleaved(std::size_t alternatives, const std::function<double(std::size_t)>& measure,
+InterleavedTimes measureInterleaved(std::size_t alternatives,
+                                    const std::function<double(std::size_t)>& measure,
                                     const RoundsPlan& plan = {});
 
 }  // namespace engine::metrics

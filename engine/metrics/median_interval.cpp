@@ -68,9 +68,12 @@ Verdict verdictOf(const MedianInterval& ratio, double confidence) {
 
 std::string_view verdictName(Verdict v) {
     switch (v) {
-        case Verdict::Above: return "> 1";
-        case Verdict::Below: return "< 1";
-        case Verdict::Unresolved: break;
+        case Verdict::Above:
+            return "> 1";
+        case Verdict::Below:
+            return "< 1";
+        case Verdict::Unresolved:
+            break;
     }
     return "unresolved";
 }

@@ -14,7 +14,8 @@ namespace engine::metrics {
 
 struct MedianInterval {
     double low = 0.0, median = 0.0, high = 0.0;
-    double covered = 0.0;  // the interval's actual coverage (>= the asked confidence when enough values)
+    double covered =
+        0.0;  // the interval's actual coverage (>= the asked confidence when enough values)
     std::size_t count = 0;
 };
 

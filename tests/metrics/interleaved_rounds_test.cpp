@@ -1,11 +1,12 @@
 #include "metrics/interleaved_rounds.h"
-#include "metrics/seed_statistics.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <random>
 #include <vector>
+
+#include "metrics/seed_statistics.h"
 
 using namespace engine::metrics;
 
@@ -42,15 +43,18 @@ TEST(MedianInterval, TooFewValuesCannotReachTheConfidence) {
     MedianInterval m = medianInterval(five);
     EXPECT_DOUBLE_EQ(m.low, 1.1);
     EXPECT_DOUBLE_EQ(m.high, 1.5);
-    EXPECT_DOUBLE_EQ(m.covered, 1.0 - 2.0 / 32.0);  // min-max of 5 covers 93.75 %
+    EXPECT_DOUBLE_EQ(m.covered, 1.0 - 2.0 / 32.0);       // min-max of 5 covers 93.75 %
     EXPECT_EQ(verdictOf(m, 0.95), Verdict::Unresolved);  // all above 1, but not at 95 %
     EXPECT_EQ(verdictOf(m, 0.90), Verdict::Above);
 }
 
 TEST(MedianInterval, VerdictNeedsTheWholeIntervalOnOneSide) {
-    EXPECT_EQ(verdictOf(medianInterval(std::vector<double>{1.2, 1.3, 1.1, 1.25, 1.4, 1.15, 1.3})), Verdict::Above);
-    EXPECT_EQ(verdictOf(medianInterval(std::vector<double>{0.8, 0.7, 0.9, 0.85, 0.75, 0.6, 0.8})), Verdict::Below);
-    EXPECT_EQ(verdictOf(medianInterval(std::vector<double>{0.9, 1.3, 1.1, 1.2, 1.4, 1.15, 1.3})), Verdict::Unresolved);
+    EXPECT_EQ(verdictOf(medianInterval(std::vector<double>{1.2, 1.3, 1.1, 1.25, 1.4, 1.15, 1.3})),
+              Verdict::Above);
+    EXPECT_EQ(verdictOf(medianInterval(std::vector<double>{0.8, 0.7, 0.9, 0.85, 0.75, 0.6, 0.8})),
+              Verdict::Below);
+    EXPECT_EQ(verdictOf(medianInterval(std::vector<double>{0.9, 1.3, 1.1, 1.2, 1.4, 1.15, 1.3})),
+              Verdict::Unresolved);
     EXPECT_EQ(verdictName(Verdict::Unresolved), "unresolved");
 }
 
@@ -67,7 +71,8 @@ TEST(MedianInterval, ProductMultipliesTheEnds) {
 TEST(InterleavedRounds, DriftFallsOnEveryAlternativeAlike) {
     // B is truly 1.2x A. Measured in blocks (all A, then all B) the drift would add ~25 % to B.
     DriftingMachine m{{10.0, 12.0}};
-    InterleavedTimes t = measureInterleaved(2, [&](std::size_t i) { return m.measure(i); }, {1, 6, 24, 0.95, 0.02});
+    InterleavedTimes t =
+        measureInterleaved(2, [&](std::size_t i) { return m.measure(i); }, {1, 6, 24, 0.95, 0.02});
     ASSERT_EQ(t.ratioToFirst.size(), 2u);
     EXPECT_NEAR(t.ratioToFirst[1].median, 1.2, 0.03);
     EXPECT_LE(t.ratioToFirst[1].low, 1.2 * 1.02);
@@ -104,6 +109,11 @@ TEST(InterleavedRounds, WarmupIsDiscardedAndAQuietMachineStopsEarly) {
 
 TEST(InterleavedRounds, OrderAlternatesEveryRound) {
     std::vector<std::size_t> order;
-    measureInterleaved(3, [&](std::size_t i) { order.push_back(i); return 1.0; }, {0, 2, 2, 0.95, 0.05});
+    measureInterleaved(3,
+                       [&](std::size_t i) {
+                           order.push_back(i);
+                           return 1.0;
+                       },
+                       {0, 2, 2, 0.95, 0.05});
     EXPECT_EQ(order, (std::vector<std::size_t>{0, 1, 2, 2, 1, 0}));
 }
