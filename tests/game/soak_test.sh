@@ -5,8 +5,10 @@
 # alternate frames), then the object tool on the --model crate (tests/game/crate.toml): place
 # it, move it there and back, turn it, set a key, undo and redo the key, delete it. The
 # process's resident memory (VmRSS from /proc/PID/status) is sampled through the run; after the
-# warm-up (the first quarter of the samples) it must stay flat: its largest sample at most
-# BOUND_MIB above the first sample after the warm-up. Memory, not time, is asserted.
+# warm-up (the first quarter of the samples) it must stay flat: its largest sample in the second
+# half at most BOUND_MIB above the largest in the second quarter. Largest against largest: a
+# cycle's crate (its model and the objects' grid, a 4.3 MiB brick page each) comes and goes, so
+# a sample lands with it or without it. Memory, not time, is asserted.
 # Usage: soak_test.sh VOX OUT [EDITS=2000]
 set -u
 vox="$1"; out="$2"; edits="${3:-2000}"
@@ -92,11 +94,14 @@ echo "object commands: ${counts%, } ($cycles cycles)"
 
 samples=$(grep -c . rss.txt)
 [ "$samples" -ge 20 ] || fail "only $samples RSS samples"
-# After the warm-up: the first sample, the largest and the last, in MiB.
-read -r first peak last < <(awk -v n="$samples" 'NR > int(n / 4) { if (!f) f = $1; if ($1 > m) m = $1; l = $1 }
+# After the warm-up, in MiB: the largest sample of the second quarter, of the second half, and
+# the last.
+read -r first peak last < <(awk -v n="$samples" '
+    NR > int(n / 4) && NR <= int(n / 2) { if ($1 > f) f = $1 }
+    NR > int(n / 2) { if ($1 > m) m = $1; l = $1 }
     END { printf "%.1f %.1f %.1f\n", f / 1024, m / 1024, l / 1024 }' rss.txt)
 startup=$(awk 'NR == 1 { printf "%.1f", $1 / 1024 }' rss.txt)
-echo "RSS: $samples samples; first $startup MiB; after warm-up first $first, peak $peak, last $last MiB (bound +$bound_mib MiB)"
+echo "RSS: $samples samples; first $startup MiB; after warm-up: second quarter's peak $first, second half's peak $peak, last $last MiB (bound +$bound_mib MiB)"
 awk -v a="$first" -v b="$peak" -v bound="$bound_mib" 'BEGIN { exit !(b - a <= bound) }' ||
     fail "RSS grew by more than $bound_mib MiB after the warm-up ($first -> $peak MiB)"
 
