@@ -30,7 +30,7 @@ std::uint64_t modelHash(const engine::world::DynamicObject& o, const engine::wor
     for (int z = 0; z < o.modelSize.z; ++z)
         for (int y = 0; y < o.modelSize.y; ++y)
             for (int x = 0; x < o.modelSize.x; ++x) {
-                const engine::world::MaterialId m = o.model.get({x, y, z});
+                const engine::world::MaterialId m = o.model->get({x, y, z});
                 mix(m);
                 if (m < used.size()) used[m] = true;
             }
@@ -69,7 +69,7 @@ public:
                 model.name = o.name;
                 model.voxelSize = scene.voxelSize;
                 model.palette = scene.palette;
-                model.grid = o.model;
+                model.grid = *o.model;
                 return engine::io::exportVdb(model, file);
             };
             options.extraPayloads.push_back({name, write});

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "core/memory_budget.h"
 #include "gpu/uploader.h"
 #include "render/renderer.h"
 #include "render/vct/voxel_cone_tracing.h"
@@ -44,18 +45,18 @@ MemoryPlan planMemory(const world::Scene& scene, glm::uvec2 frameSize, const lig
 std::string formatMemoryPlan(const MemoryPlan& plan, std::uint64_t budgetBytes) {
     return fmt::format(
         "{:.0f} MiB to show at {}x{}: world {:.0f}, gpu world {:.0f}, upload staging {:.0f}, frame buffers {:.0f}, "
-        "cache {:.0f}; budget {:.0f} MiB (--memory-budget)",
+        "cache {:.0f}; budget {:.0f} MiB ({})",
         mib(plan.total()), plan.frameSize.x, plan.frameSize.y, mib(plan.world), mib(plan.gpuWorld), mib(plan.upload),
-        mib(plan.frame), mib(plan.cache), mib(budgetBytes));
+        mib(plan.frame), mib(plan.cache), mib(budgetBytes),
+        addressSpaceLimits(budgetBytes) ? "3/4 of ulimit -v" : "--memory-budget");
 }
 
 Status checkMemoryPlan(const MemoryPlan& plan, std::uint64_t budgetBytes, const std::string& what) {
     if (plan.total() <= budgetBytes) return {};
     return makeError("{} needs {:.0f} MiB to show ({:.0f} the world, {:.0f} its GPU copy, {:.0f} the rest), over the "
-                     "memory budget of {:.0f} MiB: make the world smaller, or raise --memory-budget if the machine has "
-                     "the memory",
+                     "memory budget of {:.0f} MiB: make the world smaller, or {}",
                      what, mib(plan.total()), mib(plan.world), mib(plan.gpuWorld),
-                     mib(plan.upload + plan.frame + plan.cache), mib(budgetBytes));
+                     mib(plan.upload + plan.frame + plan.cache), mib(budgetBytes), memoryBudgetAdvice(budgetBytes));
 }
 
 }  // namespace engine::render

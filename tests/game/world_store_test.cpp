@@ -366,7 +366,7 @@ on = false
     EXPECT_EQ(engine::scene::test::sceneDifference(*scene, *saved), "") << bytesOf(file);
     ASSERT_EQ(saved->objects.size(), 1u);
     EXPECT_EQ(saved->objects[0].name, "dragon");
-    EXPECT_GT(saved->objects[0].model.solidVoxels(), 0u);
+    EXPECT_GT(saved->objects[0].model->solidVoxels(), 0u);
     EXPECT_EQ(saved->objects[0].path.keys().size(), 5u);
     ASSERT_TRUE(saved->path);
     EXPECT_EQ(saved->path->camera.keys().size(), 2u);

@@ -124,6 +124,9 @@ expect_error "--path nosuchpath: no such path file" -- "${c[@]}" --path nosuchpa
 expect_error "--frames: frame 40 is past the path's last frame \(11\)" -- "${c[@]}" --frames 40:50
 expect_error "--frames: expected A:B" -- "${c[@]}" --frames 3-5
 expect_error "--frames: 5:3 ends before it starts" -- "${c[@]}" --frames 5:3
+# Negative frames are refused as given, not read as 4294967295 (nor a last frame of -1 as "to the end").
+expect_error "--frames: the first frame is too small \(min 0\), not -1" -- "${c[@]}" --frames -1:
+expect_error "--frames: the last frame is too small \(min 0\), not -1" -- "${c[@]}" --frames 3:-1
 expect_error "required|--out" -- "$vox" capture "$tmp/yard.toml"
 
 [ $failures -eq 0 ] || { echo "$failures failure(s)"; exit 1; }

@@ -7,6 +7,8 @@
 #include <cstdio>
 
 #include "commands.h"
+#include "core/number_check.h"
+#include "core/quoted_string.h"
 #include "frame_rays.h"
 #include "gpu/context.h"
 #include "io/image_io.h"
@@ -19,24 +21,31 @@ namespace vox {
 
 namespace {
 
-// "A:B" (inclusive; B may be left out or run past the end) within frames 0..count-1.
+// "A:B" (inclusive; B may be left out or run past the end) within frames 0..count-1. Each
+// number goes through the one number check (core/number_check.h): "-1" is refused as such, not
+// read as 4294967295.
 engine::Result<std::pair<std::uint32_t, std::uint32_t>> parseRange(const std::string& text,
                                                                    std::uint32_t count) {
     if (text.empty()) return std::pair<std::uint32_t, std::uint32_t>{0, count - 1};
-    unsigned a = 0, b = 0;
-    char colon = 0, extra = 0;
-    int n = std::sscanf(text.c_str(), "%u%c%u%c", &a, &colon, &b, &extra);
-    if (n == 2 && colon == ':') {
-        b = count - 1;
-    } else if (n != 3 || colon != ':') {
+    const std::size_t colon = text.find(':');
+    if (colon == std::string::npos)
         return engine::makeError(
-            "--frames: expected A:B (first and last frame, inclusive) or A:, got '{}'", text);
-    }
-    if (a >= count)
-        return engine::makeError("--frames: frame {} is past the path's last frame ({})", a,
+            "--frames: expected A:B (first and last frame, inclusive) or A:, got '{}'",
+            engine::printableText(text));
+    constexpr engine::NumberRange kFrame = engine::wholeRange(0, 1e9, "frames");
+    auto a = engine::parseNumber("--frames: the first frame", text.substr(0, colon), kFrame);
+    if (!a) return a.error();
+    if (*a >= count)
+        return engine::makeError("--frames: frame {} is past the path's last frame ({})", *a,
                                  count - 1);
-    if (b < a) return engine::makeError("--frames: {}:{} ends before it starts", a, b);
-    return std::pair<std::uint32_t, std::uint32_t>{a, std::min<std::uint32_t>(b, count - 1)};
+    std::uint32_t last = count - 1;
+    if (colon + 1 < text.size()) {
+        auto b = engine::parseNumber("--frames: the last frame", text.substr(colon + 1), kFrame);
+        if (!b) return b.error();
+        if (*b < *a) return engine::makeError("--frames: {}:{} ends before it starts", *a, *b);
+        last = std::uint32_t(std::min<double>(*b, count - 1));
+    }
+    return std::pair<std::uint32_t, std::uint32_t>{std::uint32_t(*a), last};
 }
 
 // The CSV row of a frame: counts from the G-buffer and the ray statistics (docs/CAPTURE.md).
