@@ -15,7 +15,10 @@
 source "$(dirname "$0")/test_setup.sh"
 source "$(dirname "$0")/slurm_cluster.sh"
 chmod 755 "$tmp"  # munged runs as the munge user and reaches its key and socket below
-trap 'slurm_stop; rm -rf "$tmp"' EXIT
+# The lock first (tasks blocked on it end at once when cancelled), then the cluster, then the files;
+# a SIGTERM (ctest's timeout) goes through the same exit.
+trap 'exec 9>&-; slurm_stop; rm -rf "$tmp"' EXIT
+trap 'exit 1' TERM INT
 slurm_start "$tmp/slurm" || exit $?
 
 # --- helpers ---
@@ -133,6 +136,9 @@ grep -q "task 0   frames 0..3: rendering 1 of 4 (2)" "$tmp/cap/job/task_0.log" |
 status status_cancelled.txt
 grep -qE "^2 +8\.\.11 +3 +1 +0 +0 +1/3 +stopped · slurm ${array}_2 CANCELLED" "$tmp/status_cancelled.txt" ||
     { fail "status after scancel:"; cat "$tmp/status_cancelled.txt"; }
+# A cancel is the user's decision, not a failure of the task's host: only the SIGKILL is listed.
+grep -qx "failures $(hostname): 1 (task 1 attempt 1: killed by signal 9 (Killed) at [0-9TZ:-]*)" "$tmp/status_cancelled.txt" ||
+    { fail "the host's failures after scancel:"; grep "^failures" "$tmp/status_cancelled.txt"; }
 submit || { fail "second resubmit:"; cat "$tmp/submit.log"; }
 ids
 grep -q "task 2   frames 8..11: 1 of 4 to render (1 missing" "$tmp/submit.log" &&

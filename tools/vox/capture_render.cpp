@@ -168,7 +168,7 @@ engine::Result<double> renderCapture(
             if (engine::Status handed = onFrame({i, images, row}); !handed) return handed.error();
         }
         progress.update(i - request.from + 1,
-                        written ? fmt::format("frame {}", i) : fmt::format("history, frame {}", i));
+                        written ? fmt::format("frame {}", i) : fmt::format("warm-up, frame {}", i));
     }
     return progress.finish();
 }

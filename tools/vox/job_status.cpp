@@ -149,7 +149,7 @@ int printJobStatus(const fs::path& dir) {
                     task.get("attempts").number(), m->get("max_attempts").number(1), state.c_str());
         for (const engine::Json& each : task.get("runs").items()) {
             const std::string result = each.get("result").string();
-            if (!result.empty() && result != "exit 0")
+            if (!result.empty() && result != "exit 0" && result.rfind("stopped", 0) != 0)
                 failures[each.get("host").string()].push_back(
                     fmt::format("task {} attempt {}: {} at {}", r.index,
                                 each.get("attempt").number(), result, each.get("ended").string()));

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -26,6 +27,31 @@ void forwardStop(int signal) {
     gStopSignal = signal;
     if (gChild > 0) kill(gChild, signal);
 }
+
+// Forwards stop requests while a task runs; the previous handlers return with it (the local
+// scheduler runs tasks in this process, and a Ctrl-C between them must stop it as usual).
+class StopForwarding {
+public:
+    StopForwarding() {
+        gStopSignal = 0;
+        struct sigaction stop {};
+        stop.sa_handler = forwardStop;
+        stop.sa_flags = SA_RESTART;  // the waits and writes go on after forwarding
+        sigemptyset(&stop.sa_mask);
+        for (std::size_t i = 0; i < kSignals.size(); ++i)
+            sigaction(kSignals[i], &stop, &mPrevious[i]);
+    }
+    ~StopForwarding() {
+        for (std::size_t i = 0; i < kSignals.size(); ++i)
+            sigaction(kSignals[i], &mPrevious[i], nullptr);
+    }
+    StopForwarding(const StopForwarding&) = delete;
+    StopForwarding& operator=(const StopForwarding&) = delete;
+
+private:
+    static constexpr std::array<int, 3> kSignals = {SIGTERM, SIGINT, SIGHUP};
+    std::array<struct sigaction, 3> mPrevious{};
+};
 
 // The Slurm array task running this process, "12_3", when there is one.
 std::string slurmTaskId() {
@@ -55,11 +81,7 @@ int runJobTask(const fs::path& dir, std::uint32_t index) {
     command.push_back("--job-task");
     command.push_back(std::to_string(index));
 
-    struct sigaction stop {};
-    stop.sa_handler = forwardStop;
-    stop.sa_flags = SA_RESTART;  // the waits and writes go on after forwarding
-    sigemptyset(&stop.sa_mask);
-    for (int s : {SIGTERM, SIGINT, SIGHUP}) sigaction(s, &stop, nullptr);
+    StopForwarding forwarding;
 
     auto pid = startProgram(command);
     if (!pid) return fail(pid.error());
@@ -96,8 +118,9 @@ int runJobTask(const fs::path& dir, std::uint32_t index) {
                               : stopped  ? "stopped"
                               : retrying ? "retrying"
                                          : "failed";
-    std::string result = describeExit(*exit);
-    if (stopped) result += fmt::format(" (stopped by signal {})", int(gStopSignal));
+    // A stop is a decision, not a failure of the task or its host: recorded apart.
+    const std::string result =
+        stopped ? fmt::format("stopped by signal {}", int(gStopSignal)) : describeExit(*exit);
     recorded = updateManifest(dir, [&](engine::Json& m) -> engine::Status {
         engine::Json& task = taskRecord(m, index);
         task["state"] = state;
@@ -118,7 +141,7 @@ int runJobTask(const fs::path& dir, std::uint32_t index) {
         return 0;
     }
     if (stopped) {
-        std::printf("task %u: stopped (%s); re-run the submitting command to resume it\n", index,
+        std::printf("task %u: %s; re-run the submitting command to resume it\n", index,
                     result.c_str());
         std::fflush(stdout);
         return 1;
