@@ -95,7 +95,9 @@ private:
         const toml::node* n = top.node("world");
         if (!n || !n->as_table()) fail(&top.raw(), "missing [world] table");
         KeyReader keys(mSource, *n->as_table());
-        scene.name = keys.string("name", "untitled");
+        // Without a name, the file's own: two unnamed worlds must not share a default save.
+        const std::string stem = std::filesystem::path(mSource).stem().string();
+        scene.name = keys.string("name", stem.empty() ? "untitled" : stem.c_str());
         scene.voxelSize =
             static_cast<float>(keys.number("voxel_size", 1.0, world::kVoxelSizeRange));
         glm::ivec3 size =

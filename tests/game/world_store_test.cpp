@@ -544,6 +544,17 @@ TEST(WorldStore, DifferentWorldNamesNeverShareADefaultSave) {
               fs::path("saves/a_b.toml"));  // a name that is safe stays as it is
 }
 
+// Issue 41, item 13 for worlds without a name: both were named "untitled" and saved to
+// saves/untitled.toml, one over the other. A world without a name takes its file's.
+TEST(WorldStore, WorldsWithoutANameInDifferentFilesNeverShareADefaultSave) {
+    const char* kUnnamed = "[world]\nsize = [8, 8, 8]\n";
+    auto meadow = engine::scene::loadSceneText(kUnnamed, "worlds/meadow.toml");
+    auto cave = engine::scene::loadSceneText(kUnnamed, "elsewhere/cave.toml");
+    ASSERT_TRUE(meadow.ok() && cave.ok());
+    EXPECT_EQ(meadow->name, "meadow");
+    EXPECT_NE(game::defaultSavePath(meadow->name), game::defaultSavePath(cave->name));
+}
+
 // Issue 41, item 11 for saves: a scene file name near NAME_MAX (255 bytes) left no room for the
 // payload's ".N.vdb" or an object's ".object-HASH.vdb"; their stem is shortened instead.
 TEST(WorldStore, ASaveWithAFileNameNearTheLimitWorks) {
