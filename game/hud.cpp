@@ -21,6 +21,14 @@ bool checkedSlider(const char* label, float* value, float min, float max, const 
     return false;
 }
 
+// The tools' material in words: its name, "(light)" for an emitter; "none" in a world without
+// materials (the palette holds only "empty"), where placing is refused.
+std::string materialText(const engine::world::Palette& palette, engine::world::MaterialId id) {
+    if (id == engine::world::kEmpty || id >= palette.size()) return "none (the world has no materials)";
+    const engine::world::Material& m = palette[id];
+    return m.name + (m.emissive() ? " (light)" : "");
+}
+
 std::string megabytes(std::uint64_t bytes) {
     if (bytes < (1u << 20)) return fmt::format("{:.1f} KiB", double(bytes) / 1024.0);
     return fmt::format("{:.1f} MiB", double(bytes) / (1024.0 * 1024.0));
@@ -197,10 +205,9 @@ void Hud::drawCompact(const HudStats& stats, HudControls& controls, const HudRec
     ImGui::SetNextWindowBgAlpha(0.6f);
     ImGui::Begin("##compact", nullptr, ImGuiWindowFlags_NoDecoration | kPanelFlags);
     const EditTools& t = controls.tools;
-    const auto& mat = controls.palette[t.material];
     std::vector<std::string> entries = {
         fmt::format("{:.1f} ms", stats.cpuFrameMs), fps(stats.cpuFrameMs), fmt::format("GPU {:.1f} ms", gpuTotal(stats)),
-        fmt::format("{} {}", toolName(t.tool), brushName(t.brush)), mat.name + (mat.emissive() ? " (light)" : ""),
+        fmt::format("{} {}", toolName(t.tool), brushName(t.brush)), materialText(controls.palette, t.material),
     };
     if (!stats.objectTool.empty()) {  // the object tool instead, one entry per "; " part to wrap between
         entries.erase(entries.begin() + 3);
@@ -375,8 +382,7 @@ void Hud::drawTools(const HudStats& stats, HudControls& controls, const HudRect&
     }
     ImGui::EndChild();
     const float width = textWidth(area);
-    const auto& cur = controls.palette[t.material];
-    textEntries({"material: " + cur.name + (cur.emissive() ? " (light)" : "")}, width);
+    textEntries({"material: " + materialText(controls.palette, t.material)}, width);
     if (stats.target.hit) {
         const auto& hit = controls.palette[stats.target.material];
         textEntries({fmt::format("target ({}, {}, {}) {}", stats.target.voxel.x, stats.target.voxel.y, stats.target.voxel.z,

@@ -42,9 +42,12 @@ HudLayout layoutHud(glm::vec2 window, float lineHeight, bool showKeys, bool mess
     const float height = std::max(0.0f, bottom - top);
 
     if (l.compact) {
-        // A strip of at most four lines on top; the keys (F1) below it, which then get all
-        // but one line of the strip (asked for, they matter more than the figures).
-        float stripH = std::min(height, (showKeys ? 1.0f : 4.0f) * line + pad);
+        // A strip on top: four lines, or as many as half the height holds (a narrow window wraps
+        // its figures onto more lines, and a tall one has the room); it auto-sizes to what it
+        // shows. The keys (F1) go below it, and then the strip keeps one line (asked for, the keys
+        // matter more than the figures).
+        const float lines = showKeys ? 1.0f : std::max(4.0f, std::floor((0.5f * height - pad) / line));
+        float stripH = std::min(height, lines * line + pad);
         l.stats = {{margin, top}, {window.x - 2.0f * margin, stripH}};
         if (showKeys) {
             float keysTop = top + stripH + margin;

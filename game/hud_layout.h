@@ -1,6 +1,7 @@
 // Where the HUD's panels go for a window size, with no ImGui in sight so it can be tested:
 // the rectangles never overlap and stay inside the window from 320x180 to 4K. Below a size
-// threshold the two panels collapse to one compact strip; on tall windows the font scales up
+// threshold the two panels collapse to one compact strip (taller in a narrow, tall window, where
+// its figures wrap onto more lines); on tall windows the font scales up
 // by whole steps (the built-in bitmap font stays crisp). Also the two text helpers the HUD
 // needs to stay inside those rectangles: wrapping a list of entries only between entries (a
 // number is never split), and the palette grid that scrolls instead of growing.

@@ -139,7 +139,7 @@ ObjectResult modify(world::Scene& scene, UndoHistory& undo, std::size_t index, d
     world::DynamicObject before = scene.objects[index];
     std::string label = change(scene.objects[index]);
     if (label.empty()) return {false, {}};
-    const bool undoable = undo.recordObject(index, std::move(before), true, label);
+    const bool undoable = undo.recordObject(scene.objects, index, std::move(before), true, label);
     refreshObjects(scene, time);
     return {true, label + (undoable ? "" : " - too large to undo within the budget")};
 }
@@ -164,7 +164,7 @@ ObjectResult placeObject(world::Scene& scene, UndoHistory& undo, const ObjectMod
     std::vector<world::MaterialId> map(model.palette.size(), world::kEmpty);
     world::DynamicObject object;
     object.modelSize = model.size;
-    object.model = world::BrickGrid(model.size);
+    world::BrickGrid voxels(model.size);
     for (int z = 0; z < model.size.z; ++z)
         for (int y = 0; y < model.size.y; ++y)
             for (int x = 0; x < model.size.x; ++x) {
@@ -177,9 +177,10 @@ ObjectResult placeObject(world::Scene& scene, UndoHistory& undo, const ObjectMod
                     if (!id) return {false, fmt::format("place object: the palette is full ({} materials)", scene.palette.size())};
                     map[m] = *id;
                 }
-                object.model.set({x, y, z}, map[m]);
+                voxels.set({x, y, z}, map[m]);
             }
-    object.model.clearDirty();
+    voxels.clearDirty();
+    object.model = std::make_shared<const world::BrickGrid>(std::move(voxels));
 
     // Lowest corner on the voxel in front of the face, centred across the face.
     glm::ivec3 corner = target.adjacent() - model.size / 2;
@@ -198,7 +199,7 @@ ObjectResult placeObject(world::Scene& scene, UndoHistory& undo, const ObjectMod
     std::string label = fmt::format("place {} ({} voxels) at {} {} {}", object.name, model.solidVoxels, corner.x,
                                     corner.y, corner.z);
     scene.objects.push_back(std::move(object));
-    const bool undoable = undo.recordObject(scene.objects.size() - 1, std::nullopt, true, label);
+    const bool undoable = undo.recordObject(scene.objects, scene.objects.size() - 1, std::nullopt, true, label);
     refreshObjects(scene, time);
     return {true, label + (undoable ? "" : " - too large to undo within the budget")};
 }
@@ -251,7 +252,7 @@ ObjectResult deleteObject(world::Scene& scene, UndoHistory& undo, std::size_t in
     world::DynamicObject gone = std::move(scene.objects[index]);
     scene.objects.erase(scene.objects.begin() + std::ptrdiff_t(index));
     std::string label = "delete " + gone.name;
-    undo.recordObject(index, std::move(gone), false, label);
+    undo.recordObject(scene.objects, index, std::move(gone), false, label);
     refreshObjects(scene, time);
     return {true, label};
 }
@@ -279,7 +280,7 @@ std::optional<std::size_t> pickObject(const world::Scene& scene, glm::vec3 origi
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const world::DynamicObject& o = scene.objects[i];
         const glm::ivec3 m(glm::floor(glm::dvec3(glm::inverse(o.worldFromModel(o.current)) * centre)));
-        if (world::Box{glm::ivec3(0), o.modelSize}.contains(m) && o.model.get(m) != world::kEmpty) return i;
+        if (world::Box{glm::ivec3(0), o.modelSize}.contains(m) && o.model->get(m) != world::kEmpty) return i;
     }
     return std::nullopt;
 }
@@ -363,7 +364,7 @@ ObjectResult ObjectTools::finishDrag(world::Scene& scene, UndoHistory& undo) {
     if (from.position == to.position) return {false, "drag: " + o.name + " stayed where it was"};
     const glm::ivec3 d(glm::round(to.position - from.position));
     std::string label = fmt::format("drag {} by {} {} {} ({})", o.name, d.x, d.y, d.z, describe(o));
-    const bool undoable = undo.recordObject(drag.index, std::move(drag.before), true, label);
+    const bool undoable = undo.recordObject(scene.objects, drag.index, std::move(drag.before), true, label);
     return {true, label + (undoable ? "" : " - too large to undo within the budget")};
 }
 

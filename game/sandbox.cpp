@@ -26,6 +26,7 @@
 #include "game/undo_history.h"
 #include "game/walk_controller.h"
 #include "game/window.h"
+#include "game/world_file_stem.h"
 #include "game/world_store.h"
 #include "gpu/context.h"
 #include "gpu/presenter.h"
@@ -180,7 +181,9 @@ engine::Status Sandbox::init() {
     for (std::size_t i = 0; i < mScene.cameras.size(); ++i) {
         if (mScene.cameras[i].name == mCamera.preset().name) mCameraIndex = i;
     }
-    if (mScene.palette.size() > 1) mTools.material = 1;
+    // A world of [world] alone (or a colourless .vox) has no material to place with: none is
+    // chosen, and placing and painting are refused until it has one (an object's model brings its own).
+    mTools.material = mScene.palette.size() > 1 ? 1 : world::kEmpty;
     for (const std::string& m : mOptions.models) {
         auto modelPath = engine::scene::resolveWorldPath(m);
         if (!modelPath) return modelPath.error();
@@ -508,7 +511,9 @@ void Sandbox::handleInput(float dt) {
     if (mInput.pressed(GLFW_KEY_TAB)) mHud.visible = !mHud.visible;
     if (mInput.pressed(GLFW_KEY_F1)) mHud.showKeys = !mHud.showKeys;
     if (mInput.pressed(GLFW_KEY_F12)) {
-        fs::path path = fs::path("screenshots") / fmt::format("{}-{}.png", mScene.name, mFrame);
+        // Named after the world, made safe: a scene's `name` is any text ("../x", "/").
+        fs::path path =
+            fs::path("screenshots") / fmt::format("{}-{}.png", worldFileStem(mScene.name), mFrame);
         if (mInput.shift()) {
             mPendingRenderPath = path;
         } else {
@@ -550,6 +555,12 @@ void Sandbox::requestQuit() {
 }
 
 void Sandbox::applyEdit(const EditOp& op) {
+    if (op.tool != Tool::Remove && (op.material == world::kEmpty || op.material >= mScene.palette.size())) {
+        message(fmt::format("{}: refused: the world has no materials (a --model object brings its own; then , and . "
+                            "choose one)",
+                            toolName(op.tool)));
+        return;
+    }
     if (std::string why = mWalk.refusal(op, mScene.grid); !why.empty()) {
         message(op.describe(mScene.palette) + ": refused: " + why);
         return;

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "core/number_check.h"
+#include "core/quoted_string.h"
 
 namespace game {
 
@@ -42,7 +43,10 @@ engine::Result<ScriptPlayer> ScriptPlayer::parse(std::string_view text, std::str
         if (auto hash = line.find('#'); hash != std::string::npos) line.resize(hash);
         std::vector<std::string> w = words(line);
         if (w.empty()) continue;
-        auto fail = [&](const std::string& why) { return engine::makeError("{}:{}: {}", sourceName, lineNo, why); };
+        // `why` quotes the line's words: printable, so a stray control character cannot act.
+        auto fail = [&](const std::string& why) {
+            return engine::makeError("{}:{}: {}", sourceName, lineNo, engine::printableText(why));
+        };
         if (w.size() < 2) return fail("expected 'FRAME COMMAND ...'");
 
         ScriptStep step;

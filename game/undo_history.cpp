@@ -9,17 +9,34 @@ namespace world = engine::world;
 
 namespace {
 
+// What an object holds of its own: everything but the shared model.
 std::size_t objectBytes(const world::DynamicObject& o) {
-    world::GridMemory m = o.model.memory();
-    return sizeof(o) + m.topGridBytes + m.superGridBytes + m.brickPoolBytes + m.bookkeepingBytes +
-           o.path.keys().capacity() * sizeof(world::ObjectKey);
+    std::size_t bytes = sizeof(o) + o.name.capacity() + o.path.keys().capacity() * sizeof(world::ObjectKey) +
+                        o.generators.capacity() * sizeof(world::GeneratorRecord);
+    for (const world::GeneratorRecord& g : o.generators) bytes += g.type.capacity();
+    return bytes;
+}
+
+// The heap a model's grid takes: its brick pool in whole pages, however few bricks are live.
+std::size_t modelBytes(const world::BrickGrid& model) {
+    const world::GridMemory m = model.memory();
+    return m.topGridBytes + m.superGridBytes + m.bookkeepingBytes + world::BrickGrid::poolBytesFor(model.brickCapacity());
 }
 
 }  // namespace
 
 std::size_t UndoHistory::Step::bytes() const {
+    std::size_t object = 0;
+    if (objectOther) object = objectBytes(*objectOther) + (holdsModel ? modelBytes(*objectOther->model) : 0);
     return sizeof(Step) + label.capacity() + cells.capacity() * sizeof(CellState) +
-           bricks.capacity() * sizeof(world::BrickVoxels) + (objectOther ? objectBytes(*objectOther) : 0);
+           bricks.capacity() * sizeof(world::BrickVoxels) + object;
+}
+
+bool UndoHistory::holdsModelAlone(const Step& step, const std::vector<world::DynamicObject>& objects) {
+    if (!step.objectOther) return false;
+    const bool shared = step.objectInScene && step.objectIndex < objects.size() &&
+                        objects[step.objectIndex].model == step.objectOther->model;
+    return !shared;
 }
 
 void UndoHistory::capture(const world::BrickGrid& grid, glm::ivec3 cell, Step& step, CellState& state) {
@@ -91,8 +108,12 @@ void UndoHistory::push(Step step) {
     }
     std::size_t bytes = step.bytes();
     if (bytes > mMaxBytes) {
-        ++mDropped;
-        return;  // too large to keep: applied, not undoable
+        // Too large to keep: applied, not undoable. The steps before it go too: they no longer
+        // lead back from the world as it is now (an object step names its object by its place in
+        // the list), and they would keep alive what they hold (a deleted object's model).
+        mDropped += mSteps.size() + 1;
+        clear();
+        return;
     }
     mSteps.push_back(std::move(step));
     mBytes += bytes;
@@ -100,14 +121,15 @@ void UndoHistory::push(Step step) {
     enforceBudget();
 }
 
-bool UndoHistory::recordObject(std::size_t index, std::optional<world::DynamicObject> before, bool existsNow,
-                               std::string label) {
+bool UndoHistory::recordObject(const std::vector<world::DynamicObject>& objects, std::size_t index,
+                               std::optional<world::DynamicObject> before, bool existsNow, std::string label) {
     Step step;
     step.label = std::move(label);
     step.isObject = true;
     step.objectIndex = index;
     step.objectInScene = existsNow;
     step.objectOther = std::move(before);
+    step.holdsModel = holdsModelAlone(step, objects);
     bool undoable = step.bytes() <= mMaxBytes;
     push(std::move(step));
     return undoable;
@@ -125,6 +147,7 @@ void UndoHistory::swapObject(std::vector<world::DynamicObject>& objects, Step& s
     if (step.objectOther) objects.insert(objects.begin() + std::ptrdiff_t(i), std::move(*step.objectOther));
     step.objectInScene = step.objectOther.has_value();
     step.objectOther = std::move(now);
+    step.holdsModel = holdsModelAlone(step, objects);
 }
 
 void UndoHistory::swap(world::BrickGrid& grid, Step& step) {

@@ -3,10 +3,14 @@
 // Undo and redo swap the stored state with the world's, so one copy serves both directions
 // and the history costs what the edits touched, never a copy of the world. An object step
 // (game/object_tools.h) stores the one object it changed the same way: its other state, or
-// its absence, swapped with the scene's list.
+// its absence, swapped with the scene's list. The object's model is shared, not copied
+// (world/dynamic_object.h): a step counts the model's memory only while it alone keeps the model
+// alive, that is while the scene's object at its index does not hold the same model (a deleted
+// object, a placement undone); a move or a key costs the object's path, not its model.
 //
 // Memory is bounded: after each edit the oldest steps are dropped until the history fits in
-// maxBytes; an edit that alone exceeds the budget is applied but cannot be undone (reported).
+// maxBytes; an edit that alone exceeds the budget is applied but cannot be undone (reported),
+// and ends the history: the steps before it could not be undone past it.
 #pragma once
 
 #include <cstddef>
@@ -47,9 +51,10 @@ public:
 
     // Records a change the caller has just made to objects[index] as one step: `before` is the
     // object before it (nullopt: the change placed it), `existsNow` false when it deleted it.
-    // Clears the redo steps. Returns false when the step exceeded the budget (not undoable).
-    bool recordObject(std::size_t index, std::optional<engine::world::DynamicObject> before, bool existsNow,
-                      std::string label);
+    // `objects` is the scene's list after the change. Clears the redo steps. Returns false when
+    // the step exceeded the budget (not undoable).
+    bool recordObject(const std::vector<engine::world::DynamicObject>& objects, std::size_t index,
+                      std::optional<engine::world::DynamicObject> before, bool existsNow, std::string label);
 
     // Each returns the step's label, or an empty string when there is nothing to undo/redo.
     std::string undo(engine::world::BrickGrid& grid, std::vector<engine::world::DynamicObject>& objects);
@@ -82,6 +87,7 @@ private:
         std::size_t objectIndex = 0;
         bool objectInScene = false;
         std::optional<engine::world::DynamicObject> objectOther;
+        bool holdsModel = false;  // objectOther's model is not the scene's object's: counted here
         std::size_t bytes() const;
     };
 
@@ -89,6 +95,7 @@ private:
     // Writes the step's states into the grid and keeps the grid's previous states in their place.
     static void swap(engine::world::BrickGrid& grid, Step& step);
     static void swapObject(std::vector<engine::world::DynamicObject>& objects, Step& step);
+    static bool holdsModelAlone(const Step& step, const std::vector<engine::world::DynamicObject>& objects);
     void push(Step step);
     void enforceBudget();
 

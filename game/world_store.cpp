@@ -1,12 +1,10 @@
 #include "game/world_store.h"
 
-#include <algorithm>
-#include <cctype>
-#include <fstream>
 #include <string>
 
 #include <fmt/format.h>
 
+#include "game/world_file_stem.h"
 #include "io/vdb_export.h"
 #include "io/vdb_import.h"
 #include "io/vox_import.h"
@@ -20,8 +18,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr const char* kSaveMarker = "Saved by vox play";
-
 // A model's name for its payload: FNV-1a over its size, voxel ids and their material names, so
 // an unchanged model keeps its file from save to save.
 std::uint64_t modelHash(const engine::world::DynamicObject& o, const engine::world::Palette& palette) {
@@ -34,7 +30,7 @@ std::uint64_t modelHash(const engine::world::DynamicObject& o, const engine::wor
     for (int z = 0; z < o.modelSize.z; ++z)
         for (int y = 0; y < o.modelSize.y; ++y)
             for (int x = 0; x < o.modelSize.x; ++x) {
-                const engine::world::MaterialId m = o.model.get({x, y, z});
+                const engine::world::MaterialId m = o.model->get({x, y, z});
                 mix(m);
                 if (m < used.size()) used[m] = true;
             }
@@ -43,12 +39,6 @@ std::uint64_t modelHash(const engine::world::DynamicObject& o, const engine::wor
         for (char c : palette[engine::world::MaterialId(m)].name) mix(std::uint8_t(c));
     }
     return h;
-}
-
-bool isObjectPayloadOf(const fs::path& file, const std::string& stem) {
-    const std::string name = file.filename().string(), prefix = stem + ".object-";
-    return name.size() > prefix.size() + 4 && name.compare(0, prefix.size(), prefix) == 0 &&
-           name.compare(name.size() - 4, 4, ".vdb") == 0;
 }
 
 class VdbWorldStore final : public WorldStore {
@@ -67,45 +57,31 @@ public:
         // it, which is the same palette in the same order; so every id comes back unchanged.
         // Everything else (objects with their generators, [indirect], [path]) is written as loaded.
         // Each object's model goes to a payload of its own, STEM.object-HASH.vdb (same layout and
-        // rule), written before the pair; the pair's commit makes them current, and the ones no
-        // save names any more go after it. Named by content, an unchanged model is not rewritten.
-        const std::string stem = sceneFile.stem().string();
+        // rule), written with the pair (scene/world_pair.h); named by content, an unchanged model
+        // is not rewritten.
+        const std::string stem = engine::scene::payloadStem(sceneFile);
         std::vector<std::vector<engine::world::GeneratorRecord>> objectGenerators;
-        std::vector<std::string> named;
-        std::vector<fs::path> written;
+        engine::scene::WorldPairOptions options{.beforeCommit = mFaults.beforeCommit};
         for (const engine::world::DynamicObject& o : scene.objects) {
             const std::string name = fmt::format("{}.object-{:016x}.vdb", stem, modelHash(o, scene.palette));
-            const fs::path file = dir / name;
-            if (!fs::exists(file, ec)) {
+            auto write = [&scene, &o](const fs::path& file) {
                 engine::world::Scene model;
                 model.name = o.name;
                 model.voxelSize = scene.voxelSize;
                 model.palette = scene.palette;
-                model.grid = o.model;
-                if (engine::Status s = engine::io::exportVdb(model, file); !s) {
-                    for (const fs::path& w : written) fs::remove(w, ec);
-                    return s;
-                }
-                written.push_back(file);
-            }
-            named.push_back(name);
+                model.grid = *o.model;
+                return engine::io::exportVdb(model, file);
+            };
+            options.extraPayloads.push_back({name, write});
             objectGenerators.push_back({engine::scene::vdbPayloadGenerator(name, /*ids=*/true)});
         }
         auto text = [&](const std::string& payloadName) {
             std::vector<engine::world::GeneratorRecord> generators{engine::scene::vdbPayloadGenerator(payloadName, /*ids=*/true)};
-            return engine::scene::sceneText(scene, {.headerComment = kSaveMarker, .generators = &generators,
+            return engine::scene::sceneText(scene, {.headerComment = engine::scene::kSaveMarker,
+                                                    .generators = &generators,
                                                     .objectGenerators = &objectGenerators});
         };
-        engine::Status s = engine::scene::writeWorldPair(scene, sceneFile, text, {.beforeCommit = mFaults.beforeCommit});
-        if (!s) {
-            for (const fs::path& w : written) fs::remove(w, ec);
-            return s;
-        }
-        for (const fs::directory_entry& e : fs::directory_iterator(dir.empty() ? "." : dir, ec)) {
-            if (isObjectPayloadOf(e.path(), stem) && std::find(named.begin(), named.end(), e.path().filename().string()) == named.end())
-                fs::remove(e.path(), ec);
-        }
-        return {};
+        return engine::scene::writeWorldPair(scene, sceneFile, text, options);
     }
 
     engine::Result<engine::world::Scene> load(const fs::path& sceneFile) override {
@@ -117,10 +93,7 @@ public:
     }
 
     bool isSave(const fs::path& sceneFile) const override {
-        std::ifstream in(sceneFile);
-        std::string first;
-        std::getline(in, first);
-        return first == std::string("# ") + kSaveMarker;
+        return engine::scene::sceneFileMarked(sceneFile, engine::scene::kSaveMarker);
     }
 
 private:
@@ -130,14 +103,7 @@ private:
 }  // namespace
 
 fs::path defaultSavePath(std::string_view worldName) {
-    std::string safe;
-    for (char c : worldName) {
-        const bool allowed = std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.' || c == ' ';
-        if (safe.size() < 64) safe += allowed ? c : '_';
-    }
-    while (!safe.empty() && (safe.front() == '.' || safe.front() == ' ')) safe.erase(safe.begin());  // no "..", no hidden file
-    if (safe.empty()) safe = "untitled";
-    return fs::path("saves") / (safe + ".toml");
+    return fs::path("saves") / (worldFileStem(worldName) + ".toml");
 }
 
 std::unique_ptr<WorldStore> makeWorldStore(SaveFaults faults) { return std::make_unique<VdbWorldStore>(std::move(faults)); }

@@ -40,9 +40,9 @@ public:
 
 std::unique_ptr<WorldStore> makeWorldStore(SaveFaults faults = {});
 
-// Where a world saves by default: saves/NAME.toml, with NAME made safe from a scene file's
-// `name` (letters, digits, '-', '_', '.' and spaces; no separators, no leading dot, at most 64
-// characters), so a hostile name like "../../x" or "/etc/x" cannot save outside saves/.
+// Where a world saves by default: saves/NAME.toml, NAME from the scene file's `name` by
+// game/world_file_stem.h, so a hostile name like "../../x" or "/etc/x" cannot save outside
+// saves/, and different names never share a save.
 std::filesystem::path defaultSavePath(std::string_view worldName);
 
 }  // namespace game

@@ -14,6 +14,7 @@ packages=(
   libstb-dev libopenexr-dev libtomlplusplus-dev libcli11-dev libfmt-dev libspdlog-dev libimgui-dev
   python3 python3-matplotlib xvfb xauth clang
   ffmpeg  # optional: vox capture writes an MP4 when it is on PATH
+  slurm-wlm munge parallel  # capture and sweep jobs (--scheduler slurm|parallel); the test starts a one-node Slurm
 )
 
 missing=()

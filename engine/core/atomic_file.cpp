@@ -17,6 +17,8 @@
 #include <string>
 #include <system_error>
 
+#include "core/file_name.h"
+
 namespace engine {
 
 namespace fs = std::filesystem;
@@ -63,6 +65,39 @@ pid_t temporaryOwner(const std::string& name) {
     return pid_t(std::stol(digits));
 }
 
+// The temporaries this process has open: the only files at a `.NAME.tmp-PID` of ours that are not
+// leftovers (of a process that had our pid before) or planted by someone else.
+std::mutex gOpenMutex;
+std::set<fs::path> gOpenTemporaries;
+
+// Creates the temporary exclusively, never following a symlink at its name: whatever is there is
+// not ours (see gOpenTemporaries) and is unlinked, not written through.
+int createTemporary(const fs::path& temporary) {
+    {
+        std::lock_guard lock(gOpenMutex);
+        if (!gOpenTemporaries.insert(temporary).second) {
+            errno = EBUSY;  // this process writes the same file twice at once
+            return -1;
+        }
+    }
+    constexpr int kFlags = O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC;
+    int fd = ::open(temporary.c_str(), kFlags, 0666);
+    if (fd < 0 && errno == EEXIST && ::unlink(temporary.c_str()) == 0)
+        fd = ::open(temporary.c_str(), kFlags, 0666);
+    if (fd < 0) {
+        const int error = errno;
+        std::lock_guard lock(gOpenMutex);
+        gOpenTemporaries.erase(temporary);
+        errno = error;
+    }
+    return fd;
+}
+
+void forgetTemporary(const fs::path& temporary) {
+    std::lock_guard lock(gOpenMutex);
+    gOpenTemporaries.erase(temporary);
+}
+
 std::mutex gSweptMutex;
 std::set<fs::path> gSweptFolders;  // each folder once per process: a dead process writes nothing new
 
@@ -80,10 +115,11 @@ void sweepOnce(const fs::path& folder) {
 }  // namespace
 
 fs::path temporaryPathFor(const fs::path& target) {
+    const std::string suffix = std::string(kTempMarker) + std::to_string(::getpid());
+    // A long NAME is shortened so that `.NAME.tmp-PID` fits in a folder entry as NAME does.
     std::string name = ".";
-    name += target.filename().string();
-    name += kTempMarker;
-    name += std::to_string(::getpid());
+    name += fitFileName(target.filename().string(), kMaxFileName - 1 - suffix.size());
+    name += suffix;
     return target.parent_path() / name;
 }
 
@@ -158,9 +194,11 @@ Status AtomicFile::open(const fs::path& target) {
     const fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
     if (!fs::is_directory(folder, ec))
         return makeError("{}: cannot write: '{}' is not a folder", target.string(), folder.string());
+    if (target.filename().string().size() > kMaxFileName)
+        return makeError("{}: cannot create: {}", target.string(), std::strerror(ENAMETOOLONG));
     sweepOnce(folder);
     mTemporary = temporaryPathFor(target);
-    mFd = ::open(mTemporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    mFd = createTemporary(mTemporary);
     if (mFd < 0) {
         const int error = errno;
         mTemporary.clear();
@@ -240,6 +278,7 @@ Status AtomicFile::commit() {
         abandon();
         return error;
     }
+    forgetTemporary(mTemporary);
     mTemporary.clear();
     // The rename itself reaches the disk with the folder's fsync; the new file is complete
     // either way, so a failure here is not reported.
@@ -254,7 +293,10 @@ Status AtomicFile::commit() {
 void AtomicFile::abandon() {
     if (mFd >= 0) ::close(mFd);
     mFd = -1;
-    if (!mTemporary.empty()) ::unlink(mTemporary.c_str());
+    if (!mTemporary.empty()) {
+        ::unlink(mTemporary.c_str());
+        forgetTemporary(mTemporary);
+    }
     mTemporary.clear();
     mStream.reset();
     mBuffer.reset();
@@ -277,7 +319,7 @@ Status replaceFileAtomically(const fs::path& target, const std::function<Status(
     if (Status s = writeTo(file.temporary()); !s) return s;
     // The program wrote through its own descriptor: ours still names the same file (unless the
     // program replaced it), so reopen by path for the fsync.
-    const int fd = ::open(file.temporary().c_str(), O_WRONLY | O_CLOEXEC);
+    const int fd = ::open(file.temporary().c_str(), O_WRONLY | O_NOFOLLOW | O_CLOEXEC);
     if (fd < 0) return makeError("{}: the writer left no file: {}", target.string(), std::strerror(errno));
     ::close(file.mFd);
     file.mFd = fd;

@@ -1,5 +1,7 @@
-// The one way the engine writes a file: into a temporary beside the target (`.NAME.tmp-PID`),
-// every write, the fsync and the close checked, then renamed over the target. On any failure
+// The one way the engine writes a file: into a temporary beside the target (`.NAME.tmp-PID`,
+// NAME shortened if that would pass the 255-byte limit of a file name; created exclusively,
+// never through a symlink planted at its name), every write, the fsync and the close checked,
+// then renamed over the target. On any failure
 // the temporary is removed and the previous file stays byte-identical; the error is one line
 // naming the path and the system's reason ("r.png: cannot write: No space left on device").
 // An output path that is an existing folder is refused before anything is written.
@@ -80,7 +82,7 @@ Status writeFileAtomically(const std::filesystem::path& target, const std::funct
 Status replaceFileAtomically(const std::filesystem::path& target,
                              const std::function<Status(const std::filesystem::path& temporary)>& writeTo);
 
-// `.NAME.tmp-PID` for `target`, in the target's folder.
+// `.NAME.tmp-PID` for `target`, in the target's folder (core/file_name.h shortens a long NAME).
 std::filesystem::path temporaryPathFor(const std::filesystem::path& target);
 // Removes temporaries (`.NAME.tmp-PID`, and the older `NAME.tmp-PID` for the extensions the
 // engine writes) whose process is no longer alive from `folder`; returns how many.

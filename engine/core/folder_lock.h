@@ -23,12 +23,13 @@ public:
     FolderLock& operator=(const FolderLock&) = delete;
     FolderLock(FolderLock&& other) noexcept : mFd(other.mFd) { other.mFd = -1; }
 
-    // Without waiting. Refuses with "FOLDER is in use by another OWNER (pid N)" if another process
-    // holds an overlapping range; `owner` names the kind of program ("vox capture"). count 0: the
-    // whole folder. Record locks belong to the process: a second claim by the same process is
-    // not refused.
+    // Without waiting. Refuses with "WHAT is in use by another OWNER (pid N)" if another process
+    // holds an overlapping range; `owner` names the kind of program ("vox capture"), `what` the
+    // thing claimed (default: the folder). count 0: the whole folder. Record locks belong to the
+    // process: a second claim by the same process is not refused.
     static Result<FolderLock> acquire(const std::filesystem::path& folder, std::string_view owner,
-                                      std::uint64_t begin = 0, std::uint64_t count = 0);
+                                      std::uint64_t begin = 0, std::uint64_t count = 0,
+                                      std::string_view what = {});
 
 private:
     explicit FolderLock(int fd) : mFd(fd) {}

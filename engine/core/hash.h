@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string_view>
 
 namespace engine {
 
@@ -16,6 +17,14 @@ constexpr std::uint32_t pcgHash(std::uint32_t v) {
 
 constexpr std::uint32_t hashCombine(std::uint32_t a, std::uint32_t b) {
     return pcgHash(a ^ (b + 0x9e3779b9u + (a << 6) + (a >> 2)));
+}
+
+// FNV-1a, 64 bits: names made from names (a shortened file name, a world's save), the same in
+// every run and build.
+constexpr std::uint64_t fnv1a64(std::string_view bytes) {
+    std::uint64_t h = 14695981039346656037ull;
+    for (char c : bytes) h = (h ^ static_cast<unsigned char>(c)) * 1099511628211ull;
+    return h;
 }
 
 // Small seeded generator for host-side sampling (tests, generators).

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <stdexcept>
+#include <string>
 
 namespace engine {
 
@@ -13,6 +14,14 @@ std::uint64_t physicalMemoryBytes();
 std::uint64_t defaultMemoryBudgetBytes();
 std::uint64_t memoryBudgetBytes();  // the default until set
 void setMemoryBudgetBytes(std::uint64_t bytes);
+
+// True when the address-space limit (ulimit -v) is what caps a budget this large: the budget is
+// three quarters of the limit or more, so raising --memory-budget cannot help.
+bool addressSpaceLimits(std::uint64_t budgetBytes);
+// What to change for more than `budgetBytes`, for a message refusing for want of memory: "raise
+// ulimit -v (now 390 MiB; ...)" when that limit binds, else "raise --memory-budget if the machine
+// has the memory".
+std::string memoryBudgetAdvice(std::uint64_t budgetBytes);
 
 // Thrown where a plan shows the budget would be exceeded deep inside a frame (a new world reaching
 // the renderer); caught with std::bad_alloc at the top of a program, which prints what() as one line.

@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "core/quoted_string.h"
+
 namespace engine {
 
 std::string describeRange(const NumberRange& r) {
@@ -40,7 +42,7 @@ std::optional<double> readNumber(std::string_view text) {
 
 Result<double> parseNumber(std::string_view name, std::string_view text, const NumberRange& range) {
     std::optional<double> v = readNumber(text);
-    if (!v) return makeError("{}: expected a number in {}, got '{}'", name, describeRange(range), text);
+    if (!v) return makeError("{}: expected a number in {}, got '{}'", name, describeRange(range), printableText(text));
     if (Status ok = checkNumber(name, *v, range); !ok) return ok.error();
     return *v;
 }

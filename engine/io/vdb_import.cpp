@@ -11,6 +11,7 @@
 #endif
 
 #include "core/allocation_budget.h"
+#include "core/quoted_string.h"
 #include "io/vdb_import_state.h"
 
 namespace engine::io {
@@ -80,7 +81,8 @@ Status buildWorld(ImportState& im, world::Scene& scene, bool intoExisting) {
 
     if (!intoExisting) {
         const ChosenGrids& g = im.grids;
-        scene.name = g.voxengine ? g.worldHeader.name : im.path.stem().string();
+        // Names are printable text wherever they come from (a scene file refuses others).
+        scene.name = g.voxengine ? g.worldHeader.name : printableText(im.path.stem().string());
         scene.voxelSize = float(im.plan.voxelSize);
         if (g.voxengine) {
             scene.cameras = g.worldHeader.cameras;

@@ -42,7 +42,7 @@ struct VdbImportOptions {
     int maxColours = 16;  // colour rule: palette size, 1..65534
     world::Material material{"imported", glm::vec3(0.7f), glm::vec3(0.0f), 0.0f};  // constant rule
     std::vector<world::Material> heightMaterials;  // height rule, bottom to top; empty: 4 default bands
-    float voxelSize = 0.0f;  // target voxel size in file units; 0: the file's (smallest axis if non-uniform)
+    double voxelSize = 0.0;  // target voxel size in file units; 0: the file's (smallest axis if non-uniform)
     std::optional<glm::ivec3> offset;  // world voxel where source voxel (0,0,0) lands; none: auto
     std::optional<world::Box> crop;    // import only this source index box (min inclusive, max exclusive)
     UpAxis up = UpAxis::Auto;

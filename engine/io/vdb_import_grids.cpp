@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "core/quoted_string.h"
 #include "io/vdb_import_state.h"
 #include "world/world_limits.h"
 
@@ -24,7 +25,7 @@ bool isColourName(std::string name) {
 
 Status checkTransform(const ImportState& im, const vdb::GridBase& g) {
     const vdb::math::Transform& xf = g.transform();
-    const std::string name = g.getName();
+    const std::string name = printableText(g.getName());
     if (!xf.isLinear())
         return makeError("{}: grid '{}' has a non-linear ({}) transform; only axis-aligned scale and translation "
                          "can be imported",
@@ -55,7 +56,7 @@ Status findShapeGrid(ImportState& im) {
     const std::string& file = im.file;
     if (entries.empty()) return makeError("{}: the file holds no grids", file);
     auto describe = [&](std::size_t i, const vdb::GridBase* g, const char* state) {
-        return fmt::format("{} ({}{}{})", entries[i].displayName, g ? g->valueType() : entries[i].type, *state ? ", " : "",
+        return fmt::format("{} ({}{}{})", entries[i].displayName, g ? g->valueType() : printableText(entries[i].type), *state ? ", " : "",
                            state);
     };
     std::vector<vdb::GridBase::Ptr> headers(entries.size());
@@ -176,7 +177,7 @@ Status selectColourGrid(ImportState& im) {
     if (found < 0) return {};
     const auto& entry = entries[std::size_t(found)];
     if (!vdb::GridBase::isRegistered(entry.type))
-        return makeError("{}: colour grid '{}' has the unknown type {}", im.file, entry.name, entry.type);
+        return makeError("{}: colour grid '{}' has the unknown type {}", im.file, entry.displayName, printableText(entry.type));
     vdb::GridBase::Ptr h = im.reader.readHeader(std::size_t(found));
     if (isColourType(*h)) {
         g.colourIndex = found;

@@ -3,11 +3,15 @@
 #include "io/vdb_import_placement.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <climits>
 
 #include <fmt/format.h>
 
+#include "core/number_check.h"
+#include "core/quoted_string.h"
 #include "io/vdb_import_state.h"
+#include "world/scene.h"
 #include "world/world_limits.h"
 
 namespace engine::io::vdb_import {
@@ -57,10 +61,10 @@ std::string blenderEvidence(ImportState& im) {
     const vdb::GridBase& shape = *im.grids.shapeHeader;
     for (const char* where : {"file", "grid"}) {
         const std::string creator = metaString(where[0] == 'f' ? file : shape, "creator");
-        if (creator.find("Blender") != std::string::npos) return fmt::format("its {} creator is '{}'", where, creator);
+        if (creator.find("Blender") != std::string::npos) return fmt::format("its {} creator is '{}'", where, printableText(creator));
     }
     for (auto it = file.beginMeta(); it != file.endMeta(); ++it)
-        if (it->first.rfind("blender/", 0) == 0) return fmt::format("it has Blender's metadata '{}'", it->first);
+        if (it->first.rfind("blender/", 0) == 0) return fmt::format("it has Blender's metadata '{}'", printableText(it->first));
     for (const char* key : {"file_base_resolution", "file_voxel_size"})
         if (shape[key]) return fmt::format("it has Mantaflow's metadata '{}' (Blender's fluid cache)", key);
     bool density = false;
@@ -98,11 +102,11 @@ Status orientAndScale(ImportState& im) {
     vdb::Vec3d vs = g.shapeXform->voxelSize();
     im.plan.sourceVoxelSize = glm::dvec3(vs.x(), vs.y(), vs.z());
     double smallest = std::min({vs.x(), vs.y(), vs.z()});
-    double target = o.voxelSize > 0.0f ? double(o.voxelSize) : smallest;
-    if (g.voxengine && o.voxelSize <= 0.0f) target = vs.x();
+    double target = o.voxelSize > 0.0 ? o.voxelSize : smallest;
+    if (g.voxengine && o.voxelSize <= 0.0) target = vs.x();
     im.plan.voxelSize = target;
     bool uniform = std::abs(vs.x() - vs.y()) <= 1e-6 * smallest && std::abs(vs.x() - vs.z()) <= 1e-6 * smallest;
-    if (!uniform && o.voxelSize <= 0.0f)
+    if (!uniform && o.voxelSize <= 0.0)
         im.plan.notes.push_back(fmt::format("voxels are {:.4g} x {:.4g} x {:.4g}: resampled to a uniform {:.4g}",
                                             vs.x(), vs.y(), vs.z(), target));
     for (int a = 0; a < 3; ++a) {
@@ -114,6 +118,14 @@ Status orientAndScale(ImportState& im) {
         map.scale[a] = s;
     }
     im.plan.scale = map.scale;
+    // It becomes the world's voxel_size, a float: the scene key's check, on the value the world
+    // keeps (a size too small for a float would be kept as 0).
+    const std::string what = o.voxelSize > 0.0 ? std::string("--voxel-size")
+                                               : fmt::format("grid '{}' voxel size", im.plan.grid);
+    Status kept = checkNumber(what, target, world::kVoxelSizeRange);
+    if (kept && !(float(target) > 0.0f))
+        kept = makeError("{} {:g} is below the smallest a world holds ({:g})", what, target, double(FLT_MIN));
+    if (!kept) return makeError("{}: {}", im.file, kept.error().message);
     const bool unitScale = map.scale == glm::dvec3(1.0);
     if (g.kind == Kind::LevelSet && !unitScale) {
         im.place.trilinear = glm::all(glm::greaterThanEqual(map.scale, glm::dvec3(1.0)));

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "core/memory_budget.h"
 #include "io/vdb_import_state.h"
 
 namespace engine::io::vdb_import {
@@ -65,9 +66,10 @@ Status estimate(ImportState& im, const world::Scene* target) {
     const std::uint64_t budget = im.options.memoryBudgetBytes;
     if (plan.estimateBytes > budget)
         return makeError("{}: importing grid '{}' would need about {} (world {}x{}x{}: {} for the grid and up to {} "
-                         "bricks; {} for the source), over the memory budget of {} (raise it with --memory-budget)",
+                         "bricks; {} for the source), over the memory budget of {} ({})",
                          im.file, plan.grid, mib(plan.estimateBytes), plan.worldSize.x, plan.worldSize.y,
-                         plan.worldSize.z, mib(worldBytes), plan.sampledCells, mib(source), mib(budget));
+                         plan.worldSize.z, mib(worldBytes), plan.sampledCells, mib(source), mib(budget),
+                         memoryBudgetAdvice(budget));
     return {};
 }
 
@@ -78,7 +80,7 @@ std::string mib(std::uint64_t bytes) { return fmt::format("{:.1f} MiB", double(b
 Status planImport(ImportState& im, const world::Scene* target) {
     im.plan.file = im.file;
     im.plan.budgetBytes = im.options.memoryBudgetBytes;
-    if (!(im.options.voxelSize >= 0.0f) || std::isinf(im.options.voxelSize))
+    if (!(im.options.voxelSize >= 0.0) || std::isinf(im.options.voxelSize))
         return makeError("{}: the voxel size must be positive (got {})", im.file, im.options.voxelSize);
     if (Status s = chooseGrids(im); !s) return s;
     if (Status s = orientAndScale(im); !s) return s;

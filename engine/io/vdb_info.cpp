@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "core/quoted_string.h"
 #include "io/vdb_layout.h"
 #include "io/vdb_reader.h"
 
@@ -14,11 +15,15 @@ namespace vdb = openvdb;
 
 namespace {
 
-std::string printable(std::string s) {
-    for (char& c : s)
-        if (c == '\n' || c == '\r' || c == '\t') c = ' ';
-    s.erase(std::unique(s.begin(), s.end(), [](char a, char b) { return a == ' ' && b == ' '; }), s.end());
-    if (s.size() > 160) s = s.substr(0, 157) + "...";
+// Text from the file (names, types, metadata) as one printable line, a long value cut short
+// (at a character's start, not inside one).
+std::string printable(std::string_view text) {
+    std::string s = printableText(text);
+    if (s.size() > 160) {
+        std::size_t cut = 157;
+        while (cut > 0 && (static_cast<unsigned char>(s[cut]) & 0xC0) == 0x80) --cut;
+        s = s.substr(0, cut) + "...";
+    }
     return s;
 }
 

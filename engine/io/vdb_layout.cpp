@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "core/number_check.h"
+#include "core/quoted_string.h"
 #include "world/world_limits.h"
 
 namespace engine::io::vdb_layout {
@@ -16,7 +18,8 @@ glm::vec3 fromVdb(const vdb::Vec3s& v) { return {v.x(), v.y(), v.z()}; }
 std::string materialKey(std::size_t i, const char* field) { return fmt::format("vox:material.{:05}.{}", i, field); }
 std::string cameraKey(std::size_t i, const char* field) { return fmt::format("vox:camera.{:03}.{}", i, field); }
 
-// Typed lookups that report the key instead of throwing.
+// Typed lookups that report the key instead of throwing; numbers checked by the range the scene
+// file's key has (world/scene.h), so a file cannot give the world what a scene file may not.
 class Reader {
 public:
     Reader(const vdb::MetaMap& meta, const std::string& file) : mMeta(meta), mFile(file) {}
@@ -31,17 +34,34 @@ public:
         }
         auto typed = vdb::DynamicPtrCast<const vdb::TypedMetadata<T>>(m);
         if (!typed) {
-            mError = fmt::format("{}: voxengine metadata '{}' has type {}, expected {}", mFile, key, m->typeName(),
+            mError = fmt::format("{}: voxengine metadata '{}' has type {}, expected {}", mFile, key, printableText(m->typeName()),
                                  vdb::TypedMetadata<T>::staticTypeName());
             return false;
         }
         out = typed->value();
         return true;
     }
-    bool vec3(const std::string& key, glm::vec3& out) {
+    // A name: printable text, as a scene file's strings are (scene/toml_reader.h).
+    bool text(const std::string& key, std::string& out) {
+        if (!get(key, out)) return false;
+        if (printableText(out) == out) return true;
+        return fail(fmt::format("voxengine metadata '{}' must be printable text, without control characters: '{}'", key,
+                                printableText(out)));
+    }
+    bool number(const std::string& key, float& out, const NumberRange& range) {
+        return get(key, out) && check(key, out, range);
+    }
+    bool vec3(const std::string& key, glm::vec3& out, const NumberRange& range) {
         vdb::Vec3s v(0.0f);
         if (!get(key, v)) return false;
         out = fromVdb(v);
+        for (int i = 0; i < 3; ++i)
+            if (!check(fmt::format("{} {}", key, "xyz"[i]), out[i], range)) return false;
+        return true;
+    }
+    bool check(std::string_view name, double value, const NumberRange& range) {
+        if (!mError.empty()) return false;
+        if (Status ok = checkNumber(name, value, range); !ok) return fail(ok.error().message);
         return true;
     }
     bool fail(std::string message) {
@@ -55,8 +75,6 @@ private:
     std::string mFile;
     std::string mError;
 };
-
-bool finite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 }  // namespace
 
@@ -117,9 +135,9 @@ Result<WorldHeader> readWorldMetadata(const vdb::MetaMap& meta, const std::strin
     r.get("vox:format_version", version);
     if (r.error().empty() && version > kFormatVersion)
         r.fail(fmt::format("voxengine format version {} is newer than this build reads ({})", version, kFormatVersion));
-    r.get("vox:world.name", h.name);
+    r.text("vox:world.name", h.name);
     r.get("vox:world.size", size);
-    r.get("vox:world.voxel_size", h.voxelSize);
+    r.number("vox:world.voxel_size", h.voxelSize, world::kVoxelSizeRange);
     if (auto up = vdb::DynamicPtrCast<const vdb::StringMetadata>(meta["vox:up_axis"])) h.zUp = up->value() == "z";
     h.size = glm::ivec3(size.x(), size.y(), size.z());
     if (r.error().empty()) {
@@ -128,19 +146,16 @@ Result<WorldHeader> readWorldMetadata(const vdb::MetaMap& meta, const std::strin
             glm::any(glm::greaterThan(h.size, glm::ivec3(world::kMaxWorldExtent))) ||
             cells.x * cells.y * cells.z > world::kMaxTopGridCells)
             r.fail(fmt::format("vox:world.size {}x{}x{} is outside the engine's limits", h.size.x, h.size.y, h.size.z));
-        if (!(h.voxelSize > 0.0f && std::isfinite(h.voxelSize))) r.fail("vox:world.voxel_size must be positive");
     }
     r.get("vox:palette.count", paletteCount);
     if (r.error().empty() && (paletteCount < 0 || std::size_t(paletteCount) >= world::kMaxMaterials))
         r.fail(fmt::format("vox:palette.count {} is outside 0..{}", paletteCount, world::kMaxMaterials - 1));
     for (std::int32_t i = 1; r.error().empty() && i <= paletteCount; ++i) {
         world::Material m;
-        r.get(materialKey(std::size_t(i), "name"), m.name);
-        r.vec3(materialKey(std::size_t(i), "albedo"), m.albedo);
-        r.vec3(materialKey(std::size_t(i), "emission"), m.emissionColor);
-        r.get(materialKey(std::size_t(i), "strength"), m.emissionStrength);
-        if (r.error().empty() && (!finite(m.albedo) || !finite(m.emissionColor) || !std::isfinite(m.emissionStrength)))
-            r.fail(fmt::format("material {} has a value that is not a finite number", i));
+        r.text(materialKey(std::size_t(i), "name"), m.name);
+        r.vec3(materialKey(std::size_t(i), "albedo"), m.albedo, world::kAlbedoRange);
+        r.vec3(materialKey(std::size_t(i), "emission"), m.emissionColor, world::kRadianceRange);
+        r.number(materialKey(std::size_t(i), "strength"), m.emissionStrength, world::kRadianceRange);
         if (r.error().empty()) (void)h.palette.add(m);
     }
     r.get("vox:camera.count", cameraCount);
@@ -148,15 +163,18 @@ Result<WorldHeader> readWorldMetadata(const vdb::MetaMap& meta, const std::strin
         r.fail(fmt::format("vox:camera.count {} is outside 0..1000", cameraCount));
     for (std::int32_t i = 0; r.error().empty() && i < cameraCount; ++i) {
         world::CameraPreset c;
-        r.get(cameraKey(std::size_t(i), "name"), c.name);
-        r.vec3(cameraKey(std::size_t(i), "position"), c.position);
-        r.vec3(cameraKey(std::size_t(i), "target"), c.target);
-        r.get(cameraKey(std::size_t(i), "fov"), c.fovYDegrees);
+        r.text(cameraKey(std::size_t(i), "name"), c.name);
+        r.vec3(cameraKey(std::size_t(i), "position"), c.position, world::kCoordinateRange);
+        r.vec3(cameraKey(std::size_t(i), "target"), c.target, world::kCoordinateRange);
+        r.number(cameraKey(std::size_t(i), "fov"), c.fovYDegrees, world::kFovRange);
+        if (r.error().empty())
+            if (Status ok = world::checkCamera(c); !ok) r.fail(fmt::format("{}: {}", cameraKey(std::size_t(i), "target"), ok.error().message));
         h.cameras.push_back(c);
     }
-    r.vec3("vox:sky.sun_direction", h.sky.sunDirection);
-    r.vec3("vox:sky.sun_radiance", h.sky.sunRadiance);
-    r.vec3("vox:sky.sky_radiance", h.sky.skyRadiance);
+    r.vec3("vox:sky.sun_direction", h.sky.sunDirection, world::kDirectionRange);
+    if (r.error().empty() && glm::length(h.sky.sunDirection) < 1e-6f) r.fail("vox:sky.sun_direction must not be zero");
+    r.vec3("vox:sky.sun_radiance", h.sky.sunRadiance, world::kRadianceRange);
+    r.vec3("vox:sky.sky_radiance", h.sky.skyRadiance, world::kRadianceRange);
     if (!r.error().empty()) return Error{r.error()};
     return h;
 }

@@ -13,6 +13,9 @@
 
 #include <fmt/format.h>
 
+#include "core/memory_budget.h"
+#include "core/quoted_string.h"
+
 namespace engine::io {
 
 void linkOpenVdbDecoders();  // io/openvdb_decoders.cpp
@@ -25,10 +28,15 @@ namespace {
 constexpr std::int64_t kVdbMagic = 0x56444220;
 constexpr char kHalfFloatSuffix[] = "_HalfFloat";
 
-std::string oneLine(std::string s) {
-    std::replace(s.begin(), s.end(), '\n', ' ');
-    std::replace(s.begin(), s.end(), '\r', ' ');
-    if (s.size() > 300) s = s.substr(0, 300) + "...";
+// Text from the file (a grid's name or type, OpenVDB's message quoting it) as one printable
+// line (core/quoted_string.h), a long one cut short.
+std::string oneLine(std::string_view text) {
+    std::string s = printableText(text);
+    if (s.size() > 300) {
+        std::size_t cut = 300;
+        while (cut > 0 && (static_cast<unsigned char>(s[cut]) & 0xC0) == 0x80) --cut;
+        s = s.substr(0, cut) + "...";
+    }
     return s;
 }
 
@@ -103,8 +111,8 @@ Error vdbError(const fs::path& path, const AllocationBudget* budget) {
         if (budget && budget->exceeded()) {
             return makeError(
                 "{}: reading it needs more memory than the budget of {} allows (a request for {} bytes was "
-                "refused); the file is damaged or too large (raise --memory-budget)",
-                file, mib(budget->totalBytes()), budget->refusedBytes());
+                "refused); the file is damaged or too large ({})",
+                file, mib(budget->totalBytes()), budget->refusedBytes(), memoryBudgetAdvice(budget->totalBytes()));
         }
         return makeError("{}: out of memory while reading", file);
     } catch (const std::ios_base::failure&) {
@@ -189,7 +197,7 @@ VdbReader::VdbReader(const fs::path& path) : mPath(path) {
             half = true;
         }
         e.name = vdb::io::GridDescriptor::stripSuffix(e.uniqueName);
-        e.displayName = vdb::io::GridDescriptor::nameAsString(e.uniqueName);
+        e.displayName = printableText(vdb::io::GridDescriptor::nameAsString(e.uniqueName));
         std::int64_t pos[3];
         mStream.read(reinterpret_cast<char*>(pos), sizeof(pos));
         const std::int64_t here = mStream.tellg();

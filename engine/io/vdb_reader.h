@@ -34,7 +34,7 @@ public:
     struct Entry {
         std::string name;         // grid name (unique name without the "[n]" suffix)
         std::string uniqueName;   // as stored: OpenVDB numbers grids of a repeated name "\x1e0", "\x1e1"...
-        std::string displayName;  // OpenVDB's printable form: "density[0]", "density[1]"... (else the name)
+        std::string displayName;  // OpenVDB's printable form: "density[0]", "density[1]"... (else the name), control characters escaped (core/quoted_string.h)
         std::string type;        // e.g. "Tree_float_5_4_3"
         std::string parent;      // instance parent's unique name, empty when not an instance
     };

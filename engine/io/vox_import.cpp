@@ -10,6 +10,10 @@
 #include <fmt/format.h>
 
 #include "core/allocation_budget.h"
+#include "core/number_check.h"
+#include "core/memory_budget.h"
+#include "core/quoted_string.h"
+#include "world/scene.h"
 #include "world/world_limits.h"
 
 namespace engine::io {
@@ -124,10 +128,9 @@ Result<Placed> place(const fs::path& path, const VoxImportOptions& options, cons
                       largestModel * sizeof(world::MaterialId) + (ec ? 0 : fileBytes);
     for (const VoxModel& m : p.file.models) r.estimateBytes += m.voxels.size() * sizeof(VoxVoxel);
     if (r.estimateBytes > options.memoryBudgetBytes)
-        return makeError("{}: importing it would need about {} (world {}x{}x{}), over the memory budget of {} (raise "
-                         "it with --memory-budget)",
+        return makeError("{}: importing it would need about {} (world {}x{}x{}), over the memory budget of {} ({})",
                          name, mibText(r.estimateBytes), r.worldSize.x, r.worldSize.y, r.worldSize.z,
-                         mibText(options.memoryBudgetBytes));
+                         mibText(options.memoryBudgetBytes), memoryBudgetAdvice(options.memoryBudgetBytes));
     if (!p.file.skippedChunks.empty()) {
         std::string skipped;
         for (const auto& [id, count] : p.file.skippedChunks)
@@ -138,7 +141,8 @@ Result<Placed> place(const fs::path& path, const VoxImportOptions& options, cons
 }
 
 Status build(Placed& p, world::Scene& scene, bool intoExisting, const VoxImportOptions& options) {
-    const std::string stem = fs::path(p.report.file).stem().string();
+    // Names are printable text wherever they come from (a scene file refuses others).
+    const std::string stem = printableText(fs::path(p.report.file).stem().string());
     std::array<world::MaterialId, 256> ids{};
     for (int c = 1; c < 256; ++c) {
         if (!p.used[std::size_t(c)]) continue;
@@ -147,6 +151,11 @@ Status build(Placed& p, world::Scene& scene, bool intoExisting, const VoxImportO
         m.albedo = voxColourToLinear(p.file.palette[std::size_t(c)]);
         if (auto matl = p.file.materials.find(c); matl != p.file.materials.end()) {
             m.emissionStrength = voxEmissionStrength(matl->second);
+            // The scene key's check (world/scene.h): a file cannot make a world no scene file holds.
+            if (Status ok = checkNumber(fmt::format("material {} emission (_emit x 2^_flux)", c), m.emissionStrength,
+                                        world::kRadianceRange);
+                !ok)
+                return makeError("{}: {}", p.report.file, ok.error().message);
             if (m.emissionStrength > 0.0f) m.emissionColor = m.albedo;
         }
         std::optional<world::MaterialId> id;
@@ -208,8 +217,8 @@ Result<T> guarded(const fs::path& path, const VoxImportOptions& options, F&& f) 
     try {
         return f(budget);
     } catch (const std::bad_alloc&) {
-        return makeError("{}: importing it needs more memory than the budget of {} allows (raise --memory-budget)",
-                         path.string(), mibText(options.memoryBudgetBytes));
+        return makeError("{}: importing it needs more memory than the budget of {} allows ({})", path.string(),
+                         mibText(options.memoryBudgetBytes), memoryBudgetAdvice(options.memoryBudgetBytes));
     }
 }
 

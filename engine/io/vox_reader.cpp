@@ -10,6 +10,10 @@
 #include <functional>
 #include <set>
 
+#include <fmt/format.h>
+
+#include "core/quoted_string.h"
+
 namespace engine::io {
 
 namespace fs = std::filesystem;
@@ -114,7 +118,7 @@ float parseFloat(const Dict& d, const char* key, const Cursor& c) {
     const char* b = it->second.data();
     auto [next, ec] = std::from_chars(b, b + it->second.size(), v);
     if (ec != std::errc() || next != b + it->second.size() || !std::isfinite(v))
-        c.fail(fmt::format("material {} '{}' is not a number", key, it->second));
+        c.fail(fmt::format("material {} '{}' is not a number", key, printableText(it->second)));
     return v;
 }
 
@@ -158,11 +162,12 @@ void readTransform(VoxFile& file, Cursor& c, std::size_t chunk) {
         if (auto r = frame.find("_r"); r != frame.end()) {
             int bits = -1;
             if (!parseInts(r->second, &bits, 1) || !decodeVoxRotation(bits, n.rotation))
-                c.fail(fmt::format("node {}: '_r' = '{}' is not a rotation", id, r->second));
+                c.fail(fmt::format("node {}: '_r' = '{}' is not a rotation", id, printableText(r->second)));
         }
         if (auto t = frame.find("_t"); t != frame.end()) {
             int v[3];
-            if (!parseInts(t->second, v, 3)) c.fail(fmt::format("node {}: '_t' = '{}' is not three integers", id, t->second));
+            if (!parseInts(t->second, v, 3))
+                c.fail(fmt::format("node {}: '_t' = '{}' is not three integers", id, printableText(t->second)));
             // Kept well inside int range so that placement arithmetic cannot overflow.
             for (int a : v)
                 if (a < -kVoxMaxTranslation || a > kVoxMaxTranslation) c.fail(fmt::format("node {}: translation {} is out of range", id, a));
@@ -311,7 +316,7 @@ Result<VoxFile> parseVox(std::span<const std::uint8_t> bytes, std::string_view n
             const std::int32_t content = children.i32("chunk content size");
             const std::int32_t nested = children.i32("chunk children size");
             if (content < 0 || nested < 0 || std::size_t(content) + std::size_t(nested) > children.remaining())
-                throw BadVox{chunk, fmt::format("chunk '{}' claims {} + {} bytes, {} left", id, content, nested,
+                throw BadVox{chunk, fmt::format("chunk '{}' claims {} + {} bytes, {} left", printableText(id), content, nested,
                                                 children.remaining())};
             Cursor c(bytes, children.pos(), children.pos() + std::size_t(content));
             readChunk(file, id, c, chunk, pendingSize, sizePending);

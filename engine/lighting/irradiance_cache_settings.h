@@ -39,7 +39,7 @@ struct IrradianceCacheSettings {
     bool filter = true;  // 3^3 Gaussian over neighbouring voxels' faces
     // Slots beyond it evict the least recently seen. Buffers grow with the entries, so an unused
     // budget costs nothing; 256 MiB holds a flythrough's entries long enough to converge (64 MiB
-    // evicted the Cornell box's: twice the error on a moving camera, docs/ACCURACY.md).
+    // evicted the Cornell box's: twice the error on a moving camera, docs/history/ACCURACY.md).
     std::uint64_t budgetBytes = 256ull << 20;
     // Rays per frame the cache's updates may trace, spent by priority (new and edited entries,
     // moving objects, changed light, then the most stale); 0: update every visible entry each

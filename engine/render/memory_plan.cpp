@@ -5,6 +5,9 @@
 #include <algorithm>
 #include <bit>
 
+#include <fmt/format.h>
+
+#include "core/memory_budget.h"
 #include "gpu/uploader.h"
 #include "render/frame_plan.h"
 #include "render/renderer.h"
@@ -54,22 +57,20 @@ std::uint64_t MemoryPlan::techniqueBytes() const {
 std::string formatMemoryPlan(const MemoryPlan& plan, std::uint64_t budgetBytes) {
     return fmt::format(
         "{:.0f} MiB to show at {}x{}: world {:.0f}, gpu world {:.0f}, upload staging {:.0f}, frame "
-        "buffers {:.0f}, "
-        "techniques {:.0f}; budget {:.0f} MiB (--memory-budget)",
+        "buffers {:.0f}, techniques {:.0f}; budget {:.0f} MiB ({})",
         mib(plan.total()), plan.frameSize.x, plan.frameSize.y, mib(plan.world), mib(plan.gpuWorld),
-        mib(plan.upload), mib(plan.frame), mib(plan.techniqueBytes()), mib(budgetBytes));
+        mib(plan.upload), mib(plan.frame), mib(plan.techniqueBytes()), mib(budgetBytes),
+        addressSpaceLimits(budgetBytes) ? "3/4 of ulimit -v" : "--memory-budget");
 }
 
 Status checkMemoryPlan(const MemoryPlan& plan, std::uint64_t budgetBytes, const std::string& what) {
     if (plan.total() <= budgetBytes) return {};
     return makeError(
         "{} needs {:.0f} MiB to show ({:.0f} the world, {:.0f} its GPU copy, {:.0f} the rest), "
-        "over the "
-        "memory budget of {:.0f} MiB: make the world smaller, or raise --memory-budget if the "
-        "machine has "
-        "the memory",
+        "over the memory budget of {:.0f} MiB: make the world smaller, or {}",
         what, mib(plan.total()), mib(plan.world), mib(plan.gpuWorld),
-        mib(plan.upload + plan.frame + plan.techniqueBytes()), mib(budgetBytes));
+        mib(plan.upload + plan.frame + plan.techniqueBytes()), mib(budgetBytes),
+        memoryBudgetAdvice(budgetBytes));
 }
 
 }  // namespace engine::render

@@ -35,8 +35,8 @@ Status runWithinBudget(const GeneratorEntry& entry, const world::GeneratorRecord
         return entry.run(record.params, scene);
     } catch (const std::bad_alloc&) {
         return makeError("generator '{}' needs more memory than the budget of {:.0f} MiB allows (the world held {:.0f} "
-                         "MiB before it): make the world smaller, or raise --memory-budget if the machine has the memory",
-                         entry.type, double(budget) / (1 << 20), double(held) / (1 << 20));
+                         "MiB before it): make the world smaller, or {}",
+                         entry.type, double(budget) / (1 << 20), double(held) / (1 << 20), memoryBudgetAdvice(budget));
     }
 }
 
@@ -95,9 +95,11 @@ private:
         const toml::node* n = top.node("world");
         if (!n || !n->as_table()) fail(&top.raw(), "missing [world] table");
         KeyReader keys(mSource, *n->as_table());
-        scene.name = keys.string("name", "untitled");
+        // Without a name, the file's own: two unnamed worlds must not share a default save.
+        const std::string stem = std::filesystem::path(mSource).stem().string();
+        scene.name = keys.string("name", stem.empty() ? "untitled" : stem.c_str());
         scene.voxelSize =
-            static_cast<float>(keys.number("voxel_size", 1.0, aboveRange(0.0, 1e6, "m")));
+            static_cast<float>(keys.number("voxel_size", 1.0, world::kVoxelSizeRange));
         glm::ivec3 size =
             keys.ivec3("size", {}, wholeRange(1, world::kMaxWorldExtent, "voxels"), true);
         glm::u64vec3 cells = glm::u64vec3((size + 7) / 8);
@@ -115,9 +117,9 @@ private:
         world::Material mat;
         mat.name = m.string("name");
         if (scene.palette.find(mat.name)) fail(&node, "material '{}' is defined twice", mat.name);
-        mat.albedo = m.vec3("albedo", mat.albedo, closedRange(0.0, 1.0));
-        mat.emissionColor = m.vec3("emission", glm::vec3(1.0f), kRadianceRange);
-        mat.emissionStrength = static_cast<float>(m.number("strength", 0.0, kRadianceRange));
+        mat.albedo = m.vec3("albedo", mat.albedo, world::kAlbedoRange);
+        mat.emissionColor = m.vec3("emission", glm::vec3(1.0f), world::kRadianceRange);
+        mat.emissionStrength = static_cast<float>(m.number("strength", 0.0, world::kRadianceRange));
         if (!mat.emissive()) {
             mat.emissionColor = glm::vec3(0.0f);
             mat.emissionStrength = 0.0f;
@@ -160,7 +162,7 @@ private:
         object.name = o.string("name", "object");
         object.modelSize =
             o.ivec3("size", {}, wholeRange(1, world::kMaxObjectExtent, "voxels"), true);
-        object.model = world::BrickGrid(object.modelSize);
+        world::BrickGrid model(object.modelSize);
 
         const toml::node* gens = o.node("generator");
         const toml::array* ga = gens ? gens->as_array() : nullptr;
@@ -168,17 +170,18 @@ private:
             fail(gens ? gens : &node,
                  "object '{}' needs at least one [[object.generator]] for its model", object.name);
         // The generators write scene.grid: lend them the model's grid for the while.
-        std::swap(scene.grid, object.model);
+        std::swap(scene.grid, model);
         try {
             for (const toml::node& g : *ga) readGenerator(g, scene, object.generators);
         } catch (...) {
-            std::swap(scene.grid, object.model);
+            std::swap(scene.grid, model);
             throw;
         }
-        std::swap(scene.grid, object.model);
-        object.model.clearDirty();
-        if (object.model.solidVoxels() == 0)
+        std::swap(scene.grid, model);
+        model.clearDirty();
+        if (model.solidVoxels() == 0)
             fail(gens, "object '{}': its generators leave the model empty", object.name);
+        object.model = std::make_shared<const world::BrickGrid>(std::move(model));
 
         bool loop = o.boolean("loop", true);
         const toml::node* keys = o.node("key");
@@ -240,14 +243,14 @@ private:
         const toml::table* t = n.as_table();
         if (!t) fail(&n, "'sky' must be a table");
         KeyReader sky(mSource, *t);
-        glm::vec3 dir = sky.vec3("sun_direction", scene.sky.sunDirection, closedRange(-1e6, 1e6));
+        glm::vec3 dir = sky.vec3("sun_direction", scene.sky.sunDirection, world::kDirectionRange);
         if (glm::length(dir) < 1e-6f) fail(&n, "'sun_direction' must not be zero");
         // A unit vector (as a written-back scene holds) is kept as is: normalising it again can
         // move its last bits, and load -> write -> load would drift.
         scene.sky.sunDirection =
             std::abs(glm::length(dir) - 1.0f) > 1e-6f ? glm::normalize(dir) : dir;
-        scene.sky.sunRadiance = sky.vec3("sun_radiance", scene.sky.sunRadiance, kRadianceRange);
-        scene.sky.skyRadiance = sky.vec3("sky_radiance", scene.sky.skyRadiance, kRadianceRange);
+        scene.sky.sunRadiance = sky.vec3("sun_radiance", scene.sky.sunRadiance, world::kRadianceRange);
+        scene.sky.skyRadiance = sky.vec3("sky_radiance", scene.sky.skyRadiance, world::kRadianceRange);
         if (sky.has("sky_light")) {
             const toml::node* at = sky.node("sky_light");
             const lighting::Knob* knob = lighting::knobForOption("sky");

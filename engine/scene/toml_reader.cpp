@@ -30,7 +30,7 @@ KeyReader::~KeyReader() noexcept(false) {
 void KeyReader::finish() {
     mFinished = true;
     for (auto&& [key, node] : mTable) {
-        if (!mUsed.count(std::string(key.str()))) fail(&node, "unknown key '{}'", key.str());
+        if (!mUsed.count(std::string(key.str()))) fail(&node, "unknown key '{}'", printableText(key.str()));
     }
 }
 
@@ -41,6 +41,12 @@ const toml::node* KeyReader::node(std::string_view key) {
 
 void KeyReader::acceptAll() {
     for (auto&& [key, node] : mTable) mUsed.insert(std::string(key.str()));
+}
+
+const std::string& KeyReader::printable(const toml::node* at, std::string_view key, const std::string& text) const {
+    if (printableText(text) != text)
+        fail(at, "'{}' must be printable text, without control characters: '{}'", key, printableText(text));
+    return text;
 }
 
 void KeyReader::check(const toml::node* at, std::string_view name, double value,
@@ -91,7 +97,7 @@ std::string KeyReader::string(std::string_view key, const char* fallback) {
         if (!fallback) fail(&mTable, "missing '{}'", key);
         return fallback;
     }
-    if (auto v = n->value<std::string>()) return *v;
+    if (auto v = n->value<std::string>()) return printable(n, key, *v);
     fail(n, "'{}' must be a string", key);
 }
 
@@ -104,7 +110,7 @@ std::vector<std::string> KeyReader::strings(std::string_view key) {
     for (const toml::node& e : *a) {
         auto v = e.value<std::string>();
         if (!v) fail(n, "'{}' must be an array of strings", key);
-        out.push_back(*v);
+        out.push_back(printable(&e, key, *v));
     }
     return out;
 }

@@ -16,6 +16,7 @@
 
 #include "core/error.h"
 #include "core/number_check.h"
+#include "core/quoted_string.h"
 
 namespace engine::scene {
 
@@ -41,7 +42,7 @@ Result<T> parseToml(std::string_view text, std::string_view source,
         toml::table root = toml::parse(text, source);
         return read(root);
     } catch (const toml::parse_error& e) {
-        return makeError("{}:{}: {}", source, e.source().begin.line, e.description());
+        return makeError("{}:{}: {}", source, e.source().begin.line, printableText(e.description()));
     } catch (const ParseError& e) {
         return Error{e.message};
     }
@@ -84,6 +85,8 @@ public:
                   bool required = false);
     int integer(std::string_view key, int fallback, const NumberRange& range);
     bool boolean(std::string_view key, bool fallback, bool required = false);
+    // Strings are names, types and paths: printable text, one line (core/quoted_string.h), so
+    // whatever shows them later -- a message, a report, the HUD -- shows what the file says.
     std::string string(std::string_view key,
                        const char* fallback = nullptr);      // no fallback: required
     std::vector<std::string> strings(std::string_view key);  // an array of strings; absent: none
@@ -102,6 +105,7 @@ private:
     glm::vec<N, double> vector(std::string_view key, glm::vec<N, double> fallback,
                                NumberRange range, bool required);
     void check(const toml::node* at, std::string_view name, double value, const NumberRange& range);
+    const std::string& printable(const toml::node* at, std::string_view key, const std::string& text) const;
 
     std::string mSource;
     const toml::table& mTable;
@@ -113,7 +117,5 @@ private:
 // Voxel indices (box corners, offsets): the largest world is 32768 voxels across.
 inline constexpr NumberRange kVoxelIndexRange = wholeRange(-(1 << 20), 1 << 20, "voxels");
 inline constexpr NumberRange kSeedRange = wholeRange(0, 2147483647);
-// Linear colours and radiance: 0 is black; 1e6 is far above any light in a scene.
-inline constexpr NumberRange kRadianceRange = closedRange(0.0, 1e6);
 
 }  // namespace engine::scene

@@ -4,9 +4,14 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <utility>
+#include <fstream>
+#include <optional>
+#include <set>
 
 #include "core/atomic_file.h"
+#include "core/file_name.h"
+#include "core/folder_lock.h"
+#include "core/hash.h"
 #include "io/vdb_export.h"
 
 namespace engine::scene {
@@ -15,24 +20,92 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Payload generations of `stem` in `dir`: STEM.N.vdb.
-std::vector<std::pair<std::uint64_t, fs::path>> payloads(const fs::path& dir, const std::string& stem) {
-    std::vector<std::pair<std::uint64_t, fs::path>> out;
+// The longest suffix a payload name adds to its stem: ".object-" + 16 hex digits + ".vdb".
+constexpr std::size_t kPayloadSuffixRoom = 28;
+
+fs::path folderOf(const fs::path& sceneFile) {
+    return sceneFile.parent_path().empty() ? fs::path(".") : sceneFile.parent_path();
+}
+
+// N of `STEM.N.vdb`, if `name` is one.
+std::optional<std::uint64_t> generationOf(const std::string& name, const std::string& stem) {
+    if (name.size() <= stem.size() + 1 || name.compare(0, stem.size() + 1, stem + ".") != 0)
+        return std::nullopt;
+    const std::string rest = name.substr(stem.size() + 1);
+    const auto dot = rest.find('.');
+    if (dot == std::string::npos || dot == 0 || dot > 18 || rest.substr(dot) != ".vdb")
+        return std::nullopt;
+    const std::string digits = rest.substr(0, dot);
+    if (digits.find_first_not_of("0123456789") != std::string::npos) return std::nullopt;
+    return std::stoull(digits);
+}
+
+// The new payload's generation: above every `STEM.N.vdb` in the folder, so it never replaces a
+// file that is there (ours or not).
+std::uint64_t nextGeneration(const fs::path& dir, const std::string& stem) {
+    std::uint64_t next = 1;
     std::error_code ec;
-    for (const fs::directory_entry& e : fs::directory_iterator(dir.empty() ? "." : dir, ec)) {
-        std::string name = e.path().filename().string();
-        if (name.size() <= stem.size() + 1 || name.compare(0, stem.size() + 1, stem + ".") != 0) continue;
-        std::string rest = name.substr(stem.size() + 1);
-        auto dot = rest.find('.');
-        if (dot == std::string::npos || dot == 0 || rest.substr(dot) != ".vdb") continue;
-        std::string digits = rest.substr(0, dot);
-        if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 18) continue;
-        out.emplace_back(std::stoull(digits), e.path());
+    for (const fs::directory_entry& e : fs::directory_iterator(dir, ec))
+        if (auto n = generationOf(e.path().filename().string(), stem))
+            next = std::max(next, *n + 1);
+    return next;
+}
+
+// The names in a list of the world's own payloads (the manifest or the journal); only plain
+// names of this world's payloads are taken, so a damaged or edited list cannot point elsewhere.
+std::set<std::string> readList(const fs::path& list, const std::string& stem) {
+    std::set<std::string> names;
+    std::ifstream in(list);
+    std::string line;
+    while (std::getline(in, line)) {
+        const bool ours =
+            line.size() > stem.size() + 5 && line.compare(0, stem.size() + 1, stem + ".") == 0 &&
+            line.compare(line.size() - 4, 4, ".vdb") == 0 && line.find('/') == std::string::npos;
+        if (ours) names.insert(line);
     }
-    return out;
+    return names;
+}
+
+Status writeList(const fs::path& list, const fs::path& sceneFile,
+                 const std::set<std::string>& names) {
+    std::string text =
+        fmt::format("# Payloads vox wrote for {}; removed once it names them no more\n",
+                    sceneFile.filename().string());
+    for (const std::string& n : names) text += n + "\n";
+    return writeFileAtomically(list, text);
+}
+
+fs::path beside(const fs::path& sceneFile, const std::string& suffix) {
+    std::string name = ".";
+    name += fitFileName(sceneFile.filename().string() + suffix, kMaxFileName - 1);
+    return sceneFile.parent_path() / name;
+}
+
+// The world's lock: FOLDER/.lock's bytes from 2^62 up are worlds', one per scene file name
+// (captures claim their frame numbers, far below).
+Result<FolderLock> lockWorld(const fs::path& sceneFile) {
+    const std::uint64_t byte =
+        (std::uint64_t(1) << 62) | (fnv1a64(sceneFile.filename().string()) >> 2);
+    return FolderLock::acquire(folderOf(sceneFile), "save or import", byte, 1, sceneFile.string());
 }
 
 }  // namespace
+
+std::string payloadStem(const fs::path& sceneFile) {
+    return fitFileName(sceneFile.stem().string(), kMaxFileName - kPayloadSuffixRoom);
+}
+
+fs::path payloadManifest(const fs::path& sceneFile) { return beside(sceneFile, ".payloads"); }
+
+fs::path payloadJournal(const fs::path& sceneFile) { return beside(sceneFile, ".writing"); }
+
+bool sceneFileMarked(const fs::path& sceneFile, std::string_view marker) {
+    std::ifstream in(sceneFile);
+    std::string first;
+    std::getline(in, first);
+    return first.size() >= marker.size() + 2 && first.compare(0, 2, "# ") == 0 &&
+           first.compare(2, marker.size(), marker) == 0;
+}
 
 Status writeWorldPair(const world::Scene& scene, const fs::path& sceneFile,
                       const std::function<std::string(const std::string& payloadFileName)>& sceneText,
@@ -41,31 +114,74 @@ Status writeWorldPair(const world::Scene& scene, const fs::path& sceneFile,
     // refused before any payload is written.
     AtomicFile sceneOut;
     if (Status s = sceneOut.open(sceneFile); !s) return s;
+    auto lock = lockWorld(sceneFile);
+    if (!lock) return lock.error();
 
     const fs::path dir = sceneFile.parent_path();
-    removeStaleTemporaries(dir);  // left by saves killed mid-write (every save, not once per process)
-    const std::string stem = sceneFile.stem().string();
-    std::uint64_t generation = 1;
-    for (const auto& [n, path] : payloads(dir, stem)) generation = std::max(generation, n + 1);
-    const fs::path payload = dir / fmt::format("{}.{}.vdb", stem, generation);
+    removeStaleTemporaries(
+        folderOf(sceneFile));  // left by saves killed mid-write (every save, not once per process)
+    const std::string stem = payloadStem(sceneFile);
+    const fs::path manifest = payloadManifest(sceneFile), journal = payloadJournal(sceneFile);
+    std::error_code ec;
+    const bool died =
+        fs::exists(journal, ec);  // a write that died left it: its files are the world's too
+    const std::set<std::string> listed = readList(manifest, stem),
+                                unfinished = readList(journal, stem);
+    const std::string payloadName =
+        fmt::format("{}.{}.vdb", stem, nextGeneration(folderOf(sceneFile), stem));
+
+    // What this write creates goes in the journal before it is written: the payload and the
+    // further payloads not there yet.
+    std::set<std::string> named{payloadName}, created{payloadName};
+    std::vector<const PayloadFile*> toWrite;
+    for (const PayloadFile& p : options.extraPayloads) {
+        named.insert(p.fileName);
+        if (fs::exists(dir / p.fileName, ec)) continue;
+        toWrite.push_back(&p);
+        created.insert(p.fileName);
+    }
+    std::set<std::string> journalled = unfinished;
+    journalled.insert(created.begin(), created.end());
+    if (Status s = writeList(journal, sceneFile, journalled); !s) return s;
+
+    std::vector<fs::path> written;
+    auto undo = [&](const Status& failed) {
+        sceneOut.abandon();
+        for (const fs::path& w : written)
+            fs::remove(w, ec);               // the old scene file names none of them
+        if (!died) fs::remove(journal, ec);  // (a dead write's journal stays for the next)
+        return failed;
+    };
+    for (const PayloadFile* p : toWrite) {
+        if (Status s = p->write(dir / p->fileName); !s) return undo(s);
+        written.push_back(dir / p->fileName);
+    }
     // Colour grids included so other OpenVDB tools show the world in colour (loading needs only
     // the ids).
-    if (Status s = io::exportVdb(scene, payload); !s) return s;
+    if (Status s = io::exportVdb(scene, dir / payloadName); !s) return undo(s);
+    written.push_back(dir / payloadName);
 
-    Status s = sceneOut.write(sceneText(payload.filename().string()));
+    Status s = sceneOut.write(sceneText(payloadName));
     if (s && options.beforeCommit) s = options.beforeCommit();
     if (s) s = sceneOut.commit();
-    std::error_code ec;
-    if (!s) {
-        sceneOut.abandon();
-        fs::remove(payload, ec);  // the old scene file still names the old payload
-        return s;
+    if (!s) return undo(s);
+
+    // Committed. The world's own files the new scene file does not name go; the kept ones are the
+    // user's from now on.
+    std::set<std::string> own, all = listed;
+    all.insert(journalled.begin(), journalled.end());
+    for (const std::string& name : all) {
+        const fs::path file = dir / name;
+        const bool kept =
+            std::any_of(options.keep.begin(), options.keep.end(),
+                        [&](const fs::path& k) { return fs::equivalent(k, file, ec); });
+        if (named.count(name))
+            own.insert(name);
+        else if (!kept)
+            fs::remove(file, ec);
     }
-    for (const auto& [n, path] : payloads(dir, stem)) {
-        const bool kept = std::any_of(options.keep.begin(), options.keep.end(),
-                                      [&](const fs::path& k) { return fs::equivalent(k, path, ec); });
-        if (n != generation && !kept) fs::remove(path, ec);
-    }
+    // If the manifest cannot be written, the journal stays and the next write tidies up.
+    if (writeList(manifest, sceneFile, own)) fs::remove(journal, ec);
     return {};
 }
 

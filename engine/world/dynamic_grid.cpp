@@ -46,7 +46,8 @@ DynamicGrid voxelizeObjects(std::span<const DynamicObject> objects) {
         const glm::dmat4 worldFromModel = o.worldFromModel(o.current);
         const glm::dmat4 modelFromWorld = glm::inverse(worldFromModel);
         const Box modelBox{glm::ivec3(0), o.modelSize};
-        const glm::ivec3 modelCells = o.model.sizeInCells();
+        const BrickGrid& model = *o.model;
+        const glm::ivec3 modelCells = model.sizeInCells();
         // Only the model's non-empty cells: each maps to a small world box whose voxel centres
         // are tested against that cell alone, so every world voxel is decided by exactly the
         // model cell its centre falls in.
@@ -54,7 +55,7 @@ DynamicGrid voxelizeObjects(std::span<const DynamicObject> objects) {
             for (int cy = 0; cy < modelCells.y; ++cy)
                 for (int cx = 0; cx < modelCells.x; ++cx) {
                     const glm::ivec3 c(cx, cy, cz);
-                    if (o.model.cell(c) == shared::CELL_EMPTY) continue;
+                    if (model.cell(c) == shared::CELL_EMPTY) continue;
                     const Box cellBox = Box{c * dim, c * dim + dim}.intersect(modelBox);
                     if (cellBox.empty()) continue;
                     glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
@@ -73,7 +74,7 @@ DynamicGrid voxelizeObjects(std::span<const DynamicObject> objects) {
                                 glm::dvec3 m(modelFromWorld * glm::dvec4(x + 0.5, y + 0.5, z + 0.5, 1.0));
                                 glm::ivec3 mv(glm::floor(m));
                                 if (!cellBox.contains(mv)) continue;
-                                MaterialId material = o.model.get(mv);
+                                MaterialId material = model.get(mv);
                                 if (material == kEmpty) continue;
                                 glm::ivec3 local = glm::ivec3(x, y, z) - out.origin;
                                 if (!out.grid.contains(local)) continue;  // rounding at the very edge

@@ -6,8 +6,13 @@
 // (positions) and slerp (rotations); a looping path wraps time into [first key, last key).
 // Everything is a pure function of the time, so a frame renders the same wherever it is rendered.
 // Each frame the objects are re-voxelised into one world-aligned grid (world/dynamic_grid.h).
+//
+// The model is shared, never copied: copies of an object (undo steps, a drag's start) hold the
+// same grid, whose brick pool takes a whole page however few bricks it holds. Built once, it
+// is const from then on.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -62,7 +67,7 @@ private:
 
 struct DynamicObject {
     std::string name;
-    BrickGrid model{glm::ivec3(8)};
+    std::shared_ptr<const BrickGrid> model = std::make_shared<const BrickGrid>(glm::ivec3(8));
     std::vector<GeneratorRecord> generators;  // what built `model`, for writing the scene back
     glm::ivec3 modelSize{8};  // the model's extent in voxels (the grid rounds it up to bricks)
     ObjectPath path;

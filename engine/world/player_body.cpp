@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "world/scene.h"
+
 namespace engine::world {
 
 PlayerBox PlayerBody::boxAt(glm::dvec3 feet, double height) const {
@@ -19,10 +21,12 @@ glm::dvec3 PlayerBody::eye() const {
 void PlayerBody::place(const CollisionWorld& world, glm::dvec3 feet) {
     const glm::dvec3 size(world.grid.sizeInVoxels());
     const double half = 0.5 * mSettings.width * mSettings.scale + kSkin;
-    mFeet = feet;
-    mFeet.x = std::clamp(feet.x, half, std::max(half, size.x - half));
-    mFeet.z = std::clamp(feet.z, half, std::max(half, size.z - half));
-    mFeet.y = std::max(feet.y, kSkin);
+    // Wherever the camera was -- far out, or nowhere (NaN) -- the body starts inside the world's
+    // sides, above its floor and no higher than any position a file may give (kCoordinateRange).
+    auto within = [](double v, double lo, double hi, double ifNaN) { return std::isnan(v) ? ifNaN : std::clamp(v, lo, hi); };
+    mFeet.x = within(feet.x, half, std::max(half, size.x - half), 0.5 * size.x);
+    mFeet.z = within(feet.z, half, std::max(half, size.z - half), 0.5 * size.z);
+    mFeet.y = within(feet.y, kSkin, kCoordinateRange.max, size.y);
     mVelocity = glm::dvec3(0.0);
     mOnGround = false;
     mCrouching = false;
@@ -68,7 +72,7 @@ double PlayerBody::liftOut(const CollisionWorld& world) {
     // (inside its sides), unless dynamic objects float there.
     const double start = mFeet.y;
     const int top = world.grid.sizeInVoxels().y + 4096;
-    for (int level = int(std::floor(start)) + 1; level <= top; ++level) {
+    for (int level = voxelFloor(start) + 1; level <= top; ++level) {
         mFeet.y = double(level) + kSkin;
         if (!overlapsSolid(world, box())) break;
     }
@@ -80,7 +84,7 @@ void PlayerBody::findSupport(const CollisionWorld& world) {
     mSupport.reset();
     if (!mOnGround || !world.dynamic) return;
     Box voxels = overlappedVoxels(box());
-    const int below = int(std::floor(box().min.y - 2.0 * kSkin));
+    const int below = voxelFloor(box().min.y - 2.0 * kSkin);
     for (int z = voxels.min.z; z < voxels.max.z; ++z)
         for (int x = voxels.min.x; x < voxels.max.x; ++x) {
             const glm::ivec3 v(x, below, z);

@@ -5,11 +5,37 @@
 
 namespace engine::world {
 
+namespace {
+
+constexpr int kFar = 1 << 30;
+
+int voxelCeil(double v) {
+    if (!(v > -kFar)) return -kFar;  // NaN too: a NaN box is empty
+    if (!(v < kFar)) return kFar;
+    return int(std::ceil(v));
+}
+
+}  // namespace
+
+int voxelFloor(double v) {
+    if (!(v > -kFar)) return -kFar;  // NaN too
+    if (!(v < kFar)) return kFar;
+    return int(std::floor(v));
+}
+
 Box overlappedVoxels(const PlayerBox& box) {
-    return {glm::ivec3(glm::floor(box.min)), glm::ivec3(glm::ceil(box.max))};
+    return {glm::ivec3(voxelFloor(box.min.x), voxelFloor(box.min.y), voxelFloor(box.min.z)),
+            glm::ivec3(voxelCeil(box.max.x), voxelCeil(box.max.y), voxelCeil(box.max.z))};
+}
+
+int CollisionWorld::solidTop() const {
+    int top = grid.sizeInVoxels().y;
+    if (dynamic && dynamic->present()) top = std::max(top, dynamic->origin.y + dynamic->grid.sizeInVoxels().y);
+    return top;
 }
 
 bool CollisionWorld::solid(glm::ivec3 v) const {
+    ++voxelReads;
     const glm::ivec3 size = grid.sizeInVoxels();
     if (v.x < 0 || v.z < 0 || v.x >= size.x || v.z >= size.z || v.y < 0)
         return true;                         // the world's walls
@@ -44,11 +70,14 @@ bool layerSolid(const CollisionWorld& world, const Box& voxels, int axis, int in
 double sweepAxis(const CollisionWorld& world, PlayerBox& box, int axis, double distance) {
     if (distance == 0.0 || !std::isfinite(distance)) return 0.0;
     const Box voxels = overlappedVoxels(box);
+    // Sideways the world's walls and downwards its floor are solid, so a sweep that way stops
+    // within the world; upwards nothing is solid above solidTop(): the layers there are skipped.
+    const int top = axis == 1 ? world.solidTop() - 1 : INT32_MAX;
     double moved = distance;
     if (distance > 0.0) {
         // Layers from the first one past the box's current extent to the last the move reaches.
-        const int first = int(std::ceil(box.max[axis]));
-        const int last = int(std::ceil(box.max[axis] + distance)) - 1;
+        const int first = voxelCeil(box.max[axis]);
+        const int last = std::min(voxelCeil(box.max[axis] + distance) - 1, top);
         for (int i = first; i <= last; ++i) {
             if (layerSolid(world, voxels, axis, i)) {
                 moved = std::clamp(double(i) - kSkin - box.max[axis], 0.0, distance);
@@ -56,8 +85,8 @@ double sweepAxis(const CollisionWorld& world, PlayerBox& box, int axis, double d
             }
         }
     } else {
-        const int first = int(std::floor(box.min[axis])) - 1;
-        const int last = int(std::floor(box.min[axis] + distance));
+        const int first = std::min(voxelFloor(box.min[axis]) - 1, top);
+        const int last = voxelFloor(box.min[axis] + distance);
         for (int i = first; i >= last; --i) {
             if (layerSolid(world, voxels, axis, i)) {
                 moved = std::clamp(double(i + 1) + kSkin - box.min[axis], distance, 0.0);

@@ -26,6 +26,12 @@ inline constexpr NumberRange kFovRange = openRange(1.0, 179.0, "degrees");
 // Positions (cameras, sphere centres, object keys): far beyond any world, and floats still hold
 // whole voxels there.
 inline constexpr NumberRange kCoordinateRange = closedRange(-1e7, 1e7, "voxels");
+// The other numbers a world holds, checked by these ranges wherever they come from: a scene
+// file's keys, a .vdb file's metadata and its grid's transform.
+inline constexpr NumberRange kVoxelSizeRange = aboveRange(0.0, 1e6, "m");
+inline constexpr NumberRange kAlbedoRange = closedRange(0.0, 1.0);
+inline constexpr NumberRange kRadianceRange = closedRange(0.0, 1e6);  // emission, its strength, sun and sky
+inline constexpr NumberRange kDirectionRange = closedRange(-1e6, 1e6);  // the sun's, not yet normalised
 
 struct CameraPreset {
     std::string name;

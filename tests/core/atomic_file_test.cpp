@@ -207,3 +207,47 @@ TEST(FolderLock, AnOverlappingClaimIsRefusedNamingTheHolder) {
     // The holder has exited: the kernel released its lock.
     EXPECT_TRUE(engine::FolderLock::acquire(dir.path(), "vox capture").ok());
 }
+
+// Issue 41, item 9: the temporary's name (.NAME.tmp-PID) is predictable, and it was opened
+// without O_EXCL or O_NOFOLLOW, so a symlink planted there redirected the write and the chmod
+// (to the previous file's mode) to the file it pointed at. Now the temporary is created
+// exclusively and never followed: the planted link is removed, not written through.
+TEST(AtomicFile, APlantedSymlinkAtTheTemporaryIsNotFollowed) {
+    Scratch dir;
+    const fs::path victim = dir / "victim.txt", file = dir / "out.toml";
+    std::ofstream(victim) << "precious";
+    const fs::perms victimMode = fs::perms::owner_read | fs::perms::owner_write |
+                                 fs::perms::group_read | fs::perms::others_read;
+    fs::permissions(victim, victimMode);
+    ASSERT_TRUE(engine::writeFileAtomically(file, "old").ok());
+    fs::permissions(file,
+                    fs::perms::owner_read | fs::perms::owner_write);  // a followed chmod would show
+    fs::create_symlink(victim, engine::temporaryPathFor(file));
+    engine::Status s = engine::writeFileAtomically(file, "new");
+    EXPECT_EQ(bytesOf(victim), "precious");
+    EXPECT_EQ(fs::status(victim).permissions() & fs::perms::all, victimMode);
+    EXPECT_FALSE(fs::is_symlink(file));
+    ASSERT_TRUE(s.ok()) << s.error().message;
+    EXPECT_EQ(bytesOf(file), "new");
+    EXPECT_EQ(filesIn(dir.path()), 2u);  // out.toml, victim.txt: the link is gone
+}
+
+// Issue 41, item 11: names of 245 to 255 bytes were refused ("File name too long"): the
+// temporary's ".NAME.tmp-PID" is up to 13 bytes longer than NAME and went past NAME_MAX (255).
+TEST(AtomicFile, FileNamesUpToTheLimitAreWrittenAndReplaced) {
+    Scratch dir;
+    const std::size_t lengths[] = {240, 245, 250, 254, 255};
+    for (std::size_t length : lengths) {
+        const fs::path file = dir / (std::string(length - 4, 'n') + ".png");
+        engine::Status s = engine::writeFileAtomically(file, "first");
+        ASSERT_TRUE(s.ok()) << length << ": " << s.error().message;
+        s = engine::writeFileAtomically(file, "second");
+        ASSERT_TRUE(s.ok()) << length << ": " << s.error().message;
+        EXPECT_EQ(bytesOf(file), "second") << length;
+        EXPECT_LE(engine::temporaryPathFor(file).filename().string().size(), 255u) << length;
+    }
+    EXPECT_EQ(filesIn(dir.path()), std::size(lengths));  // no temporary left
+    // Long names that differ only at the end get different temporaries.
+    EXPECT_NE(engine::temporaryPathFor(dir / (std::string(250, 'n') + "a.png")),
+              engine::temporaryPathFor(dir / (std::string(250, 'n') + "b.png")));
+}

@@ -108,3 +108,24 @@ TEST(HudLayout, ThreeHundredMaterialsScrollInsideTheirBox) {
     EXPECT_EQ(few.rows, 2);
     EXPECT_FALSE(few.scrolls());
 }
+
+TEST(HudLayout, CompactStripInANarrowTallWindowHasRoomForAllItsLines) {
+    // The strip's figures wrapped at a narrow width take more than four lines; a tall window has
+    // the room, so the strip gets it (a short window keeps it to four lines, to leave the view).
+    const std::vector<std::string> entries = {"249.1 ms", "4 fps", "GPU 210.3 ms", "place voxel", "material 12 (light)",
+                                              "target 120 45 300", "unsaved", "walk: on the ground", "F1: keys"};
+    auto chars = [](std::string_view s) { return static_cast<float>(s.size()) * 7.0f; };  // 7 px per glyph
+    const float pad = 16.0f;  // ImGui's window padding, both sides
+    for (glm::vec2 window : {glm::vec2(200, 700), glm::vec2(240, 1000)}) {
+        SCOPED_TRACE(testing::Message() << window.x << "x" << window.y);
+        HudLayout l = game::layoutHud(window, kLine, false, true);
+        ASSERT_TRUE(l.compact);
+        const auto lines = game::wrapEntries(entries, ", ", l.stats.size.x - pad, chars);
+        EXPECT_GT(lines.size(), 4u);
+        EXPECT_GE(l.stats.size.y, float(lines.size()) * kLine + pad) << lines.size() << " lines";
+        // And the view keeps most of the window.
+        EXPECT_LE(l.stats.size.y, window.y * 0.5f);
+    }
+    HudLayout wide = game::layoutHud({320, 180}, kLine, false, false);
+    EXPECT_LE(wide.stats.size.y, 4.0f * kLine + 16.0f);
+}

@@ -96,9 +96,23 @@ protected:
 TEST_F(HudWindows, ApartAndInsideAtEverySize) {
     for (bool keys : {false, true}) {
         hud.showKeys = keys;
-        for (ImVec2 size : {ImVec2(320, 180), ImVec2(640, 360), ImVec2(1280, 720), ImVec2(3840, 2160)}) {
+        for (ImVec2 size : {ImVec2(320, 180), ImVec2(200, 700), ImVec2(640, 360), ImVec2(1280, 720), ImVec2(3840, 2160)}) {
             SCOPED_TRACE(testing::Message() << size.x << "x" << size.y << (keys ? " with keys" : ""));
             expectApartAndInside(size);
+        }
+    }
+}
+
+TEST_F(HudWindows, AWorldWithNoMaterialsDraws) {
+    // A scene of [world] alone, or a .vox without colours: the palette holds only "empty", and
+    // the tools' material (1 by default) names nothing. The HUD says so instead of aborting.
+    palette = engine::world::Palette();
+    stats.target.hit = false;
+    for (bool keys : {false, true}) {
+        hud.showKeys = keys;
+        for (ImVec2 size : {ImVec2(320, 180), ImVec2(1280, 720)}) {
+            SCOPED_TRACE(testing::Message() << size.x << "x" << size.y << (keys ? " with keys" : ""));
+            EXPECT_NO_THROW(expectApartAndInside(size));
         }
     }
 }

@@ -104,7 +104,7 @@ std::string describeObjects(const Scene& scene) {
     std::string out;
     for (const DynamicObject& o : scene.objects) {
         out += fmt::format("{} size {} {} {} voxels {} loop {}\n", o.name, o.modelSize.x, o.modelSize.y, o.modelSize.z,
-                           o.model.solidVoxels(), o.path.loop());
+                           o.model->solidVoxels(), o.path.loop());
         for (const ObjectKey& k : o.path.keys())
             out += fmt::format("  key {} at {} {} {} yaw {}\n", k.time, k.position.x, k.position.y, k.position.z, k.angles.x);
     }
@@ -391,4 +391,85 @@ TEST(ObjectTools, DraggingTheSelectedObjectFollowsTheCrosshairAndUndoesInOneStep
     ASSERT_FALSE(undo.undo(scene.grid, scene.objects).empty());
     game::refreshObjects(scene, 1.0);
     EXPECT_EQ(dynamicVoxels(scene), placed);
+}
+
+namespace {
+
+// The process's resident memory (VmRSS in /proc/self/status).
+std::size_t residentBytes() {
+    std::ifstream in("/proc/self/status");
+    std::string line;
+    while (std::getline(in, line))
+        if (line.rfind("VmRSS:", 0) == 0) return std::size_t(std::stoull(line.substr(6))) << 10;
+    ADD_FAILURE() << "no VmRSS in /proc/self/status";
+    return 0;
+}
+
+}  // namespace
+
+TEST(ObjectTools, FourHundredNudgesKeepMemoryFlat) {
+    // Each move is an undo step holding the object as it was; the model is shared with the scene,
+    // so a step costs its path keys, not a copy of the model's brick pool (a whole page).
+    TempDir dir;
+    game::ObjectModel crate = crateModel(dir);
+    Scene scene = floorScene();
+    game::UndoHistory undo(256u << 20);  // vox play's default: the budget drops nothing here
+    ASSERT_TRUE(game::placeObject(scene, undo, crate, lookDownAt(scene, 20.5f, 20.5f), 0.0).changed);
+    const std::size_t bound = 64u << 20;
+    const std::size_t start = residentBytes();
+    for (int i = 0; i < 400; ++i) {
+        ASSERT_TRUE(game::moveObject(scene, undo, 0, {i % 2 == 0 ? 1 : -1, 0, 0}, 0.0).changed);
+        // Stop at once past the bound: the leak would take gigabytes by the end.
+        ASSERT_LE(residentBytes(), start + bound)
+            << "after " << i + 1 << " nudges the process grew by " << (residentBytes() - start) / double(1 << 20) << " MiB";
+    }
+    EXPECT_EQ(undo.stats().undoSteps, 401u);
+    EXPECT_EQ(undo.stats().droppedSteps, 0u);
+    // Undo and redo all of it: still flat.
+    while (undo.canUndo()) undo.undo(scene.grid, scene.objects);
+    while (undo.canRedo()) undo.redo(scene.grid, scene.objects);
+    EXPECT_LE(residentBytes(), start + bound);
+}
+
+TEST(ObjectTools, TheUndoBudgetCountsWhatAStepHoldsAndDropsOldSteps) {
+    TempDir dir;
+    game::ObjectModel crate = crateModel(dir);
+    Scene scene = floorScene();
+    // The model's grid holds one page of bricks however few it uses: what a deleted object's
+    // step keeps alive.
+    const std::uint64_t page = BrickGrid::poolBytesFor(1);
+    game::UndoHistory undo(256u << 20);
+    game::placeObject(scene, undo, crate, lookDownAt(scene, 20.5f, 20.5f), 0.0);
+    game::deleteObject(scene, undo, 0, 0.0);
+    EXPECT_GE(undo.stats().bytes, page) << "a deleted crate's step holds its model";
+    undo.undo(scene.grid, scene.objects);  // back in the scene: the step holds nothing of it
+    EXPECT_LT(undo.stats().bytes, page / 16);
+
+    // A budget of 64 KiB: nudges share the model, so a few hundred bytes each; the oldest go.
+    game::UndoHistory small(64u << 10);
+    game::placeObject(scene, small, crate, lookDownAt(scene, 40.5f, 40.5f), 0.0);
+    for (int i = 0; i < 400; ++i) game::moveObject(scene, small, 1, {i % 2 == 0 ? 1 : -1, 0, 0}, 0.0);
+    const game::UndoStats s = small.stats();
+    EXPECT_LE(s.bytes, s.maxBytes);
+    EXPECT_GT(s.droppedSteps, 0u);
+    EXPECT_GT(s.undoSteps, 50u) << "a nudge step costs far less than the budget / 50";
+    EXPECT_EQ(s.undoSteps + s.droppedSteps, 401u);
+}
+
+TEST(ObjectTools, AStepTooLargeToKeepEndsTheHistoryAndFreesWhatItHeld) {
+    // Under a budget smaller than a model's page, deleting an object cannot be undone: its step
+    // would hold the model. The moves before it cannot be undone either (they name the object
+    // by its place in the list, and it is gone), so they go too, and the model with them.
+    TempDir dir;
+    game::ObjectModel crate = crateModel(dir);
+    Scene scene = floorScene();
+    game::UndoHistory undo(1u << 20);  // vox play --undo-mb 1, as the soak runs
+    game::placeObject(scene, undo, crate, lookDownAt(scene, 20.5f, 20.5f), 0.0);
+    const std::weak_ptr<const BrickGrid> model = scene.objects[0].model;
+    for (int i = 0; i < 3; ++i) game::moveObject(scene, undo, 0, {1, 0, 0}, 0.0);
+    EXPECT_EQ(undo.stats().undoSteps, 4u);
+    game::deleteObject(scene, undo, 0, 0.0);
+    EXPECT_FALSE(undo.canUndo());
+    EXPECT_EQ(undo.stats().bytes, 0u);
+    EXPECT_TRUE(model.expired()) << "the deleted crate's model is still held (" << model.use_count() << " holders)";
 }

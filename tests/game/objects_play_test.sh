@@ -8,19 +8,20 @@
 set -u
 vox="$1"; script="$2"; out="$3"
 
-if ! command -v xvfb-run >/dev/null 2>&1; then
-    echo "SKIP: xvfb-run not found (apt-get install xvfb; tools/setup.sh installs it)"
+source "$(dirname "$0")/own_display.sh"
+if ! own_display_available; then
+    echo "SKIP: Xvfb not found (apt-get install xvfb; tools/setup.sh installs it)"
     exit 77
 fi
 rm -rf "$out" && mkdir -p "$out" && cd "$out" || exit 1
 failures=0
-xvfb() { xvfb-run -a -n $((100 + RANDOM % 800)) -s "-screen 0 1024x768x24" "$@"; }
+start_own_display 1024x768 || exit 1
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 
 # A 3 x 3 x 2 crate with a lamp on one corner (13 voxels), the unit tests' model too.
 cp "$(dirname "$script")/crate.toml" crate.toml || exit 1
 
-xvfb "$vox" play sandbox --model crate.toml --script "$script" --size 512x288 --render-scale 0.25 \
+"$vox" play sandbox --model crate.toml --script "$script" --size 512x288 --render-scale 0.25 \
     --method preview --save saved.toml >play.out 2>play.err
 rc=$?
 cat play.out
@@ -56,7 +57,7 @@ model=$(echo "$crate" | sed -n 's/^source = "\(saved.object-.*\.vdb\)"$/\1/p')
 echo "$crate"
 
 # A model beyond the cap is refused, before any window opens.
-xvfb "$vox" play sandbox --model sandbox --frames 1 >big.out 2>big.err
+"$vox" play sandbox --model sandbox --frames 1 >big.out 2>big.err
 rc=$?
 [ $rc -ne 0 ] || fail "a model of the whole sandbox world was accepted"
 grep -q "a model holds at most 16384" big.err || fail "no cap message: $(cat big.err)"

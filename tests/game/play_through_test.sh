@@ -8,14 +8,14 @@
 set -u
 vox="$1"; check="$2"; script="$3"; out="$4"
 
-if ! command -v xvfb-run >/dev/null 2>&1; then
-    echo "SKIP: xvfb-run not found (apt-get install xvfb; tools/setup.sh installs it)"
+source "$(dirname "$0")/own_display.sh"
+if ! own_display_available; then
+    echo "SKIP: Xvfb not found (apt-get install xvfb; tools/setup.sh installs it)"
     exit 77
 fi
 rm -rf "$out" && mkdir -p "$out" && cd "$out" || exit 1
 failures=0
-# A server number of our own: two `xvfb-run -a` started together can race for the same one.
-xvfb() { xvfb-run -a -n $((100 + RANDOM % 800)) -s "-screen 0 1024x768x24" "$@"; }
+start_own_display 1024x768 || exit 1
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 
 world=$("$vox" info sandbox --json >/dev/null 2>&1 && echo sandbox)
@@ -24,7 +24,7 @@ world=$("$vox" info sandbox --json >/dev/null 2>&1 && echo sandbox)
 # Render 128x72 (window 768x432 at scale 1/6); autosave every 0.03 minutes of the script's
 # clock (54 frames). Preview lighting: deterministic, so the screenshot can be compared pixel
 # for pixel with a headless render.
-xvfb "$vox" play sandbox --script "$script" --size 768x432 \
+"$vox" play sandbox --script "$script" --size 768x432 \
     --render-scale 0.1667 --method preview --save saved.toml --edit-log edits.log --autosave-minutes 0.03 \
     >play.out 2>play.err
 rc=$?
@@ -65,7 +65,7 @@ echo "edit frames: $edits, each presented with only the touched bricks uploaded"
 
 # The save reopens in the sandbox at the saved view (a short second run, no edits), logging
 # its frame times: a header and one row per frame at the render size (256x144 at scale 1/4).
-xvfb "$vox" play saved.toml --frames 2 --size 256x144 --frame-log frames.csv >reopen.out 2>&1 ||
+"$vox" play saved.toml --frames 2 --size 256x144 --frame-log frames.csv >reopen.out 2>&1 ||
     fail "reopening the save: $(cat reopen.out)"
 grep -q "saves to saved.toml" reopen.out || fail "reopened save does not save back to itself"
 head -1 frames.csv | grep -q "^frame,wall_ms,render_call_ms,gpu_ms,present_gpu_ms,render_width,render_height$" ||

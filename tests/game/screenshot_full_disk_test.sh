@@ -6,8 +6,9 @@
 # Usage: screenshot_full_disk_test.sh VOX
 set -u
 vox="$1"
-if ! command -v xvfb-run >/dev/null 2>&1; then
-    echo "SKIP: xvfb-run not found (apt-get install xvfb; tools/setup.sh installs it)"
+source "$(dirname "$0")/own_display.sh"
+if ! own_display_available; then
+    echo "SKIP: Xvfb not found (apt-get install xvfb; tools/setup.sh installs it)"
     exit 77
 fi
 tmp=$(mktemp -d)
@@ -15,7 +16,7 @@ trap 'rm -rf "$tmp"' EXIT
 cd "$tmp" || exit 1
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
-xvfb() { xvfb-run -a -n $((100 + RANDOM % 800)) -s "-screen 0 640x480x24" "$@"; }
+start_own_display 640x480 || exit 1
 
 printf '[world]\nname = "tiny"\nsize = [32, 16, 32]\n[[material]]\nname = "a"\n[[generator]]\ntype = "box"\nmin = [0, 0, 0]\nmax = [32, 4, 32]\nmaterial = "a"\n' > tiny.toml
 printf '2 screenshot shot.png\n+1 capture window.png\n+1 quit\n' > shots.script
@@ -23,7 +24,7 @@ echo "previous shot" > shot.png
 echo "previous window" > window.png
 echo "previous log" > frames.csv
 
-VOX_FAIL_WRITES=after:0 xvfb "$vox" play tiny.toml --script shots.script --size 320x180 --method preview \
+VOX_FAIL_WRITES=after:0 "$vox" play tiny.toml --script shots.script --size 320x180 --method preview \
     --frame-log frames.csv >play.out 2>play.err
 rc=$?
 grep -q "screenshot failed: shot.png: cannot write: No space left on device" play.out || fail "no message for shot.png"

@@ -8,8 +8,9 @@
 set -u
 vox="$1"; check="$2"; script="$3"; world="$4"; out="$5"
 
-if ! command -v xvfb-run >/dev/null 2>&1; then
-    echo "SKIP: xvfb-run not found (apt-get install xvfb; tools/setup.sh installs it)"
+source "$(dirname "$0")/own_display.sh"
+if ! own_display_available; then
+    echo "SKIP: Xvfb not found (apt-get install xvfb; tools/setup.sh installs it)"
     exit 77
 fi
 rm -rf "$out" && mkdir -p "$out" && cd "$out" || exit 1
@@ -17,7 +18,8 @@ failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 
 # Render 128x72 (window 256x144 at scale 1/2), preview lighting.
-xvfb-run -a -n $((100 + RANDOM % 800)) -s "-screen 0 1024x768x24" "$vox" play "$world" --script "$script" \
+start_own_display 1024x768 || exit 1
+"$vox" play "$world" --script "$script" \
     --size 256x144 --render-scale 0.5 --method preview --walk-log walk.csv --frame-log frames.csv \
     >play.out 2>play.err
 rc=$?

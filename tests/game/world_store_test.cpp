@@ -1,27 +1,28 @@
 // Saves (scene file + .vdb payload) round-trip exactly, after any number of edits, and a save
 // that fails — writing the payload, or between writing the scene file and renaming it (an
 // error, or the process dying there) — leaves the previous save readable and unchanged.
-#include <gtest/gtest.h>
+#include "game/world_store.h"
 
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
-
-#include <fmt/format.h>
+#include <set>
 
 #include "core/atomic_file.h"
 #include "core/hash.h"
 #include "game/autosave.h"
-#include "game/world_store.h"
 #include "io/vdb_export.h"
 #include "io/vdb_import.h"
 #include "io/vox_export.h"
-#include "world/random_worlds.h"
 #include "scene/scene_equality.h"
 #include "scene/scene_file.h"
 #include "scene/scene_lighting.h"
 #include "world/flythrough.h"
+#include "world/random_worlds.h"
 #include "world/world_edits.h"
 
 using namespace engine::world;
@@ -69,6 +70,12 @@ std::size_t countFiles(const fs::path& dir, const std::string& extension) {
     std::size_t n = 0;
     for (const auto& e : fs::directory_iterator(dir)) n += e.path().extension() == extension;
     return n;
+}
+
+std::set<fs::path> filesIn(const fs::path& dir) {
+    std::set<fs::path> files;
+    for (const auto& e : fs::directory_iterator(dir)) files.insert(e.path());
+    return files;
 }
 
 fs::path onlyPayload(const fs::path& dir) {
@@ -359,7 +366,7 @@ on = false
     EXPECT_EQ(engine::scene::test::sceneDifference(*scene, *saved), "") << bytesOf(file);
     ASSERT_EQ(saved->objects.size(), 1u);
     EXPECT_EQ(saved->objects[0].name, "dragon");
-    EXPECT_GT(saved->objects[0].model.solidVoxels(), 0u);
+    EXPECT_GT(saved->objects[0].model->solidVoxels(), 0u);
     EXPECT_EQ(saved->objects[0].path.keys().size(), 5u);
     ASSERT_TRUE(saved->path);
     EXPECT_EQ(saved->path->camera.keys().size(), 2u);
@@ -424,6 +431,7 @@ TEST(WorldStore, AFullDiskAtAnyStepOfASaveKeepsThePreviousSave) {
     Scene first = makeScene(10), second = makeScene(11);
     ASSERT_TRUE(game::makeWorldStore()->save(first, file).ok());
     const std::string sceneBefore = bytesOf(file), payloadBefore = bytesOf(dir.path() / "world.1.vdb");
+    const std::set<fs::path> filesBefore = filesIn(dir.path());
     int failures = 0;
     for (std::uint64_t n = 0; n < 400; ++n) {
         engine::failWritesAfter(n);
@@ -434,7 +442,7 @@ TEST(WorldStore, AFullDiskAtAnyStepOfASaveKeepsThePreviousSave) {
         EXPECT_NE(s.error().message.find("No space left on device"), std::string::npos) << s.error().message;
         ASSERT_EQ(bytesOf(file), sceneBefore) << "operation " << n;
         ASSERT_EQ(bytesOf(dir.path() / "world.1.vdb"), payloadBefore) << "operation " << n;
-        ASSERT_EQ(std::distance(fs::directory_iterator(dir.path()), fs::directory_iterator()), 2) << "operation " << n;
+        ASSERT_EQ(filesIn(dir.path()), filesBefore) << "operation " << n;
     }
     EXPECT_GE(failures, 3);
     auto loaded = game::makeWorldStore()->load(file);
@@ -456,4 +464,108 @@ TEST(WorldStore, LoadsVoxAndVdbFilesAsWorlds) {
         EXPECT_EQ(loaded->grid.solidVoxels(), scene.grid.solidVoxels()) << name;
         EXPECT_FALSE(store->isSave(dir.path() / name));
     }
+}
+
+// Issue 41, item 1: after its commit a save removed every STEM.<digits>.vdb beside it, and VDB
+// sequences are named exactly so (Houdini, Blender, EmberGen: frame.0001.vdb): `vox play --save
+// frame.toml` deleted frame.0001 ... frame.0010.vdb. Only the save's own older payloads go.
+TEST(WorldStore, AVdbSequenceBesideASaveSurvivesIt) {
+    TempDir dir;
+    const fs::path file = dir.path() / "frame.toml";
+    std::vector<fs::path> sequence;
+    for (int i = 1; i <= 10; ++i) {
+        sequence.push_back(dir.path() / fmt::format("frame.{:04d}.vdb", i));
+        std::ofstream(sequence.back()) << "frame " << i;
+    }
+    auto store = game::makeWorldStore();
+    ASSERT_TRUE(store->save(makeScene(1), file).ok());
+    ASSERT_TRUE(store->save(makeScene(2), file).ok());  // its first payload goes, nothing else
+    for (int i = 1; i <= 10; ++i)
+        EXPECT_EQ(bytesOf(sequence[i - 1]), fmt::format("frame {}", i)) << sequence[i - 1];
+    EXPECT_EQ(countFiles(dir.path(), ".vdb"), sequence.size() + 1);
+    auto loaded = store->load(file);
+    ASSERT_TRUE(loaded.ok()) << loaded.error().message;
+    expectSameWorld(makeScene(2), *loaded, "the second save");
+}
+
+// Issue 41, item 7: two writers of one world (two `vox play` with one --save; a save and an
+// import) each picked N = max + 1 and removed the other payloads after their commit, with no
+// lock: the scene file could end up naming a payload the other had deleted. Now the second
+// writer is refused while the first writes, naming it, and nothing the world names is removed.
+TEST(WorldStore, ASecondWriterOfOneWorldIsRefusedWhileTheFirstWrites) {
+    TempDir dir;
+    const fs::path file = dir.path() / "world.toml";
+    int paused[2], resume[2];
+    ASSERT_EQ(::pipe(paused), 0);
+    ASSERT_EQ(::pipe(resume), 0);
+    const pid_t child = ::fork();
+    if (child == 0) {
+        // The first writer, held between writing its payload and committing.
+        game::SaveFaults faults;
+        faults.beforeCommit = [&]() -> engine::Status {
+            char c = 'p';
+            (void)!::write(paused[1], &c, 1);
+            (void)!::read(resume[0], &c, 1);
+            return {};
+        };
+        ::_exit(game::makeWorldStore(faults)->save(makeScene(1), file).ok() ? 0 : 1);
+    }
+    char c = 0;
+    ASSERT_EQ(::read(paused[0], &c, 1), 1);
+    engine::Status second = game::makeWorldStore()->save(makeScene(2), file);
+    (void)!::write(resume[1], "r", 1);
+    int status = 0;
+    ::waitpid(child, &status, 0);
+    ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "the first writer failed";
+    EXPECT_FALSE(second.ok()) << "the second writer was not refused";
+    if (!second.ok()) {
+        EXPECT_EQ(
+            second.error().message,
+            fmt::format("{} is in use by another save or import (pid {})", file.string(), child));
+    }
+    auto loaded = game::makeWorldStore()->load(file);
+    ASSERT_TRUE(loaded.ok()) << loaded.error().message;
+    expectSameWorld(makeScene(1), *loaded, "the first writer's save");
+    EXPECT_EQ(countFiles(dir.path(), ".vdb"), 1u);
+}
+
+// Issue 41, item 13: the names ".", "" and "   " all saved to saves/untitled.toml (and "a/b",
+// "a\\b", "a_b" all to saves/a_b.toml), so a later save silently replaced another world's.
+TEST(WorldStore, DifferentWorldNamesNeverShareADefaultSave) {
+    const char* names[] = {".",   "",     "   ", "untitled", "..",  "....",
+                           "a/b", "a\\b", "a_b", "x\ny",     "x y", "/"};
+    std::set<fs::path> paths;
+    for (const char* name : names) {
+        const fs::path p = game::defaultSavePath(name);
+        EXPECT_TRUE(paths.insert(p).second) << "'" << name << "' shares " << p;
+        EXPECT_EQ(p.parent_path(), fs::path("saves")) << p;
+    }
+    EXPECT_EQ(game::defaultSavePath("a_b"),
+              fs::path("saves/a_b.toml"));  // a name that is safe stays as it is
+}
+
+// Issue 41, item 13 for worlds without a name: both were named "untitled" and saved to
+// saves/untitled.toml, one over the other. A world without a name takes its file's.
+TEST(WorldStore, WorldsWithoutANameInDifferentFilesNeverShareADefaultSave) {
+    const char* kUnnamed = "[world]\nsize = [8, 8, 8]\n";
+    auto meadow = engine::scene::loadSceneText(kUnnamed, "worlds/meadow.toml");
+    auto cave = engine::scene::loadSceneText(kUnnamed, "elsewhere/cave.toml");
+    ASSERT_TRUE(meadow.ok() && cave.ok());
+    EXPECT_EQ(meadow->name, "meadow");
+    EXPECT_NE(game::defaultSavePath(meadow->name), game::defaultSavePath(cave->name));
+}
+
+// Issue 41, item 11 for saves: a scene file name near NAME_MAX (255 bytes) left no room for the
+// payload's ".N.vdb" or an object's ".object-HASH.vdb"; their stem is shortened instead.
+TEST(WorldStore, ASaveWithAFileNameNearTheLimitWorks) {
+    TempDir dir;
+    const fs::path file = dir.path() / (std::string(250, 'w') + ".toml");
+    Scene scene = makeScene(7);
+    ASSERT_TRUE(game::makeWorldStore()->save(scene, file).ok());
+    auto result = game::makeWorldStore()->save(scene, file);
+    ASSERT_TRUE(result.ok()) << result.error().message;
+    auto loaded = game::makeWorldStore()->load(file);
+    ASSERT_TRUE(loaded.ok()) << loaded.error().message;
+    expectSameWorld(scene, *loaded, "a long name");
+    EXPECT_EQ(countFiles(dir.path(), ".vdb"), 1u);
 }

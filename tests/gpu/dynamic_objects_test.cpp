@@ -20,11 +20,12 @@ namespace {
 DynamicObject makeObject(glm::ivec3 size, std::uint32_t seed) {
     DynamicObject o;
     o.modelSize = size;
-    o.model = BrickGrid(size);
+    BrickGrid model(size);
     for (int z = 0; z < size.z; ++z)
         for (int y = 0; y < size.y; ++y)
             for (int x = 0; x < size.x; ++x)
-                if ((x * 7 + y * 3 + z * 5 + int(seed)) % 5 != 0) o.model.set({x, y, z}, MaterialId(1 + (x + y + seed) % 7));
+                if ((x * 7 + y * 3 + z * 5 + int(seed)) % 5 != 0) model.set({x, y, z}, MaterialId(1 + (x + y + seed) % 7));
+    o.model = std::make_shared<const BrickGrid>(std::move(model));
     return o;
 }
 
@@ -172,8 +173,10 @@ TEST_F(DynamicObjects, ObjectsCastShadows) {
     Scene scene = floorScene();
     scene.sky.sunDirection = glm::vec3(0, 1, 0);
     DynamicObject o = makeObject({16, 2, 16}, 0);
+    BrickGrid slab = *o.model;
     for (int z = 0; z < 16; ++z)
-        for (int x = 0; x < 16; ++x) o.model.set({x, 0, z}, 2), o.model.set({x, 1, z}, 2);
+        for (int x = 0; x < 16; ++x) slab.set({x, 0, z}, 2), slab.set({x, 1, z}, 2);
+    o.model = std::make_shared<const BrickGrid>(std::move(slab));
     o.path = ObjectPath({{0.0, {32, 20, 32}, {}}}, false);
     scene.objects.push_back(std::move(o));
     CameraPreset camera{"top", {32, 31, 32.01f}, {32, 0, 32}, 100.0f};

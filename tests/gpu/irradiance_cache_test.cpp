@@ -74,8 +74,9 @@ DynamicObject movingBall(double seconds) {
     DynamicObject ball;
     ball.name = "ball";
     ball.modelSize = {6, 6, 6};
-    ball.model = BrickGrid({8, 8, 8});
-    fillBox(ball.model, Box{{0, 0, 0}, {6, 6, 6}}, kRed);
+    BrickGrid ballModel({8, 8, 8});
+    fillBox(ballModel, Box{{0, 0, 0}, {6, 6, 6}}, kRed);
+    ball.model = std::make_shared<const BrickGrid>(std::move(ballModel));
     ObjectKey from, to, rest;
     from.position = {14.0, 8.0, 20.0};
     to.time = seconds;
@@ -651,8 +652,9 @@ Scene splitWorld(bool crateAtWall) {
     DynamicObject crate;
     crate.name = "crate";
     crate.modelSize = {8, 8, 8};
-    crate.model = BrickGrid({8, 8, 8});
-    fillBox(crate.model, Box{{0, 0, 0}, {8, 8, 8}}, kGreen);
+    BrickGrid crateModel({8, 8, 8});
+    fillBox(crateModel, Box{{0, 0, 0}, {8, 8, 8}}, kGreen);
+    crate.model = std::make_shared<const BrickGrid>(std::move(crateModel));
     ObjectKey key;
     key.position = crateAtWall ? glm::dvec3(28.0, 8.0, 32.0) : glm::dvec3(6.0, 8.0, 8.0);  // x 24..31: touching the wall
     crate.path = ObjectPath({key}, false);
@@ -723,8 +725,9 @@ TEST_F(IrradianceCache, StableAwayFromAMovingObjectAndFadesAfterItLeaves) {
     DynamicObject ball;
     ball.name = "ball";
     ball.modelSize = {6, 6, 6};
-    ball.model = BrickGrid({8, 8, 8});
-    fillBox(ball.model, Box{{0, 0, 0}, {6, 6, 6}}, kRed);
+    BrickGrid ballModel({8, 8, 8});
+    fillBox(ballModel, Box{{0, 0, 0}, {6, 6, 6}}, kRed);
+    ball.model = std::make_shared<const BrickGrid>(std::move(ballModel));
     ObjectKey k0, k1, k2, k3;
     k0.time = 0.0;
     k0.position = {14.0, 8.0, 20.0};

@@ -4,10 +4,16 @@
 
 #include <chrono>
 #include <fstream>
+#include <limits>
 #include <random>
 
+#include <openvdb/openvdb.h>
+
+#include "io/vdb_export.h"
 #include "io/vdb_import.h"
 #include "io/vdb_info.h"
+#include "scene/generators/vdb_keys.h"
+#include "scene/scene_file.h"
 #include "vdb_samples.h"
 #include "vdb_test_util.h"
 
@@ -227,4 +233,143 @@ TEST(VdbBadInput, RootChildrenSharingAnOriginAreRefused) {
         duplicate |= importError(dir / "dup.vdb").find("two root children share an origin") != std::string::npos;
     }
     EXPECT_TRUE(duplicate);
+}
+
+namespace {
+
+// A small voxengine world with a material, a light, a camera and the default sky.
+world::Scene smallWorld() {
+    world::Scene scene;
+    scene.name = "small";
+    scene.grid = world::BrickGrid({16, 16, 16});
+    world::Material stone{"stone", glm::vec3(0.5f), glm::vec3(0.0f), 0.0f};
+    world::Material lamp{"lamp", glm::vec3(1.0f), glm::vec3(1.0f, 0.8f, 0.5f), 3.0f};
+    const world::MaterialId s = *scene.palette.add(stone), l = *scene.palette.add(lamp);
+    for (int z = 0; z < 16; ++z)
+        for (int x = 0; x < 16; ++x) scene.grid.set({x, 0, z}, s);
+    scene.grid.set({8, 1, 8}, l);
+    scene.cameras.push_back({"main", glm::vec3(8.0f, 8.0f, -10.0f), glm::vec3(8.0f, 1.0f, 8.0f), 60.0f});
+    return scene;
+}
+
+}  // namespace
+
+TEST(VdbBadInput, MetadataNumbersAreCheckedAsTheSceneKeysAre) {
+    // Every number the file's metadata gives the world (voxel size, materials, cameras, sky) goes
+    // through the check a scene file's keys go through: NaN, infinity or a value no scene file
+    // may hold is refused with one line naming the file and the key -- never an import that
+    // renders black or writes a world the loader refuses.
+    ScratchDir dir("metadata");
+    ASSERT_TRUE(io::exportVdb(smallWorld(), dir / "good.vdb").ok());
+    ASSERT_TRUE(io::importVdb(dir / "good.vdb").ok());
+    openvdb::initialize();
+    openvdb::io::File good((dir / "good.vdb").string());
+    good.open();
+    openvdb::GridPtrVecPtr grids = good.getGrids();
+    openvdb::MetaMap::Ptr meta = good.getMetadata();
+    good.close();
+
+    const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+    const float hostile[] = {nan, inf, -inf, 1e30f};
+    std::vector<std::pair<std::string, openvdb::Metadata::Ptr>> cases;
+    for (const char* key : {"vox:world.voxel_size", "vox:material.00001.strength", "vox:camera.000.fov"})
+        for (float v : hostile) cases.emplace_back(key, openvdb::FloatMetadata(v).copy());
+    for (const char* key : {"vox:material.00001.albedo", "vox:material.00002.emission", "vox:camera.000.position",
+                            "vox:camera.000.target", "vox:sky.sun_direction", "vox:sky.sun_radiance",
+                            "vox:sky.sky_radiance"})
+        for (int axis = 0; axis < 3; ++axis)
+            for (float v : hostile) {
+                openvdb::Vec3s value(0.5f);
+                value[axis] = v;
+                cases.emplace_back(key, openvdb::Vec3SMetadata(value).copy());
+            }
+    const fs::path bad = dir / "bad.vdb";
+    for (const auto& [key, value] : cases) {
+        SCOPED_TRACE(key + " = " + value->str());
+        openvdb::MetaMap changed = *meta;
+        changed.removeMeta(key);
+        changed.insertMeta(key, *value);
+        openvdb::io::File out(bad.string());
+        out.write(*grids, changed);
+        out.close();
+        auto scene = io::importVdb(bad);
+        ASSERT_FALSE(scene.ok()) << "imported";
+        EXPECT_TRUE(vox_test::isOneLineNamingFile(scene.error().message, bad));
+        EXPECT_NE(scene.error().message.find(key), std::string::npos) << scene.error().message;
+    }
+    EXPECT_EQ(cases.size(), 3u * 4u + 7u * 3u * 4u);
+}
+
+TEST(VdbBadInput, AGridsVoxelSizeIsCheckedAsTheSceneKeyIs) {
+    // A foreign grid's voxel size (its transform) becomes the world's voxel_size: refused with one
+    // line naming the grid when no scene file could hold it, else the world saves and loads.
+    ScratchDir dir("voxel_size");
+    int tried = 0;
+    for (double size : {1e30, 1e7, 1e-7, 1e-30, 0.01}) {
+        SCOPED_TRACE(size);
+        const fs::path file = dir / "fog.vdb";
+        try {
+            samples::writeFogBox(file, {0, 0, 0}, {4, 4, 4}, size);
+        } catch (const openvdb::Exception&) {
+            continue;  // OpenVDB itself refuses to make such a transform ("Non-zero scale values required")
+        }
+        ++tried;
+        auto scene = io::importVdb(file);
+        if (!scene.ok()) {
+            EXPECT_TRUE(vox_test::isOneLineNamingFile(scene.error().message, file));
+            EXPECT_NE(scene.error().message.find("'density'"), std::string::npos) << scene.error().message;
+            EXPECT_NE(size, 0.01) << scene.error().message;
+            continue;
+        }
+        std::vector<world::GeneratorRecord> payload{scene::vdbPayloadGenerator("fog.vdb", false)};
+        std::ofstream(dir / "fog.toml") << scene::sceneText(*scene, {.generators = &payload});
+        auto loaded = scene::loadSceneFile(dir / "fog.toml");
+        EXPECT_TRUE(loaded.ok()) << "imported, but the world it makes does not load: " << loaded.error().message;
+    }
+    EXPECT_GE(tried, 3);
+}
+
+namespace {
+
+::testing::AssertionResult noControlCharactersBut(const std::string& text, char allowed) {
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const auto c = static_cast<unsigned char>(text[i]);
+        if ((c < 0x20 || c == 0x7f) && text[i] != allowed)
+            return ::testing::AssertionFailure() << "byte " << int(c) << " at " << i << " of: " << text;
+    }
+    return ::testing::AssertionSuccess();
+}
+
+}  // namespace
+
+TEST(VdbBadInput, TextFromTheFileIsEscapedInMessagesAndInfo) {
+    // Grid names, types and metadata are the file's text: escape sequences, newlines and NULs
+    // in them are shown escaped, in one-line errors and in `vox info`'s report alike.
+    ScratchDir dir("hostile_text");
+    static const char kHostile[] = "\x1b]2;pwned\x07\x1b[31mred\nline\0nul";
+    const std::string hostile(kHostile, sizeof(kHostile) - 1);
+    openvdb::initialize();
+    openvdb::FloatGrid::Ptr grid = openvdb::FloatGrid::create(0.0f);
+    grid->setName(hostile);
+    grid->tree().setValue(openvdb::Coord(1, 2, 3), 1.0f);
+    grid->insertMeta("note", openvdb::StringMetadata(hostile));
+    openvdb::MetaMap meta;
+    meta.insertMeta("creator", openvdb::StringMetadata(hostile));
+    meta.insertMeta(hostile, openvdb::FloatMetadata(1.0f));
+    const fs::path file = dir / "hostile.vdb";
+    {
+        openvdb::io::File out(file.string());
+        out.write({grid}, meta);
+    }
+    io::VdbImportOptions named;
+    named.grid = "nosuch";
+    const std::string message = importError(file, named);
+    EXPECT_TRUE(noControlCharactersBut(message, 0)) << message;
+    EXPECT_NE(message.find("\\u001B[31mred\\nline\\u0000nul"), std::string::npos) << message;
+
+    auto info = io::describeVdbFile(file);
+    ASSERT_TRUE(info.ok()) << info.error().message;
+    const std::string report = io::formatVdbFileInfo(*info);
+    EXPECT_TRUE(noControlCharactersBut(report, '\n'));
+    EXPECT_NE(report.find("\\u001B[31mred\\nline\\u0000nul"), std::string::npos) << report;
 }

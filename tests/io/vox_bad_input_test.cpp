@@ -203,3 +203,63 @@ TEST(VoxBadInput, UnknownChunksAreSkipped) {
     ASSERT_FALSE(report.notes.empty());
     EXPECT_NE(report.notes.back().find("ZZZZ"), std::string::npos);
 }
+
+namespace {
+
+// True when the text holds no control character (C0, DEL): nothing that acts on a terminal,
+// splits a line or cuts it.
+::testing::AssertionResult noControlCharacters(const std::string& text) {
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const auto c = static_cast<unsigned char>(text[i]);
+        if (c < 0x20 || c == 0x7f) return ::testing::AssertionFailure() << "byte " << int(c) << " at " << i << " of: " << text;
+    }
+    return ::testing::AssertionSuccess();
+}
+
+VoxBuilder sceneWith(const std::string& translation, const vox_test::Dict& material) {
+    VoxBuilder b;
+    b.model(2, 2, 2, {{0, 0, 0, 1}, {1, 1, 1, 2}});
+    b.transform(0, 1, -1, {});
+    b.group(1, {2});
+    b.transform(2, 3, 0, {{"_t", translation}});
+    b.shape(3, 0);
+    b.layer(0, false);
+    b.palette({0xFF0000FFu, 0xFF00FF00u});
+    b.material(1, material);
+    return b;
+}
+
+}  // namespace
+
+TEST(VoxBadInput, TextFromTheFileIsEscapedInMessages) {
+    ScratchDir dir("hostile_text");
+    static const char kHostile[] = "1 2\x1b]2;pwned\x07\x1b[31m\n3\0";
+    const std::string hostile(kHostile, sizeof(kHostile) - 1);
+    const std::string message = importError(dir, sceneWith(hostile, {{"_type", "_diffuse"}}).bytes());
+    EXPECT_NE(message.find("'_t'"), std::string::npos) << message;
+    EXPECT_TRUE(noControlCharacters(message));
+    EXPECT_NE(message.find("\\u001B[31m\\n3\\u0000"), std::string::npos) << message;
+    // A chunk id of control characters.
+    VoxBuilder b = sceneWith("1 2 3", {{"_type", "_diffuse"}});
+    b.children.insert(b.children.end(), {0x1b, '[', '2', 'J', 0xff, 0xff, 0xff, 0x7f, 0, 0, 0, 0});
+    const std::string chunk = importError(dir, b.bytes());
+    EXPECT_TRUE(noControlCharacters(chunk));
+    EXPECT_NE(chunk.find("chunk '\\u001B[2J'"), std::string::npos) << chunk;
+}
+
+TEST(VoxBadInput, EmissionBeyondWhatAWorldHoldsIsRefused) {
+    // _emit is a float; times 2^_flux and the import's scale it becomes the material's strength,
+    // which a scene file holds up to 1e6 (world::kRadianceRange): beyond, refused here rather
+    // than imported into a world whose scene file the loader refuses.
+    ScratchDir dir("emission");
+    for (const char* emit : {"1e30", "3e38"}) {
+        const std::string message = importError(dir, sceneWith("1 2 3", {{"_type", "_emit"}, {"_emit", emit}, {"_flux", "8"}}).bytes());
+        EXPECT_NE(message.find("emission"), std::string::npos) << message;
+    }
+    auto ok = io::importVox([&] {
+        const fs::path file = dir / "ok.vox";
+        sceneWith("1 2 3", {{"_type", "_emit"}, {"_emit", "1"}, {"_flux", "2"}}).write(file);
+        return file;
+    }());
+    EXPECT_TRUE(ok.ok()) << ok.error().message;
+}

@@ -41,7 +41,7 @@ std::string objectDifference(const DynamicObject& a, const DynamicObject& b) {
     if (a.name != b.name) return fmt::format("object '{}' vs '{}'", a.name, b.name);
     std::string what = fmt::format("object '{}': ", a.name);
     if (a.modelSize != b.modelSize) return what + "model size";
-    if (!(a.model == b.model)) return what + "model voxels";
+    if (!(*a.model == *b.model)) return what + "model voxels";
     if (a.path.loop() != b.path.loop()) return what + "loop";
     const auto& ka = a.path.keys();
     const auto& kb = b.path.keys();

@@ -3,6 +3,8 @@
 #include <filesystem>
 #include <string>
 
+#include <fmt/format.h>
+
 #include "world/generators.h"
 #include "scene/scene_file.h"
 #include "world/world_info.h"
@@ -150,7 +152,7 @@ TEST(SceneFile, ObjectsBuildTheirModelsAndPaths) {
     const DynamicObject& o = scene->objects[0];
     EXPECT_EQ(o.name, "cube");
     EXPECT_EQ(o.modelSize, glm::ivec3(4));
-    EXPECT_EQ(o.model.solidVoxels(), 32u);
+    EXPECT_EQ(o.model->solidVoxels(), 32u);
     EXPECT_TRUE(o.path.loop());
     EXPECT_EQ(o.path.at(1.0).position, glm::dvec3(15, 10, 10));
     EXPECT_EQ(o.path.at(2.0).position, glm::dvec3(10, 10, 10)) << "the loop wraps at the last key";
@@ -197,4 +199,29 @@ TEST(SceneFile, SkyLightKeyIsTheSkyKnob) {
     const std::string error = errorOf(std::string(kMinimal) + "[sky]\nsky_light = \"bright\"\n");
     EXPECT_NE(error.find("sky_light"), std::string::npos) << error;
     EXPECT_NE(error.find("dvf"), std::string::npos) << error;
+}
+
+TEST(SceneFile, TextFromTheFileIsEscapedInMessagesAndNamesArePrintable) {
+    // Keys and values are the file's text. A message quoting them shows control characters
+    // escaped -- one line, nothing for a terminal to act on -- and a name (world, material,
+    // camera, object) is printable text, so whatever shows it later shows what the file says.
+    auto clean = [](const std::string& m) {
+        for (char c : m)
+            if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) return ::testing::AssertionFailure() << "control byte " << int(c) << " in: " << m;
+        return ::testing::AssertionSuccess();
+    };
+    const std::string unknownKey = errorOf("[world]\nsize = [16, 16, 16]\n\"\\u001B]2;pwned\\u0007\\u001B[31m\" = 1\n");
+    EXPECT_TRUE(clean(unknownKey));
+    EXPECT_NE(unknownKey.find("unknown key '\\u001B]2;pwned\\u0007\\u001B[31m'"), std::string::npos) << unknownKey;
+    const std::string unknownType = errorOf(std::string(kMinimal) + "[[generator]]\ntype = \"ter\\nrain\\u0000\"\n");
+    EXPECT_TRUE(clean(unknownType));
+    EXPECT_NE(unknownType.find("ter\\nrain\\u0000"), std::string::npos) << unknownType;
+    for (const char* name : {"two\\nlines", "nul\\u0000cut", "\\u001B[2J", "c1 \\u009B31m"}) {
+        const std::string world = errorOf(fmt::format("[world]\nname = \"{}\"\nsize = [16, 16, 16]\n", name));
+        EXPECT_TRUE(clean(world));
+        EXPECT_NE(world.find("test.toml:2: 'name' must be printable text"), std::string::npos) << world;
+        EXPECT_NE(world.find(name), std::string::npos) << world;
+    }
+    // A TOML syntax error quoting a raw control character.
+    EXPECT_TRUE(clean(errorOf("[world]\nsize = [16, 16, 16]\nname = \"a\x1b[31mb\"\n")));
 }

@@ -195,7 +195,7 @@ object = "spinner"
     EXPECT_FALSE(backLighting->cache.filter);
     EXPECT_EQ(backLighting->cache, lighting->cache);
     ASSERT_EQ(back->objects.size(), 1u);
-    EXPECT_GT(back->objects[0].model.solidVoxels(), 0u);
+    EXPECT_GT(back->objects[0].model->solidVoxels(), 0u);
 }
 
 TEST(SceneWriter, LeavesOutIndirectAndPathWhenTheSceneHasNone) {

@@ -124,6 +124,28 @@ if command -v ffmpeg >/dev/null 2>&1; then
     VOX_FAIL_WRITES=after:12 "${vcap[@]}" --exposure 3 >"$tmp/log" 2>&1 && fail "capture (MP4) on a full disk exited 0"
     one_error "$tmp/log" "capture.mp4" && cmp -s "$tmp/vcap/capture.mp4" "$tmp/mp4.old" && ! ls -A "$tmp/vcap" | grep -q 'tmp-' &&
         echo "ok: capture MP4: $(grep '^vox' "$tmp/log")" || fail "capture.mp4 changed or a temporary was left"
+    # ffmpeg's own writes failing (issue 41, item 6): ffmpeg 5.1 then exits 0 having left an MP4
+    # without its index ("Error writing trailer"). A limit on the size of the files ffmpeg alone
+    # may write stands in for the full disk: the real ffmpeg, started through a wrapper on PATH.
+    mkdir -p "$tmp/smallfs"
+    printf '#!/bin/bash\ntrap "" XFSZ\nulimit -f 1\nexec %s "$@"\n' "$(command -v ffmpeg)" > "$tmp/smallfs/ffmpeg"
+    chmod +x "$tmp/smallfs/ffmpeg"
+    PATH="$tmp/smallfs:$PATH" "${vcap[@]}" --exposure 2 >"$tmp/log" 2>&1 && fail "capture (ffmpeg's writes failing) exited 0"
+    if [ "$(grep -c '^vox' "$tmp/log")" -eq 1 ] && grep -q "^vox: .*capture.mp4: ffmpeg failed: .*File too large" "$tmp/log" &&
+       ! grep -q "^wrote .*capture.mp4" "$tmp/log" && cmp -s "$tmp/vcap/capture.mp4" "$tmp/mp4.old" && ! ls -A "$tmp/vcap" | grep -q 'tmp-'; then
+        echo "ok: ffmpeg's failed write: $(grep '^vox' "$tmp/log"); the previous MP4 is kept"
+    else
+        fail "ffmpeg's failed write replaced capture.mp4 or was not reported:"; cat "$tmp/log"
+    fi
+    # An ffmpeg that says nothing about it: the MP4 itself is checked (its boxes, the index).
+    printf '#!/bin/bash\ntrap "" XFSZ\nulimit -f 1\nexec %s "$@" 2>/dev/null\n' "$(command -v ffmpeg)" > "$tmp/smallfs/ffmpeg"
+    PATH="$tmp/smallfs:$PATH" "${vcap[@]}" --exposure 2 >"$tmp/log" 2>&1 && fail "capture (a silent ffmpeg's writes failing) exited 0"
+    if [ "$(grep -c '^vox' "$tmp/log")" -eq 1 ] && grep -q "^vox: .*capture.mp4: ffmpeg left an incomplete video" "$tmp/log" &&
+       cmp -s "$tmp/vcap/capture.mp4" "$tmp/mp4.old" && ! ls -A "$tmp/vcap" | grep -q 'tmp-'; then
+        echo "ok: a silent ffmpeg's failed write: $(grep '^vox' "$tmp/log")"
+    else
+        fail "a silent ffmpeg's failed write replaced capture.mp4 or was not reported:"; cat "$tmp/log"
+    fi
 fi
 
 # 5. Two captures into one folder: the second refuses, naming the first's process. First a

@@ -4,78 +4,7 @@
 # frames exactly; every output is there; bad path files give one line naming file and line.
 source "$(dirname "$0")/test_setup.sh"
 
-cat > "$tmp/yard.toml" <<'TOML'
-[world]
-name = "yard"
-size = [64, 40, 64]
-[[material]]
-name = "white"
-albedo = [0.75, 0.75, 0.75]
-[[material]]
-name = "lamp"
-emission = [1.0, 0.85, 0.6]
-strength = 6
-[[generator]]
-type = "box"
-min = [0, 0, 0]
-max = [64, 4, 64]
-material = "white"
-[[generator]]
-type = "box"
-min = [20, 4, 24]
-max = [28, 22, 32]
-material = "white"
-[[generator]]
-type = "box"
-min = [32, 24, 32]
-max = [40, 32, 40]
-material = "lamp"
-[[camera]]
-name = "front"
-position = [32, 36, -22]
-target = [32, 6, 30]
-[[object]]
-name = "cart"
-size = [6, 6, 6]
-[[object.generator]]
-type = "box"
-min = [0, 0, 0]
-max = [6, 6, 6]
-material = "white"
-[[object.key]]
-time = 0
-position = [10, 8, 40]
-[[object.key]]
-time = 0.3
-position = [40, 8, 40]
-[path]
-fps = 10
-duration = 1.1
-[[path.key]]
-time = 0
-position = [32, 36, -22]
-target = [32, 6, 30]
-[[path.key]]
-time = 1.1
-position = [52, 30, -12]
-target = [30, 8, 34]
-fov = 50
-[[path.event]]
-time = 0.3
-type = "light"
-material = "lamp"
-on = false
-[[path.event]]
-time = 0.6
-type = "box"
-min = [8, 4, 8]
-max = [12, 8, 12]
-material = "lamp"
-[[path.event]]
-time = 0.8
-type = "dynamic"
-object = "cart"
-TOML
+cp "$(dirname "$0")/yard.toml" "$tmp/yard.toml"
 
 run() {  # run DIR ARGS... : a capture of the yard, stdout+stderr in DIR.log
     local dir="$1"; shift
@@ -195,6 +124,9 @@ expect_error "--path nosuchpath: no such path file" -- "${c[@]}" --path nosuchpa
 expect_error "--frames: frame 40 is past the path's last frame \(11\)" -- "${c[@]}" --frames 40:50
 expect_error "--frames: expected A:B" -- "${c[@]}" --frames 3-5
 expect_error "--frames: 5:3 ends before it starts" -- "${c[@]}" --frames 5:3
+# Negative frames are refused as given, not read as 4294967295 (nor a last frame of -1 as "to the end").
+expect_error "--frames: the first frame is too small \(min 0\), not -1" -- "${c[@]}" --frames -1:
+expect_error "--frames: the last frame is too small \(min 0\), not -1" -- "${c[@]}" --frames 3:-1
 expect_error "required|--out" -- "$vox" capture "$tmp/yard.toml"
 
 [ $failures -eq 0 ] || { echo "$failures failure(s)"; exit 1; }

@@ -36,10 +36,32 @@ assert rows["restir"]["equal_time"] is None and rows["restir-point"]["equal_time
 assert "--mode point" in rows["restir-point"]["settings"], rows["restir-point"]
 assert "--method uniform" in rows["uniform"]["settings"] and "--shadow-rays" in rows["uniform"]["settings"], rows["uniform"]
 assert rows["restir"]["versus"]["restir"]["mse_ratio"]["median"] == 1.0
+# MSE x time over ReSTIR's: the seeds' MSE ratio interval times the interleaved rounds' time ratio
+# interval; two seeds cannot reach 90 %, so no verdict.
+for name, r in rows.items():
+    v = r["versus"]["restir"]
+    w, t, m = v["mse_time_ratio"], v["time_ratio"], v["mse_ratio"]
+    assert t["low"] <= t["median"] <= t["high"] and t["coverage"] >= 0.97, (name, t)
+    assert math.isclose(w["low"], m["min"] * t["low"]) and math.isclose(w["high"], m["max"] * t["high"]), (name, w, m, t)
+    assert math.isclose(w["median"], m["median"] * t["median"]), (name, w)
+    assert math.isclose(w["coverage"], 0.5 * t["coverage"]), (name, w)
+    assert w["verdict"] == "unresolved", (name, w)
+assert rows["restir"]["versus"]["restir"]["time_ratio"]["median"] == 1.0
+PY
+
+# A point depends on its settings and seed alone: ReSTIR's per-seed errors are the same in a run
+# without the baselines' fits and timings before them.
+"$vox" bench restir cornell --size 32x32 --seeds 2 --frames 4 --ref-spp 16 --rows restir,restir-unbiased \
+    -o "$tmp/again.json" >/dev/null 2>&1 || fail "second run"
+/usr/bin/python3 - "$tmp/r.json" "$tmp/again.json" <<'PY' || fail "per-seed errors differ between runs"
+import json, sys
+a, b = ({r["name"]: r for r in json.load(open(f))["scenes"][0]["rows"]} for f in sys.argv[1:3])
+for name in ("restir", "restir-unbiased"):
+    assert a[name]["per_seed"]["mse"] == b[name]["per_seed"]["mse"], (name, a[name]["per_seed"], b[name]["per_seed"])
 PY
 
 # The table: a header naming the ratio columns, one line per row.
-grep -q "^| scene | emitters | row | equal time | ms (÷ restir) | MSE | MAE | mean ratio | MSE ÷ restir | MAE ÷ restir |$" "$tmp/r.md" \
+grep -q "^| scene | emitters | row | equal time | ms (÷ restir) | MSE | MAE | mean ratio | MSE ÷ restir | MAE ÷ restir | MSE×time ÷ restir \[90 % interval\] |$" "$tmp/r.md" \
     || fail "markdown header: $(head -1 "$tmp/r.md")"
 [ "$(grep -c '^| cornell |' "$tmp/r.md")" -eq 5 ] || fail "markdown rows: $(cat "$tmp/r.md")"
 grep -q "^| cornell | [0-9]* | uniform | [0-9]* rays | " "$tmp/r.md" || fail "uniform's ray count: $(cat "$tmp/r.md")"

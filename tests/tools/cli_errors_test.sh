@@ -72,7 +72,10 @@ expect_error "afile/w.toml: cannot write: '.*afile' is not a folder" -- "$vox" i
 # renderer allocates its GPU copy; vox info prints the planned peak.
 printf '[world]\nsize = [4096, 64, 4096]\n[[material]]\nname = "a"\n[[generator]]\ntype = "terrain"\ntop = "a"\nsoil = "a"\nrock = "a"\nbase_height = 20\namplitude = 16\n' > "$tmp/wide.toml"
 expect_error "wide.toml:5: generator 'terrain' needs more memory than the budget of 64 MiB" -- "$vox" info "$tmp/wide.toml" --memory-budget 64
-expect_error "world 'untitled' needs [0-9]+ MiB to show .* over the memory budget of 500 MiB" -- "$vox" render "$tmp/wide.toml" --size 64x64 -o "$tmp/b.png" --memory-budget 500
+expect_error "world 'wide' needs [0-9]+ MiB to show .* over the memory budget of 500 MiB" -- "$vox" render "$tmp/wide.toml" --size 64x64 -o "$tmp/b.png" --memory-budget 500
+# When the address-space limit sets the budget, the advice is to raise that limit, not --memory-budget.
+expect_error "wide.toml:5: generator 'terrain' needs more memory than the budget of 293 MiB .*raise ulimit -v" -- \
+    bash -c 'ulimit -v 400000 && exec "$0" info "$1"' "$vox" "$tmp/wide.toml"
 if "$vox" info cornell | grep -qE "^peak +[0-9]+ MiB to show at 1280x720: world"; then
     echo "ok: vox info prints the planned peak"
 else

@@ -152,6 +152,11 @@ for size in 0 -1 nan; do
     [ "$rc" -ge 1 ] && [ "$rc" -lt 128 ] && [ "$(grep -c . <<<"$err")" -eq 1 ] && grep -qE -- "--voxel-size: must be (positive|a finite number)" <<<"$err" \
         && echo "ok: --voxel-size $size: $err" || fail "--voxel-size $size exited $rc: $err"
 done
+# A size inside the option's range but too small to resample to is refused as itself, not as the
+# 0 a float would have made of it.
+err=$("$vox" import "$tmp/fog.vdb" --voxel-size 1e-300 --dry-run 2>&1 >/dev/null); rc=$?
+[ "$rc" -ge 1 ] && [ "$rc" -lt 128 ] && [ "$(grep -c . <<<"$err")" -eq 1 ] && grep -q "1e-300" <<<"$err" && ! grep -q "got 0" <<<"$err" \
+    && echo "ok: --voxel-size 1e-300: $err" || fail "--voxel-size 1e-300 exited $rc: $err"
 
 # Grid instances (OpenVDB writes no tree for them) and grids that share a name.
 "$samples" instances "$tmp/inst.vdb"

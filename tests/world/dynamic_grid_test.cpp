@@ -11,11 +11,12 @@ namespace {
 DynamicObject asymmetricObject() {
     DynamicObject o;
     o.modelSize = {6, 4, 2};
-    o.model = BrickGrid(o.modelSize);
+    BrickGrid model(o.modelSize);
     for (int z = 0; z < 2; ++z)
         for (int y = 0; y < 4; ++y)
-            for (int x = 0; x < 6; ++x) o.model.set({x, y, z}, MaterialId(1 + x + 6 * y + 24 * z));
-    o.model.set({5, 3, 1}, kEmpty);  // and a hole
+            for (int x = 0; x < 6; ++x) model.set({x, y, z}, MaterialId(1 + x + 6 * y + 24 * z));
+    model.set({5, 3, 1}, kEmpty);  // and a hole
+    o.model = std::make_shared<const BrickGrid>(std::move(model));
     return o;
 }
 
@@ -46,8 +47,8 @@ TEST(DynamicGrid, WholeVoxelTranslationIsExact) {
     for (int z = -1; z < 3; ++z)
         for (int y = -1; y < 5; ++y)
             for (int x = -1; x < 7; ++x)
-                EXPECT_EQ(g.get(glm::ivec3(100, -20, 40) + glm::ivec3(x, y, z)), o.model.get({x, y, z})) << x << y << z;
-    EXPECT_EQ(countSolid(g), o.model.solidVoxels());
+                EXPECT_EQ(g.get(glm::ivec3(100, -20, 40) + glm::ivec3(x, y, z)), o.model->get({x, y, z})) << x << y << z;
+    EXPECT_EQ(countSolid(g), o.model->solidVoxels());
     ASSERT_EQ(g.instances.size(), 1u);
     EXPECT_EQ(g.instances[0].bounds.min, glm::ivec3(100, -20, 40));
     EXPECT_EQ(g.instances[0].bounds.max, glm::ivec3(106, -16, 42));
@@ -72,8 +73,8 @@ TEST(DynamicGrid, QuarterTurnGivesExactlyTheRotatedVoxels) {
                     glm::ivec3 rel2 = glm::ivec3(2 * x + 1, 2 * y + 1, 2 * z + 1) - glm::ivec3(6, 4, 2);
                     glm::ivec3 w2 = ri * rel2 + glm::ivec3(2.0 * centre);
                     glm::ivec3 world = (w2 - 1) / 2;
-                    EXPECT_EQ(g.get(world), o.model.get({x, y, z})) << "ypr " << ypr.x << "," << ypr.y << "," << ypr.z;
-                    expected += o.model.get({x, y, z}) != kEmpty;
+                    EXPECT_EQ(g.get(world), o.model->get({x, y, z})) << "ypr " << ypr.x << "," << ypr.y << "," << ypr.z;
+                    expected += o.model->get({x, y, z}) != kEmpty;
                 }
         EXPECT_EQ(countSolid(g), expected) << "nothing else was written";
     }
@@ -82,10 +83,11 @@ TEST(DynamicGrid, QuarterTurnGivesExactlyTheRotatedVoxels) {
 TEST(DynamicGrid, ArbitraryRotationKeepsTheVolume) {
     DynamicObject o;
     o.modelSize = {24, 16, 16};
-    o.model = BrickGrid(o.modelSize);
+    BrickGrid model(o.modelSize);
     for (int z = 0; z < 16; ++z)
         for (int y = 0; y < 16; ++y)
-            for (int x = 0; x < 24; ++x) o.model.set({x, y, z}, 3);
+            for (int x = 0; x < 24; ++x) model.set({x, y, z}, 3);
+    o.model = std::make_shared<const BrickGrid>(std::move(model));
     o.current = {{40.3, 41.7, 39.1}, rotationFromYawPitchRoll({33, 21, 12})};
     DynamicGrid g = voxelizeObjects(std::span(&o, 1));
     double n = double(countSolid(g));
@@ -124,6 +126,6 @@ TEST(DynamicGrid, FirstObjectWinsWhereObjectsOverlap) {
     objects[0].current = {{3, 2, 1}, {}};
     objects[1].current = {{5, 2, 1}, {}};
     DynamicGrid g = voxelizeObjects(objects);
-    EXPECT_EQ(g.get({2, 0, 0}), objects[0].model.get({2, 0, 0}));
-    EXPECT_EQ(g.get({7, 0, 0}), objects[1].model.get({5, 0, 0}));
+    EXPECT_EQ(g.get({2, 0, 0}), objects[0].model->get({2, 0, 0}));
+    EXPECT_EQ(g.get({7, 0, 0}), objects[1].model->get({5, 0, 0}));
 }

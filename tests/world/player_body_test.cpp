@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <tuple>
 
@@ -255,8 +256,9 @@ TEST(PlayerBody, LandsOnAMovingPlatformAndMovesWithIt) {
     DynamicObject platform;
     platform.name = "platform";
     platform.modelSize = {10, 2, 10};
-    platform.model = BrickGrid(platform.modelSize);
-    fillBox(platform.model, Box{{0, 0, 0}, {10, 2, 10}}, kStone);
+    BrickGrid model(platform.modelSize);
+    fillBox(model, Box{{0, 0, 0}, {10, 2, 10}}, kStone);
+    platform.model = std::make_shared<const BrickGrid>(std::move(model));
     ObjectKey a, b, c;
     a.time = 0.0, a.position = {15.0, 9.0, 32.0};
     b.time = 3.0, b.position = {45.0, 9.0, 32.0};
@@ -319,5 +321,40 @@ TEST(PlayerBody, ReplaysExactly) {
         first.advance(world, i, dt);
         second.advance(world, i, dt);
         ASSERT_EQ(first.feet(), second.feet()) << "frame " << f;
+    }
+}
+
+TEST(PlayerBody, NeverSpinsWhereverItStarts) {
+    // Walk mode puts the body at the camera: anywhere a scene or .vdb file may put one (within
+    // kCoordinateRange) and, for safety, anywhere at all. Its work per frame, counted in voxel
+    // reads, stays bounded by the world, not by the distance to it: the lift out of solid voxels
+    // tries each level up to 4096 above the top with a box of 2 x 3 x 2 voxels, and the ticks
+    // read a few layers each.
+    const BrickGrid grid = flatWorld();
+    const std::uint64_t bound = (32 + 4096 + 2) * 12 + 12 * 8 * 3 * 12;
+    const double inf = std::numeric_limits<double>::infinity();
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const glm::dvec3 starts[] = {{32, 1e7, 32},     {32, -1e7, 32},    {1e7, 10, 1e7},      {-1e7, 10, -1e7},
+                                 {32, 2.5e9, 32},   {32, -2.5e9, 32},  {32, 1e30, 32},      {1e30, -1e30, 1e30},
+                                 {32, inf, 32},     {32, -inf, 32},    {inf, inf, -inf},    {32, nan, 32},
+                                 {nan, nan, nan},   {32, 4.0, 32}};
+    for (const glm::dvec3& start : starts) {
+        SCOPED_TRACE(testing::Message() << "starting at " << start.x << ", " << start.y << ", " << start.z);
+        PlayerBody body;
+        CollisionWorld world{grid};
+        body.place(world, start);
+        ASSERT_LE(world.voxelReads, bound) << "placing it";
+        PlayerIntent intent = walk({0.6, 0.8});
+        intent.jump = true;
+        for (int f = 0; f < 20; ++f) {
+            world.voxelReads = 0;
+            body.advance(world, intent, 1.0 / 30.0);
+            ASSERT_LE(world.voxelReads, bound) << "frame " << f;
+        }
+        // Wherever it started, it is somewhere real now: inside the world's sides, above its floor.
+        const glm::dvec3 feet = body.feet();
+        EXPECT_TRUE(std::isfinite(feet.x) && std::isfinite(feet.y) && std::isfinite(feet.z));
+        EXPECT_FALSE(solidInside(grid, nullptr, body.box()));
+        EXPECT_GE(feet.y, 4.0);
     }
 }

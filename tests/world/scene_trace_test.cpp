@@ -14,16 +14,18 @@ namespace {
 std::vector<DynamicObject> rotatedObjects() {
     std::vector<DynamicObject> objects(2);
     objects[0].modelSize = {20, 9, 13};
-    objects[0].model = BrickGrid(objects[0].modelSize);
+    BrickGrid first(objects[0].modelSize);
     for (int z = 0; z < 13; ++z)
         for (int y = 0; y < 9; ++y)
             for (int x = 0; x < 20; ++x)
-                if ((x * 7 + y * 3 + z * 5) % 4 != 0) objects[0].model.set({x, y, z}, MaterialId(40 + (x + y) % 3));
+                if ((x * 7 + y * 3 + z * 5) % 4 != 0) first.set({x, y, z}, MaterialId(40 + (x + y) % 3));
+    objects[0].model = std::make_shared<const BrickGrid>(std::move(first));
     objects[0].current = {{22.3, 17.9, 25.2}, rotationFromYawPitchRoll({31, -17, 52})};
     objects[1].modelSize = {8, 8, 8};
-    objects[1].model = BrickGrid(objects[1].modelSize);
-    for (int i = 0; i < 8; ++i) objects[1].model.set({i, i, 7 - i}, 50);
-    objects[1].model.set({0, 0, 0}, 51);
+    BrickGrid second(objects[1].modelSize);
+    for (int i = 0; i < 8; ++i) second.set({i, i, 7 - i}, 50);
+    second.set({0, 0, 0}, 51);
+    objects[1].model = std::make_shared<const BrickGrid>(std::move(second));
     objects[1].current = {{10.5, 30.0, 40.0}, rotationFromAxisAngle({1, 1, 0}, 73)};
     return objects;
 }
@@ -43,8 +45,9 @@ TEST(SceneTrace, NearerSetWinsAndStaticWinsTies) {
         for (int z = 0; z < 32; ++z) world.set({20, y, z}, 1);  // a wall at x = 20
     std::vector<DynamicObject> objects(1);
     objects[0].modelSize = {2, 2, 2};
-    objects[0].model = BrickGrid({2, 2, 2});
-    for (int i = 0; i < 8; ++i) objects[0].model.set({i & 1, (i >> 1) & 1, i >> 2}, 2);
+    BrickGrid cube({2, 2, 2});
+    for (int i = 0; i < 8; ++i) cube.set({i & 1, (i >> 1) & 1, i >> 2}, 2);
+    objects[0].model = std::make_shared<const BrickGrid>(std::move(cube));
     const glm::vec3 o(0.5f, 10.5f, 10.5f), d(1.0f, 0.0f, 0.0f);
     for (int x : {10, 19, 20, 25}) {
         objects[0].current = {{double(x) + 1.0, 11.0, 11.0}, {}};  // voxels x..x+1, y 10..11

@@ -14,18 +14,5 @@ mkdir -p "$out/corpus" "$out/seeds" "$out/artifacts"
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz
 build/fuzz/tools/vdb_samples/make_vdb_samples seeds "$out/seeds"
-echo "run_vdb_fuzz: $(ls "$out/seeds" | wc -l) seed files, fuzzing for ${seconds}s"
-
-# Leak checks stay on; returning null from an over-large malloc is never needed because the
-# engine's allocation budget refuses such requests before they reach malloc.
-export ASAN_OPTIONS="${ASAN_OPTIONS:-abort_on_error=1:detect_leaks=1}"
-set +e
-build/fuzz/tools/fuzz/vdb_import_fuzzer "$out/corpus" "$out/seeds" \
-    -max_total_time="$seconds" -max_len=65536 -timeout=30 -rss_limit_mb=2048 \
-    -artifact_prefix="$out/artifacts/" -print_final_stats=1 2>&1 | tee "$out/fuzz.log" | grep -E "^#[0-9]+.*(pulse|DONE|NEW)|ERROR|SUMMARY|stat::" | grep -vE "NEW" | tail -n 40
-status=${PIPESTATUS[0]}
-set -e
-execs=$(grep -E "stat::number_of_executed_units" "$out/fuzz.log" | awk '{print $2}' | tail -1)
-findings=$(ls "$out/artifacts" | wc -l)
-echo "run_vdb_fuzz: exit ${status}, ${execs:-?} executions, ${findings} artifact(s) in $out/artifacts"
-exit "$status"
+source tools/fuzz/libfuzzer_run.sh
+run_fuzzer run_vdb_fuzz vdb_import_fuzzer "$out" "$seconds" 65536

@@ -1,8 +1,11 @@
 // vox bench sweep: lighting methods x settings on each scene, each point's time and error from
 // the same run, written as CSV/JSON and charted (error against milliseconds, Pareto front joined,
-// tools/plot_sweep.py). vox bench recommend: the cheapest setting a sweep found that meets a
-// target error on a scene — model no more than the scene needs; with --sampling, ReSTIR's
-// candidate sampling per scene from `vox bench restir`'s seeds.
+// tools/plot_sweep.py); with --scheduler its points become the tasks of a job (sweep_job.h).
+// vox bench recommend: the cheapest setting a sweep found that meets a target error on a scene —
+// model no more than the scene needs; with --sampling, ReSTIR's candidate sampling per scene from
+// `vox bench restir`'s seeds.
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -10,14 +13,14 @@
 #include <fstream>
 #include <sstream>
 
-#include <fmt/format.h>
-
-#include "core/atomic_file.h"
 #include "commands.h"
-#include "number_options.h"
+#include "core/atomic_file.h"
 #include "gpu/context.h"
-#include "lighting/emitter_list.h"
+#include "job_status.h"
 #include "lighting_options.h"
+#include "number_options.h"
+#include "sweep_job.h"
+#include "sweep_points.h"
 #include "sweep_runner.h"
 
 namespace vox {
@@ -27,148 +30,15 @@ namespace {
 using engine::lighting::LightingSettings;
 using engine::lighting::Method;
 
-struct SweepOptions {
-    std::vector<std::string> worlds{"cornell", "mountain", "letters", "apartments"};
-    std::string methods = "restir,restir-unbiased,ris,uniform";
-    std::string candidates = "1,8,32";
-    std::string modes = "point,area";
-    std::string brickLights = "on,off";
-    std::string rays = "1,4,16";
-    std::string size = "128x72";
-    std::uint32_t frames = 12;
-    std::uint32_t referenceSpp = 1024;
-    // Indirect-light series (docs/ACCURACY.md): ReSTIR's defaults for the direct light plus
-    // none | cache-K | reference, measured against a multi-bounce reference.
-    std::string indirect = "none,cache-32,cache-128,reference,vct";
-    std::uint32_t indirectBounces = 3;
-    std::uint32_t indirectReferenceSpp = 512;
-    std::string output = "out/sweep";
-};
-
-std::vector<std::string> splitList(const std::string& s) {
-    std::vector<std::string> out;
-    std::stringstream in(s);
-    std::string item;
-    while (std::getline(in, item, ',')) {
-        if (!item.empty()) out.push_back(item);
-    }
-    return out;
-}
-
-engine::Result<std::vector<std::uint32_t>> numbers(const std::string& s, const char* option) {
-    std::vector<std::uint32_t> out;
-    for (const std::string& item : splitList(s)) {
-        char* end = nullptr;
-        unsigned long v = std::strtoul(item.c_str(), &end, 10);
-        if (!end || *end || v < 1 || v > 4096) return engine::makeError("{}: '{}' is not a number in 1..4096", option, item);
-        out.push_back(std::uint32_t(v));
-    }
-    if (out.empty()) return engine::makeError("{}: empty list", option);
-    return out;
-}
-
-// All settings of the sweep, labelled.
-engine::Result<std::vector<std::pair<std::string, LightingSettings>>> settingsOf(const SweepOptions& o) {
-    auto ms = numbers(o.candidates, "--candidates");
-    if (!ms) return ms.error();
-    auto rays = numbers(o.rays, "--rays");
-    if (!rays) return rays.error();
-    std::vector<std::pair<std::string, LightingSettings>> out;
-    for (const std::string& method : splitList(o.methods)) {
-        for (const std::string& mode : splitList(o.modes)) {
-            if (mode != "point" && mode != "area") return engine::makeError("--modes: '{}' is not point or area", mode);
-            for (const std::string& bricks : splitList(o.brickLights)) {
-                if (bricks != "on" && bricks != "off") return engine::makeError("--brick-lights: '{}' is not on or off", bricks);
-                const std::vector<engine::lighting::KnobValue> values{
-                    {engine::lighting::knobForOption("method"), method, "--methods"},
-                    {engine::lighting::knobForOption("mode"), mode, "--modes"},
-                    {engine::lighting::knobForOption("brick-lights"), bricks, "--brick-lights"}};
-                auto base = engine::lighting::mergeLighting(LightingSettings{}, values);
-                if (!base) return base.error();
-                std::string tag = fmt::format("{} {}{}", method, mode, bricks == "off" ? " voxels" : "");
-                if (base->method == Method::Uniform) {
-                    for (std::uint32_t n : *rays) {
-                        LightingSettings l = *base;
-                        l.shadowRays = n;
-                        out.push_back({fmt::format("{} {} rays", tag, n), l});
-                    }
-                } else if (base->method == Method::Restir || base->method == Method::Ris) {
-                    for (std::uint32_t m : *ms) {
-                        LightingSettings l = *base;
-                        l.restir.candidates = m;
-                        out.push_back({fmt::format("{} M={}", tag, m), l});
-                    }
-                } else {
-                    out.push_back({tag, *base});
-                }
-            }
-        }
-    }
-    for (const auto& [tag, l] : out) {  // --candidates and --rays may leave the knobs' ranges
-        if (engine::Status valid = engine::lighting::validate(l); !valid) return engine::makeError("{}: {}", tag, valid.error().message);
-    }
-    return out;
-}
-
-// The indirect-light series, labelled: ReSTIR (biased, area, M = 32: the defaults) for the
-// direct light and, for the indirect light, nothing, the irradiance cache with K directions per
-// face, or the path tracer with the same bounces as the reference it is measured against (one
-// sample per pixel, restarted every frame). The cache reads its own irradiance at each ray's hit
-// for the same number of bounces, so all three aim at the same converged image.
-engine::Result<std::vector<std::pair<std::string, LightingSettings>>> indirectSettingsOf(const SweepOptions& o) {
-    using engine::lighting::Indirect;
-    std::vector<std::pair<std::string, LightingSettings>> out;
-    for (const std::string& item : splitList(o.indirect)) {
-        LightingSettings l;
-        if (item == "none") {
-            out.push_back({"indirect none (restir)", l});
-        } else if (item == "reference") {
-            l.method = Method::Reference;
-            l.referenceFilter = engine::lighting::ReferenceFilter::PixelCentre;  // as the reference it is measured against
-            l.indirect = Indirect::Reference;
-            l.bounces = o.indirectBounces;
-            l.samplesPerFrame = 1;
-            out.push_back({fmt::format("indirect reference {} bounces 1 spp", o.indirectBounces), l});
-        } else if (item.rfind("cache-", 0) == 0) {
-            auto k = numbers(item.substr(6), "--indirect cache-K");
-            if (!k) return k.error();
-            l.indirect = Indirect::Cache;
-            l.cache.directions = k->front();
-            l.cache.raysPerUpdate = std::min(l.cache.raysPerUpdate, l.cache.directions);
-            l.cache.bounces = o.indirectBounces;
-            if (engine::Status valid = engine::lighting::validate(l); !valid)
-                return engine::makeError("--indirect {}: {}", item, valid.error().message);
-            out.push_back({fmt::format("indirect cache K={}", k->front()), l});
-        } else if (item == "vct" || item == "vct-leaky") {
-            // Voxel cone tracing (one bounce; the extra bounce with 2+ reference bounces), with its
-            // leak mitigation on, or off (vct-leaky).
-            l.indirect = Indirect::Vct;
-            l.vct.leakMitigation = item == "vct";
-            l.vct.extraBounce = o.indirectBounces > 1;
-            out.push_back({item == "vct" ? "indirect vct" : "indirect vct no leak mitigation", l});
-        } else {
-            return engine::makeError("--indirect: '{}' is not none, cache-K, vct, vct-leaky or reference", item);
-        }
-    }
-    return out;
-}
-
-const char* indirectColumn(const LightingSettings& l) {
-    return engine::lighting::indirectName(l.method == Method::Reference ? engine::lighting::Indirect::Reference : l.indirect);
-}
-
 int runSweep(const SweepOptions& o) {
-    auto size = parseSize(o.size, "--size");
-    if (!size) return fail(size.error());
-    auto settings = settingsOf(o);
-    if (!settings) return fail(settings.error());
-    auto indirect = indirectSettingsOf(o);
-    if (!indirect) return fail(indirect.error());
+    if (!o.status.empty()) return job::printJobStatus(o.status);
+    if (!o.join.empty()) return joinSweep(o.join);
+    if (o.jobTask) return runSweepTask(o);
+    if (!o.job.scheduler.empty()) return submitSweepJob(o);
+    auto plan = planSweep(o);
+    if (!plan) return fail(plan.error());
     auto ctx = engine::gpu::Context::create({});
     if (!ctx) return fail(ctx.error());
-    engine::render::FrameSettings fs;
-    fs.width = (*size).x;
-    fs.height = (*size).y;
     std::filesystem::path out(o.output);
     std::filesystem::create_directories(out);
     engine::AtomicFile csvFile;
@@ -176,50 +46,21 @@ int runSweep(const SweepOptions& o) {
     std::ostream& csv = csvFile.stream();
     // reference_bounces 0: the point's error is against the direct-light reference; more: against
     // the path tracer with that many bounces (the indirect series, charted apart).
-    csv << "scene,method,setting,emitters,total_ms,primary_ms,lighting_ms,mae,mse,rmae,indirect,reference_bounces,mean_ratio\n";
-    std::size_t total = o.worlds.size() * (settings->size() + indirect->size()), done = 0;
-    auto write = [&](const SweepPoint& p, const LightingSettings& l, std::uint32_t referenceBounces) {
-        double primary = p.passMs.count("primary_rays") ? p.passMs.at("primary_rays") : 0.0;
-        double tonemap = p.passMs.count("tonemap") ? p.passMs.at("tonemap") : 0.0;
-        csv << fmt::format("{},{},\"{}\",{},{},{},{},{},{},{},{},{},{}\n", p.scene, p.method, p.label, p.emitters,
-                           p.totalMs, primary, p.totalMs - primary - tonemap, p.mae, p.mse, p.rmae, indirectColumn(l),
-                           referenceBounces, p.meanRatio);
-        csv.flush();
-    };
-    for (const std::string& name : o.worlds) {
-        auto scene = loadWorld(name);
-        if (!scene) return fail(scene.error());
-        engine::world::CameraPreset camera = scene->camera();
-        engine::Result<std::vector<glm::vec4>> reference = std::vector<glm::vec4>{};
-        if (!settings->empty()) reference = cachedReference(**ctx, *scene, camera, fs, o.referenceSpp, 0, out / "cache");
-        if (!reference) return fail(reference.error());
-        // Brick lights on and off are the same lights in a scene without uniform emissive bricks.
-        engine::lighting::EmitterList lights;
-        lights.rebuild(*scene);
-        bool hasBrickLights = false;
-        for (const auto& e : lights.slots()) hasBrickLights |= e.minCorner.w == 8 && (e.info.w & 1u);
-        for (const auto& [label, l] : *settings) {
-            ++done;
-            if (!l.brickLights && !hasBrickLights) continue;
-            std::fprintf(stderr, "\r  [%zu/%zu] %s: %-40s", done, total, scene->name.c_str(), label.c_str());
-            write(measureSetting(**ctx, *scene, camera, fs, l, o.frames, *reference, label), l, 0);
-        }
-        if (indirect->empty()) continue;
-        auto withBounces = cachedReference(**ctx, *scene, camera, fs, o.indirectReferenceSpp, o.indirectBounces, out / "cache");
-        if (!withBounces) return fail(withBounces.error());
-        for (const auto& [label, l] : *indirect) {
-            ++done;
-            std::fprintf(stderr, "\r  [%zu/%zu] %s: %-40s", done, total, scene->name.c_str(), label.c_str());
-            write(measureSetting(**ctx, *scene, camera, fs, l, o.frames, *withBounces, label), l, o.indirectBounces);
-        }
+    csv << kSweepCsvHeader;
+    const std::uint32_t total = plan->pointsPerWorld() * std::uint32_t(o.worlds.size());
+    if (total > 0) {
+        engine::Status measured =
+            measureSweepPoints(**ctx, o, *plan, 0, total - 1, {},
+                               [&](std::uint32_t, const std::string& line) -> engine::Status {
+                                   csv << line;
+                                   csv.flush();
+                                   return {};
+                               });
+        if (!measured) return fail(measured.error());
     }
-    std::fprintf(stderr, "\n");
     if (engine::Status s = csvFile.commit(); !s) return fail(s.error());
     std::printf("wrote    %s\n", (out / "sweep.csv").string().c_str());
-    // The chart needs Debian's matplotlib; without it the CSV is still complete.
-    std::string plot = fmt::format("/usr/bin/python3 {}/tools/plot_sweep.py {} {}", VOX_SOURCE_DIR,
-                                   (out / "sweep.csv").string(), out.string());
-    if (std::system(plot.c_str()) != 0) std::fprintf(stderr, "note: chart not drawn (needs python3-matplotlib)\n");
+    drawSweepCharts(o.output);
     return 0;
 }
 
@@ -373,6 +214,12 @@ void addBenchSweepCommand(CLI::App& bench, int& exitCode) {
         ->capture_default_str()
         ->check(numberIn(kSamplesRange));
     cmd->add_option("-o,--output", o->output, "Output folder")->capture_default_str();
+    job::addJobOptions(*cmd, o->job);
+    cmd->add_option("--join", o->join, "Join the sweep job in DIR: the CSV and charts of one run")
+        ->type_name("DIR");
+    cmd->add_option("--status", o->status, "Where the sweep job in DIR stands")->type_name("DIR");
+    cmd->add_option("--job-task", o->jobTask, "Measure task I's points of the job in --output")
+        ->group("");
     cmd->callback([o, &exitCode] { exitCode = runSweep(*o); });
 
     auto* rec = bench.add_subcommand("recommend", "The cheapest swept setting that meets a target MAE on a scene");

@@ -1,33 +1,31 @@
 // vox capture: plays a world's flythrough (camera path + timed events) headless and writes every
 // frame as PNG (and linear EXR on request), a per-frame CSV of GPU pass timings and counts, a
-// contact sheet and, when ffmpeg is on PATH, an MP4. `--frames A:B --warmup W` renders a slice
-// so a long capture can be split across machines (docs/CAPTURE.md).
+// contact sheet and, when ffmpeg is on PATH, an MP4. `--frames A:B --warmup W` renders a slice;
+// `--scheduler slurm|parallel|local --tasks N` splits the capture into a job of slices, resumed
+// by the same command, followed with `--status DIR` and joined by `--join DIR` (capture_job.h,
+// docs/CAPTURE.md).
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <map>
-#include <sstream>
 #include <vector>
 
+#include "capture_csv.h"
+#include "capture_job.h"
+#include "capture_join.h"
+#include "capture_options.h"
+#include "capture_render.h"
+#include "capture_sheet.h"
 #include "commands.h"
 #include "core/atomic_file.h"
 #include "core/folder_lock.h"
-#include "number_options.h"
 #include "ffmpeg_video.h"
-#include "frame_rays.h"
 #include "gpu/context.h"
-#include "io/contact_sheet.h"
-#include "io/image_io.h"
+#include "job_status.h"
 #include "lighting_options.h"
-#include "progress_line.h"
-#include "render/flythrough_player.h"
+#include "number_options.h"
 #include "render/frame_plan.h"
-#include "shared/brick_grid.h"
-#include "scene/path_file.h"
 
 namespace vox {
 
@@ -35,117 +33,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CaptureOptions {
-    std::string world;
-    std::string path;
-    std::string out;
-    std::string size = "320x180";
-    std::optional<double> fps;  // absent: the path file's
-    std::string frames;
-    std::uint32_t warmup = 30;
-    bool exr = false;
-    bool noVideo = false;
-    std::uint32_t sheet = 24;
-    float exposure = 1.0f;
-    LightingOptions lighting;
-};
-
-// What one written frame contributes to the CSV.
-struct FrameRow {
-    engine::render::FlythroughPlayer::Frame frame;
-    std::uint64_t primaryRays = 0, surfacePixels = 0, primarySteps = 0;
-    std::uint64_t rays = 0;
-    bool raysCounted = false;  // counted on the GPU (preview), else the per-pixel bound below
-    std::uint64_t visibleCacheVoxels = 0;
-    double wallMs = 0.0;
-};
-
-// "A:B" (inclusive; B may be left out or run past the end) within frames 0..count-1.
-engine::Result<std::pair<std::uint32_t, std::uint32_t>> parseRange(const std::string& text,
-                                                                   std::uint32_t count) {
-    if (text.empty()) return std::pair<std::uint32_t, std::uint32_t>{0, count - 1};
-    unsigned a = 0, b = 0;
-    char colon = 0, extra = 0;
-    int n = std::sscanf(text.c_str(), "%u%c%u%c", &a, &colon, &b, &extra);
-    if (n == 2 && colon == ':') {
-        b = count - 1;
-    } else if (n != 3 || colon != ':') {
-        return engine::makeError(
-            "--frames: expected A:B (first and last frame, inclusive) or A:, got '{}'", text);
-    }
-    if (a >= count)
-        return engine::makeError("--frames: frame {} is past the path's last frame ({})", a,
-                                 count - 1);
-    if (b < a) return engine::makeError("--frames: {}:{} ends before it starts", a, b);
-    return std::pair<std::uint32_t, std::uint32_t>{a, std::min<std::uint32_t>(b, count - 1)};
-}
-
-std::string framePng(std::uint32_t i) { return fmt::format("frame_{:05}.png", i); }
-std::string frameExr(std::uint32_t i) { return fmt::format("frame_{:05}.exr", i); }
-
-// Columns ending in _ms are timings (they vary from run to run); every other column is a pure
-// function of the inputs. Pass columns are the union over frames in first-seen order (ReSTIR's
-// temporal pass, for one, does not run on the first frame).
-engine::Status writeCsv(const fs::path& file, const std::vector<FrameRow>& rows) {
-    std::vector<std::string> passes;
-    for (const FrameRow& r : rows)
-        for (const auto& [name, ms] : r.frame.result.passMs)
-            if (std::find(passes.begin(), passes.end(), name) == passes.end())
-                passes.push_back(name);
-    std::ostringstream csv;
-    csv << "frame,time_s,events,cam_x,cam_y,cam_z,target_x,target_y,target_z,fov_deg,emitters,"
-           "primary_rays,"
-           "surface_pixels,primary_steps,rays,visible_cache_voxels,rays_how,upload_bricks,upload_cells";
-    for (const std::string& p : passes) csv << ",gpu_" << p << "_ms";
-    csv << ",gpu_total_ms,cpu_emitter_update_ms,wall_ms\n";
-    for (const FrameRow& r : rows) {
-        const auto& f = r.frame;
-        const auto& c = f.camera;
-        csv << fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}", f.index,
-                           f.time, f.events, c.position.x, c.position.y, c.position.z, c.target.x,
-                           c.target.y, c.target.z, c.fovYDegrees, f.result.emitters, r.primaryRays,
-                           r.surfacePixels, r.primarySteps, r.rays, r.visibleCacheVoxels,
-                           r.raysCounted ? "counted" : "bound", f.result.upload.bricks,
-                           f.result.upload.cells);
-        for (const std::string& p : passes) {
-            bool ran = false;
-            for (const auto& [name, ms] : f.result.passMs) ran |= name == p;
-            csv << ",";
-            if (ran) csv << fmt::format("{:.4f}", f.result.passMsOf(p));
-        }
-        csv << fmt::format(",{:.4f},{:.4f},{:.2f}\n", f.result.totalMs(), f.result.emitterUpdateMs,
-                           r.wallMs);
-    }
-    std::string text = csv.str();
-    return engine::writeFileAtomically(file, text);
-}
-
+// One process renders frames first..last (a whole capture or a slice) and writes every output.
 int runCapture(const CaptureOptions& o) {
-    auto size = parseSize(o.size, "--size");
-    if (!size) return fail(size.error());
     if (o.out.empty()) return fail(engine::makeError("--out: give the output folder"));
-
     if (o.lighting.showSettings) return showSettings(o.world, o.lighting);
-    auto scene = loadWorld(o.world);
-    if (!scene) return fail(scene.error());
-    auto lighting = lightingSettings(o.lighting, &*scene);
-    if (!lighting) return fail(lighting.error());
-    fs::path pathFile = scene->sourcePath;
-    if (!o.path.empty()) {
-        auto p = resolvePathFile(o.path);
-        if (!p) return fail(p.error());
-        pathFile = *p;
-    }
-    auto fly = engine::scene::loadFlythroughFile(pathFile);
-    if (!fly) return fail(fly.error());
-    const double fps = o.fps.value_or(fly->fps);
-    const std::uint32_t count = fly->frameCount(fps);
-    auto range = parseRange(o.frames, count);
-    if (!range) return fail(range.error());
-    const auto [first, last] = *range;
+    auto setup = prepareCapture(o);
+    if (!setup) return fail(setup.error());
+    const std::uint32_t first = setup->first, last = setup->last, count = setup->count;
     const std::uint32_t start = first - std::min(first, o.warmup);
-    if (engine::Status s = fly->checkFrames(fps); !s) return fail(s.error());
-    if (engine::Status s = fly->timeline.bind(*scene); !s) return fail(s.error());
 
     const fs::path dir(o.out);
     std::error_code ec;
@@ -156,7 +51,8 @@ int runCapture(const CaptureOptions& o) {
     const std::string suffix = whole ? "" : fmt::format("_{:05}-{:05}", first, last);
     // Two runs writing the same frames into one folder would mix them (and the MP4 of one would
     // hold the other's frames): each run claims its frames; slices with disjoint frames share it.
-    auto lock = engine::FolderLock::acquire(dir, "vox capture", first, std::uint64_t(last) - first + 1);
+    auto lock =
+        engine::FolderLock::acquire(dir, "vox capture", first, std::uint64_t(last) - first + 1);
     if (!lock) return fail(lock.error());
 
     engine::gpu::ContextOptions ctxOptions;
@@ -166,104 +62,43 @@ int runCapture(const CaptureOptions& o) {
     auto ctx = engine::gpu::Context::create(ctxOptions);
     if (!ctx) return fail(ctx.error());
     const auto& dev = (*ctx)->info();
-    const engine::lighting::LightingSettings l = *lighting;
     std::printf("device   %s (%s, %s)\n", dev.name.c_str(), dev.type.c_str(), dev.driver.c_str());
-    std::printf("world    %s (%s)\n", scene->name.c_str(), scene->sourcePath.c_str());
+    std::printf("world    %s (%s)\n", setup->scene.name.c_str(), setup->scene.sourcePath.c_str());
     std::printf("path     %s: %u frames at %g fps (%.2f s), %zu keys, %zu events\n",
-                pathFile.string().c_str(), count, fps, fly->duration, fly->camera.keys().size(),
-                fly->timeline.events().size());
+                setup->pathFile.string().c_str(), count, setup->fps, setup->fly.duration,
+                setup->fly.camera.keys().size(), setup->fly.timeline.events().size());
     std::printf("frames   %u..%u of 0..%u, after %u warm-up frame(s); %ux%u\n", first, last,
-                count - 1, first - start, (*size).x, (*size).y);
-    std::printf("lighting %s\n", engine::render::describeLighting(l).c_str());
+                count - 1, first - start, setup->size.x, setup->size.y);
+    std::printf("lighting %s\n", engine::render::describeLighting(setup->lighting).c_str());
     std::fflush(stdout);  // before the progress line on stderr
 
-    // Thumbnails: `sheet` frames spread evenly over the written ones, first and last included.
     const std::uint32_t written = last - first + 1;
-    const std::uint32_t thumbs = std::min(o.sheet, written);
-    std::map<std::uint32_t, std::uint32_t> thumbSlot;  // frame -> slot
-    for (std::uint32_t s = 0; s < thumbs; ++s)
-        thumbSlot[first + (thumbs > 1 ? std::uint32_t(
-                                            std::llround(double(s) * (written - 1) / (thumbs - 1)))
-                                      : 0)] = s;
-    const std::uint32_t thumbWidth = std::min<std::uint32_t>((*size).x, 160);
-    const std::uint32_t thumbHeight =
-        std::max<std::uint32_t>(1, (*size).y * thumbWidth / (*size).x);
-    std::optional<engine::io::ContactSheet> sheet;
-    if (thumbs > 0) sheet.emplace(thumbs, 6, thumbWidth, thumbHeight);
-
-    engine::render::Renderer renderer(**ctx);
-    engine::render::FlythroughPlayer player(renderer, *scene, *fly, fps);
-    engine::render::FrameSettings settings;
-    settings.width = (*size).x;
-    settings.height = (*size).y;
-    settings.exposure = o.exposure;
-
-    std::vector<FrameRow> rows;
-    ProgressLine progress("capture", last - start + 1);
-    for (std::uint32_t i = start; i <= last; ++i) {
-        auto t0 = std::chrono::steady_clock::now();
-        FrameRow row;
-        row.frame = player.render(i, settings, l);
-        if (i >= first) {
-            engine::render::FrameImages images = renderer.readback();
-            row.primaryRays = std::uint64_t(images.width) * images.height;  // one per pixel
-            for (const auto& g : images.gbuffer) {
-                row.surfacePixels += std::uint32_t(g.voxel.w) != shared::FACE_NONE;
-                row.primarySteps += g.data.z;
-            }
-            // The preview shading counts its rays (primary + sun shadow) on the GPU; the other
-            // methods' rays are bounded from their per-pixel counts (rayBound).
-            const auto& result = row.frame.result;
-            if (l.method == engine::lighting::Method::Preview) {
-                for (const auto& s : images.rayStats) row.rays += s.z;
-                if (result.cacheUsed) row.rays += result.cache.raysTraced;
-                row.raysCounted = true;
-            } else {
-                row.rays = rayBound(l, *scene, result, row.primaryRays, row.surfacePixels);
-            }
-            if (result.cacheUsed)
-                row.visibleCacheVoxels = result.cache.visibleStatic + result.cache.visibleDynamic;
-            engine::Status s =
-                engine::io::writePng(dir / framePng(i), images.width, images.height, images.rgba8);
-            if (s && o.exr)
-                s = engine::io::writeExr(dir / frameExr(i), images.width, images.height,
-                                         images.radiance);
-            if (!s) return fail(s.error());
-            if (auto it = thumbSlot.find(i); it != thumbSlot.end())
-                sheet->place(it->second, images.rgba8, images.width, images.height);
-            row.wallMs =
-                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
-                    .count();
-            rows.push_back(std::move(row));
-        }
-        progress.update(i - start + 1, i < first ? fmt::format("warm-up, frame {}", i)
-                                                 : fmt::format("frame {}", i));
-    }
-    const double seconds = progress.finish();
+    CaptureSheet sheet(first, last, o.sheet, setup->size);
+    std::vector<CaptureCsvRow> rows;
+    RenderRequest request{start, last,  [first](std::uint32_t i) { return i >= first; },
+                          dir,   o.exr, o.exposure};
+    auto seconds =
+        renderCapture(**ctx, *setup, request, [&](const CapturedFrame& f) -> engine::Status {
+            sheet.place(f.index, f.images.rgba8, f.images.width, f.images.height);
+            rows.push_back(f.row);
+            return {};
+        });
+    if (!seconds) return fail(seconds.error());
 
     const fs::path csv = dir / ("capture" + suffix + ".csv");
-    if (engine::Status s = writeCsv(csv, rows); !s) return fail(s.error());
+    if (engine::Status s = engine::writeFileAtomically(csv, captureCsvText(rows)); !s)
+        return fail(s.error());
     std::printf("wrote    %u frames %s..%s%s in %s\n", written, framePng(first).c_str(),
                 framePng(last).c_str(), o.exr ? " (+ linear EXR)" : "", dir.string().c_str());
     std::printf("wrote    %s\n", csv.string().c_str());
-    if (sheet) {
-        const fs::path sheetFile = dir / ("contact_sheet" + suffix + ".png");
-        if (engine::Status s =
-                engine::io::writePng(sheetFile, sheet->width(), sheet->height(), sheet->pixels());
-            !s)
-            return fail(s.error());
-        std::string frames;
-        for (const auto& [frame, slot] : thumbSlot)
-            frames += (frames.empty() ? "" : " ") + std::to_string(frame);
-        std::printf("wrote    %s (%u thumbnails, frames %s)\n", sheetFile.string().c_str(), thumbs,
-                    frames.c_str());
-    }
+    if (engine::Status s = sheet.write(dir / ("contact_sheet" + suffix + ".png")); !s)
+        return fail(s.error());
     if (o.noVideo) {
         std::printf("video    skipped (--no-video)\n");
     } else if (auto ffmpeg = findFfmpeg()) {
         const fs::path mp4 = dir / ("capture" + suffix + ".mp4");
-        if (engine::Status s =
-                encodeMp4(*ffmpeg, (dir / "frame_%05d.png").string(), first, written, fps, mp4);
+        if (engine::Status s = encodeMp4(*ffmpeg, (dir / "frame_%05d.png").string(), first, written,
+                                         setup->fps, mp4);
             !s)
             return fail(s.error());
         std::printf("wrote    %s\n", mp4.string().c_str());
@@ -273,12 +108,24 @@ int runCapture(const CaptureOptions& o) {
             "complete)\n");
     }
     std::printf("time     %.1f s for %u rendered frames (%.0f ms/frame wall, %u warm-up)\n",
-                seconds, last - start + 1, 1000.0 * seconds / (last - start + 1), first - start);
+                *seconds, last - start + 1, 1000.0 * *seconds / (last - start + 1), first - start);
     if ((*ctx)->validationErrors() > 0) {
         std::fprintf(stderr, "vox: %u Vulkan validation error(s)\n", (*ctx)->validationErrors());
         return 1;
     }
     return 0;
+}
+
+int runCaptureCommand(const CaptureOptions& o) {
+    if (!o.status.empty()) return job::printJobStatus(o.status);
+    if (!o.join.empty()) return joinCapture(o.join);
+    if (o.jobTask) {
+        if (o.out.empty())
+            return fail(engine::makeError("--job-task: give the job's folder with --out"));
+        return runCaptureTask(o);
+    }
+    if (!o.job.scheduler.empty()) return submitCaptureJob(o);
+    return runCapture(o);
 }
 
 }  // namespace
@@ -291,7 +138,7 @@ void addCaptureCommand(CLI::App& app, int& exitCode) {
                     "World name (worlds/NAME.toml) or scene file; default: sandbox");
     cmd->add_option("--path", o->path,
                     "Path file or name in worlds/paths/ (default: the world's own [path])");
-    cmd->add_option("--out", o->out, "Output folder")->required();
+    cmd->add_option("--out", o->out, "Output folder");
     cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
     cmd->add_option("--fps", o->fps, "Frames per second (default: the path's fps, else 30)")
         ->check(numberIn(engine::world::kFpsRange));
@@ -309,7 +156,17 @@ void addCaptureCommand(CLI::App& app, int& exitCode) {
         ->capture_default_str()
         ->check(numberIn(kExposureRange));
     addLightingOptions(*cmd, o->lighting);
-    cmd->callback([o, &exitCode] { exitCode = runCapture(*o); });
+    job::addJobOptions(*cmd, o->job);
+    cmd->add_option("--join", o->join,
+                    "Join the job in DIR: one CSV, contact sheet and MP4; refuses while frames are "
+                    "missing or damaged")
+        ->type_name("DIR");
+    cmd->add_option("--status", o->status,
+                    "Where the job in DIR stands: frames per task, states, failures, ETA")
+        ->type_name("DIR");
+    // What a scheduler runs for task I (through `vox job run`), not for people: hidden.
+    cmd->add_option("--job-task", o->jobTask, "Render task I of the job in --out")->group("");
+    cmd->callback([o, &exitCode] { exitCode = runCaptureCommand(*o); });
 }
 
 }  // namespace vox

@@ -23,6 +23,7 @@ void addCompareCommand(CLI::App& app, int& exitCode);
 void addCaptureCommand(CLI::App& app, int& exitCode);
 void addExportCommand(CLI::App& app, int& exitCode);
 void addImportCommand(CLI::App& app, int& exitCode);
+void addJobCommand(CLI::App& app, int& exitCode);
 void addBenchTraverseCommand(CLI::App& bench, int& exitCode);
 void addBenchEmittersCommand(CLI::App& bench, int& exitCode);
 void addBenchRestirCommand(CLI::App& bench, int& exitCode);
@@ -55,6 +56,9 @@ int runRender(const RenderOptions& options);
 // Loads a world by name or path (a .vdb is imported with default options); an empty argument
 // means the built-in default world.
 engine::Result<engine::world::Scene> loadWorld(const std::string& nameOrPath);
+// The file loadWorld reads for `nameOrPath` (empty if there is none), for the checks of
+// command_files.h.
+std::filesystem::path worldFileOf(const std::string& nameOrPath);
 // A camera path argument: a file, or a name in worlds/paths/ ("sandbox_orbit" ->
 // worlds/paths/sandbox_orbit.toml).
 engine::Result<std::filesystem::path> resolvePathFile(const std::string& arg);

@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "core/atomic_file.h"
+#include "command_files.h"
 #include "commands.h"
 #include "number_options.h"
 #include "core/quoted_string.h"
@@ -58,6 +59,11 @@ int runCompare(const CompareOptions& o) {
     if (!o.heatmap.empty() && std::filesystem::path(o.heatmap).extension() != ".png")
         return fail(engine::makeError("--heatmap {}: the file must end in .png", o.heatmap));
 
+    if (engine::Status s =
+            checkCommandFiles({{"the image", o.image}, {"the reference", o.reference}},
+                              {{"--heatmap", o.heatmap}, {"--json", o.json}});
+        !s)
+        return fail(s.error());
     auto image = loadExr(o.image);
     if (!image) return fail(image.error());
     auto reference = loadExr(o.reference);

@@ -1,6 +1,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "command_files.h"
 #include "commands.h"
 #include "io/vdb_export.h"
 #include "io/vox_export.h"
@@ -48,6 +49,12 @@ void addExportCommand(CLI::App& app, int& exitCode) {
         const std::string ext = std::filesystem::path(*output).extension().string();
         if (ext != ".vdb" && ext != ".vox") {
             exitCode = fail(engine::makeError("-o {}: the file must end in .vdb or .vox", *output));
+            return;
+        }
+        if (engine::Status s =
+                checkCommandFiles({{"the world", worldFileOf(*world)}}, {{"-o", *output}});
+            !s) {
+            exitCode = fail(s.error());
             return;
         }
         auto scene = loadWorld(*world);

@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 #include <filesystem>
 
+#include "command_files.h"
 #include "commands.h"
 #include "io/vdb_export.h"
 #include "io/vdb_import.h"
@@ -62,24 +63,38 @@ int runImport(const std::string& input, const std::string& output, bool dryRun, 
     }
     if (output.empty()) return fail(engine::makeError("{}: give -o WORLD.toml or WORLD.vdb (or --dry-run)", input));
     if (ext != ".toml" && ext != ".vdb") return fail(engine::makeError("-o {}: the file must end in .toml or .vdb", output));
+    if (engine::Status s = checkCommandFiles({{"the input", input}}, {{"-o", output}}); !s)
+        return fail(s.error());
+    // A scene file is replaced only if vox wrote it (an import or a save): a hand-written one
+    // may hold cameras, sky and generators nobody could restore.
+    std::error_code ec;
+    if (ext == ".toml" && fs::is_regular_file(out, ec) &&
+        !engine::scene::sceneFileMarked(out, engine::scene::kImportMarker) &&
+        !engine::scene::sceneFileMarked(out, engine::scene::kSaveMarker))
+        return fail(engine::makeError(
+            "{}: a scene file not written by vox import or vox play; refusing to replace it "
+            "(give -o a new name)",
+            output));
 
     auto scene = importFile(input, *options, reportText, peakBytes);
     if (!scene) return fail(scene.error());
-    std::error_code ec;
     if (out.has_parent_path()) fs::create_directories(out.parent_path(), ec);  // like every output of vox
     fs::path payload = out;
     if (ext == ".vdb") {
         if (engine::Status s = engine::io::exportVdb(*scene, payload); !s) return fail(s.error());
     } else {
         // Atomic as a pair (scene/world_pair.h): the payload gets a new name WORLD.N.vdb, so the
-        // input and the previous import stay intact until the scene file naming it is in place.
+        // input and the previous import stay intact until the scene file naming it is in place;
+        // then only the earlier payloads of this world go (never the input, nor a VDB sequence
+        // it belongs to).
         auto text = [&](const std::string& payloadName) {
             payload = out.parent_path() / payloadName;
             std::vector<engine::world::GeneratorRecord> generators{engine::scene::vdbPayloadGenerator(payloadName, /*ids=*/false)};
             std::string comment = fmt::format(
-                "Imported by `vox import` from {}.\nVoxels and palette live in {} (voxengine's VDB layout, docs/VDB.md);\n"
+                "{} from {}.\nVoxels and palette live in {} (voxengine's VDB layout, "
+                "docs/VDB.md);\n"
                 "a [[material]] defined here with the same name overrides the payload's.",
-                fs::path(input).filename().string(), payloadName);
+                engine::scene::kImportMarker, fs::path(input).filename().string(), payloadName);
             return engine::scene::sceneText(*scene, {.headerComment = comment, .generators = &generators});
         };
         if (engine::Status s = engine::scene::writeWorldPair(*scene, out, text, {.keep = {fs::path(input)}}); !s)

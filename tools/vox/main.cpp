@@ -49,6 +49,13 @@ engine::Result<engine::world::Scene> loadWorld(const std::string& nameOrPath) {
     return engine::scene::loadSceneFile(*path);
 }
 
+std::filesystem::path worldFileOf(const std::string& nameOrPath) {
+    const std::string ext = std::filesystem::path(nameOrPath).extension().string();
+    if (ext == ".vdb" || ext == ".vox") return nameOrPath;
+    auto path = engine::scene::resolveWorldPath(nameOrPath.empty() ? "sandbox" : nameOrPath);
+    return path ? *path : std::filesystem::path();
+}
+
 engine::Result<std::filesystem::path> resolvePathFile(const std::string& arg) {
     namespace fs = std::filesystem;
     std::error_code ec;
@@ -124,6 +131,7 @@ int main(int argc, char** argv) {
     vox::addCaptureCommand(app, exitCode);
     vox::addExportCommand(app, exitCode);
     vox::addImportCommand(app, exitCode);
+    vox::addJobCommand(app, exitCode);
     CLI::App* bench = app.add_subcommand("bench", "Benchmarks (results as CSV/JSON under out/)");
     bench->require_subcommand(1);
     vox::addBenchTraverseCommand(*bench, exitCode);

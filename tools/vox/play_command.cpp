@@ -1,4 +1,5 @@
 // `vox play [WORLD]`: the play/edit sandbox (game/sandbox.h). This file only maps options.
+#include "command_files.h"
 #include "commands.h"
 #include "number_options.h"
 #include "game/sandbox.h"
@@ -59,6 +60,21 @@ void addPlayCommand(CLI::App& app, int& exitCode) {
             return;
         }
         o->windowSize = *parsed;
+        // The logs and the save are never written over an input or over each other.
+        std::vector<CommandFile> inputs{{"the world", worldFileOf(o->world)},
+                                        {"--script", o->scriptPath}};
+        for (const std::string& m : o->models) inputs.push_back({"--model", worldFileOf(m)});
+        const std::vector<CommandFile> logs{{"--edit-log", o->editLogPath},
+                                            {"--frame-log", o->frameLogPath},
+                                            {"--walk-log", o->walkLogPath}};
+        std::vector<CommandFile> outputs = logs;
+        outputs.insert(outputs.begin(), {"--save", o->savePath});
+        engine::Status s = checkCommandFiles(inputs, logs);
+        if (s) s = checkCommandFiles({}, outputs);
+        if (!s) {
+            exitCode = fail(s.error());
+            return;
+        }
         o->autoScale = cmd->count("--render-scale") == 0;
         exitCode = game::runPlay(*o);
     });

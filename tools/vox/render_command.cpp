@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/atomic_file.h"
+#include "command_files.h"
 #include "commands.h"
 #include "lighting_options.h"
 #include "number_options.h"
@@ -21,6 +22,11 @@ int runRender(const RenderOptions& o) {
     std::filesystem::path out(o.output);
     std::string ext = out.extension().string();
     if (ext != ".png" && ext != ".exr") return fail(engine::makeError("-o {}: the file must end in .png or .exr", o.output));
+    if (engine::Status s =
+            checkCommandFiles({{"the world", worldFileOf(o.world)}},
+                              {{"-o", o.output}, {"--exr", o.exr}, {"--timings", o.timings}});
+        !s)
+        return fail(s.error());
     if (o.pos.empty() != o.target.empty()) return fail(engine::makeError("--pos and --target go together"));
     std::optional<glm::vec3> pos, target;
     if (!o.pos.empty()) {

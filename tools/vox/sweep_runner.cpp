@@ -1,13 +1,14 @@
 #include "sweep_runner.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <ctime>
 #include <fstream>
 #include <sstream>
 
-#include <fmt/format.h>
-
+#include "core/exclusive_file_lock.h"
 #include "core/hash.h"
 #include "io/image_io.h"
 #include "metrics/image_metrics.h"
@@ -126,6 +127,10 @@ engine::Result<std::vector<glm::vec4>> cachedReference(engine::gpu::Context& gpu
     std::uint32_t h = hashBytes(key.str(), 0x5eed);
     std::filesystem::path file = cacheDir / fmt::format("reference-{}-{:08x}.exr", scene.name, h);
     std::error_code ec;
+    // The tasks of a sweep job share the cache: the first to need a reference renders it while
+    // the others wait, then read it (without the cache folder, each renders its own).
+    std::filesystem::create_directories(cacheDir, ec);
+    auto lock = engine::ExclusiveFileLock::acquire(file.string() + ".lock");
     if (std::filesystem::exists(file, ec)) {
         auto img = engine::io::readExr(file);
         if (img.ok() && img->width == frame.width && img->height == frame.height) return std::move(img->pixels);

@@ -20,7 +20,7 @@ void addVdbImportOptions(CLI::App& cmd, VdbCliOptions& o) {
         ->check(numberIn(engine::closedRange(-1e6, 1e6)));
     cmd.add_option("--max-colours", o.maxColours, "Colour rule: at most this many materials")->capture_default_str()
         ->check(numberIn(engine::wholeRange(1, 65534, "materials")));
-    o.voxelSizeOption = cmd.add_option("--voxel-size", o.voxelSize, "Resample to this voxel size (file units; default: the file's)")
+    cmd.add_option("--voxel-size", o.voxelSize, "Resample to this voxel size (file units; default: the file's)")
         ->check(numberIn(engine::aboveRange(0.0, 1e6, "file units")));
     cmd.add_option("--offset", o.offset, "x,y,z: world voxel where source voxel (0,0,0) lands (default: auto)");
     cmd.add_option("--crop", o.crop, "x0,y0,z0,x1,y1,z1: import only this source index box (max exclusive)");
@@ -51,9 +51,8 @@ engine::Result<engine::io::VdbImportOptions> toImportOptions(const VdbCliOptions
     out.fogThreshold = o.fogThreshold;
     if (o.maxColours < 1 || o.maxColours > 65534) return makeError("--max-colours: must be in 1..65534");
     out.maxColours = o.maxColours;
-    const bool voxelSizeGiven = o.voxelSizeOption && o.voxelSizeOption->count() > 0;
-    if ((voxelSizeGiven && !(o.voxelSize > 0.0f)) || std::isinf(o.voxelSize))
-        return makeError("--voxel-size: must be a positive number, got {}", o.voxelSize);
+    // Checked by numberIn as given, and kept as given (a double): the import says why a size is
+    // too small for the file (its resampling range), not that it became 0.
     out.voxelSize = o.voxelSize;
     if (!o.offset.empty()) {
         int x, y, z;

@@ -16,8 +16,7 @@ struct VdbCliOptions {
     std::string offset, crop, albedo;
     float fogThreshold = 0.5f;
     int maxColours = 16;
-    float voxelSize = 0.0f;  // 0: the file's; given, it must be positive
-    const CLI::Option* voxelSizeOption = nullptr;
+    double voxelSize = 0.0;  // 0: the file's; given, it must be positive
     double memoryBudgetMiB = double(engine::io::kDefaultVdbMemoryBudget >> 20);
 };
 

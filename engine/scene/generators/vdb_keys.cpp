@@ -64,7 +64,7 @@ VdbParams parse(GeneratorKeys& g) {
     o.fogThreshold = static_cast<float>(g.number("fog_threshold", o.fogThreshold, closedRange(-1e6, 1e6)));
     o.maxColours = g.integer("max_colours", o.maxColours, wholeRange(1, double(world::kMaxMaterials - 1)));
     // Absent: the file's own voxel size (0 in the options); 0 in the file is refused.
-    o.voxelSize = static_cast<float>(g.number("voxel_size", 0.0, aboveRange(0.0, 1e6, "file units")));
+    o.voxelSize = g.number("voxel_size", 0.0, aboveRange(0.0, 1e6, "file units"));
     if (g.has("offset")) o.offset = g.ivec3("offset", {}, kVoxelIndexRange);
     if (g.has("crop_min") || g.has("crop_max")) {
         world::Box crop{g.ivec3("crop_min", {}, kVoxelIndexRange, true),
@@ -115,7 +115,7 @@ void write(const VdbParams& p, const GeneratorWriter& out) {
     }
     if (o.fogThreshold != defaults.fogThreshold) t.key("fog_threshold", o.fogThreshold);
     if (o.maxColours != defaults.maxColours) t.key("max_colours", o.maxColours);
-    if (o.voxelSize != 0.0f) t.key("voxel_size", o.voxelSize);
+    if (o.voxelSize != 0.0) t.key("voxel_size", o.voxelSize);
     if (o.offset) t.key("offset", *o.offset);
     if (o.crop) {
         t.key("crop_min", o.crop->min);
