@@ -36,8 +36,10 @@ struct FrameChanges {
     // Anything the GPU's copy of the world or of the lights received.
     bool worldChanged() const { return staticWorldChanged || objectsMoved || lightsUploaded; }
     // What the estimators that accumulate over still frames restart on (reference, path term,
-    // sky reference).
-    bool restartsAccumulation() const { return historyLost || cameraMoved || worldChanged(); }
+    // sky reference, accumulation): anything the image depends on, the sun and sky included.
+    bool restartsAccumulation() const {
+        return historyLost || cameraMoved || skyChanged || worldChanged();
+    }
 };
 
 // What the tracker compares; read after this frame's uploads were queued and before the grid's

@@ -310,3 +310,23 @@ TEST_F(Reference, GpuEmitterLookupMatchesCpuEmitterList) {
         EXPECT_EQ(nonEmittersWrong, 0);
     }
 }
+
+// Moving the sun (the HUD's sun controls) restarts every estimator that accumulates over still
+// frames: after the sun and sky are switched off, one frame of a world lit only by them is black.
+// Before, the sum kept the frames lit by the old sun and the image stayed lit.
+TEST_F(Reference, ASkyChangeRestartsTheAccumulation) {
+    Scene scene = paletteScene({32, 16, 32}, {Material{"grey", glm::vec3(0.6f)}}, false);
+    fillBox(scene.grid, Box{{0, 0, 0}, {32, 2, 32}}, *scene.palette.find("grey"));
+    fillBox(scene.grid, Box{{12, 2, 12}, {20, 10, 20}}, *scene.palette.find("grey"));
+    scene.cameras.push_back(CameraPreset{"above", {16.0f, 24.0f, -6.0f}, {16.0f, 4.0f, 16.0f}, 60.0f});
+    scene.grid.clearDirty();
+    LightingSettings l = referenceSettings(1, 3);
+    l.samplesPerFrame = 4;
+    Renderer r(gpu_testing::context());
+    const FrameImages lit = renderFrames(r, scene, l, frame(32), 3);
+    ASSERT_GT(meanLuminance(lit.radiance), 0.05);
+    scene.sky.sunRadiance = glm::vec3(0.0f);
+    scene.sky.skyRadiance = glm::vec3(0.0f);
+    const FrameImages dark = renderFrames(r, scene, l, frame(32), 1);
+    EXPECT_EQ(meanLuminance(dark.radiance), 0.0);
+}

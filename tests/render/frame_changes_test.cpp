@@ -83,7 +83,9 @@ TEST(FrameChanges, EachChangeShows) {
     EXPECT_TRUE(c.worldChanged());
 
     f.scene.sky.sunDirection = glm::vec3(0, 1, 0);
-    EXPECT_TRUE(f.observe(tracker).skyChanged);
+    c = f.observe(tracker);
+    EXPECT_TRUE(c.skyChanged);
+    EXPECT_TRUE(c.restartsAccumulation());  // a running mean of the old sun's light is stale
 
     f.emitters.added = 1;
     f.emitterUpload.slots = 1;
