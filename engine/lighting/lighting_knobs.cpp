@@ -486,10 +486,31 @@ const Knob kVct[] = {
      .relevant = usesVct},
 };
 
+// Temporal accumulation of the lit image over still frames (render/accumulation/).
+using A = AccumulationSettings;
+const Knob kAccumulation[] = {
+    {.name = "accumulate",
+     .help = "Average the lit image over the frames in which camera, world, lights and sky stay "
+             "still (not the reference, which averages itself, nor the preview)",
+     .kind = KnobKind::Switch,
+     .get = getPartField<&S::accumulation, &A::enabled>,
+     .set = setPartField<&S::accumulation, &A::enabled>},
+    {.name = "accumulate_frames",
+     .help = "accumulate: frames in the mean at most; past them an exponential average that "
+             "follows slow changes",
+     .kind = KnobKind::Count,
+     .min = 1,
+     .max = 65536,
+     .get = getPartField<&S::accumulation, &A::frames>,
+     .set = setPartField<&S::accumulation, &A::frames>,
+     .relevant = accumulates},
+};
+
 const KnobGroup kGroups[] = {
     {"lighting", "", kLighting},   {"emitters", "", kEmitters},   {"restir", "", kRestir},
     {"baselines", "", kBaselines}, {"reference", "", kReference}, {"cache", "cache-", kCache},
     {"path", "", kPath},           {"regir", "", kRegir},         {"vct", "", kVct},
+    {"accumulation", "", kAccumulation},
 };
 
 // Rules between knobs that no single range expresses.

@@ -48,6 +48,9 @@ bool usesPath(const LightingSettings& s) {
 bool usesVct(const LightingSettings& s) {
     return s.indirect == Indirect::Vct && s.method != Method::Reference;
 }
+bool accumulates(const LightingSettings& s) {
+    return s.accumulation.enabled && s.method != Method::Reference && s.method != Method::Preview;
+}
 bool usesRegir(const LightingSettings& s) { return s.regir.enabled != 0u && resamples(s); }
 bool drawsLightsByPower(const LightingSettings& s) {
     return s.byPower && (resamples(s) || usesCache(s));

@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "core/error.h"
+#include "lighting/accumulation_settings.h"
 #include "lighting/irradiance_cache_settings.h"
 #include "lighting/path_indirect_settings.h"
 #include "lighting/vct_settings.h"
@@ -62,6 +63,7 @@ struct LightingSettings {
     PathIndirectSettings path;
     VctSettings vct;
     Sky sky = Sky::None;
+    AccumulationSettings accumulation;
 
     bool operator==(const LightingSettings&) const = default;
 };
@@ -74,6 +76,9 @@ bool samplesLightsPerPixel(const LightingSettings& s);  // the baselines: unifor
 bool usesCache(const LightingSettings& s);
 bool usesPath(const LightingSettings& s);
 bool usesVct(const LightingSettings& s);
+// The lit image averaged over still frames: not the reference (its own running mean) nor the
+// noise-free preview.
+bool accumulates(const LightingSettings& s);
 bool usesRegir(const LightingSettings& s);  // ReSTIR and RIS with sampling regir
 // Lights drawn by power from the alias table: ReSTIR/RIS candidates and the cache's bounce.
 bool drawsLightsByPower(const LightingSettings& s);

@@ -1,5 +1,6 @@
 #include "render/technique_registry.h"
 
+#include "render/accumulation/accumulation.h"
 #include "render/baselines/light_sampling.h"
 #include "render/dvf_sky/dvf_sky.h"
 #include "render/irradiance_cache/irradiance_cache.h"
@@ -28,6 +29,7 @@ const TechniqueEntry kTechniques[] = {
     techniqueEntry<PathIndirect>("path"),
     techniqueEntry<VoxelConeTracing>("vct"),
     techniqueEntry<IrradianceCache>("cache"),
+    techniqueEntry<Accumulation>("accumulation"),  // last: the mean of every term
 };
 
 }  // namespace

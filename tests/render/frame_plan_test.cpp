@@ -4,9 +4,8 @@
 // the settings' own answers to "is X on?" (lighting/lighting_settings.h).
 #include "render/frame_plan.h"
 
-#include <gtest/gtest.h>
-
 #include <algorithm>
+#include <gtest/gtest.h>
 #include <string>
 #include <vector>
 
@@ -46,60 +45,67 @@ bool settingsSayRuns(std::string_view technique, const LightingSettings& l) {
     if (technique == "path") return usesPath(l);
     if (technique == "vct") return usesVct(l);
     if (technique == "cache") return usesCache(l);
+    if (technique == "accumulation") return accumulates(l);
     ADD_FAILURE() << "a technique the test does not know: " << technique;
     return false;
+}
+
+// The frame plan, the memory plan and the shader features of one combination of knob values.
+void checkAgreement(const std::vector<KnobValue>& values, const std::string& what) {
+    const engine::world::Scene scene;  // a small world, which the sky's keys cover
+    const glm::uvec2 size(64, 48);
+    auto l = mergeLighting(LightingSettings{}, values);
+    ASSERT_TRUE(l.ok()) << l.error().message;
+    const FramePlan plan = engine::render::planFrame(*l, engine::render::sceneShape(scene), size);
+    const MemoryPlan memory = engine::render::planMemory(scene, size, *l);
+    const ShaderFeatures features = engine::render::shaderFeatures(*l, false);
+    for (const FramePlan::Step& step : plan.steps) {
+        const std::string_view name = step.technique->name;
+        EXPECT_EQ(step.plan.runs, settingsSayRuns(name, *l)) << name << ": " << what;
+        EXPECT_EQ(reserves(memory, name), step.plan.runs && step.plan.deviceBytes > 0)
+            << name << " in the memory plan: " << what;
+        for (const auto& [feature, value] : step.plan.features) {
+            // A technique's feature: its value when it runs, else compiled out; on only with its
+            // memory planned.
+            EXPECT_EQ(features[feature], step.plan.runs ? value : 0u)
+                << "feature " << feature << " of " << name << ": " << what;
+            if (features[feature] != 0u && step.plan.deviceBytes > 0) {
+                EXPECT_TRUE(reserves(memory, name)) << "feature " << feature << ": " << what;
+            }
+        }
+    }
 }
 
 }  // namespace
 
 TEST(FramePlan, MemoryPlanAndShaderFeaturesAgreeForEveryCombination) {
-    engine::world::Scene scene;  // a small world, which the sky's keys cover
-    const glm::uvec2 size(64, 48);
+    // Every value of every knob that decides which techniques run.
+    const std::vector<std::pair<const char*, std::vector<const char*>>> knobs{
+        {"method",
+         {"preview", "restir", "restir-unbiased", "ris", "uniform", "bruteforce", "reference"}},
+        {"indirect", {"none", "cache", "path", "reference", "vct"}},
+        {"sky", {"none", "dvf", "reference"}},
+        {"sampling", {"uniform", "power", "regir"}},
+        {"light-tiles", {"off", "on"}},
+        {"accumulate", {"off", "on"}},
+    };
+    std::vector<std::size_t> pick(knobs.size(), 0);  // an odometer over the knobs' values
     int combinations = 0;
-    for (const char* method :
-         {"preview", "restir", "restir-unbiased", "ris", "uniform", "bruteforce", "reference"}) {
-        for (const char* indirect : {"none", "cache", "path", "reference", "vct"}) {
-            for (const char* sky : {"none", "dvf", "reference"}) {
-                for (const char* sampling : {"uniform", "power", "regir"}) {
-                    for (const char* tiles : {"off", "on"}) {
-                        const std::vector<KnobValue> values{
-                            option("method", method), option("indirect", indirect),
-                            option("sky", sky), option("sampling", sampling),
-                            option("light-tiles", tiles)};
-                        auto l = mergeLighting(LightingSettings{}, values);
-                        ASSERT_TRUE(l.ok()) << l.error().message;
-                        const std::string what = std::string(method) + " indirect " + indirect +
-                                                 " sky " + sky + " sampling " + sampling +
-                                                 " tiles " + tiles;
-                        const FramePlan plan =
-                            engine::render::planFrame(*l, engine::render::sceneShape(scene), size);
-                        const MemoryPlan memory = engine::render::planMemory(scene, size, *l);
-                        const ShaderFeatures features = engine::render::shaderFeatures(*l, false);
-                        for (const FramePlan::Step& step : plan.steps) {
-                            const std::string_view name = step.technique->name;
-                            EXPECT_EQ(step.plan.runs, settingsSayRuns(name, *l))
-                                << name << ": " << what;
-                            EXPECT_EQ(reserves(memory, name),
-                                      step.plan.runs && step.plan.deviceBytes > 0)
-                                << name << " in the memory plan: " << what;
-                            for (const auto& [feature, value] : step.plan.features) {
-                                // A technique's feature: its value when it runs, else compiled out;
-                                // on only with its memory planned.
-                                EXPECT_EQ(features[feature], step.plan.runs ? value : 0u)
-                                    << "feature " << feature << " of " << name << ": " << what;
-                                if (features[feature] != 0u && step.plan.deviceBytes > 0) {
-                                    EXPECT_TRUE(reserves(memory, name))
-                                        << "feature " << feature << ": " << what;
-                                }
-                            }
-                        }
-                        ++combinations;
-                    }
-                }
-            }
+    for (bool more = true; more; ++combinations) {
+        std::vector<KnobValue> values;
+        std::string what;
+        for (std::size_t k = 0; k < knobs.size(); ++k) {
+            values.push_back(option(knobs[k].first, knobs[k].second[pick[k]]));
+            what += std::string(knobs[k].first) + " " + knobs[k].second[pick[k]] + " ";
+        }
+        checkAgreement(values, what);
+        more = false;
+        for (std::size_t k = 0; k < knobs.size() && !more; ++k) {
+            pick[k] = (pick[k] + 1) % knobs[k].second.size();
+            more = pick[k] != 0;
         }
     }
-    EXPECT_EQ(combinations, 7 * 5 * 3 * 3 * 2);
+    EXPECT_EQ(combinations, 7 * 5 * 3 * 3 * 2 * 2);
 }
 
 // Exactly one technique lights the frame directly, whatever the settings.
