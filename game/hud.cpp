@@ -282,6 +282,11 @@ void Hud::drawStats(const HudStats& stats, HudControls& controls, HudActions& ac
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("DVF sky light: visibility masks per 8^3 cell and face the camera has seen; an edit re-traces only the directions through it");
     }
+    if (stats.accumulatedFrames > 0) {
+        ImGui::Text("accumulated %u still frames", stats.accumulatedFrames);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("the image is the mean of the frames since the camera, world, lights or sky last changed");
+    }
     textEntries({fmt::format("undo {} / redo {} steps", stats.undo.undoSteps, stats.undo.redoSteps),
                  fmt::format("{} of {}", megabytes(stats.undo.bytes), megabytes(stats.undo.maxBytes))},
                 width);

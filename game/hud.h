@@ -38,6 +38,7 @@ struct HudStats {
     bool cacheUsed = false;
     engine::render::IrradianceCacheStats cache;
     bool skyUsed = false;  // the DVF sky term (or its reference) was added
+    std::uint32_t accumulatedFrames = 0;  // frames averaged into the image (--accumulate), 0: off
     engine::render::DvfSkyStats sky;
     UndoStats undo;
     std::string worldName, savePath;

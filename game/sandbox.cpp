@@ -747,6 +747,7 @@ HudStats Sandbox::hudStats() {
     s.cacheUsed = mLastFrame.cacheUsed;
     s.cache = mLastFrame.cache;
     s.skyUsed = mLastFrame.skyUsed;
+    s.accumulatedFrames = mLastFrame.accumulatedFrames;
     s.sky = mLastFrame.sky;
     s.undo = mUndo.stats();
     s.worldName = mScene.name;

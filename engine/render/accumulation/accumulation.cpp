@@ -5,6 +5,7 @@
 
 #include "gpu/uploader.h"
 #include "render/frame_commands.h"
+#include "render/frame_result.h"
 
 namespace engine::render {
 
@@ -44,5 +45,7 @@ void Accumulation::prepare(const FrameChanges& changes, const FrameInput& in,
 void Accumulation::record(FrameCommands& commands, const FrameBuffers& frame) {
     mPass.record(commands.current(), {frame.frameParams, mParams, mHistory, frame.radiance}, mSize);
 }
+
+void Accumulation::collect(FrameResult& result) { result.accumulatedFrames = mFrames; }
 
 }  // namespace engine::render

@@ -25,6 +25,7 @@ public:
     void prepare(const FrameChanges& changes, const FrameInput& in, gpu::Uploader& uploader,
                  shared::FrameParams& params) override;
     void record(FrameCommands& commands, const FrameBuffers& frame) override;
+    void collect(FrameResult& result) override;
     void skip() override { mFrames = 0; }
 
 private:
