@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Prints one line per render of a fixed set: the world, the technique and the MD5 of the linear EXR.
 # Every technique is in the set: each direct method, the indirect terms (cache, path, VCT), the
-# sky terms (DVF and its reference), ReGIR sampling and light tiles.
+# sky terms (DVF and its reference), ReGIR sampling, light tiles and temporal accumulation.
 # A refactor that must not change images runs this before and after and diffs the two lists:
 #   tools/render_fingerprints.sh build/release/tools/vox/vox > before.txt
 set -euo pipefail
@@ -28,6 +28,7 @@ methods=(
   "vct-bounce:--method ris --indirect vct --vct-bounce on --vct-leak-mitigation off --frames 2"
   "sky-dvf:--method restir --sky dvf --frames 3"
   "sky-reference:--method uniform --sky reference --frames 2"
+  "accumulate:--method uniform --accumulate on --frames 3"
 )
 for world in "${worlds[@]}"; do
   for entry in "${methods[@]}"; do
