@@ -506,11 +506,40 @@ const Knob kAccumulation[] = {
      .relevant = accumulates},
 };
 
+// The display's exposure (render/exposure/).
+using E = ExposureSettings;
+const Knob kExposure[] = {
+    {.name = "auto_exposure",
+     .help = "Exposure metered from the lit image (a histogram of its luminance), adapting over "
+             "frames; off: the fixed exposure (--exposure, the HUD slider)",
+     .kind = KnobKind::Switch,
+     .get = getPartField<&S::exposure, &E::automatic>,
+     .set = setPartField<&S::exposure, &E::automatic>},
+    {.name = "exposure_key",
+     .help = "auto exposure: the exposure times the metered luminance (brighter image: larger)",
+     .kind = KnobKind::Real,
+     .min = 0.001,
+     .max = 100,
+     .get = getPartField<&S::exposure, &E::key>,
+     .set = setPartField<&S::exposure, &E::key>,
+     .relevant = usesAutoExposure},
+    {.name = "exposure_adaptation",
+     .help = "auto exposure: fraction of the way (in stops) to the metered exposure per frame "
+             "(1: at once)",
+     .kind = KnobKind::Real,
+     .min = 0.001,
+     .max = 1,
+     .get = getPartField<&S::exposure, &E::adaptation>,
+     .set = setPartField<&S::exposure, &E::adaptation>,
+     .relevant = usesAutoExposure},
+};
+
 const KnobGroup kGroups[] = {
     {"lighting", "", kLighting},   {"emitters", "", kEmitters},   {"restir", "", kRestir},
     {"baselines", "", kBaselines}, {"reference", "", kReference}, {"cache", "cache-", kCache},
     {"path", "", kPath},           {"regir", "", kRegir},         {"vct", "", kVct},
     {"accumulation", "", kAccumulation},
+    {"exposure", "", kExposure},
 };
 
 // Rules between knobs that no single range expresses.

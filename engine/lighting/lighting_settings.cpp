@@ -48,6 +48,7 @@ bool usesPath(const LightingSettings& s) {
 bool usesVct(const LightingSettings& s) {
     return s.indirect == Indirect::Vct && s.method != Method::Reference;
 }
+bool usesAutoExposure(const LightingSettings& s) { return s.exposure.automatic; }
 bool accumulates(const LightingSettings& s) {
     return s.accumulation.enabled && s.method != Method::Reference && s.method != Method::Preview;
 }

@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "lighting/accumulation_settings.h"
+#include "lighting/exposure_settings.h"
 #include "lighting/irradiance_cache_settings.h"
 #include "lighting/path_indirect_settings.h"
 #include "lighting/vct_settings.h"
@@ -64,6 +65,7 @@ struct LightingSettings {
     VctSettings vct;
     Sky sky = Sky::None;
     AccumulationSettings accumulation;
+    ExposureSettings exposure;  // the display's: fixed or metered from the lit image
 
     bool operator==(const LightingSettings&) const = default;
 };
@@ -79,6 +81,7 @@ bool usesVct(const LightingSettings& s);
 // The lit image averaged over still frames: not the reference (its own running mean) nor the
 // noise-free preview.
 bool accumulates(const LightingSettings& s);
+bool usesAutoExposure(const LightingSettings& s);
 bool usesRegir(const LightingSettings& s);  // ReSTIR and RIS with sampling regir
 // Lights drawn by power from the alias table: ReSTIR/RIS candidates and the cache's bounce.
 bool drawsLightsByPower(const LightingSettings& s);

@@ -14,6 +14,7 @@
 #include "render/light_tiles/light_tiles.h"
 #include "render/memory_plan.h"
 #include "render/regir/regir_grid.h"
+#include "shared/exposure.h"
 
 namespace engine::render {
 
@@ -52,6 +53,8 @@ Renderer::Renderer(gpu::Context& ctx)
     for (const TechniqueEntry& t : techniqueRegistry()) mTechniques.push_back(t.make(ctx));
     mFrameParams =
         gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::FrameParams), "frame.params");
+    mExposure =
+        gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::ExposureState), "frame.exposure");
 }
 
 Renderer::~Renderer() = default;
@@ -188,12 +191,13 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
                                mRadiance,
                                mIndirect,
                                mRayStats,
+                               mExposure,
                                mSize,
                                mCurrent};
     for (std::size_t i = 0; i < mTechniques.size(); ++i) {
         if (frame.steps[i].plan.runs) mTechniques[i]->record(commands, buffers);
     }
-    mTonemap.record(commands.current(), {mFrameParams, mRadiance, mLdr}, mSize);
+    mTonemap.record(commands.current(), {mFrameParams, mRadiance, mLdr, mExposure}, mSize);
     commands.finish();
     result.passMs = commands.passMs();
     for (std::size_t i = 0; i < mTechniques.size(); ++i) {

@@ -122,6 +122,7 @@ private:
 
     glm::uvec2 mSize{0};
     gpu::Buffer mFrameParams, mRadiance, mLdr, mRayStats, mIndirect;
+    gpu::Buffer mExposure;  // shared::ExposureState: the tonemap's exposure when it is automatic
     gpu::Buffer mGBuffers[2];
     std::uint32_t mCurrent = 0;  // which of the ping-pong pair is this frame's
     std::uint32_t mFrameIndex = 0;

@@ -72,6 +72,7 @@ struct FrameBuffers {
     gpu::Buffer& radiance;           // the direct light, then every term added to it
     gpu::Buffer& indirect;           // the indirect term alone
     gpu::Buffer& rayStats;           // preview: steps and rays per pixel
+    gpu::Buffer& exposure;           // the display's ExposureState: auto exposure writes it
     glm::uvec2 size;
     std::uint32_t parity;  // which of a ping-pong pair is this frame's (0 or 1)
 };

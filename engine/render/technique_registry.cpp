@@ -3,6 +3,7 @@
 #include "render/accumulation/accumulation.h"
 #include "render/baselines/light_sampling.h"
 #include "render/dvf_sky/dvf_sky.h"
+#include "render/exposure/auto_exposure.h"
 #include "render/irradiance_cache/irradiance_cache.h"
 #include "render/light_tiles/light_tiles.h"
 #include "render/passes/preview_shading.h"
@@ -29,7 +30,8 @@ const TechniqueEntry kTechniques[] = {
     techniqueEntry<PathIndirect>("path"),
     techniqueEntry<VoxelConeTracing>("vct"),
     techniqueEntry<IrradianceCache>("cache"),
-    techniqueEntry<Accumulation>("accumulation"),  // last: the mean of every term
+    techniqueEntry<Accumulation>("accumulation"),  // the mean of every term
+    techniqueEntry<AutoExposure>("exposure"),      // last: meters what the display shows
 };
 
 }  // namespace

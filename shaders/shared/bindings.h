@@ -43,6 +43,7 @@ SHARED_CONST uint TRACE_BINDING_HITS = PASS_BINDING_FIRST + 2u;    // TraceRayOu
 SHARED_CONST uint TONEMAP_BINDING_FRAME = 0u;     // FrameParams
 SHARED_CONST uint TONEMAP_BINDING_RADIANCE = 1u;  // vec4 per pixel
 SHARED_CONST uint TONEMAP_BINDING_LDR = 2u;       // packed RGBA8 per pixel, written
+SHARED_CONST uint TONEMAP_BINDING_EXPOSURE = 3u;  // ExposureState (shared/exposure.h), read when auto
 
 SHARED_END
 

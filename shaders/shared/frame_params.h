@@ -14,7 +14,7 @@ struct FrameParams {
     vec4 sunRadiance;     // rgb
     vec4 skyRadiance;     // rgb, ambient and background
     uvec4 imageSize;      // x width, y height, zw unused (randomness is seeded from RestirParams)
-    vec4 exposure;        // x exposure multiplier
+    vec4 exposure;        // x fixed exposure multiplier, y 1: auto exposure's instead
     // The previous frame's camera, for motion vectors (equal to the current one on frame 0).
     vec4 prevCameraPosition;
     vec4 prevCameraForward;

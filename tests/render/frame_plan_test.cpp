@@ -46,6 +46,7 @@ bool settingsSayRuns(std::string_view technique, const LightingSettings& l) {
     if (technique == "vct") return usesVct(l);
     if (technique == "cache") return usesCache(l);
     if (technique == "accumulation") return accumulates(l);
+    if (technique == "exposure") return usesAutoExposure(l);
     ADD_FAILURE() << "a technique the test does not know: " << technique;
     return false;
 }
@@ -88,6 +89,7 @@ TEST(FramePlan, MemoryPlanAndShaderFeaturesAgreeForEveryCombination) {
         {"sampling", {"uniform", "power", "regir"}},
         {"light-tiles", {"off", "on"}},
         {"accumulate", {"off", "on"}},
+        {"auto-exposure", {"off", "on"}},
     };
     std::vector<std::size_t> pick(knobs.size(), 0);  // an odometer over the knobs' values
     int combinations = 0;
@@ -105,7 +107,7 @@ TEST(FramePlan, MemoryPlanAndShaderFeaturesAgreeForEveryCombination) {
             more = pick[k] != 0;
         }
     }
-    EXPECT_EQ(combinations, 7 * 5 * 3 * 3 * 2 * 2);
+    EXPECT_EQ(combinations, 7 * 5 * 3 * 3 * 2 * 2 * 2);
 }
 
 // Exactly one technique lights the frame directly, whatever the settings.
