@@ -4,9 +4,8 @@
 // dispatch runs the workgroups its arguments buffer names.
 #include "gpu/compute_pipeline.h"
 
-#include <gtest/gtest.h>
-
 #include <glm/glm.hpp>
+#include <gtest/gtest.h>
 #include <utility>
 #include <vector>
 
@@ -99,7 +98,7 @@ TEST_F(ComputePipelineBindings, RestirPassesReadWhatTheyOnlyReadAsTexels) {
 
 TEST_F(ComputePipelineBindings, ShadersWithoutTexelReadsKeepStorageBuffers) {
     engine::gpu::ComputePipeline tonemap(context(), "post/tonemap",
-                                         shared::TONEMAP_BINDING_LDR + 1u);
+                                         shared::TONEMAP_BINDING_EXPOSURE + 1u);
     for (VkDescriptorType t : tonemap.bindingTypes())
         EXPECT_EQ(t, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
 }
@@ -120,11 +119,12 @@ TEST_F(ComputePipelineBindings, IndirectDispatchRunsTheWorkgroupsItsArgumentsNam
     Buffer params(ctx, BufferKind::Storage, sizeof(frame), "test.frame");
     Buffer light(ctx, BufferKind::Storage, pixels * sizeof(glm::vec4), "test.radiance");
     Buffer ldr(ctx, BufferKind::Storage, pixels * 4, "test.ldr");
+    Buffer exposure(ctx, BufferKind::Storage, 16, "test.exposure");
     Buffer args(ctx, BufferKind::Storage, 16, "test.args");
     Buffer host(ctx, BufferKind::Readback, pixels * 4, "test.readback");
     engine::gpu::ComputePipeline tonemap(context(), "post/tonemap",
-                                         shared::TONEMAP_BINDING_LDR + 1u);
-    const std::vector<const Buffer*> buffers{&params, &light, &ldr};
+                                         shared::TONEMAP_BINDING_EXPOSURE + 1u);
+    const std::vector<const Buffer*> buffers{&params, &light, &ldr, &exposure};
     engine::gpu::Uploader uploader(ctx);
     for (glm::uvec3 groups : {glm::uvec3(0u), glm::uvec3(2u, 1u, 1u)}) {
         uploader.write(params, 0, &frame, sizeof(frame));
@@ -158,7 +158,7 @@ TEST_F(ComputePipelineBindings, IndirectDispatchRunsTheWorkgroupsItsArgumentsNam
 // check behind every pass's declared writes (ComputePipeline::dispatch).
 TEST_F(ComputePipelineBindings, WritableBindingsFollowTheShaderDeclarations) {
     engine::gpu::ComputePipeline tonemap(context(), "post/tonemap",
-                                         shared::TONEMAP_BINDING_LDR + 1u);
+                                         shared::TONEMAP_BINDING_EXPOSURE + 1u);
     const std::vector<bool>& writable = tonemap.writableBindings();
     EXPECT_FALSE(writable[shared::TONEMAP_BINDING_FRAME]);
     EXPECT_FALSE(writable[shared::TONEMAP_BINDING_RADIANCE]);
@@ -185,22 +185,27 @@ TEST_F(ComputePipelineBindings, BarriersOnlyBetweenDependentCommands) {
     Buffer lightB(ctx, BufferKind::Storage, pixels * sizeof(glm::vec4), "test.radianceB");
     Buffer ldrA(ctx, BufferKind::Storage, pixels * 4, "test.ldrA");
     Buffer ldrB(ctx, BufferKind::Storage, pixels * 4, "test.ldrB");
-    engine::gpu::ComputePipeline tonemap(ctx, "post/tonemap", shared::TONEMAP_BINDING_LDR + 1u);
+    Buffer exposure(ctx, BufferKind::Storage, 16, "test.exposure");
+    engine::gpu::ComputePipeline tonemap(ctx, "post/tonemap",
+                                         shared::TONEMAP_BINDING_EXPOSURE + 1u);
     engine::gpu::CommandList cmd(ctx);
     cmd.begin();
     cmd.fillBuffer(params, 0);
     cmd.fillBuffer(lightA, 0);
     cmd.fillBuffer(lightB, 0);  // three fills of three buffers: no barrier between them
     EXPECT_EQ(cmd.barrierCount(), 0u);
-    tonemap.dispatch(cmd, {&params, &lightA, &ldrA}, 2, 1);  // reads what the fills wrote
+    tonemap.dispatch(cmd, {&params, &lightA, &ldrA, &exposure}, 2,
+                     1);  // reads what the fills wrote
     EXPECT_EQ(cmd.barrierCount(), 1u);
-    tonemap.dispatch(cmd, {&params, &lightB, &ldrB}, 2, 1);  // shares only reads with the first
+    tonemap.dispatch(cmd, {&params, &lightB, &ldrB, &exposure}, 2,
+                     1);  // shares only reads with the first
     EXPECT_EQ(cmd.barrierCount(), 1u);
     cmd.fillBuffer(lightA, 0);  // writes what the first dispatch read
     EXPECT_EQ(cmd.barrierCount(), 2u);
-    tonemap.dispatch(cmd, {&params, &lightB, &ldrB}, 2, 1);  // its writes are behind barrier 2
+    tonemap.dispatch(cmd, {&params, &lightB, &ldrB, &exposure}, 2,
+                     1);  // its writes are behind barrier 2
     EXPECT_EQ(cmd.barrierCount(), 2u);
-    tonemap.dispatch(cmd, {&params, &lightA, &ldrA}, 2, 1);  // reads what the fill wrote
+    tonemap.dispatch(cmd, {&params, &lightA, &ldrA, &exposure}, 2, 1);  // reads what the fill wrote
     EXPECT_EQ(cmd.barrierCount(), 3u);
     cmd.submitAndWait();
     EXPECT_EQ(cmd.barrierCount(), 4u);  // the one that ends a submission: the host and later lists

@@ -4,10 +4,9 @@
 // while the frame needs it changes the image.
 #include "render/shader_features.h"
 
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cstring>
+#include <gtest/gtest.h>
 
 #include "gpu/compute_pipeline.h"
 #include "gpu/gpu_test_setup.h"
@@ -123,6 +122,6 @@ TEST_F(ShaderFeatures, PipelinesFindTheConstantsTheirShaderDeclares) {
          {FEATURE_REGIR, FEATURE_LIGHT_TILES, FEATURE_POINT_LIGHTS, FEATURE_CANDIDATE_VISIBILITY}) {
         EXPECT_TRUE(std::find(ids.begin(), ids.end(), id) != ids.end()) << "constant_id " << id;
     }
-    engine::gpu::ComputePipeline tonemap(context(), "post/tonemap", 3);
+    engine::gpu::ComputePipeline tonemap(context(), "post/tonemap", 4);
     EXPECT_TRUE(tonemap.specializationIds().empty());
 }
