@@ -1,9 +1,8 @@
 #include "capture_job.h"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <cstdio>
+#include <fmt/format.h>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -16,6 +15,7 @@
 #include "job_manifest.h"
 #include "job_submit.h"
 #include "subprocess.h"
+#include "tool_gpu.h"
 
 namespace vox {
 
@@ -166,11 +166,7 @@ int runCaptureTask(const CaptureOptions& o) {
     // Another run writing the same frames would mix them: each task claims its slice.
     auto lock = engine::FolderLock::acquire(dir, "vox capture", range.first, count);
     if (!lock) return fail(lock.error());
-    engine::gpu::ContextOptions ctxOptions;
-#ifndef NDEBUG
-    ctxOptions.validation = true;
-#endif
-    auto ctx = engine::gpu::Context::create(ctxOptions);
+    auto ctx = createValidatedGpu();
     if (!ctx) return fail(ctx.error());
     const auto& dev = (*ctx)->info();
     const std::string device = fmt::format("{} ({})", dev.name, dev.driver);
