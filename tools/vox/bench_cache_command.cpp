@@ -6,14 +6,15 @@
 //   3. memory and update time against world size: the same view in ever larger worlds.
 #include <algorithm>
 #include <cstdio>
+#include <fmt/format.h>
 #include <fstream>
 
-#include <fmt/format.h>
-
-#include "core/atomic_file.h"
+#include "bench_median.h"
+#include "bench_setup.h"
 #include "commands.h"
-#include "number_options.h"
+#include "core/atomic_file.h"
 #include "gpu/context.h"
+#include "number_options.h"
 #include "render/renderer.h"
 #include "world/world_edits.h"
 
@@ -28,12 +29,6 @@ struct CacheBenchOptions {
     std::string output = "out/bench_cache.json";
 };
 
-double median(std::vector<double> v) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
-
 double cacheMs(const engine::render::FrameResult& r) {
     double ms = 0.0;
     for (const auto& [name, t] : r.passMs)
@@ -45,14 +40,18 @@ engine::lighting::LightingSettings cacheLighting() {
     engine::lighting::LightingSettings l;
     l.method = engine::lighting::Method::Preview;  // the direct term is not what is measured
     l.indirect = engine::lighting::Indirect::Cache;
-    l.cache.rayBudget = 0;  // the cost of updating every visible entry, which the budget caps (vox bench frame)
+    l.cache.rayBudget =
+        0;  // the cost of updating every visible entry, which the budget caps (vox bench frame)
     return l;
 }
 
 // Renders `frames` frames of a still view with the cache; returns the last frame and the median
-// of the cache's per-frame milliseconds, leaving out the first two frames and the one-off static trace.
-std::pair<engine::render::FrameResult, double> steadyCacheMs(engine::gpu::Context& ctx, engine::world::Scene& scene,
-                                                             engine::render::FrameSettings frame, std::uint32_t frames) {
+// of the cache's per-frame milliseconds, leaving out the first two frames and the one-off static
+// trace.
+std::pair<engine::render::FrameResult, double> steadyCacheMs(engine::gpu::Context& ctx,
+                                                             engine::world::Scene& scene,
+                                                             engine::render::FrameSettings frame,
+                                                             std::uint32_t frames) {
     engine::render::Renderer r(ctx);
     std::vector<double> ms;
     engine::render::FrameResult last;
@@ -64,7 +63,8 @@ std::pair<engine::render::FrameResult, double> steadyCacheMs(engine::gpu::Contex
 }
 
 // A street of buildings along x in a world of `size`, closed by a wall at x = 100: the camera
-// sees the same voxels whatever the size; the rest of the world holds more of the same, out of view.
+// sees the same voxels whatever the size; the rest of the world holds more of the same, out of
+// view.
 engine::world::Scene streetWorld(glm::ivec3 size) {
     using namespace engine::world;
     Scene scene;
@@ -77,32 +77,34 @@ engine::world::Scene streetWorld(glm::ivec3 size) {
         fillBox(scene.grid, Box{{x, 4, 4}, {x + 12, 24 + (x / 16 % 3) * 6, 20}}, *brick);
         fillBox(scene.grid, Box{{x, 4, 44}, {x + 12, 20 + (x / 16 % 2) * 8, 60}}, *white);
     }
-    fillBox(scene.grid, Box{{100, 4, 0}, {104, 40, 64}}, *brick);  // the end of the view; more world behind it
-    scene.cameras.push_back(CameraPreset{"street", {2.0f, 14.0f, 32.0f}, {60.0f, 8.0f, 32.0f}, 70.0f});
+    fillBox(scene.grid, Box{{100, 4, 0}, {104, 40, 64}},
+            *brick);  // the end of the view; more world behind it
+    scene.cameras.push_back(
+        CameraPreset{"street", {2.0f, 14.0f, 32.0f}, {60.0f, 8.0f, 32.0f}, 70.0f});
     scene.grid.clearDirty();
     return scene;
 }
 
-int runCacheBench(const CacheBenchOptions& o) {
-    auto size = parseSize(o.size, "--size");
-    if (!size) return fail(size.error());
-    auto ctx = engine::gpu::Context::create({});
-    if (!ctx) return fail(ctx.error());
-    std::string json = "{\n";
-    engine::render::FrameSettings frame;
+// The three parts share one frame: each sets the image size it measures at, and the scene time
+// the first part ends at carries on into the others.
 
-    // 1. Divide-and-win on worlds with dynamic objects, the two modes in alternate frames.
-    std::printf("| static entries' visibility update | dynamic-only re-trace | full re-trace | speed-up |\n|---|---|---|---|\n");
+// 1. Divide-and-win on worlds with dynamic objects, the two modes in alternate frames.
+engine::Status divideAndWin(engine::gpu::Context& ctx, const CacheBenchOptions& o, glm::uvec2 size,
+                            engine::render::FrameSettings& frame, std::string& json) {
+    std::printf(
+        "| static entries' visibility update | dynamic-only re-trace | full re-trace | speed-up "
+        "|\n|---|---|---|---|\n");
     json += "  \"divide_and_win\": [";
     std::string worlds = o.worlds + ",";
-    for (std::size_t at = 0, comma; (comma = worlds.find(',', at)) != std::string::npos; at = comma + 1) {
+    for (std::size_t at = 0, comma; (comma = worlds.find(',', at)) != std::string::npos;
+         at = comma + 1) {
         const std::string name = worlds.substr(at, comma - at);
         if (name.empty()) continue;
         auto scene = loadWorld(name);
-        if (!scene) return fail(scene.error());
-        frame.width = size->x;
-        frame.height = size->y;
-        engine::render::Renderer divide(**ctx), full(**ctx);
+        if (!scene) return scene.error();
+        frame.width = size.x;
+        frame.height = size.y;
+        engine::render::Renderer divide(ctx), full(ctx);
         auto lDivide = cacheLighting(), lFull = cacheLighting();
         lFull.cache.fullRetrace = true;
         std::vector<double> tDivide, tFull;
@@ -116,52 +118,76 @@ int runCacheBench(const CacheBenchOptions& o) {
             tFull.push_back(f.passMsOf("cache.visibility_static"));
         }
         const double a = median(tDivide), b = median(tFull);
-        std::printf("| %s: %u static entries (%u visible static, %u visible dynamic voxels) | %.2f ms | %.2f ms | %.2fx |\n",
-                    scene->name.c_str(), last.cache.updated - last.cache.dynamicEntries, last.cache.visibleStatic,
-                    last.cache.visibleDynamic, a, b, b / a);
-        json += fmt::format("{}{{\"world\": \"{}\", \"static_entries\": {}, \"dynamic_ms\": {:.3f}, "
-                            "\"full_ms\": {:.3f}, \"speedup\": {:.3f}}}",
-                            at ? ", " : "", scene->name, last.cache.updated - last.cache.dynamicEntries, a, b, b / a);
+        std::printf(
+            "| %s: %u static entries (%u visible static, %u visible dynamic voxels) | %.2f ms | "
+            "%.2f ms | %.2fx |\n",
+            scene->name.c_str(), last.cache.updated - last.cache.dynamicEntries,
+            last.cache.visibleStatic, last.cache.visibleDynamic, a, b, b / a);
+        json += fmt::format(
+            "{}{{\"world\": \"{}\", \"static_entries\": {}, \"dynamic_ms\": {:.3f}, "
+            "\"full_ms\": {:.3f}, \"speedup\": {:.3f}}}",
+            at ? ", " : "", scene->name, last.cache.updated - last.cache.dynamicEntries, a, b,
+            b / a);
     }
     json += "],\n";
+    return {};
+}
 
-    // 2. Cost against the number of visible voxels: one view at growing image sizes.
-    {
-        engine::world::Scene scene = streetWorld({256, 64, 64});
-        std::printf("\n| image | visible voxels | cache entries updated | cache ms/frame | ms per 1000 entries |\n|---|---|---|---|---|\n");
-        json += "  \"visible\": [";
-        bool first = true;
-        for (std::uint32_t w : {32u, 64u, 96u, 128u}) {
-            frame.width = w;
-            frame.height = w * 3 / 4;
-            auto [last, m] = steadyCacheMs(**ctx, scene, frame, o.frames);
-            std::printf("| %ux%u | %u | %u | %.2f | %.2f |\n", frame.width, frame.height, last.cache.visibleStatic,
-                        last.cache.updated, m, 1000.0 * m / std::max(1u, last.cache.updated));
-            json += fmt::format("{}{{\"width\": {}, \"visible\": {}, \"ms\": {:.3f}}}", first ? "" : ", ", frame.width,
-                                last.cache.visibleStatic, m);
-            first = false;
-        }
-        json += "],\n";
+// 2. Cost against the number of visible voxels: one view at growing image sizes.
+void visibleVoxelsCost(engine::gpu::Context& ctx, const CacheBenchOptions& o,
+                       engine::render::FrameSettings& frame, std::string& json) {
+    engine::world::Scene scene = streetWorld({256, 64, 64});
+    std::printf(
+        "\n| image | visible voxels | cache entries updated | cache ms/frame | ms per 1000 entries "
+        "|\n|---|---|---|---|---|\n");
+    json += "  \"visible\": [";
+    bool first = true;
+    for (std::uint32_t w : {32u, 64u, 96u, 128u}) {
+        frame.width = w;
+        frame.height = w * 3 / 4;
+        auto [last, m] = steadyCacheMs(ctx, scene, frame, o.frames);
+        std::printf("| %ux%u | %u | %u | %.2f | %.2f |\n", frame.width, frame.height,
+                    last.cache.visibleStatic, last.cache.updated, m,
+                    1000.0 * m / std::max(1u, last.cache.updated));
+        json += fmt::format("{}{{\"width\": {}, \"visible\": {}, \"ms\": {:.3f}}}",
+                            first ? "" : ", ", frame.width, last.cache.visibleStatic, m);
+        first = false;
     }
+    json += "],\n";
+}
 
-    // 3. The same view in larger worlds: cache memory and update time must not follow.
-    {
-        std::printf("\n| world | world bricks | cache entries | cache MiB | cache ms/frame |\n|---|---|---|---|---|\n");
-        json += "  \"world_size\": [";
-        bool first = true;
-        frame.width = size->x;
-        frame.height = size->y;
-        for (int length : {128, 256, 512, 1024}) {
-            engine::world::Scene scene = streetWorld({length, 64, 64});
-            auto [last, m] = steadyCacheMs(**ctx, scene, frame, o.frames);
-            std::printf("| %s | %u | %u | %.2f | %.2f |\n", scene.name.c_str(), scene.grid.liveBricks(), last.cache.entries,
-                        double(last.cache.bytes) / 1048576.0, m);
-            json += fmt::format("{}{{\"length\": {}, \"entries\": {}, \"bytes\": {}, \"ms\": {:.3f}}}", first ? "" : ", ",
-                                length, last.cache.entries, last.cache.bytes, m);
-            first = false;
-        }
-        json += "]\n}\n";
+// 3. The same view in larger worlds: cache memory and update time must not follow.
+void worldSizeCost(engine::gpu::Context& ctx, const CacheBenchOptions& o, glm::uvec2 size,
+                   engine::render::FrameSettings& frame, std::string& json) {
+    std::printf(
+        "\n| world | world bricks | cache entries | cache MiB | cache ms/frame "
+        "|\n|---|---|---|---|---|\n");
+    json += "  \"world_size\": [";
+    bool first = true;
+    frame.width = size.x;
+    frame.height = size.y;
+    for (int length : {128, 256, 512, 1024}) {
+        engine::world::Scene scene = streetWorld({length, 64, 64});
+        auto [last, m] = steadyCacheMs(ctx, scene, frame, o.frames);
+        std::printf("| %s | %u | %u | %.2f | %.2f |\n", scene.name.c_str(), scene.grid.liveBricks(),
+                    last.cache.entries, double(last.cache.bytes) / 1048576.0, m);
+        json += fmt::format("{}{{\"length\": {}, \"entries\": {}, \"bytes\": {}, \"ms\": {:.3f}}}",
+                            first ? "" : ", ", length, last.cache.entries, last.cache.bytes, m);
+        first = false;
     }
+    json += "]\n}\n";
+}
+
+int runCacheBench(const CacheBenchOptions& o) {
+    auto size = parseSize(o.size, "--size");
+    if (!size) return fail(size.error());
+    auto ctx = createBenchGpu();
+    if (!ctx) return fail(ctx.error());
+    std::string json = "{\n";
+    engine::render::FrameSettings frame;
+    if (engine::Status s = divideAndWin(**ctx, o, *size, frame, json); !s) return fail(s.error());
+    visibleVoxelsCost(**ctx, o, frame, json);
+    worldSizeCost(**ctx, o, *size, frame, json);
     std::filesystem::create_directories(std::filesystem::path(o.output).parent_path());
     if (engine::Status s = engine::writeFileAtomically(o.output, json); !s) return fail(s.error());
     std::printf("\nwrote %s\n", o.output.c_str());
@@ -171,12 +197,16 @@ int runCacheBench(const CacheBenchOptions& o) {
 }  // namespace
 
 void addBenchCacheCommand(CLI::App& bench, int& exitCode) {
-    auto* cmd = bench.add_subcommand("cache", "Irradiance cache: divide-and-win speed-up, cost vs visible voxels, memory vs world size");
+    auto* cmd = bench.add_subcommand(
+        "cache",
+        "Irradiance cache: divide-and-win speed-up, cost vs visible voxels, memory vs world size");
     auto o = std::make_shared<CacheBenchOptions>();
-    cmd->add_option("--worlds", o->worlds, "Worlds with dynamic objects for the divide-and-win figure (comma-separated)")
+    cmd->add_option("--worlds", o->worlds,
+                    "Worlds with dynamic objects for the divide-and-win figure (comma-separated)")
         ->capture_default_str();
     cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
-    cmd->add_option("--frames", o->frames, "Frames per measurement (medians; the first two are skipped)")
+    cmd->add_option("--frames", o->frames,
+                    "Frames per measurement (medians; the first two are skipped)")
         ->capture_default_str()
         ->check(numberIn(engine::wholeRange(4, 1000, "frames")));
     cmd->add_option("-o,--output", o->output, "JSON results")->capture_default_str();

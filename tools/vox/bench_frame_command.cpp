@@ -12,18 +12,19 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fmt/format.h>
 #include <fstream>
 #include <map>
 #include <sstream>
 
-#include <fmt/format.h>
-
-#include "core/atomic_file.h"
+#include "bench_median.h"
+#include "bench_setup.h"
 #include "commands.h"
-#include "number_options.h"
+#include "core/atomic_file.h"
 #include "frame_rays.h"
 #include "gpu/context.h"
 #include "lighting_options.h"
+#include "number_options.h"
 #include "progress_line.h"
 #include "render/renderer.h"
 #include "scene/path_file.h"
@@ -49,8 +50,9 @@ struct FrameBenchOptions {
 };
 
 // The moving camera of the worlds measured by default: closed loops without events.
-const std::map<std::string, std::string> kDefaultPaths = {
-    {"sandbox", "sandbox_orbit"}, {"dragon_city", "dragon_city_avenue"}, {"cornell", "cornell_sway"}};
+const std::map<std::string, std::string> kDefaultPaths = {{"sandbox", "sandbox_orbit"},
+                                                          {"dragon_city", "dragon_city_avenue"},
+                                                          {"cornell", "cornell_sway"}};
 
 std::vector<std::string> splitList(const std::string& text) {
     std::vector<std::string> out;
@@ -58,12 +60,6 @@ std::vector<std::string> splitList(const std::string& text) {
     for (std::string item; std::getline(in, item, ',');)
         if (!item.empty()) out.push_back(item);
     return out;
-}
-
-double median(std::vector<double> v) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
 }
 
 // The smallest value at least 95 % of the frames do not exceed.
@@ -83,7 +79,9 @@ struct FrameSample {
 struct Config {
     std::string world, indirect, camera, path;
     glm::uvec2 size{0};
-    std::string label() const { return fmt::format("{} {}x{} {} {}", world, size.x, size.y, indirect, camera); }
+    std::string label() const {
+        return fmt::format("{} {}x{} {} {}", world, size.x, size.y, indirect, camera);
+    }
 };
 
 struct ConfigResult {
@@ -127,8 +125,9 @@ void summarise(ConfigResult& c) {
     c.cacheTraced = median(traced);
 }
 
-engine::Result<ConfigResult> measure(engine::gpu::Context& ctx, const Config& config, const FrameBenchOptions& o,
-                                     ProgressLine& progress, std::uint64_t& done) {
+engine::Result<ConfigResult> measure(engine::gpu::Context& ctx, const Config& config,
+                                     const FrameBenchOptions& o, ProgressLine& progress,
+                                     std::uint64_t& done) {
     auto scene = loadWorld(config.world);
     if (!scene) return scene.error();
     auto lighting = lightingSettings(o.lighting, &*scene);
@@ -145,7 +144,8 @@ engine::Result<ConfigResult> measure(engine::gpu::Context& ctx, const Config& co
         if (!file) return file.error();
         auto f = engine::scene::loadFlythroughFile(*file);
         if (!f) return f.error();
-        if (f->camera.empty()) return engine::makeError("{}: the path has no camera keys", file->string());
+        if (f->camera.empty())
+            return engine::makeError("{}: the path has no camera keys", file->string());
         fly = std::move(*f);
     }
 
@@ -162,11 +162,14 @@ engine::Result<ConfigResult> measure(engine::gpu::Context& ctx, const Config& co
         if (fly) {
             // The path loops (the default paths are closed loops), so any frame count fits.
             const double start = fly->camera.startTime(), length = fly->camera.endTime() - start;
-            camera = fly->camera.at(start + (length > 0.0 ? std::fmod(double(i) / kFps, length) : 0.0));
+            camera =
+                fly->camera.at(start + (length > 0.0 ? std::fmod(double(i) / kFps, length) : 0.0));
         }
         const auto t0 = std::chrono::steady_clock::now();
         engine::render::FrameResult r = renderer.render(*scene, camera, settings, l);
-        const double wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        const double wallMs =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                .count();
         ++done;
         if (i < o.warmup) {
             progress.update(done, fmt::format("{}: warm-up", config.label()));
@@ -204,15 +207,18 @@ std::vector<std::string> allPasses(const std::vector<ConfigResult>& results) {
 std::string summaryCsv(const std::vector<ConfigResult>& results) {
     const std::vector<std::string> passes = allPasses(results);
     std::string csv =
-        "world,width,height,indirect,camera,path,frames,wall_median_ms,wall_p95_ms,gpu_median_ms,host_median_ms,"
+        "world,width,height,indirect,camera,path,frames,wall_median_ms,wall_p95_ms,gpu_median_ms,"
+        "host_median_ms,"
         "rays,cache_rays,cache_updated,cache_traced";
     for (const std::string& p : passes) csv += ",gpu_" + p + "_ms";
     csv += "\n";
     for (const ConfigResult& r : results) {
         const Config& c = r.config;
-        csv += fmt::format("{},{},{},{},{},{},{},{:.3f},{:.3f},{:.3f},{:.3f},{:.0f},{:.0f},{:.0f},{:.0f}", c.world,
-                           c.size.x, c.size.y, c.indirect, c.camera, c.path, r.frames.size(), r.wallMedian, r.wallP95,
-                           r.gpuMedian, r.hostMedian, r.rays, r.cacheRays, r.cacheUpdated, r.cacheTraced);
+        csv += fmt::format(
+            "{},{},{},{},{},{},{},{:.3f},{:.3f},{:.3f},{:.3f},{:.0f},{:.0f},{:.0f},{:.0f}", c.world,
+            c.size.x, c.size.y, c.indirect, c.camera, c.path, r.frames.size(), r.wallMedian,
+            r.wallP95, r.gpuMedian, r.hostMedian, r.rays, r.cacheRays, r.cacheUpdated,
+            r.cacheTraced);
         for (const std::string& p : passes) {
             auto it = r.passMs.find(p);
             csv += it == r.passMs.end() ? "," : fmt::format(",{:.3f}", it->second);
@@ -223,22 +229,26 @@ std::string summaryCsv(const std::vector<ConfigResult>& results) {
 }
 
 std::string framesCsv(const std::vector<ConfigResult>& results) {
-    std::string csv = "world,width,height,indirect,camera,frame,wall_ms,gpu_ms,rays,cache_rays,cache_updated\n";
+    std::string csv =
+        "world,width,height,indirect,camera,frame,wall_ms,gpu_ms,rays,cache_rays,cache_updated\n";
     for (const ConfigResult& r : results) {
         const Config& c = r.config;
         for (std::size_t i = 0; i < r.frames.size(); ++i) {
             const FrameSample& f = r.frames[i];
-            csv += fmt::format("{},{},{},{},{},{},{:.3f},{:.3f},{},{},{}\n", c.world, c.size.x, c.size.y, c.indirect,
-                               c.camera, i, f.wallMs, f.gpuMs, f.rays, f.cacheRays, f.cacheUpdated);
+            csv += fmt::format("{},{},{},{},{},{},{:.3f},{:.3f},{},{},{}\n", c.world, c.size.x,
+                               c.size.y, c.indirect, c.camera, i, f.wallMs, f.gpuMs, f.rays,
+                               f.cacheRays, f.cacheUpdated);
         }
     }
     return csv;
 }
 
-std::string json(const std::vector<ConfigResult>& results, const FrameBenchOptions& o, const std::string& device) {
+std::string json(const std::vector<ConfigResult>& results, const FrameBenchOptions& o,
+                 const std::string& device) {
     std::string s = fmt::format(
         "{{\n  \"device\": \"{}\",\n  \"frames\": {},\n  \"warmup\": {},\n  \"fps\": {},\n"
-        "  \"wall_includes\": \"the whole Renderer::render call: dynamic objects, uploads, cache host work, "
+        "  \"wall_includes\": \"the whole Renderer::render call: dynamic objects, uploads, cache "
+        "host work, "
         "submissions and GPU waits; no readback\",\n  \"configs\": [",
         device, o.frames, o.warmup, kFps);
     for (std::size_t i = 0; i < results.size(); ++i) {
@@ -246,14 +256,19 @@ std::string json(const std::vector<ConfigResult>& results, const FrameBenchOptio
         const Config& c = r.config;
         std::string passes;
         for (const std::string& p : r.passOrder)
-            passes += fmt::format("{}\"{}\": {:.3f}", passes.empty() ? "" : ", ", p, r.passMs.at(p));
+            passes +=
+                fmt::format("{}\"{}\": {:.3f}", passes.empty() ? "" : ", ", p, r.passMs.at(p));
         s += fmt::format(
-            "{}\n    {{\"world\": \"{}\", \"width\": {}, \"height\": {}, \"indirect\": \"{}\", \"camera\": \"{}\", "
-            "\"path\": \"{}\", \"frames\": {}, \"wall_median_ms\": {:.3f}, \"wall_p95_ms\": {:.3f}, "
-            "\"gpu_median_ms\": {:.3f}, \"host_median_ms\": {:.3f}, \"rays\": {:.0f}, \"cache_rays\": {:.0f}, "
+            "{}\n    {{\"world\": \"{}\", \"width\": {}, \"height\": {}, \"indirect\": \"{}\", "
+            "\"camera\": \"{}\", "
+            "\"path\": \"{}\", \"frames\": {}, \"wall_median_ms\": {:.3f}, \"wall_p95_ms\": "
+            "{:.3f}, "
+            "\"gpu_median_ms\": {:.3f}, \"host_median_ms\": {:.3f}, \"rays\": {:.0f}, "
+            "\"cache_rays\": {:.0f}, "
             "\"cache_updated\": {:.0f}, \"cache_traced\": {:.0f}, \"pass_ms\": {{{}}}}}",
-            i ? "," : "", c.world, c.size.x, c.size.y, c.indirect, c.camera, c.path, r.frames.size(), r.wallMedian,
-            r.wallP95, r.gpuMedian, r.hostMedian, r.rays, r.cacheRays, r.cacheUpdated, r.cacheTraced, passes);
+            i ? "," : "", c.world, c.size.x, c.size.y, c.indirect, c.camera, c.path,
+            r.frames.size(), r.wallMedian, r.wallP95, r.gpuMedian, r.hostMedian, r.rays,
+            r.cacheRays, r.cacheUpdated, r.cacheTraced, passes);
     }
     s += "\n  ]\n}\n";
     return s;
@@ -274,28 +289,29 @@ engine::Status writeFile(const fs::path& file, const std::string& text) {
     return engine::writeFileAtomically(file, text);
 }
 
-int runFrameBench(const FrameBenchOptions& o) {
-    if (o.lighting.showSettings) return showSettings(splitList(o.worlds).empty() ? "" : splitList(o.worlds)[0], o.lighting);
+// The configurations: every size, world, lighting row and camera. Sizes outermost: the small
+// images of every world come first, so a run stopped early still compares the worlds (results
+// are written after every configuration).
+engine::Result<std::vector<Config>> configsOf(const FrameBenchOptions& o) {
     std::map<std::string, std::string> paths = kDefaultPaths;
     for (const std::string& item : splitList(o.paths)) {
         auto eq = item.find('=');
         if (eq == std::string::npos || eq == 0 || eq + 1 == item.size())
-            return fail(engine::makeError("--paths: expected WORLD=PATH, got '{}'", item));
+            return engine::makeError("--paths: expected WORLD=PATH, got '{}'", item);
         paths[item.substr(0, eq)] = item.substr(eq + 1);
     }
-    // Sizes outermost: the small images of every world come first, so a run stopped early
-    // still compares the worlds (results are written after every configuration).
     std::vector<Config> configs;
     for (const std::string& sizeText : splitList(o.sizes)) {
         auto size = parseSize(sizeText, "--sizes");
-        if (!size) return fail(size.error());
+        if (!size) return size.error();
         for (const std::string& world : splitList(o.worlds)) {
             for (const std::string& indirect : splitList(o.indirect)) {
                 if (auto ok = engine::lighting::parseIndirect(indirect); !ok)
-                    return fail(engine::makeError("--indirect-rows: {}", ok.error().message));
+                    return engine::makeError("--indirect-rows: {}", ok.error().message);
                 for (const std::string& camera : splitList(o.cameras)) {
                     if (camera != "still" && camera != "moving")
-                        return fail(engine::makeError("--cameras: expected still and/or moving, got '{}'", camera));
+                        return engine::makeError(
+                            "--cameras: expected still and/or moving, got '{}'", camera);
                     Config c{world, indirect, camera, "", *size};
                     if (camera == "moving") {
                         auto it = paths.find(world);
@@ -303,7 +319,7 @@ int runFrameBench(const FrameBenchOptions& o) {
                         c.path = it != paths.end() ? it->second : "";
                         if (c.path.empty()) {
                             auto scene = loadWorld(world);
-                            if (!scene) return fail(scene.error());
+                            if (!scene) return scene.error();
                             c.path = scene->sourcePath;
                         }
                     }
@@ -312,25 +328,59 @@ int runFrameBench(const FrameBenchOptions& o) {
             }
         }
     }
-    if (configs.empty()) return fail(engine::makeError("nothing to measure: --worlds, --sizes, --indirect-rows and --cameras must each name one"));
+    if (configs.empty())
+        return engine::makeError(
+            "nothing to measure: --worlds, --sizes, --indirect-rows and --cameras must each name "
+            "one");
+    return configs;
+}
+
+void printTable(const std::vector<ConfigResult>& results) {
+    std::printf(
+        "\n| world | size | indirect | camera | wall median ms | wall p95 ms | GPU ms | host ms | "
+        "rays/frame | "
+        "cache entries updated | top passes (GPU ms) "
+        "|\n|---|---|---|---|---:|---:|---:|---:|---:|---:|---|\n");
+    for (const ConfigResult& r : results) {
+        const Config& c = r.config;
+        std::printf("| %s | %ux%u | %s | %s | %.1f | %.1f | %.1f | %.1f | %.2f M | %.0f | %s |\n",
+                    c.world.c_str(), c.size.x, c.size.y, c.indirect.c_str(), c.camera.c_str(),
+                    r.wallMedian, r.wallP95, r.gpuMedian, r.hostMedian, r.rays / 1e6,
+                    r.cacheUpdated, topPasses(r).c_str());
+    }
+    std::printf("\n");
+}
+
+int runFrameBench(const FrameBenchOptions& o) {
+    if (o.lighting.showSettings)
+        return showSettings(splitList(o.worlds).empty() ? "" : splitList(o.worlds)[0], o.lighting);
+    auto planned = configsOf(o);
+    if (!planned) return fail(planned.error());
+    const std::vector<Config>& configs = *planned;
 
     std::error_code ec;
     const fs::path dir(o.output);
     fs::create_directories(dir, ec);
-    if (ec) return fail(engine::makeError("-o {}: cannot create folder: {}", o.output, ec.message()));
-    auto ctx = engine::gpu::Context::create({});
+    if (ec)
+        return fail(engine::makeError("-o {}: cannot create folder: {}", o.output, ec.message()));
+    auto ctx = createBenchGpu();
     if (!ctx) return fail(ctx.error());
     const auto& dev = (*ctx)->info();
-    std::printf("device   %s (%s, %s)\n", dev.name.c_str(), dev.type.c_str(), dev.driver.c_str());
-    std::printf("measure  %zu configurations, %u frames each after %u warm-up frames; scene time at %g fps\n",
-                configs.size(), o.frames, o.warmup, kFps);
-    std::printf("wall     the whole Renderer::render call (host work, uploads, submissions, GPU waits; no readback)\n");
+    printDevice(**ctx);
+    std::printf(
+        "measure  %zu configurations, %u frames each after %u warm-up frames; scene time at %g "
+        "fps\n",
+        configs.size(), o.frames, o.warmup, kFps);
+    std::printf(
+        "wall     the whole Renderer::render call (host work, uploads, submissions, GPU waits; no "
+        "readback)\n");
     std::fflush(stdout);
 
     auto writeResults = [&](const std::vector<ConfigResult>& results, bool say) -> engine::Status {
-        for (const auto& [name, text] : {std::pair<std::string, std::string>{"frame.csv", summaryCsv(results)},
-                                         {"frames.csv", framesCsv(results)},
-                                         {"frame.json", json(results, o, dev.name)}}) {
+        for (const auto& [name, text] :
+             {std::pair<std::string, std::string>{"frame.csv", summaryCsv(results)},
+              {"frames.csv", framesCsv(results)},
+              {"frame.json", json(results, o, dev.name)}}) {
             if (engine::Status s = writeFile(dir / name, text); !s) return s;
             if (say) std::printf("wrote %s\n", (dir / name).string().c_str());
         }
@@ -345,26 +395,19 @@ int runFrameBench(const FrameBenchOptions& o) {
             progress.finish();
             return fail(r.error());
         }
-        progress.note(fmt::format("{}: wall {:.1f} ms median, {:.1f} p95; GPU {:.1f} ms ({})", c.label(),
-                                  r->wallMedian, r->wallP95, r->gpuMedian, topPasses(*r)));
+        progress.note(fmt::format("{}: wall {:.1f} ms median, {:.1f} p95; GPU {:.1f} ms ({})",
+                                  c.label(), r->wallMedian, r->wallP95, r->gpuMedian,
+                                  topPasses(*r)));
         results.push_back(std::move(*r));
         // The results so far, so a long run stopped early keeps its finished configurations.
         if (engine::Status s = writeResults(results, false); !s) return fail(s.error());
     }
     const double seconds = progress.finish();
 
-    std::printf("\n| world | size | indirect | camera | wall median ms | wall p95 ms | GPU ms | host ms | rays/frame | "
-                "cache entries updated | top passes (GPU ms) |\n|---|---|---|---|---:|---:|---:|---:|---:|---:|---|\n");
-    for (const ConfigResult& r : results) {
-        const Config& c = r.config;
-        std::printf("| %s | %ux%u | %s | %s | %.1f | %.1f | %.1f | %.1f | %.2f M | %.0f | %s |\n", c.world.c_str(),
-                    c.size.x, c.size.y, c.indirect.c_str(), c.camera.c_str(), r.wallMedian, r.wallP95, r.gpuMedian,
-                    r.hostMedian, r.rays / 1e6, r.cacheUpdated, topPasses(r).c_str());
-    }
-    std::printf("\n");
+    printTable(results);
     if (engine::Status s = writeResults(results, true); !s) return fail(s.error());
-    std::printf("chart: python3 tools/plot_frame.py %s/frame.json DIR  (%s in all)\n", dir.string().c_str(),
-                formatDuration(seconds).c_str());
+    std::printf("chart: python3 tools/plot_frame.py %s/frame.json DIR  (%s in all)\n",
+                dir.string().c_str(), formatDuration(seconds).c_str());
     if ((*ctx)->validationErrors() > 0) {
         std::fprintf(stderr, "vox: %u Vulkan validation error(s)\n", (*ctx)->validationErrors());
         return 1;
@@ -375,25 +418,34 @@ int runFrameBench(const FrameBenchOptions& o) {
 }  // namespace
 
 void addBenchFrameCommand(CLI::App& bench, int& exitCode) {
-    auto* cmd = bench.add_subcommand(
-        "frame", "Frame time as a player sees it: wall ms per frame (median, p95), GPU ms per pass, rays, cache updates");
+    auto* cmd = bench.add_subcommand("frame",
+                                     "Frame time as a player sees it: wall ms per frame (median, "
+                                     "p95), GPU ms per pass, rays, cache updates");
     auto o = std::make_shared<FrameBenchOptions>();
     cmd->add_option("--worlds", o->worlds, "Worlds (comma-separated)")->capture_default_str();
-    cmd->add_option("--sizes", o->sizes, "Image sizes WIDTHxHEIGHT (comma-separated)")->capture_default_str();
+    cmd->add_option("--sizes", o->sizes, "Image sizes WIDTHxHEIGHT (comma-separated)")
+        ->capture_default_str();
     cmd->add_option("--indirect-rows", o->indirect,
-                    "Lighting rows: ReSTIR direct light plus this indirect light each (cache, none; comma-separated)")
+                    "Lighting rows: ReSTIR direct light plus this indirect light each (cache, "
+                    "none; comma-separated)")
         ->capture_default_str();
     cmd->add_option("--cameras", o->cameras,
-                    "still (the world's first camera) and/or moving (a looping path: sandbox_orbit, dragon_city_avenue, "
+                    "still (the world's first camera) and/or moving (a looping path: "
+                    "sandbox_orbit, dragon_city_avenue, "
                     "cornell_sway, else the world's own [path])")
         ->capture_default_str();
-    cmd->add_option("--paths", o->paths, "Moving-camera paths per world: WORLD=PATH,... (files or names in worlds/paths/)");
-    cmd->add_option("--frames", o->frames, "Measured frames per configuration")->capture_default_str()
+    cmd->add_option(
+        "--paths", o->paths,
+        "Moving-camera paths per world: WORLD=PATH,... (files or names in worlds/paths/)");
+    cmd->add_option("--frames", o->frames, "Measured frames per configuration")
+        ->capture_default_str()
         ->check(numberIn(kFrameCountRange));
-    cmd->add_option("--warmup", o->warmup, "Frames rendered before measuring (temporal history, cache)")
+    cmd->add_option("--warmup", o->warmup,
+                    "Frames rendered before measuring (temporal history, cache)")
         ->capture_default_str()
         ->check(numberIn(kWarmupRange));
-    cmd->add_option("-o,--output", o->output, "Folder for frame.csv, frames.csv (per frame) and frame.json")
+    cmd->add_option("-o,--output", o->output,
+                    "Folder for frame.csv, frames.csv (per frame) and frame.json")
         ->capture_default_str();
     // The other knobs (e.g. --cache-rays) apply to every row; the rows set --method and --indirect.
     addLightingOptions(*cmd, o->lighting);

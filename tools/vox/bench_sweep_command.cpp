@@ -4,12 +4,11 @@
 // vox bench recommend: the cheapest setting a sweep found that meets a target error on a scene —
 // model no more than the scene needs; with --sampling, ReSTIR's candidate sampling per scene from
 // `vox bench restir`'s seeds.
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fmt/format.h>
 #include <fstream>
 #include <sstream>
 
@@ -22,6 +21,7 @@
 #include "sweep_job.h"
 #include "sweep_points.h"
 #include "sweep_runner.h"
+#include "tool_gpu.h"
 
 namespace vox {
 
@@ -37,7 +37,7 @@ int runSweep(const SweepOptions& o) {
     if (!o.job.scheduler.empty()) return submitSweepJob(o);
     auto plan = planSweep(o);
     if (!plan) return fail(plan.error());
-    auto ctx = engine::gpu::Context::create({});
+    auto ctx = createBenchGpu();
     if (!ctx) return fail(ctx.error());
     std::filesystem::path out(o.output);
     std::filesystem::create_directories(out);
@@ -78,9 +78,12 @@ std::vector<std::string> csvFields(const std::string& line) {
     std::vector<std::string> out(1);
     bool quoted = false;
     for (char c : line) {
-        if (c == '"') quoted = !quoted;
-        else if (c == ',' && !quoted) out.emplace_back();
-        else out.back() += c;
+        if (c == '"')
+            quoted = !quoted;
+        else if (c == ',' && !quoted)
+            out.emplace_back();
+        else
+            out.back() += c;
     }
     return out;
 }
@@ -98,26 +101,36 @@ int runRecommendSampling(const RecommendOptions& o) {
         only = scene->name;
     }
     std::ifstream in(o.restir);
-    if (!in) return fail(engine::makeError("{}: no results; run `vox bench restir --sampling uniform,power` first", o.restir));
+    if (!in)
+        return fail(engine::makeError(
+            "{}: no results; run `vox bench restir --sampling uniform,power` first", o.restir));
     std::string line;
     std::getline(in, line);
     std::vector<std::string> header = csvFields(line);
-    auto column = [&](const char* name) { return std::size_t(std::find(header.begin(), header.end(), name) - header.begin()); };
-    const std::size_t cScene = column("scene"), cEmitters = column("emitters"), cSampling = column("sampling"),
-                      cBase = column("base"), cMs = column("ms"), cMse = column("mse"), cMin = column("mse_min"), cMax = column("mse_max"),
+    auto column = [&](const char* name) {
+        return std::size_t(std::find(header.begin(), header.end(), name) - header.begin());
+    };
+    const std::size_t cScene = column("scene"), cEmitters = column("emitters"),
+                      cSampling = column("sampling"), cBase = column("base"), cMs = column("ms"),
+                      cMse = column("mse"), cMin = column("mse_min"), cMax = column("mse_max"),
                       cMae = column("mae");
-    if (cMae >= header.size()) return fail(engine::makeError("{}: not a `vox bench restir` table", o.restir));
+    if (cMae >= header.size())
+        return fail(engine::makeError("{}: not a `vox bench restir` table", o.restir));
     struct Choice {
         std::string sampling;
         double ms, mse, mseMin, mseMax, mae;
     };
-    std::map<std::string, std::pair<std::uint32_t, std::vector<Choice>>> scenes;  // by name: emitters, choices
+    std::map<std::string, std::pair<std::uint32_t, std::vector<Choice>>>
+        scenes;  // by name: emitters, choices
     while (std::getline(in, line)) {
         std::vector<std::string> f = csvFields(line);
-        if (f.size() < header.size() || f[cBase] != "--method restir" || (!only.empty() && f[cScene] != only)) continue;
+        if (f.size() < header.size() || f[cBase] != "--method restir" ||
+            (!only.empty() && f[cScene] != only))
+            continue;
         auto& [emitters, choices] = scenes[f[cScene]];
         emitters = std::uint32_t(std::atol(f[cEmitters].c_str()));
-        choices.push_back({f[cSampling], std::atof(f[cMs].c_str()), std::atof(f[cMse].c_str()), std::atof(f[cMin].c_str()), std::atof(f[cMax].c_str()),
+        choices.push_back({f[cSampling], std::atof(f[cMs].c_str()), std::atof(f[cMse].c_str()),
+                           std::atof(f[cMin].c_str()), std::atof(f[cMax].c_str()),
                            std::atof(f[cMae].c_str())});
     }
     std::vector<std::pair<std::uint32_t, std::string>> order;
@@ -125,31 +138,39 @@ int runRecommendSampling(const RecommendOptions& o) {
         if (entry.second.size() >= 2) order.push_back({entry.first, name});
     }
     if (order.empty())
-        return fail(engine::makeError("{}: no scene{} with ReSTIR rows for two sampling values; run `vox bench restir{} "
-                                      "--sampling uniform,power`",
-                                      o.restir, only.empty() ? "" : " '" + only + "'", only.empty() ? "" : " " + o.world));
+        return fail(engine::makeError(
+            "{}: no scene{} with ReSTIR rows for two sampling values; run `vox bench restir{} "
+            "--sampling uniform,power`",
+            o.restir, only.empty() ? "" : " '" + only + "'", only.empty() ? "" : " " + o.world));
     std::sort(order.begin(), order.end());
     for (const auto& [emitters, name] : order) {
         std::vector<Choice> c = scenes[name].second;
-        std::sort(c.begin(), c.end(), [](const Choice& a, const Choice& b) { return a.mse < b.mse; });
+        std::sort(c.begin(), c.end(),
+                  [](const Choice& a, const Choice& b) { return a.mse < b.mse; });
         const bool separated = c[0].mseMax < c[1].mseMin;
         // The rows are not scaled to equal time: the time ratio says what the lower error costs.
-        std::printf("%s (%u emitters): --sampling %s (MSE %.3e, %.2fx lower than %s; MAE %.3e vs %.3e; %.2fx its time)%s\n",
-                    name.c_str(), emitters, c[0].sampling.c_str(), c[0].mse, c[1].mse / std::max(c[0].mse, 1e-30),
-                    c[1].sampling.c_str(), c[0].mae, c[1].mae, c[0].ms / std::max(c[1].ms, 1e-9),
-                    separated ? "" : "; the seeds' spreads overlap");
+        std::printf(
+            "%s (%u emitters): --sampling %s (MSE %.3e, %.2fx lower than %s; MAE %.3e vs %.3e; "
+            "%.2fx its time)%s\n",
+            name.c_str(), emitters, c[0].sampling.c_str(), c[0].mse,
+            c[1].mse / std::max(c[0].mse, 1e-30), c[1].sampling.c_str(), c[0].mae, c[1].mae,
+            c[0].ms / std::max(c[1].ms, 1e-9), separated ? "" : "; the seeds' spreads overlap");
     }
     return 0;
 }
 
 int runRecommend(const RecommendOptions& o) {
     if (o.sampling) return runRecommendSampling(o);
-    if (o.world.empty()) return fail(engine::makeError("bench recommend: a WORLD is needed (or --sampling)"));
-    if (o.targetMae <= 0.0) return fail(engine::makeError("bench recommend: --target-mae is needed (or --sampling)"));
+    if (o.world.empty())
+        return fail(engine::makeError("bench recommend: a WORLD is needed (or --sampling)"));
+    if (o.targetMae <= 0.0)
+        return fail(engine::makeError("bench recommend: --target-mae is needed (or --sampling)"));
     auto scene = loadWorld(o.world);
     if (!scene) return fail(scene.error());
     std::ifstream in(o.sweep);
-    if (!in) return fail(engine::makeError("{}: no sweep results; run `vox bench sweep {}` first", o.sweep, o.world));
+    if (!in)
+        return fail(engine::makeError("{}: no sweep results; run `vox bench sweep {}` first",
+                                      o.sweep, o.world));
     std::string line;
     std::getline(in, line);  // header
     struct Candidate {
@@ -167,50 +188,65 @@ int runRecommend(const RecommendOptions& o) {
         if (rest.size() < 5) continue;
         const bool againstIndirect = rest.size() >= 9 && std::atoi(rest[8].c_str()) > 0;
         if (againstIndirect != o.indirect) continue;
-        rows.push_back({line.substr(q1 + 1, q2 - q1 - 1), std::atof(rest[1].c_str()), std::atof(rest[4].c_str())});
+        rows.push_back({line.substr(q1 + 1, q2 - q1 - 1), std::atof(rest[1].c_str()),
+                        std::atof(rest[4].c_str())});
     }
     if (rows.empty())
-        return fail(engine::makeError("{}: no {}rows for scene '{}'; run `vox bench sweep {}`", o.sweep,
-                                      o.indirect ? "indirect-light " : "", scene->name, o.world));
+        return fail(engine::makeError("{}: no {}rows for scene '{}'; run `vox bench sweep {}`",
+                                      o.sweep, o.indirect ? "indirect-light " : "", scene->name,
+                                      o.world));
     const Candidate* best = nullptr;
     for (const Candidate& c : rows) {
         if (c.mae <= o.targetMae && (!best || c.ms < best->ms)) best = &c;
     }
     if (!best) {
-        auto closest = std::min_element(rows.begin(), rows.end(), [](const Candidate& a, const Candidate& b) { return a.mae < b.mae; });
-        std::printf("no swept setting reaches MAE %.3e on %s; the most accurate is '%s' (MAE %.3e, %.2f ms)\n", o.targetMae,
-                    scene->name.c_str(), closest->setting.c_str(), closest->mae, closest->ms);
+        auto closest =
+            std::min_element(rows.begin(), rows.end(),
+                             [](const Candidate& a, const Candidate& b) { return a.mae < b.mae; });
+        std::printf(
+            "no swept setting reaches MAE %.3e on %s; the most accurate is '%s' (MAE %.3e, %.2f "
+            "ms)\n",
+            o.targetMae, scene->name.c_str(), closest->setting.c_str(), closest->mae, closest->ms);
         return 1;
     }
-    std::printf("%s: cheapest setting with MAE <= %.3e: '%s' (MAE %.3e, %.2f ms per frame; %zu settings swept)\n",
-                scene->name.c_str(), o.targetMae, best->setting.c_str(), best->mae, best->ms, rows.size());
+    std::printf(
+        "%s: cheapest setting with MAE <= %.3e: '%s' (MAE %.3e, %.2f ms per frame; %zu settings "
+        "swept)\n",
+        scene->name.c_str(), o.targetMae, best->setting.c_str(), best->mae, best->ms, rows.size());
     return 0;
 }
 
 }  // namespace
 
 void addBenchSweepCommand(CLI::App& bench, int& exitCode) {
-    auto* cmd = bench.add_subcommand("sweep", "Methods x settings per scene: error against time, CSV and chart");
+    auto* cmd = bench.add_subcommand(
+        "sweep", "Methods x settings per scene: error against time, CSV and chart");
     auto o = std::make_shared<SweepOptions>();
     cmd->add_option("worlds", o->worlds, "Worlds (default: the four thesis scenes)");
     cmd->add_option("--methods", o->methods, "Comma-separated methods")->capture_default_str();
-    cmd->add_option("--candidates", o->candidates, "Candidate counts M for restir/ris")->capture_default_str();
+    cmd->add_option("--candidates", o->candidates, "Candidate counts M for restir/ris")
+        ->capture_default_str();
     cmd->add_option("--modes", o->modes, "point, area or both")->capture_default_str();
     cmd->add_option("--brick-lights", o->brickLights, "on, off or both")->capture_default_str();
-    cmd->add_option("--rays", o->rays, "Shadow rays for uniform light sampling")->capture_default_str();
+    cmd->add_option("--rays", o->rays, "Shadow rays for uniform light sampling")
+        ->capture_default_str();
     cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
-    cmd->add_option("--frames", o->frames, "Frames per setting (the last half are measured)")->capture_default_str()
+    cmd->add_option("--frames", o->frames, "Frames per setting (the last half are measured)")
+        ->capture_default_str()
         ->check(numberIn(engine::wholeRange(2, 1000, "frames")));
-    cmd->add_option("--ref-spp", o->referenceSpp, "Reference samples per pixel (cached on disk)")->capture_default_str()
+    cmd->add_option("--ref-spp", o->referenceSpp, "Reference samples per pixel (cached on disk)")
+        ->capture_default_str()
         ->check(numberIn(kSamplesRange));
     cmd->add_option("--indirect", o->indirect,
-                    "Indirect-light series: none, cache-K (K directions), vct, vct-leaky, reference; empty = no series")
+                    "Indirect-light series: none, cache-K (K directions), vct, vct-leaky, "
+                    "reference; empty = no series")
         ->capture_default_str();
     cmd->add_option("--indirect-bounces", o->indirectBounces,
                     "Bounces of the indirect reference (and of the cache and path-tracer points)")
         ->capture_default_str()
         ->check(numberIn(engine::wholeRange(1, 16, "bounces")));
-    cmd->add_option("--indirect-ref-spp", o->indirectReferenceSpp, "Samples per pixel of the indirect reference (cached)")
+    cmd->add_option("--indirect-ref-spp", o->indirectReferenceSpp,
+                    "Samples per pixel of the indirect reference (cached)")
         ->capture_default_str()
         ->check(numberIn(kSamplesRange));
     cmd->add_option("-o,--output", o->output, "Output folder")->capture_default_str();
@@ -222,17 +258,24 @@ void addBenchSweepCommand(CLI::App& bench, int& exitCode) {
         ->group("");
     cmd->callback([o, &exitCode] { exitCode = runSweep(*o); });
 
-    auto* rec = bench.add_subcommand("recommend", "The cheapest swept setting that meets a target MAE on a scene");
+    auto* rec = bench.add_subcommand(
+        "recommend", "The cheapest swept setting that meets a target MAE on a scene");
     auto r = std::make_shared<RecommendOptions>();
-    rec->add_option("world", r->world, "World name or scene file (with --sampling: all scenes when left out)");
-    rec->add_option("--target-mae", r->targetMae, "Target MAE against the reference (needed without --sampling)")
+    rec->add_option("world", r->world,
+                    "World name or scene file (with --sampling: all scenes when left out)");
+    rec->add_option("--target-mae", r->targetMae,
+                    "Target MAE against the reference (needed without --sampling)")
         ->check(numberIn(engine::aboveRange(0.0, 1e6)));
-    rec->add_option("--sweep", r->sweep, "Sweep results (CSV from vox bench sweep)")->capture_default_str();
-    rec->add_flag("--indirect", r->indirect,
-                  "Choose among the indirect-light series (error against the multi-bounce reference)");
+    rec->add_option("--sweep", r->sweep, "Sweep results (CSV from vox bench sweep)")
+        ->capture_default_str();
+    rec->add_flag(
+        "--indirect", r->indirect,
+        "Choose among the indirect-light series (error against the multi-bounce reference)");
     rec->add_flag("--sampling", r->sampling,
-                  "Choose ReSTIR's candidate sampling per scene from `vox bench restir --sampling A,B` (lowest median MSE)");
-    rec->add_option("--restir", r->restir, "vox bench restir's CSV (for --sampling)")->capture_default_str();
+                  "Choose ReSTIR's candidate sampling per scene from `vox bench restir --sampling "
+                  "A,B` (lowest median MSE)");
+    rec->add_option("--restir", r->restir, "vox bench restir's CSV (for --sampling)")
+        ->capture_default_str();
     rec->callback([r, &exitCode] { exitCode = runRecommend(*r); });
 }
 

@@ -7,17 +7,20 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <thread>
 #include <time.h>
 
-#include "core/atomic_file.h"
+#include "bench_median.h"
+#include "bench_setup.h"
 #include "classic_dda.h"
 #include "commands.h"
-#include "number_options.h"
+#include "core/atomic_file.h"
 #include "gpu/command_list.h"
 #include "gpu/context.h"
 #include "gpu/timestamp_timer.h"
 #include "gpu/uploader.h"
+#include "number_options.h"
 #include "render/camera.h"
 #include "render/passes/trace_rays_pass.h"
 #include "shared/trace_rays.h"
@@ -63,12 +66,8 @@ double processCpuMs() {
     return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
 }
 
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
-
-std::vector<Ray> shadowRays(const std::vector<Ray>& primary, const std::vector<RayHit>& hits, glm::vec3 toSun) {
+std::vector<Ray> shadowRays(const std::vector<Ray>& primary, const std::vector<RayHit>& hits,
+                            glm::vec3 toSun) {
     std::vector<Ray> out;
     for (std::size_t i = 0; i < primary.size(); ++i) {
         if (!hits[i].hit || hits[i].face >= 6) continue;
@@ -105,7 +104,9 @@ MethodResult benchCpu(const std::vector<Ray>& rays, Trace&& trace, int repeats, 
             });
         }
         for (auto& th : pool) th.join();
-        double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        double ms =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count();
         if (rep > 0) {
             times.push_back(ms);
             cpuTimes.push_back(processCpuMs() - cpuStart);
@@ -141,12 +142,16 @@ SkipEditCost measureSkipEditCost(engine::world::BrickGrid grid) {
     for (glm::ivec3 p : places) {
         auto start = std::chrono::steady_clock::now();
         grid.set(p, 1);
-        occupy.push_back(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count());
+        occupy.push_back(
+            std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start)
+                .count());
         cost.occupyRewrites = std::max(cost.occupyRewrites, grid.dirtySuperCells().size());
         grid.clearDirty();
         start = std::chrono::steady_clock::now();
         grid.set(p, engine::world::kEmpty);
-        clear.push_back(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count());
+        clear.push_back(
+            std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start)
+                .count());
         cost.clearRewrites = std::max(cost.clearRewrites, grid.dirtySuperCells().size());
         grid.clearDirty();
     }
@@ -158,179 +163,269 @@ SkipEditCost measureSkipEditCost(engine::world::BrickGrid grid) {
     return cost;
 }
 
-int runBench(const BenchOptions& o) {
-    auto size = parseSize(o.size, "--size");
-    if (!size) return fail(size.error());
-    std::printf("loading world %s ...\n", o.world.c_str());
-    auto scene = loadWorld(o.world);
-    if (!scene) return fail(scene.error());
-    auto ctx = engine::gpu::Context::create({});
-    if (!ctx) return fail(ctx.error());
-    engine::gpu::Context& gpu = **ctx;
-    const auto& dev = gpu.info();
-    std::printf("device   %s (%s, %s)\n", dev.name.c_str(), dev.type.c_str(), dev.driver.c_str());
+// The same rays for every method: camera rays, then one shadow ray towards the sun per hit;
+// `hits` are the CPU reference's for the camera rays.
+struct BenchRays {
+    std::vector<Ray> primary, shadows, all;
+    std::vector<RayHit> hits;
+};
 
-    // The same rays for every method.
-    engine::world::CameraPreset camera = scene->camera(o.camera);
-    engine::render::FrameSettings fs;
-    fs.width = (*size).x;
-    fs.height = (*size).y;
-    shared::FrameParams params = engine::render::makeFrameParams(camera, scene->sky, fs);
-    std::vector<Ray> primary;
+BenchRays benchRays(const engine::world::Scene& scene, const engine::world::CameraPreset& camera,
+                    const engine::render::FrameSettings& fs) {
+    BenchRays b;
+    shared::FrameParams params = engine::render::makeFrameParams(camera, scene.sky, fs);
     for (std::uint32_t y = 0; y < fs.height; ++y)
         for (std::uint32_t x = 0; x < fs.width; ++x)
-            primary.push_back(Ray{camera.position, engine::render::cameraRayDirection(params, {x, y})});
-    std::vector<RayHit> hits(primary.size());
-    for (std::size_t i = 0; i < primary.size(); ++i) hits[i] = engine::world::traceRay(scene->grid, primary[i]);
-    std::vector<Ray> rays = primary;
-    std::vector<Ray> shadows = shadowRays(primary, hits, glm::normalize(scene->sky.sunDirection));
-    rays.insert(rays.end(), shadows.begin(), shadows.end());
-    std::printf("rays     %zu primary + %zu shadow at %ux%u, camera '%s'\n", primary.size(), shadows.size(), fs.width,
-                fs.height, camera.name.c_str());
+            b.primary.push_back(
+                Ray{camera.position, engine::render::cameraRayDirection(params, {x, y})});
+    b.hits.resize(b.primary.size());
+    for (std::size_t i = 0; i < b.primary.size(); ++i)
+        b.hits[i] = engine::world::traceRay(scene.grid, b.primary[i]);
+    b.all = b.primary;
+    b.shadows = shadowRays(b.primary, b.hits, glm::normalize(scene.sky.sunDirection));
+    b.all.insert(b.all.end(), b.shadows.begin(), b.shadows.end());
+    return b;
+}
 
-    // GPU: upload the world and the rays once, then time the trace dispatch only.
-    engine::render::GpuWorld world(gpu);
-    engine::gpu::Uploader uploader(gpu);
-    engine::gpu::TimestampTimer timer(gpu, 4);
-    engine::render::TraceRaysPass pass(gpu);
-    std::vector<shared::TraceRayInput> inputs;
-    for (const Ray& r : rays) inputs.push_back({glm::vec4(r.origin, 1e30f), glm::vec4(r.direction, 0.0f)});
-    using engine::gpu::Buffer;
-    using engine::gpu::BufferKind;
-    Buffer paramsBuf(gpu, BufferKind::Storage, sizeof(shared::TraceRaysParams), "bench.params");
-    Buffer raysBuf(gpu, BufferKind::Storage, inputs.size() * sizeof(shared::TraceRayInput), "bench.rays");
-    Buffer hitsBuf(gpu, BufferKind::Storage, inputs.size() * sizeof(shared::TraceRayOutput), "bench.hits");
-    Buffer readback(gpu, BufferKind::Readback, hitsBuf.size(), "bench.readback");
-    {
+// The GPU traversal: the world and the rays uploaded once, then the trace dispatch alone timed.
+class GpuTraceBench {
+public:
+    GpuTraceBench(engine::gpu::Context& gpu, engine::world::Scene& scene, const BenchRays& rays)
+        : mGpu(gpu), mRays(rays), mWorld(gpu), mUploader(gpu), mTimer(gpu, 4), mPass(gpu) {
+        for (const Ray& r : rays.all)
+            mInputs.push_back({glm::vec4(r.origin, 1e30f), glm::vec4(r.direction, 0.0f)});
+        using engine::gpu::BufferKind;
+        mParams.emplace(gpu, BufferKind::Storage, sizeof(shared::TraceRaysParams), "bench.params");
+        mRaysBuf.emplace(gpu, BufferKind::Storage, mInputs.size() * sizeof(shared::TraceRayInput),
+                         "bench.rays");
+        mHits.emplace(gpu, BufferKind::Storage, mInputs.size() * sizeof(shared::TraceRayOutput),
+                      "bench.hits");
+        mReadback.emplace(gpu, BufferKind::Readback, mHits->size(), "bench.readback");
         engine::gpu::CommandList cmd(gpu);
         cmd.begin();
-        world.sync(*scene, uploader);
-        uploader.write(raysBuf, 0, inputs.data(), raysBuf.size());
-        uploader.record(cmd);
+        mWorld.sync(scene, mUploader);
+        mUploader.write(*mRaysBuf, 0, mInputs.data(), mRaysBuf->size());
+        mUploader.record(cmd);
         cmd.submitAndWait();
     }
-    std::vector<MethodResult> results;
-    std::uint64_t gpuCpuMismatches = 0;
-    for (std::uint32_t mode : {shared::TRACE_MODE_HIERARCHICAL, shared::TRACE_MODE_PLAIN}) {
+
+    // One mode's median times and steps; the hierarchical mode's primary hits are checked
+    // against the CPU reference's (`mismatches`).
+    MethodResult run(std::uint32_t mode, int repeats, std::uint64_t& mismatches) {
         MethodResult r;
-        r.name = mode == shared::TRACE_MODE_HIERARCHICAL ? "gpu hierarchical" : "gpu plain two-level";
+        r.name =
+            mode == shared::TRACE_MODE_HIERARCHICAL ? "gpu hierarchical" : "gpu plain two-level";
         std::vector<double> times, cpuTimes;
-        for (int rep = 0; rep < o.repeats + 2; ++rep) {  // two warm-up runs: the first compiles the shader
+        for (int rep = 0; rep < repeats + 2;
+             ++rep) {  // two warm-up runs: the first compiles the shader
             const double cpuStart = processCpuMs();
-            engine::gpu::CommandList cmd(gpu, &timer);
-            cmd.begin();
-            shared::TraceRaysParams p{glm::uvec4(std::uint32_t(inputs.size()), mode, 0u, 0u)};
-            uploader.write(paramsBuf, 0, &p, sizeof(p));
-            uploader.record(cmd);
-            pass.record(cmd, {world, paramsBuf, raysBuf, hitsBuf}, std::uint32_t(inputs.size()), mode);
-            cmd.copyBuffer(hitsBuf, readback, {{0, 0, hitsBuf.size()}});
-            cmd.barrier();
-            cmd.submitAndWait();
+            dispatch(mode);
             if (rep >= 2) {
-                times.push_back(timer.results().at(0).second);
+                times.push_back(mTimer.results().at(0).second);
                 cpuTimes.push_back(processCpuMs() - cpuStart);
             }
         }
         r.ms = median(times);
         r.cpuMs = median(cpuTimes);
-        r.rays = inputs.size();
-        auto out = readback.view<shared::TraceRayOutput>();
-        for (std::size_t batch = 0; batch < inputs.size(); batch += kSimdLanes) {
+        r.rays = mInputs.size();
+        countSteps(r, mode, mismatches);
+        return r;
+    }
+
+private:
+    void dispatch(std::uint32_t mode) {
+        engine::gpu::CommandList cmd(mGpu, &mTimer);
+        cmd.begin();
+        shared::TraceRaysParams p{glm::uvec4(std::uint32_t(mInputs.size()), mode, 0u, 0u)};
+        mUploader.write(*mParams, 0, &p, sizeof(p));
+        mUploader.record(cmd);
+        mPass.record(cmd, {mWorld, *mParams, *mRaysBuf, *mHits}, std::uint32_t(mInputs.size()),
+                     mode);
+        cmd.copyBuffer(*mHits, *mReadback, {{0, 0, mHits->size()}});
+        cmd.barrier();
+        cmd.submitAndWait();
+    }
+
+    void countSteps(MethodResult& r, std::uint32_t mode, std::uint64_t& mismatches) {
+        auto out = mReadback->view<shared::TraceRayOutput>();
+        for (std::size_t batch = 0; batch < mInputs.size(); batch += kSimdLanes) {
             std::uint32_t longest = 0;
-            for (std::size_t i = batch; i < std::min(inputs.size(), batch + kSimdLanes); ++i)
+            for (std::size_t i = batch; i < std::min(mInputs.size(), batch + kSimdLanes); ++i)
                 longest = std::max(longest, out[i].data.w);
             r.laneSteps += std::uint64_t(longest) * kSimdLanes;
         }
-        for (std::size_t i = 0; i < inputs.size(); ++i) {
+        for (std::size_t i = 0; i < mInputs.size(); ++i) {
             r.steps += out[i].data.w;
-            if (mode == shared::TRACE_MODE_HIERARCHICAL && i < primary.size()) {
-                gpuCpuMismatches += (out[i].data.x != 0) != hits[i].hit ||
-                                    (hits[i].hit && glm::ivec3(out[i].voxel) != hits[i].voxel);
+            if (mode == shared::TRACE_MODE_HIERARCHICAL && i < mRays.primary.size()) {
+                const RayHit& hit = mRays.hits[i];
+                mismatches += (out[i].data.x != 0) != hit.hit ||
+                              (hit.hit && glm::ivec3(out[i].voxel) != hit.voxel);
             }
         }
-        results.push_back(r);
-        std::printf("  %-28s done\n", r.name.c_str());
-    }
-    const engine::world::BrickGrid& grid = scene->grid;
-    results.push_back(benchCpu(
-        rays, [&](const Ray& r) { return engine::world::traceRay(grid, r, TraversalMode::Hierarchical); }, o.repeats,
-        "cpu reference hierarchical"));
-    std::printf("  %-28s done\n", results.back().name.c_str());
-    results.push_back(benchCpu(
-        rays, [&](const Ray& r) { return engine::world::traceRay(grid, r, TraversalMode::PlainTwoLevel); }, o.repeats,
-        "cpu reference plain"));
-    std::printf("  %-28s done\n", results.back().name.c_str());
-    results.push_back(benchCpu(rays, [&](const Ray& r) { return traceClassicTwoLevel(grid, r); }, o.repeats,
-                               "cpu classic two-level DDA"));
-    std::printf("  %-28s done\n", results.back().name.c_str());
-    // The classic DDA must find the same surfaces, or its speed means nothing.
-    std::uint64_t classicMismatches = 0;
-    for (std::size_t i = 0; i < primary.size(); ++i) {
-        RayHit c = traceClassicTwoLevel(grid, primary[i]);
-        classicMismatches += c.hit != hits[i].hit || (c.hit && c.voxel != hits[i].voxel);
     }
 
-    const SkipEditCost edit = measureSkipEditCost(grid);
+    engine::gpu::Context& mGpu;
+    const BenchRays& mRays;
+    engine::render::GpuWorld mWorld;
+    engine::gpu::Uploader mUploader;
+    engine::gpu::TimestampTimer mTimer;
+    engine::render::TraceRaysPass mPass;
+    std::vector<shared::TraceRayInput> mInputs;
+    std::optional<engine::gpu::Buffer> mParams, mRaysBuf, mHits, mReadback;
+};
 
+// The CPU methods, each on all cores.
+struct CpuMethod {
+    const char* name;
+    RayHit (*trace)(const engine::world::BrickGrid& grid, const Ray& ray);
+};
+const CpuMethod kCpuMethods[] = {
+    {"cpu reference hierarchical",
+     [](const engine::world::BrickGrid& g, const Ray& r) {
+         return engine::world::traceRay(g, r, TraversalMode::Hierarchical);
+     }},
+    {"cpu reference plain",
+     [](const engine::world::BrickGrid& g, const Ray& r) {
+         return engine::world::traceRay(g, r, TraversalMode::PlainTwoLevel);
+     }},
+    {"cpu classic two-level DDA",
+     [](const engine::world::BrickGrid& g, const Ray& r) { return traceClassicTwoLevel(g, r); }},
+};
+
+// What a run found besides the methods' speeds.
+struct TraverseFindings {
+    std::uint64_t gpuCpuMismatches = 0, classicMismatches = 0;
+    SkipEditCost edit;
+};
+
+void printResults(const std::vector<MethodResult>& results, const BenchRays& rays,
+                  const TraverseFindings& found) {
     unsigned threads = std::max(1u, std::thread::hardware_concurrency());
-    std::printf("\n%-28s %10s %12s %12s %12s %10s\n", "method", "ms", "Mrays/s", "steps/ray", "ns/step", "cpu ms");
+    std::printf("\n%-28s %10s %12s %12s %12s %10s\n", "method", "ms", "Mrays/s", "steps/ray",
+                "ns/step", "cpu ms");
     for (const MethodResult& r : results) {
-        std::printf("%-28s %10.2f %12.3f %12.2f %12.3f %10.2f\n", r.name.c_str(), r.ms, r.raysPerSecond() * 1e-6,
-                    r.stepsPerRay(), r.ms * 1e6 / double(std::max<std::uint64_t>(r.steps, 1)), r.cpuMs);
+        std::printf("%-28s %10.2f %12.3f %12.2f %12.3f %10.2f\n", r.name.c_str(), r.ms,
+                    r.raysPerSecond() * 1e-6, r.stepsPerRay(),
+                    r.ms * 1e6 / double(std::max<std::uint64_t>(r.steps, 1)), r.cpuMs);
     }
     for (const MethodResult& r : results) {
         if (r.laneSteps == 0) continue;
-        std::printf("%-28s SIMD-%zu lanes busy %.0f%% of the steps they pay for\n", r.name.c_str(), kSimdLanes,
-                    100.0 * double(r.steps) / double(r.laneSteps));
+        std::printf("%-28s SIMD-%zu lanes busy %.0f%% of the steps they pay for\n", r.name.c_str(),
+                    kSimdLanes, 100.0 * double(r.steps) / double(r.laneSteps));
     }
     const MethodResult& gpuH = results[0];
     const MethodResult& classic = results[4];
-    std::printf("\ngpu hierarchical vs cpu classic two-level DDA: %.2fx rays/s, %.2fx fewer steps per ray\n",
-                gpuH.raysPerSecond() / classic.raysPerSecond(), classic.stepsPerRay() / gpuH.stepsPerRay());
-    std::printf("gpu hierarchical vs cpu classic two-level DDA in CPU time (all threads; steadier under load): %.2fx\n",
-                classic.cpuMs / gpuH.cpuMs);
-    std::printf("primary-hit mismatches against the CPU reference: gpu %llu, classic DDA %llu, of %zu (CPU threads: %u)\n",
-                static_cast<unsigned long long>(gpuCpuMismatches), static_cast<unsigned long long>(classicMismatches),
-                primary.size(), threads);
+    std::printf(
+        "\ngpu hierarchical vs cpu classic two-level DDA: %.2fx rays/s, %.2fx fewer steps per "
+        "ray\n",
+        gpuH.raysPerSecond() / classic.raysPerSecond(), classic.stepsPerRay() / gpuH.stepsPerRay());
+    std::printf(
+        "gpu hierarchical vs cpu classic two-level DDA in CPU time (all threads; steadier under "
+        "load): %.2fx\n",
+        classic.cpuMs / gpuH.cpuMs);
+    std::printf(
+        "primary-hit mismatches against the CPU reference: gpu %llu, classic DDA %llu, of %zu (CPU "
+        "threads: %u)\n",
+        static_cast<unsigned long long>(found.gpuCpuMismatches),
+        static_cast<unsigned long long>(found.classicMismatches), rays.primary.size(), threads);
+    const SkipEditCost& edit = found.edit;
+    std::printf(
+        "skip distances on an edit in open air (median of %d, whole voxel set() included): occupy "
+        "%.1f us "
+        "(%zu super cells rewritten at most), clear %.1f us (%zu)\n",
+        edit.edits, edit.occupyUs, edit.occupyRewrites, edit.clearUs, edit.clearRewrites);
+}
 
-    std::printf("skip distances on an edit in open air (median of %d, whole voxel set() included): occupy %.1f us "
-                "(%zu super cells rewritten at most), clear %.1f us (%zu)\n",
-                edit.edits, edit.occupyUs, edit.occupyRewrites, edit.clearUs, edit.clearRewrites);
-
-    std::filesystem::path out(o.output);
-    std::error_code ec;
-    if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path(), ec);
+engine::Status writeJson(const std::filesystem::path& out, const std::string& world,
+                         const engine::render::FrameSettings& fs,
+                         const engine::gpu::DeviceInfo& dev,
+                         const std::vector<MethodResult>& results, const BenchRays& rays,
+                         const TraverseFindings& found) {
+    unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+    const SkipEditCost& edit = found.edit;
     engine::AtomicFile jsonFile;
-    if (engine::Status s = jsonFile.open(out); !s) return fail(s.error());
+    if (engine::Status s = openOutputFile(jsonFile, out); !s) return s;
     std::ostream& json = jsonFile.stream();
-    json << "{\n  \"world\": \"" << scene->name << "\", \"size\": [" << fs.width << ", " << fs.height
-         << "], \"device\": \"" << dev.name << "\", \"driver\": \"" << dev.driver << "\", \"cpu_threads\": " << threads
-         << ",\n  \"primary_rays\": " << primary.size() << ", \"shadow_rays\": " << shadows.size()
-         << ", \"gpu_cpu_mismatches\": " << gpuCpuMismatches << ", \"classic_mismatches\": " << classicMismatches << ",\n  \"skip_edit\": {\"edits\": " << edit.edits
-         << ", \"occupy_us\": " << edit.occupyUs << ", \"clear_us\": " << edit.clearUs
-         << ", \"occupy_rewrites\": " << edit.occupyRewrites << ", \"clear_rewrites\": " << edit.clearRewrites
-         << "},\n  \"methods\": [\n";
+    json << "{\n  \"world\": \"" << world << "\", \"size\": [" << fs.width << ", " << fs.height
+         << "], \"device\": \"" << dev.name << "\", \"driver\": \"" << dev.driver
+         << "\", \"cpu_threads\": " << threads << ",\n  \"primary_rays\": " << rays.primary.size()
+         << ", \"shadow_rays\": " << rays.shadows.size()
+         << ", \"gpu_cpu_mismatches\": " << found.gpuCpuMismatches
+         << ", \"classic_mismatches\": " << found.classicMismatches
+         << ",\n  \"skip_edit\": {\"edits\": " << edit.edits << ", \"occupy_us\": " << edit.occupyUs
+         << ", \"clear_us\": " << edit.clearUs << ", \"occupy_rewrites\": " << edit.occupyRewrites
+         << ", \"clear_rewrites\": " << edit.clearRewrites << "},\n  \"methods\": [\n";
     for (std::size_t i = 0; i < results.size(); ++i) {
         const MethodResult& r = results[i];
         json << "    {\"name\": \"" << r.name << "\", \"ms\": " << r.ms << ", \"rays\": " << r.rays
-             << ", \"cpu_ms\": " << r.cpuMs << ", \"steps\": " << r.steps << ", \"rays_per_second\": " << r.raysPerSecond()
-             << ", \"steps_per_ray\": " << r.stepsPerRay() << ", \"lane_steps\": " << r.laneSteps << "}" << (i + 1 < results.size() ? "," : "") << "\n";
+             << ", \"cpu_ms\": " << r.cpuMs << ", \"steps\": " << r.steps
+             << ", \"rays_per_second\": " << r.raysPerSecond()
+             << ", \"steps_per_ray\": " << r.stepsPerRay() << ", \"lane_steps\": " << r.laneSteps
+             << "}" << (i + 1 < results.size() ? "," : "") << "\n";
     }
     json << "  ]\n}\n";
-    if (engine::Status s = jsonFile.commit(); !s) return fail(s.error());
-    std::printf("wrote    %s\n", out.string().c_str());
+    return jsonFile.commit();
+}
+
+int runBench(const BenchOptions& o) {
+    auto frame = frameOfSize(o.size);
+    if (!frame) return fail(frame.error());
+    const engine::render::FrameSettings& fs = *frame;
+    std::printf("loading world %s ...\n", o.world.c_str());
+    auto scene = loadWorld(o.world);
+    if (!scene) return fail(scene.error());
+    auto ctx = createBenchGpu();
+    if (!ctx) return fail(ctx.error());
+    engine::gpu::Context& gpu = **ctx;
+    printDevice(gpu);
+
+    engine::world::CameraPreset camera = scene->camera(o.camera);
+    const BenchRays rays = benchRays(*scene, camera, fs);
+    std::printf("rays     %zu primary + %zu shadow at %ux%u, camera '%s'\n", rays.primary.size(),
+                rays.shadows.size(), fs.width, fs.height, camera.name.c_str());
+
+    std::vector<MethodResult> results;
+    TraverseFindings found;
+    {
+        GpuTraceBench gpuBench(gpu, *scene, rays);
+        for (std::uint32_t mode : {shared::TRACE_MODE_HIERARCHICAL, shared::TRACE_MODE_PLAIN}) {
+            results.push_back(gpuBench.run(mode, o.repeats, found.gpuCpuMismatches));
+            std::printf("  %-28s done\n", results.back().name.c_str());
+        }
+    }
+    const engine::world::BrickGrid& grid = scene->grid;
+    for (const CpuMethod& m : kCpuMethods) {
+        results.push_back(benchCpu(
+            rays.all, [&](const Ray& r) { return m.trace(grid, r); }, o.repeats, m.name));
+        std::printf("  %-28s done\n", results.back().name.c_str());
+    }
+    // The classic DDA must find the same surfaces, or its speed means nothing.
+    for (std::size_t i = 0; i < rays.primary.size(); ++i) {
+        RayHit c = traceClassicTwoLevel(grid, rays.primary[i]);
+        found.classicMismatches +=
+            c.hit != rays.hits[i].hit || (c.hit && c.voxel != rays.hits[i].voxel);
+    }
+    found.edit = measureSkipEditCost(grid);
+
+    printResults(results, rays, found);
+    if (engine::Status s = writeJson(o.output, scene->name, fs, gpu.info(), results, rays, found);
+        !s)
+        return fail(s.error());
+    std::printf("wrote    %s\n", std::filesystem::path(o.output).string().c_str());
     return 0;
 }
 
 }  // namespace
 
 void addBenchTraverseCommand(CLI::App& bench, int& exitCode) {
-    auto* cmd = bench.add_subcommand("traverse", "Ray traversal speed: GPU vs CPU reference, hierarchical vs plain DDA");
+    auto* cmd = bench.add_subcommand(
+        "traverse", "Ray traversal speed: GPU vs CPU reference, hierarchical vs plain DDA");
     auto o = std::make_shared<BenchOptions>();
     cmd->add_option("world", o->world, "World name or scene file")->capture_default_str();
     cmd->add_option("--camera", o->camera, "Camera preset");
     cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
-    cmd->add_option("--repeats", o->repeats, "Timed repetitions per method (median reported)")->capture_default_str()
+    cmd->add_option("--repeats", o->repeats, "Timed repetitions per method (median reported)")
+        ->capture_default_str()
         ->check(numberIn(engine::wholeRange(1, 1000, "repetitions")));
     cmd->add_option("-o,--output", o->output, "JSON results file")->capture_default_str();
     cmd->callback([o, &exitCode] { exitCode = runBench(*o); });

@@ -4,11 +4,10 @@
 // `--scheduler slurm|parallel|local --tasks N` splits the capture into a job of slices, resumed
 // by the same command, followed with `--status DIR` and joined by `--join DIR` (capture_job.h,
 // docs/CAPTURE.md).
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <fmt/format.h>
 #include <vector>
 
 #include "capture_csv.h"
@@ -26,6 +25,7 @@
 #include "lighting_options.h"
 #include "number_options.h"
 #include "render/frame_plan.h"
+#include "tool_gpu.h"
 
 namespace vox {
 
@@ -55,14 +55,9 @@ int runCapture(const CaptureOptions& o) {
         engine::FolderLock::acquire(dir, "vox capture", first, std::uint64_t(last) - first + 1);
     if (!lock) return fail(lock.error());
 
-    engine::gpu::ContextOptions ctxOptions;
-#ifndef NDEBUG
-    ctxOptions.validation = true;
-#endif
-    auto ctx = engine::gpu::Context::create(ctxOptions);
+    auto ctx = createValidatedGpu();
     if (!ctx) return fail(ctx.error());
-    const auto& dev = (*ctx)->info();
-    std::printf("device   %s (%s, %s)\n", dev.name.c_str(), dev.type.c_str(), dev.driver.c_str());
+    printDevice(**ctx);
     std::printf("world    %s (%s)\n", setup->scene.name.c_str(), setup->scene.sourcePath.c_str());
     std::printf("path     %s: %u frames at %g fps (%.2f s), %zu keys, %zu events\n",
                 setup->pathFile.string().c_str(), count, setup->fps, setup->fly.duration,

@@ -1,9 +1,8 @@
 #include "capture_job.h"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <cstdio>
+#include <fmt/format.h>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -16,6 +15,7 @@
 #include "job_manifest.h"
 #include "job_submit.h"
 #include "subprocess.h"
+#include "tool_gpu.h"
 
 namespace vox {
 
@@ -130,6 +130,53 @@ int submitCaptureJob(const CaptureOptions& o) {
     return job::submitJob(dir, manifest, captureJobKind(), o.job);
 }
 
+namespace {
+
+// What made a task's frames, for their records.
+struct FrameMaker {
+    std::uint32_t task;
+    std::string settingsHash, device, host;
+};
+
+// A rendered frame's record in the manifest, once its file reads back as rendered: what made it
+// and the checksums that later tell whether its files are intact.
+engine::Status recordFrame(const CapturedFrame& f, const FrameMaker& who, const fs::path& dir,
+                           bool exr) {
+    // The file must hold what was rendered: read back, decoded and compared.
+    const fs::path png = dir / framePng(f.index);
+    auto back = engine::io::readPng(png);
+    if (!back) return back.error();
+    if (back->width != f.images.width || back->height != f.images.height ||
+        back->rgba8 != f.images.rgba8)
+        return engine::makeError("{}: reads back other pixels than were rendered", png.string());
+    engine::Json record;
+    record["frame"] = f.index;
+    record["task"] = who.task;
+    record["settings"] = who.settingsHash;
+    record["engine"] = job::engineVersion();
+    record["device"] = who.device;
+    record["host"] = who.host;
+    auto pngSum = engine::fileChecksum(png);
+    if (!pngSum) return pngSum.error();
+    std::error_code ec;
+    record["png"] = *pngSum;
+    record["png_bytes"] = double(fs::file_size(png, ec));
+    if (exr) {
+        auto exrSum = engine::fileChecksum(dir / frameExr(f.index));
+        if (!exrSum) return exrSum.error();
+        record["exr"] = *exrSum;
+        record["exr_bytes"] = double(fs::file_size(dir / frameExr(f.index), ec));
+    }
+    record["seconds"] = f.row.wallMs / 1000.0;
+    record["csv"] = captureCsvRowJson(f.row);
+    return job::updateManifest(dir, [&](engine::Json& m) -> engine::Status {
+        job::setUnitRecord(m, captureJobKind().units, f.index, record);
+        return {};
+    });
+}
+
+}  // namespace
+
 int runCaptureTask(const CaptureOptions& o) {
     const std::uint32_t index = *o.jobTask;
     const fs::path dir(o.out);
@@ -166,11 +213,7 @@ int runCaptureTask(const CaptureOptions& o) {
     // Another run writing the same frames would mix them: each task claims its slice.
     auto lock = engine::FolderLock::acquire(dir, "vox capture", range.first, count);
     if (!lock) return fail(lock.error());
-    engine::gpu::ContextOptions ctxOptions;
-#ifndef NDEBUG
-    ctxOptions.validation = true;
-#endif
-    auto ctx = engine::gpu::Context::create(ctxOptions);
+    auto ctx = createValidatedGpu();
     if (!ctx) return fail(ctx.error());
     const auto& dev = (*ctx)->info();
     const std::string device = fmt::format("{} ({})", dev.name, dev.driver);
@@ -182,8 +225,7 @@ int runCaptureTask(const CaptureOptions& o) {
                 job::hostName().c_str());
     std::fflush(stdout);
 
-    const std::string settingsHash = manifest->get("settings_hash").string(),
-                      host = job::hostName();
+    const FrameMaker who{index, manifest->get("settings_hash").string(), device, job::hostName()};
     RenderRequest request{from,
                           to,
                           [&](std::uint32_t f) { return todo.count(f) > 0; },
@@ -191,41 +233,9 @@ int runCaptureTask(const CaptureOptions& o) {
                           o.exr,
                           o.exposure,
                           fmt::format("task {}", index)};
-    auto seconds =
-        renderCapture(**ctx, *setup, request, [&](const CapturedFrame& f) -> engine::Status {
-            // The file must hold what was rendered: read back, decoded and compared.
-            const fs::path png = dir / framePng(f.index);
-            auto back = engine::io::readPng(png);
-            if (!back) return back.error();
-            if (back->width != f.images.width || back->height != f.images.height ||
-                back->rgba8 != f.images.rgba8)
-                return engine::makeError("{}: reads back other pixels than were rendered",
-                                         png.string());
-            engine::Json record;
-            record["frame"] = f.index;
-            record["task"] = index;
-            record["settings"] = settingsHash;
-            record["engine"] = job::engineVersion();
-            record["device"] = device;
-            record["host"] = host;
-            auto pngSum = engine::fileChecksum(png);
-            if (!pngSum) return pngSum.error();
-            std::error_code ec;
-            record["png"] = *pngSum;
-            record["png_bytes"] = double(fs::file_size(png, ec));
-            if (o.exr) {
-                auto exrSum = engine::fileChecksum(dir / frameExr(f.index));
-                if (!exrSum) return exrSum.error();
-                record["exr"] = *exrSum;
-                record["exr_bytes"] = double(fs::file_size(dir / frameExr(f.index), ec));
-            }
-            record["seconds"] = f.row.wallMs / 1000.0;
-            record["csv"] = captureCsvRowJson(f.row);
-            return job::updateManifest(dir, [&](engine::Json& m) -> engine::Status {
-                job::setUnitRecord(m, captureJobKind().units, f.index, record);
-                return {};
-            });
-        });
+    auto seconds = renderCapture(
+        **ctx, *setup, request,
+        [&](const CapturedFrame& f) -> engine::Status { return recordFrame(f, who, dir, o.exr); });
     if (!seconds) return fail(seconds.error());
     std::printf(
         "task %u   rendered %zu frame(s) in %.1f s (%u of its %u frames were done already)\n",

@@ -1,9 +1,8 @@
 #include "sweep_job.h"
 
-#include <fmt/format.h>
-
 #include <chrono>
 #include <cstdio>
+#include <fmt/format.h>
 #include <set>
 
 #include "commands.h"
@@ -14,6 +13,7 @@
 #include "job_submit.h"
 #include "scene/scene_file.h"
 #include "subprocess.h"
+#include "tool_gpu.h"
 
 namespace vox {
 
@@ -145,7 +145,7 @@ int runSweepTask(const SweepOptions& o) {
                     range.last);
         return 0;
     }
-    auto ctx = engine::gpu::Context::create({});
+    auto ctx = createBenchGpu();
     if (!ctx) return fail(ctx.error());
     const std::string device = fmt::format("{} ({})", (*ctx)->info().name, (*ctx)->info().driver);
     std::printf("task %u   points %u..%u: measuring %zu (%s) on %s\n", index, range.first,

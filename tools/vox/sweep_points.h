@@ -15,6 +15,7 @@
 #include "core/error.h"
 #include "job_scheduler.h"
 #include "lighting/lighting_settings.h"
+#include "thesis_scenes.h"
 
 namespace engine::gpu {
 class Context;
@@ -23,7 +24,7 @@ class Context;
 namespace vox {
 
 struct SweepOptions {
-    std::vector<std::string> worlds{"cornell", "mountain", "letters", "apartments"};
+    std::vector<std::string> worlds = kThesisScenes;
     std::string methods = "restir,restir-unbiased,ris,uniform";
     std::string candidates = "1,8,32";
     std::string modes = "point,area";

@@ -1,0 +1,108 @@
+// vox bench restir's parts (bench_restir_command.cpp has the story): its options, its rows (the
+// lighting settings compared, restir_bench_rows.cpp), their measurement per scene
+// (restir_bench_measure.cpp) and the JSON, CSV and markdown written from it
+// (restir_bench_report.cpp).
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/error.h"
+#include "lighting/lighting_settings.h"
+#include "metrics/interleaved_rounds.h"
+#include "render/renderer.h"
+#include "thesis_scenes.h"
+#include "world/scene.h"
+
+namespace engine::gpu {
+class Context;
+}
+
+namespace vox {
+
+struct RestirBenchOptions {
+    std::vector<std::string> worlds = kThesisScenes;
+    std::string size = "96x64";
+    std::uint32_t frames = 12;
+    std::uint32_t referenceSpp = 512;
+    std::uint32_t seeds = 5;
+    std::string rows = "restir,restir-unbiased,ris,uniform";
+    std::string sampling;  // empty: the sampling knob's default
+    std::vector<std::string> variants;
+    std::string versus;          // empty: every ReSTIR row at defaults (one per --sampling value)
+    double confidence = 0.9;     // of the verdicts' intervals; 5 seeds' min-max covers 93.75 %
+    std::string clock = "auto";  // gpu: fastest frame's GPU timestamps; cpu: the process's CPU
+                                 // time; auto: cpu on a CPU device
+    bool quick = false;
+    std::string output =
+        "out/bench_restir.json";  // and the summary CSV beside it (.csv), for vox bench recommend
+    std::string markdown;
+};
+
+// Which knob a row scales to ReSTIR's frame time.
+enum class EqualTime { None, ShadowRays, Candidates };
+
+struct Row {
+    std::string name;
+    engine::lighting::LightingSettings lighting;
+    EqualTime scale = EqualTime::None;
+    std::string sampling;  // the sampling knob's value, for the recommendation
+};
+
+struct RowResult {
+    std::vector<double> ms, mse, mae, meanRatio;  // one per seed
+    std::uint32_t scaledTo = 0;                   // shadow rays or candidates (scaled rows)
+    std::vector<double> roundMs;  // the interleaved timing's rounds, at the fitted settings
+};
+
+// The interleaved timing of all rows at their fitted settings: enough rounds that a time ratio's
+// interval covers 97 %, so that with 5 seeds' min-max of error ratios (93.75 %) the product still
+// covers 90 %.
+constexpr engine::metrics::RoundsPlan kCostRounds{1, 10, 16, 0.97, 0.03};
+
+// The rows: the default rows (per --sampling value for those that resample), then the variants.
+engine::Result<std::vector<Row>> rowsOf(const RestirBenchOptions& o);
+// The rows the others are divided by: --versus, else the ReSTIR rows at defaults.
+engine::Result<std::vector<std::size_t>> versusOf(const RestirBenchOptions& o,
+                                                  const std::vector<Row>& rows);
+// The method, the knob scaled to equal time (`also`, may be empty) and the knobs that differ from
+// the defaults, as options: what a row is, in the JSON and the CSV.
+std::string settingsText(const engine::lighting::LightingSettings& l, std::string_view also = {});
+// The method as the --method knob names it (restir-unbiased apart).
+std::string methodName(const engine::lighting::LightingSettings& l);
+// The sampling knob's value.
+std::string samplingText(const engine::lighting::LightingSettings& l);
+// `l` with the sampling knob at its default.
+engine::lighting::LightingSettings withDefaultSampling(engine::lighting::LightingSettings l);
+
+// What every scene's measurement shares.
+struct RestirSetup {
+    const RestirBenchOptions& options;
+    const std::vector<Row>& rows;
+    const std::vector<std::size_t>& versus;
+    engine::gpu::Context& gpu;
+    engine::render::FrameSettings frame;
+    bool cpuClock;                   // a frame's time: CPU time, else the fastest GPU frame's
+    std::filesystem::path cacheDir;  // the references, cached on disk
+};
+
+struct SceneResults {
+    std::vector<RowResult> rows;
+    std::uint32_t emitters = 0;
+    double targetMs = 0.0;  // the yardstick's median time: the equal time
+};
+
+// Progress over all scenes, rows and seeds, for the lines on stderr.
+struct RestirProgress {
+    std::size_t done = 0, total = 0;
+};
+
+// One scene: the scaled rows fitted to the yardstick's time, every row timed in interleaved
+// rounds, then every row per seed.
+engine::Result<SceneResults> measureScene(const RestirSetup& setup, engine::world::Scene& scene,
+                                          RestirProgress& progress);
+
+}  // namespace vox
