@@ -10,7 +10,6 @@ namespace game {
 
 void InputState::beginFrame() {
     mPressed.fill(false);
-    mReleased.fill(false);
     mButtonPressed.fill(false);
     mButtonReleased.fill(false);
     mMouseDelta = glm::vec2(0.0f);
@@ -19,23 +18,11 @@ void InputState::beginFrame() {
     mClose = false;
 }
 
-void InputState::releaseAll() {
-    for (int k = 0; k < kMaxKeys; ++k) {
-        if (mKeys[k]) mReleased[k] = true;
-    }
-    for (int b = 0; b < kMaxButtons; ++b) {
-        if (mButtons[b]) mButtonReleased[b] = true;
-    }
-    mKeys.fill(false);
-    mButtons.fill(false);
-}
-
 void InputState::apply(const InputEvent& e) {
     switch (e.type) {
         case InputEventType::Key:
             if (!valid(e.code)) return;
             if (e.down && !mKeys[e.code]) mPressed[e.code] = true;
-            if (!e.down && mKeys[e.code]) mReleased[e.code] = true;
             mKeys[e.code] = e.down;
             break;
         case InputEventType::MouseButton:

@@ -41,7 +41,6 @@ public:
     // Processes pending window-system events and returns them in order.
     std::vector<InputEvent> pollEvents();
     void setCursorCaptured(bool captured);
-    bool cursorCaptured() const { return mCaptured; }
     void setTitle(const std::string& title);
     void resize(glm::uvec2 size);
 

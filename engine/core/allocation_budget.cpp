@@ -83,10 +83,6 @@ AllocationBudget::~AllocationBudget() {
 bool AllocationBudget::exceeded() const { return gRefused.load() != 0; }
 std::uint64_t AllocationBudget::refusedBytes() const { return gRefused.load(); }
 bool AllocationBudget::refusedAsSingleRequest() const { return gRefused.load() != 0 && gRefusedAsSingle.load(); }
-std::uint64_t AllocationBudget::usedBytes() const {
-    std::int64_t u = gUsed.load();
-    return u > 0 ? std::uint64_t(u) : 0;
-}
 std::uint64_t AllocationBudget::peakBytes() const {
     std::int64_t p = gPeak.load();
     return p > 0 ? std::uint64_t(p) : 0;

@@ -30,7 +30,6 @@ public:
     // a larger budget would not lift.
     bool refusedAsSingleRequest() const;
     std::uint64_t singleBytes() const { return mSingle; }  // the per-allocation ceiling
-    std::uint64_t usedBytes() const;     // net bytes allocated since the budget began
     std::uint64_t peakBytes() const;
     std::uint64_t totalBytes() const { return mTotal; }
 

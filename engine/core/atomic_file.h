@@ -33,7 +33,6 @@ public:
     // Creates the temporary for `target`; refuses a target that is a folder or whose folder
     // does not exist.
     Status open(const std::filesystem::path& target);
-    bool isOpen() const { return mFd >= 0; }
 
     // Checked writes; the first failure sticks (later writes do nothing) and commit() reports it.
     Status write(const void* data, std::size_t bytes);

@@ -364,7 +364,6 @@ VKAPI_ATTR VkBool32 VKAPI_CALL Context::onValidationMessage(VkDebugUtilsMessageS
         ++self->mValidationErrors;
         std::fprintf(stderr, "[vulkan validation error] %s\n", data->pMessage);
     } else {
-        ++self->mValidationWarnings;
         std::fprintf(stderr, "[vulkan validation warning] %s\n", data->pMessage);
     }
     return VK_FALSE;

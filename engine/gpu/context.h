@@ -1,6 +1,6 @@
 // gpu::Context: the Vulkan instance, the chosen physical device (a real GPU if there is one,
-// else lavapipe), the logical device with one compute queue, and the validation-message
-// counters tests assert on. Only engine/gpu/ includes vulkan.h; the rest of the engine holds
+// else lavapipe), the logical device with one compute queue, and the count of validation
+// errors tests assert on. Only engine/gpu/ includes vulkan.h; the rest of the engine holds
 // gpu:: objects.
 //
 // Headless by default. Given a window (ContextOptions::window) the context also owns the
@@ -69,9 +69,8 @@ public:
     // The window's surface; VK_NULL_HANDLE for a headless context.
     VkSurfaceKHR surface() const { return mSurface; }
 
-    // Validation messages seen so far (errors are also printed to stderr).
+    // Validation errors seen so far (every message, warning or error, is printed to stderr).
     std::uint32_t validationErrors() const { return mValidationErrors.load(); }
-    std::uint32_t validationWarnings() const { return mValidationWarnings.load(); }
 
     // Checks of texel views use min(the device's limit, texels) from now on; 0 restores the
     // device's limit. For tests of what a world over the limit does.
@@ -113,7 +112,6 @@ private:
     bool mDebugUtils = false;
     std::uint64_t mCompletedSubmissions = 0;
     std::atomic<std::uint32_t> mValidationErrors{0};
-    std::atomic<std::uint32_t> mValidationWarnings{0};
 };
 
 }  // namespace engine::gpu

@@ -53,7 +53,6 @@ public:
     // Called by the renderer after the submission completed: presents, and finishes a capture.
     void endFrame();
 
-    glm::uvec2 windowExtent() const;
     // The last capture (after the frame that asked for it); empty before that.
     const WindowCapture& capture() const { return mCapture; }
 

@@ -573,11 +573,4 @@ Result<LightingSettings> mergeLighting(std::span<const std::vector<KnobValue>> l
     return mergeLighting(s, {});
 }
 
-std::vector<KnobValue> knobValues(const KnobGroup& group, const LightingSettings& s,
-                                  std::string_view where) {
-    std::vector<KnobValue> out;
-    for (const Knob& k : group.knobs) out.push_back({&k, knobText(k, s), std::string(where)});
-    return out;
-}
-
 }  // namespace engine::lighting

@@ -44,7 +44,4 @@ Result<LightingSettings> mergeLighting(std::span<const std::vector<KnobValue>> l
 // The same onto settings already merged (the HUD's edits).
 Result<LightingSettings> mergeLighting(LightingSettings base, std::span<const KnobValue> values);
 
-// Every knob of `group` at its value in `s` (a scene's [indirect] settings as values to merge).
-std::vector<KnobValue> knobValues(const KnobGroup& group, const LightingSettings& s, std::string_view where);
-
 }  // namespace engine::lighting

@@ -58,7 +58,6 @@ public:
     const gpu::Buffer& pageTable() const { return mPageTable; }
     const gpu::Buffer& palette() const { return mPalette; }
     const gpu::Buffer& dynamicGridTexels() const { return mDynamic.buffer(); }
-    const GpuDynamicGrid& dynamicGrid() const { return mDynamic; }
     GpuWorldMemory memory() const;
 
 private:

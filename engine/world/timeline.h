@@ -65,7 +65,6 @@ public:
 
 
     const std::vector<TimelineEvent>& events() const { return mEvents; }
-    std::size_t applied() const { return mNext; }
 
 private:
     void apply(const TimelineEvent& e, Scene& scene);
