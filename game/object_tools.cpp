@@ -10,6 +10,7 @@
 #include "game/input.h"
 #include "game/world_store.h"
 #include "world/scene_trace.h"
+#include "world/solid_voxels.h"
 #include "world/world_limits.h"
 
 namespace game {
@@ -35,22 +36,10 @@ engine::Result<ObjectModel> loadObjectModel(const fs::path& path) {
     if (solid > kMaxModelVoxels)
         return engine::makeError("{}: {} solid voxels; a model holds at most {}", path.string(), solid, kMaxModelVoxels);
 
-    // The solid voxels' box, visiting only cells that hold something.
+    // The solid voxels and their box.
     std::vector<std::pair<glm::ivec3, world::MaterialId>> voxels;
     voxels.reserve(solid);
-    const glm::ivec3 cells = grid.sizeInCells();
-    for (int cz = 0; cz < cells.z; ++cz)
-        for (int cy = 0; cy < cells.y; ++cy)
-            for (int cx = 0; cx < cells.x; ++cx) {
-                const glm::ivec3 c(cx, cy, cz);
-                if (grid.cell(c) == shared::CELL_EMPTY) continue;
-                for (int z = 0; z < world::kBrickDim; ++z)
-                    for (int y = 0; y < world::kBrickDim; ++y)
-                        for (int x = 0; x < world::kBrickDim; ++x) {
-                            const glm::ivec3 p = c * world::kBrickDim + glm::ivec3(x, y, z);
-                            if (world::MaterialId m = grid.get(p); m != world::kEmpty) voxels.emplace_back(p, m);
-                        }
-            }
+    world::forEachSolidVoxel(grid, [&](glm::ivec3 p, world::MaterialId m) { voxels.emplace_back(p, m); });
     glm::ivec3 lo(INT32_MAX), hi(INT32_MIN);
     for (const auto& [p, m] : voxels) {
         lo = glm::min(lo, p);

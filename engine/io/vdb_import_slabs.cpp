@@ -67,7 +67,7 @@ Status fillSlabs(ImportState& im, world::BrickGrid& grid, const std::vector<std:
                     else voxels.fill(world::kEmpty);
                     bool any = false;
                     for (int i = 0; i < world::kBrickVoxels; ++i) {
-                        const glm::ivec3 t = c * 8 + glm::ivec3(i & 7, (i >> 3) & 7, i >> 6);
+                        const glm::ivec3 t = c * 8 + world::brickVoxelPosition(i);
                         if (!worldBox.contains(t)) continue;
                         Sample s;
                         if (!solidAt(im, t, s)) continue;

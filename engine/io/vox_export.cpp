@@ -16,6 +16,7 @@
 #include "io/colour_quantizer.h"
 #include "io/vox_import.h"
 #include "io/vox_reader.h"
+#include "world/solid_voxels.h"
 
 namespace engine::io {
 
@@ -24,22 +25,6 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr int kVoxPaletteColours = 255;
-
-// Every solid voxel of the grid, cell by cell.
-template <typename F>
-void forEachSolid(const world::BrickGrid& grid, F&& f) {
-    const glm::ivec3 cells = grid.sizeInCells();
-    for (int cz = 0; cz < cells.z; ++cz)
-        for (int cy = 0; cy < cells.y; ++cy)
-            for (int cx = 0; cx < cells.x; ++cx) {
-                const glm::ivec3 c(cx, cy, cz);
-                if (grid.cell(c) == shared::CELL_EMPTY) continue;
-                const world::BrickVoxels v = grid.readCell(c);
-                for (int i = 0; i < world::kBrickVoxels; ++i)
-                    if (v[std::size_t(i)] != world::kEmpty)
-                        f(c * world::kBrickDim + glm::ivec3(i & 7, (i >> 3) & 7, i >> 6), v[std::size_t(i)]);
-            }
-}
 
 // The palette: index (1..255) per material id, colours and emission per index.
 struct VoxPalette {
@@ -156,7 +141,7 @@ Status exportVox(const world::Scene& scene, const fs::path& path, VoxExportRepor
     const world::BrickGrid& grid = scene.grid;
     std::vector<std::uint64_t> counts(scene.palette.size(), 0);
     world::Box content{glm::ivec3(INT32_MAX), glm::ivec3(INT32_MIN)};
-    forEachSolid(grid, [&](glm::ivec3 p, world::MaterialId m) {
+    world::forEachSolidVoxel(grid, [&](glm::ivec3 p, world::MaterialId m) {
         counts[m]++;
         content.min = glm::min(content.min, p);
         content.max = glm::max(content.max, p + 1);
@@ -180,7 +165,7 @@ Status exportVox(const world::Scene& scene, const fs::path& path, VoxExportRepor
         return m;
     };
     if (r.solidVoxels == 0) modelAt(glm::ivec3(0));  // MagicaVoxel wants at least one model
-    forEachSolid(grid, [&](glm::ivec3 p, world::MaterialId id) {
+    world::forEachSolidVoxel(grid, [&](glm::ivec3 p, world::MaterialId id) {
         const glm::ivec3 q = p - content.min;
         const glm::ivec3 mv(q.x, extent.z - 1 - q.z, q.y);
         Model& m = modelAt(mv);

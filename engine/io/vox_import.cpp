@@ -193,7 +193,7 @@ Status build(Placed& p, world::Scene& scene, bool intoExisting, const VoxImportO
                     world::BrickVoxels voxels = grid.readCell(c);
                     bool changed = false;
                     for (int i = 0; i < world::kBrickVoxels; ++i) {
-                        const glm::ivec3 q = c * world::kBrickDim + glm::ivec3(i & 7, (i >> 3) & 7, i >> 6);
+                        const glm::ivec3 q = c * world::kBrickDim + world::brickVoxelPosition(i);
                         if (!box.contains(q)) continue;
                         if (world::MaterialId m = dense[at(q - box.min)]) voxels[std::size_t(i)] = m, changed = true;
                     }

@@ -7,6 +7,7 @@
 
 #include "core/check.h"
 #include "lighting/alias_table.h"
+#include "world/solid_voxels.h"
 
 namespace engine::lighting {
 
@@ -92,7 +93,7 @@ void EmitterList::scanCell(const world::Scene& scene, glm::ivec3 cell, std::vect
     for (int i = 0; i < world::kBrickVoxels; ++i) {
         const MaterialId m = voxels[i];
         if (m == world::kEmpty || !scene.palette[m].emissive()) continue;
-        glm::ivec3 p = lo + glm::ivec3(i & 7, (i >> 3) & 7, i >> 6);
+        glm::ivec3 p = lo + world::brickVoxelPosition(i);
         if (std::uint32_t mask = voxelExposure(grid, p)) out.push_back({p, 1, mask, m});
     }
 }
@@ -104,14 +105,8 @@ EmitterUpdateStats EmitterList::rebuild(const world::Scene& scene) {
     for (std::uint32_t slot : std::vector<std::uint32_t>(mAlive)) freeSlot(slot);
     mCellSlots.clear();
     mTotalPower = 0.0;
-    const glm::ivec3 cells = scene.grid.sizeInCells();
-    for (int z = 0; z < cells.z; ++z)
-        for (int y = 0; y < cells.y; ++y)
-            for (int x = 0; x < cells.x; ++x) {
-                glm::ivec3 c{x, y, z};
-                if (scene.grid.cell(c) == shared::CELL_EMPTY) continue;
-                rescanCell(scene, scene.grid.cellIndex(c), c, stats);
-            }
+    world::forEachOccupiedCell(scene.grid,
+                               [&](glm::ivec3 c) { rescanCell(scene, scene.grid.cellIndex(c), c, stats); });
     mBuiltSettings = mSettings;
     mBuiltSize = scene.grid.sizeInCells();
     mBuiltPaletteHash = paletteHash(scene.palette);

@@ -70,7 +70,7 @@ std::vector<glm::ivec3> changedVoxels(const BrickGrid& a, const BrickGrid& b) {
                 if (!BrickGrid::cellIsBrick(a.cell(c)) && a.cell(c) == b.cell(c)) continue;
                 BrickVoxels va = a.readCell(c), vb = b.readCell(c);
                 for (int i = 0; i < kBrickVoxels; ++i) {
-                    if (va[i] != vb[i]) out.push_back(c * kBrickDim + glm::ivec3(i & 7, (i >> 3) & 7, i >> 6));
+                    if (va[i] != vb[i]) out.push_back(c * kBrickDim + brickVoxelPosition(i));
                 }
             }
     return out;
