@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <span>
 #include <unordered_map>
 #include <vector>
@@ -116,6 +117,23 @@ private:
         std::uint64_t lastUpdateFrame = 0;
         double lastUpdate = 0.0;           // scene time
     };
+    struct Candidate;
+
+    // beginFrame's steps, in order.
+    void fadeDynamicEntries(double time, float fadeSeconds, bool objectsMoved, CacheFrameLists& lists);
+    std::vector<std::uint32_t> markSeen(std::span<const CacheKey> visible, std::uint64_t frame,
+                                        std::vector<CacheKey>& fresh);
+    std::vector<Candidate> rankCandidates(std::span<const std::uint32_t> seen, std::span<const CacheKey> fresh,
+                                          std::uint32_t firstFresh, std::uint64_t frame, const CacheWork& work) const;
+    std::optional<Candidate> candidateFor(std::uint32_t slot, std::uint64_t frame, const CacheWork& work) const;
+    static std::vector<bool> chooseWithinBudget(std::span<const Candidate> candidates, std::uint64_t rayBudget,
+                                                std::uint64_t& spent);
+    std::vector<std::uint32_t> slotsForChosen(std::span<const Candidate> candidates, const std::vector<bool>& chosen,
+                                              std::span<const CacheKey> fresh, std::uint32_t firstFresh,
+                                              std::uint64_t frame, double time, CacheFrameLists& lists);
+    void startUpdates(std::vector<std::uint32_t>& selected, std::uint64_t frame, double time, const CacheWork& work,
+                      CacheFrameLists& lists);
+
     std::uint32_t allocate(const CacheKey& key, std::uint64_t frame, double time, CacheFrameLists& lists);
     std::uint32_t makeRoom(std::size_t wanted, std::uint64_t frame, CacheFrameLists& lists);
     void release(std::uint32_t slot);
