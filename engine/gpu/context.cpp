@@ -111,6 +111,30 @@ int deviceScore(VkPhysicalDeviceType type) {
     }
 }
 
+constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
+
+// Why the engine cannot run on a device (what it lacks), or nothing when it can. With a window
+// the device must also present to its surface.
+std::optional<std::string> unusableBecause(VkPhysicalDevice d, const VkPhysicalDeviceProperties& props,
+                                           VkSurfaceKHR surface) {
+    VkPhysicalDeviceVulkan12Features f12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+    VkPhysicalDeviceFeatures2 f2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+    f2.pNext = &f12;
+    vkGetPhysicalDeviceFeatures2(d, &f2);
+    // ReSTIR's candidates are shared across a subgroup by shuffles (restir/initial_candidates.comp).
+    VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
+    VkPhysicalDeviceProperties2 props2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
+    props2.pNext = &subgroup;
+    vkGetPhysicalDeviceProperties2(d, &props2);
+    const bool shuffles = (subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) != 0 &&
+                          (subgroup.supportedOperations & VK_SUBGROUP_FEATURE_SHUFFLE_BIT) != 0;
+    const bool usable = props.apiVersion >= VK_API_VERSION_1_2 && f12.bufferDeviceAddress && f2.features.shaderInt64 && shuffles;
+    if (!usable) return "needs Vulkan 1.2, bufferDeviceAddress, shaderInt64, subgroup shuffles in compute";
+    if (surface && (!hasDeviceExtension(d, VK_KHR_SWAPCHAIN_EXTENSION_NAME) || !pickQueueFamily(d, surface)))
+        return "cannot present to the window";
+    return std::nullopt;
+}
+
 }  // namespace
 
 Result<std::unique_ptr<Context>> Context::create(const ContextOptions& options) {
@@ -121,8 +145,23 @@ Result<std::unique_ptr<Context>> Context::create(const ContextOptions& options) 
 }
 
 Status Context::init(const ContextOptions& options) {
+    if (Status s = createInstance(options); !s) return s;
+    if (options.window) {
+        auto surface = createWindowSurface(mInstance, options.window);
+        if (!surface) return surface.error();
+        mSurface = *surface;
+    }
+    if (Status s = pickPhysicalDevice(); !s) return s;
+    readDeviceInfo();
+    if (Status s = createDevice(); !s) return s;
+    log::info("Vulkan device: {} ({}, {}){}", mInfo.name, mInfo.type, mInfo.driver, mSurface ? ", presenting to a window" : "");
+    return {};
+}
+
+// The instance with what was asked for: validation (when the layer is there), debug utils
+// (when the loader has them) and the window system's surface extensions.
+Status Context::createInstance(const ContextOptions& options) {
     mValidation = envFlag("VOX_VALIDATION", options.validation);
-    const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
     if (mValidation && !hasLayer(kValidationLayer)) {
         if (options.requireValidation)
             return makeError("Vulkan validation layer {} is not installed (apt-get install vulkan-validationlayers)",
@@ -152,15 +191,7 @@ Status Context::init(const ContextOptions& options) {
         }
     }
 
-    VkDebugUtilsMessengerCreateInfoEXT messengerInfo{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
-    messengerInfo.messageSeverity =
-        VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-    messengerInfo.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
-                                VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
-                                VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
-    messengerInfo.pfnUserCallback = &Context::onValidationMessage;
-    messengerInfo.pUserData = this;
-
+    const VkDebugUtilsMessengerCreateInfoEXT messengerInfo = messengerCreateInfo();
     // Synchronization validation catches missing barriers between passes. VOX_SYNC_VALIDATION=0
     // leaves it out (the rest of the layer stays on): its access history grows over thousands of
     // frames, which a memory soak test must not count as the engine's.
@@ -188,42 +219,36 @@ Status Context::init(const ContextOptions& options) {
             vkGetInstanceProcAddr(mInstance, "vkCreateDebugUtilsMessengerEXT"));
         if (create) VK_CHECK(create(mInstance, &messengerInfo, nullptr, &mMessenger));
     }
+    return {};
+}
 
-    if (options.window) {
-        auto surface = createWindowSurface(mInstance, options.window);
-        if (!surface) return surface.error();
-        mSurface = *surface;
-    }
+// Validation warnings and errors of every type reach onValidationMessage, both while the
+// instance is created (chained to its create info) and after (the messenger).
+VkDebugUtilsMessengerCreateInfoEXT Context::messengerCreateInfo() {
+    VkDebugUtilsMessengerCreateInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+    info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+    info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                       VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+    info.pfnUserCallback = &Context::onValidationMessage;
+    info.pUserData = this;
+    return info;
+}
 
+// The best-scoring usable device (VOX_DEVICE: a substring its name must contain); the error
+// names every device turned down and why.
+Status Context::pickPhysicalDevice() {
     std::uint32_t count = 0;
     vkEnumeratePhysicalDevices(mInstance, &count, nullptr);
     std::vector<VkPhysicalDevice> devices(count);
     vkEnumeratePhysicalDevices(mInstance, &count, devices.data());
-    const char* wanted = std::getenv("VOX_DEVICE");  // substring of the device name
+    const char* wanted = std::getenv("VOX_DEVICE");
     int bestScore = -1;
     std::string rejected;
     for (VkPhysicalDevice d : devices) {
         VkPhysicalDeviceProperties props;
         vkGetPhysicalDeviceProperties(d, &props);
-        VkPhysicalDeviceVulkan12Features f12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
-        VkPhysicalDeviceFeatures2 f2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
-        f2.pNext = &f12;
-        vkGetPhysicalDeviceFeatures2(d, &f2);
-        // ReSTIR's candidates are shared across a subgroup by shuffles (restir/initial_candidates.comp).
-        VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
-        VkPhysicalDeviceProperties2 props2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
-        props2.pNext = &subgroup;
-        vkGetPhysicalDeviceProperties2(d, &props2);
-        const bool shuffles = (subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) != 0 &&
-                              (subgroup.supportedOperations & VK_SUBGROUP_FEATURE_SHUFFLE_BIT) != 0;
-        bool usable = props.apiVersion >= VK_API_VERSION_1_2 && f12.bufferDeviceAddress && f2.features.shaderInt64 && shuffles;
-        if (!usable) {
-            rejected += std::string(" ") + props.deviceName +
-                        " (needs Vulkan 1.2, bufferDeviceAddress, shaderInt64, subgroup shuffles in compute);";
-            continue;
-        }
-        if (mSurface && (!hasDeviceExtension(d, VK_KHR_SWAPCHAIN_EXTENSION_NAME) || !pickQueueFamily(d, mSurface))) {
-            rejected += std::string(" ") + props.deviceName + " (cannot present to the window);";
+        if (std::optional<std::string> why = unusableBecause(d, props, mSurface)) {
+            rejected += std::string(" ") + props.deviceName + " (" + *why + ");";
             continue;
         }
         if (wanted && !std::strstr(props.deviceName, wanted)) continue;
@@ -237,7 +262,12 @@ Status Context::init(const ContextOptions& options) {
         return makeError("no usable Vulkan device{}{}{}", wanted ? " matching VOX_DEVICE=" : "", wanted ? wanted : "",
                          rejected.empty() ? " (install mesa-vulkan-drivers for lavapipe)" : ":" + rejected);
     }
+    return {};
+}
 
+// The chosen device's name, driver and limits (VOX_MAX_TEXELS lowers the texel limit) and its
+// memory types.
+void Context::readDeviceInfo() {
     VkPhysicalDeviceProperties props;
     vkGetPhysicalDeviceProperties(mPhysicalDevice, &props);
     VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
@@ -253,7 +283,11 @@ Status Context::init(const ContextOptions& options) {
     mInfo.maxTexelBufferElements = mDeviceMaxTexelBufferElements;
     if (const char* v = std::getenv("VOX_MAX_TEXELS"); v && *v) limitTexelBuffers(std::strtoull(v, nullptr, 10));
     vkGetPhysicalDeviceMemoryProperties(mPhysicalDevice, &mMemoryProperties);
+}
 
+// The logical device with one queue (compute, timestamps, and presenting when there is a
+// window), the features the engine uses, a command pool and a fence.
+Status Context::createDevice() {
     std::optional<std::uint32_t> family = pickQueueFamily(mPhysicalDevice, mSurface);
     if (!family) return makeError("{}: no compute queue with timestamps", mInfo.name);
     mQueueFamily = *family;
@@ -280,7 +314,7 @@ Status Context::init(const ContextOptions& options) {
         deviceInfo.enabledExtensionCount = 1;
         deviceInfo.ppEnabledExtensionNames = &swapchainExtension;
     }
-    r = vkCreateDevice(mPhysicalDevice, &deviceInfo, nullptr, &mDevice);
+    VkResult r = vkCreateDevice(mPhysicalDevice, &deviceInfo, nullptr, &mDevice);
     if (r != VK_SUCCESS) return makeError("{}: cannot create the Vulkan device ({})", mInfo.name, resultName(r));
     vkGetDeviceQueue(mDevice, mQueueFamily, 0, &mQueue);
 
@@ -290,7 +324,6 @@ Status Context::init(const ContextOptions& options) {
     VK_CHECK(vkCreateCommandPool(mDevice, &poolInfo, nullptr, &mCommandPool));
     VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
     VK_CHECK(vkCreateFence(mDevice, &fenceInfo, nullptr, &mFence));
-    log::info("Vulkan device: {} ({}, {}){}", mInfo.name, mInfo.type, mInfo.driver, mSurface ? ", presenting to a window" : "");
     return {};
 }
 

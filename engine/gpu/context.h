@@ -91,6 +91,12 @@ public:
 private:
     Context() = default;
     Status init(const ContextOptions& options);
+    // init's steps, in order (the window's surface is made between the instance and the device).
+    Status createInstance(const ContextOptions& options);
+    VkDebugUtilsMessengerCreateInfoEXT messengerCreateInfo();
+    Status pickPhysicalDevice();
+    void readDeviceInfo();
+    Status createDevice();
     static VKAPI_ATTR VkBool32 VKAPI_CALL onValidationMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                                               VkDebugUtilsMessageTypeFlagsEXT types,
                                                               const VkDebugUtilsMessengerCallbackDataEXT* data,
