@@ -63,8 +63,24 @@ public:
 
 private:
     engine::Status init();
+    // What renderFrame() did: `presented` false when the window is minimised.
+    struct RenderedFrame {
+        engine::render::FrameResult result;
+        bool presented = false;
+        double renderCallMs = 0.0;
+        glm::uvec2 size{0};
+    };
+
     void frame();
+    float advanceClock(std::chrono::steady_clock::time_point start);
+    void pollInput();
+    void applyHudActions(const HudActions& actions);
+    void requestScriptCaptures();
+    RenderedFrame renderFrame(glm::uvec2 framebuffer);
+    void adjustRenderScale(const engine::render::FrameResult& result, glm::uvec2 framebuffer);
     void handleInput(float dt);
+    void handleEditClicks();
+    void handleToolKeys(bool hudMouse, bool clickCaptured);
     void handleQuitPrompt();
     void applyEdit(const EditOp& op);
     void handleObjects(bool clicks);
@@ -289,28 +305,9 @@ int Sandbox::run() {
 }
 
 void Sandbox::frame() {
-    auto start = std::chrono::steady_clock::now();
-    float dt;
-    if (mScript) {
-        dt = kScriptStep;
-    } else {
-        dt = std::min(0.1f, std::chrono::duration<float>(start - mLastFrameStart).count());
-    }
-    mCpuFrameMs = std::chrono::duration<double, std::milli>(start - mLastFrameStart).count();
-    mLastFrameStart = start;
-    mTime += dt;
-
-    // Input: a script replaces live input entirely, except the close button.
-    std::vector<InputEvent> live = mWindow->pollEvents();
-    mInput.beginFrame();
-    if (mScript) {
-        for (const InputEvent& e : live) {
-            if (e.type == InputEventType::Close) mInput.apply(e);
-        }
-        for (const InputEvent& e : mScript->eventsFor(mFrame)) mInput.apply(e);
-    } else {
-        for (const InputEvent& e : live) mInput.apply(e);
-    }
+    const auto start = std::chrono::steady_clock::now();
+    const float dt = advanceClock(start);
+    pollInput();
 
     glm::uvec2 framebuffer = mWindow->framebufferSize();
     glm::uvec2 windowSize = mWindow->windowSize();
@@ -327,6 +324,55 @@ void Sandbox::frame() {
     if (mRenderScale != scaleBefore) mAutoScale = false;  // moved by hand: the hand wins
     mRenderScale = std::clamp(mRenderScale, kMinRenderScale, 1.0f);
     ImGui::Render();
+    applyHudActions(actions);
+    requestScriptCaptures();
+
+    const RenderedFrame rendered = renderFrame(framebuffer);
+    afterFrame(rendered.result, rendered.presented);
+    if (mFrameLog && rendered.presented) {
+        const double wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        *mFrameLog << fmt::format("{},{:.3f},{:.3f},{:.3f},{:.3f},{},{}\n", mFrame, wallMs, rendered.renderCallMs,
+                                 rendered.result.totalMs(), rendered.result.passMsOf("present"), rendered.size.x,
+                                 rendered.size.y);
+    }
+    if (mWalkLog) *mWalkLog << mWalk.logRow(mFrame, mTime) << "\n";
+    ++mFrame;
+    if (mOptions.maxFrames && mFrame >= mOptions.maxFrames) {
+        if (!mQuit) message(fmt::format("stopping after {} frames (--frames)", mOptions.maxFrames));
+        mQuit = true;
+    }
+}
+
+// This frame's time step: the script's fixed step, or the wall clock's (at most 0.1 s).
+float Sandbox::advanceClock(std::chrono::steady_clock::time_point start) {
+    float dt;
+    if (mScript) {
+        dt = kScriptStep;
+    } else {
+        dt = std::min(0.1f, std::chrono::duration<float>(start - mLastFrameStart).count());
+    }
+    mCpuFrameMs = std::chrono::duration<double, std::milli>(start - mLastFrameStart).count();
+    mLastFrameStart = start;
+    mTime += dt;
+    return dt;
+}
+
+// Input: a script replaces live input entirely, except the close button.
+void Sandbox::pollInput() {
+    std::vector<InputEvent> live = mWindow->pollEvents();
+    mInput.beginFrame();
+    if (mScript) {
+        for (const InputEvent& e : live) {
+            if (e.type == InputEventType::Close) mInput.apply(e);
+        }
+        for (const InputEvent& e : mScript->eventsFor(mFrame)) mInput.apply(e);
+    } else {
+        for (const InputEvent& e : live) mInput.apply(e);
+    }
+}
+
+// The HUD's buttons: undo, redo, save, and the quit prompt's answers.
+void Sandbox::applyHudActions(const HudActions& actions) {
     if (actions.undo) undo();
     if (actions.redo) redo();
     if (actions.save) {
@@ -346,65 +392,56 @@ void Sandbox::frame() {
             mQuit = true;
         }
     }
+}
 
-    // Script captures of the presented window must be requested before the frame is drawn.
-    if (mScript) {
-        for (const ScriptAction& a : mScript->actionsFor(mFrame)) {
-            if (a.kind == ScriptAction::Kind::Capture) {
-                mCaptureRequested = true;
-                mPendingCapturePath = a.path;
-            }
+// Script captures of the presented window must be requested before the frame is drawn.
+void Sandbox::requestScriptCaptures() {
+    if (!mScript) return;
+    for (const ScriptAction& a : mScript->actionsFor(mFrame)) {
+        if (a.kind == ScriptAction::Kind::Capture) {
+            mCaptureRequested = true;
+            mPendingCapturePath = a.path;
         }
     }
+}
 
-    engine::render::FrameResult result;
-    bool presented = false;
-    double renderCallMs = 0.0;
-    glm::uvec2 renderedSize{0};
-    if (mPresenter->beginFrame(framebuffer)) {
-        engine::render::FrameSettings settings;
-        glm::uvec2 size = renderSize(framebuffer);
-        settings.width = size.x;
-        settings.height = size.y;
-        settings.exposure = mExposure;
-        settings.timeSeconds = mTime;  // dynamic objects: the script clock when scripted, else wall clock
-        mPresenter->setOverlay(ImGui::GetDrawData());
-        if (mCaptureRequested) mPresenter->captureThisFrame();
-        const auto renderStart = std::chrono::steady_clock::now();
-        result = mRenderer->render(mScene, mCamera.preset(), settings, mLighting, mPresenter.get());
-        renderCallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - renderStart).count();
-        renderedSize = size;
-        mLastFrame = result;
-        presented = true;
-        if (mAutoScale) {
-            // The passes that scale with the render resolution; presenting fills the window
-            // whatever the scale.
-            double ms = result.totalMs() - result.passMsOf("present");
-            float next = mScaleController.update(mRenderScale, ms);
-            if (next != mRenderScale) {
-                glm::uvec2 from = renderSize(framebuffer);
-                mRenderScale = next;
-                glm::uvec2 to = renderSize(framebuffer);
-                message(fmt::format("render {}x{} -> {}x{}: frame passes took {:.0f} ms (median), aiming at {:.0f} ms "
-                                    "(auto scale)",
-                                    from.x, from.y, to.x, to.y, mScaleController.lastMedianMs(), mScaleController.targetMs()));
-            }
-        }
-    } else {
+// Renders and presents the frame, unless the window is minimised (then it waits a little).
+Sandbox::RenderedFrame Sandbox::renderFrame(glm::uvec2 framebuffer) {
+    RenderedFrame out;
+    if (!mPresenter->beginFrame(framebuffer)) {
         std::this_thread::sleep_for(std::chrono::milliseconds(16));  // minimised: do not spin
+        return out;
     }
-    afterFrame(result, presented);
-    if (mFrameLog && presented) {
-        const double wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-        *mFrameLog << fmt::format("{},{:.3f},{:.3f},{:.3f},{:.3f},{},{}\n", mFrame, wallMs, renderCallMs,
-                                 result.totalMs(), result.passMsOf("present"), renderedSize.x, renderedSize.y);
-    }
-    if (mWalkLog) *mWalkLog << mWalk.logRow(mFrame, mTime) << "\n";
-    ++mFrame;
-    if (mOptions.maxFrames && mFrame >= mOptions.maxFrames) {
-        if (!mQuit) message(fmt::format("stopping after {} frames (--frames)", mOptions.maxFrames));
-        mQuit = true;
-    }
+    engine::render::FrameSettings settings;
+    glm::uvec2 size = renderSize(framebuffer);
+    settings.width = size.x;
+    settings.height = size.y;
+    settings.exposure = mExposure;
+    settings.timeSeconds = mTime;  // dynamic objects: the script clock when scripted, else wall clock
+    mPresenter->setOverlay(ImGui::GetDrawData());
+    if (mCaptureRequested) mPresenter->captureThisFrame();
+    const auto renderStart = std::chrono::steady_clock::now();
+    out.result = mRenderer->render(mScene, mCamera.preset(), settings, mLighting, mPresenter.get());
+    out.renderCallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - renderStart).count();
+    out.size = size;
+    out.presented = true;
+    mLastFrame = out.result;
+    if (mAutoScale) adjustRenderScale(out.result, framebuffer);
+    return out;
+}
+
+// Auto scale: the passes that scale with the render resolution steer it; presenting fills the
+// window whatever the scale.
+void Sandbox::adjustRenderScale(const engine::render::FrameResult& result, glm::uvec2 framebuffer) {
+    double ms = result.totalMs() - result.passMsOf("present");
+    float next = mScaleController.update(mRenderScale, ms);
+    if (next == mRenderScale) return;
+    glm::uvec2 from = renderSize(framebuffer);
+    mRenderScale = next;
+    glm::uvec2 to = renderSize(framebuffer);
+    message(fmt::format("render {}x{} -> {}x{}: frame passes took {:.0f} ms (median), aiming at {:.0f} ms "
+                        "(auto scale)",
+                        from.x, from.y, to.x, to.y, mScaleController.lastMedianMs(), mScaleController.targetMs()));
 }
 
 void Sandbox::handleInput(float dt) {
@@ -440,7 +477,21 @@ void Sandbox::handleInput(float dt) {
     }
     mTarget = pick(mScene.grid, mCamera.position(), mCamera.forward());
 
-    if (mMouseLook && !clickCaptured && !mObjects.active) {
+    if (mMouseLook && !clickCaptured && !mObjects.active) handleEditClicks();
+
+    if (mInput.ctrl()) {
+        if (mInput.pressed(GLFW_KEY_Z)) mInput.shift() ? redo() : undo();
+        if (mInput.pressed(GLFW_KEY_Y)) redo();
+        if (mInput.pressed(GLFW_KEY_S)) {
+            if (engine::Status st = save(mSavePath, false); !st) message("save failed: " + st.error().message);
+        }
+        return;  // Ctrl+key is a command, never also a tool key
+    }
+    handleToolKeys(hudMouse, clickCaptured);
+}
+
+// The mouse buttons on the world: the tool (left), removing (right), the eyedropper (middle, I).
+void Sandbox::handleEditClicks() {
         // A press or release that edits nothing says why (the sky, a ray that is not finite).
         auto use = [&](bool pressed) {
             bool wasDragging = mTools.dragging();
@@ -461,17 +512,10 @@ void Sandbox::handleInput(float dt) {
         if (mInput.buttonPressed(GLFW_MOUSE_BUTTON_MIDDLE) || mInput.pressed(GLFW_KEY_I)) {
             if (mTools.eyedrop(mTarget)) message("eyedropper: " + mScene.palette[mTools.material].name);
         }
-    }
+}
 
-    bool ctrl = mInput.ctrl();
-    if (ctrl) {
-        if (mInput.pressed(GLFW_KEY_Z)) mInput.shift() ? redo() : undo();
-        if (mInput.pressed(GLFW_KEY_Y)) redo();
-        if (mInput.pressed(GLFW_KEY_S)) {
-            if (engine::Status st = save(mSavePath, false); !st) message("save failed: " + st.error().message);
-        }
-        return;  // Ctrl+key is a command, never also a tool key
-    }
+// Keys without Ctrl: tools, brush, material, render scale, camera presets, HUD, screenshots.
+void Sandbox::handleToolKeys(bool hudMouse, bool clickCaptured) {
     if (mInput.pressed(GLFW_KEY_1)) mTools.tool = Tool::Place;
     if (mInput.pressed(GLFW_KEY_2)) mTools.tool = Tool::Remove;
     if (mInput.pressed(GLFW_KEY_3)) mTools.tool = Tool::Paint;
