@@ -6,12 +6,11 @@
 #pragma once
 
 #include <array>
+#include <glm/glm.hpp>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 namespace game {
 

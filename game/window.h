@@ -4,11 +4,10 @@
 // can warn about unsaved changes before closing.
 #pragma once
 
+#include <glm/glm.hpp>
 #include <memory>
 #include <string>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "core/error.h"
 #include "game/input.h"

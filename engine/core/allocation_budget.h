@@ -35,7 +35,8 @@ public:
 
     // Throws std::bad_alloc, counted as a refused request, when `bytes` more would not fit in the
     // active budget; for callers that know the size of a coming burst of small allocations and
-    // must not be interrupted half way (a library that is not exception-safe). No-op without a budget.
+    // must not be interrupted half way (a library that is not exception-safe). No-op without a
+    // budget.
     static void require(std::uint64_t bytes);
 
     // For calls into code that is not exception-safe when an allocation fails (OpenVDB's tree

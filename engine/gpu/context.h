@@ -9,12 +9,11 @@
 // with VK_KHR_swapchain enabled.
 #pragma once
 
-#include <vulkan/vulkan.h>
-
 #include <atomic>
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vulkan/vulkan.h>
 
 #include "core/error.h"
 
@@ -97,10 +96,9 @@ private:
     Status pickPhysicalDevice();
     void readDeviceInfo();
     Status createDevice();
-    static VKAPI_ATTR VkBool32 VKAPI_CALL onValidationMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
-                                                              VkDebugUtilsMessageTypeFlagsEXT types,
-                                                              const VkDebugUtilsMessengerCallbackDataEXT* data,
-                                                              void* user);
+    static VKAPI_ATTR VkBool32 VKAPI_CALL onValidationMessage(
+        VkDebugUtilsMessageSeverityFlagBitsEXT severity, VkDebugUtilsMessageTypeFlagsEXT types,
+        const VkDebugUtilsMessengerCallbackDataEXT* data, void* user);
 
     VkInstance mInstance = VK_NULL_HANDLE;
     VkDebugUtilsMessengerEXT mMessenger = VK_NULL_HANDLE;

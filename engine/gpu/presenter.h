@@ -9,10 +9,9 @@
 #pragma once
 
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <memory>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "gpu/buffer.h"
 #include "gpu/context.h"

@@ -7,10 +7,9 @@
 #include <array>
 #include <cstdio>
 #include <cstring>
+#include <fmt/format.h>
 #include <map>
 #include <tuple>
-
-#include <fmt/format.h>
 
 #include "core/atomic_file.h"
 #include "io/colour_quantizer.h"
@@ -34,7 +33,8 @@ struct VoxPalette {
     int used = 0;
 };
 
-VoxPalette buildPalette(const world::Scene& scene, const std::vector<std::uint64_t>& counts, VoxExportReport& r) {
+VoxPalette buildPalette(const world::Scene& scene, const std::vector<std::uint64_t>& counts,
+                        VoxExportReport& r) {
     const auto& materials = scene.palette.materials();
     VoxPalette p;
     p.index.assign(materials.size(), 0);
@@ -44,7 +44,8 @@ VoxPalette buildPalette(const world::Scene& scene, const std::vector<std::uint64
     for (std::size_t m = 1; m < materials.size(); ++m) {
         if (!counts[m]) continue;
         const world::Material& mat = materials[m];
-        auto key = std::make_pair(voxColourFromLinear(mat.albedo), mat.emissive() ? mat.emissionStrength : 0.0f);
+        auto key = std::make_pair(voxColourFromLinear(mat.albedo),
+                                  mat.emissive() ? mat.emissionStrength : 0.0f);
         if (pairs.emplace(key, 0).second) order.push_back(key);
         if (mat.emissive() && mat.emissionColor != mat.albedo) r.emissionColourDiffers += counts[m];
     }
@@ -57,12 +58,14 @@ VoxPalette buildPalette(const world::Scene& scene, const std::vector<std::uint64
         for (std::size_t m = 1; m < materials.size(); ++m) {
             if (!counts[m]) continue;
             const world::Material& mat = materials[m];
-            p.index[m] = std::uint8_t(pairs.at({voxColourFromLinear(mat.albedo), mat.emissive() ? mat.emissionStrength : 0.0f}));
+            p.index[m] = std::uint8_t(pairs.at(
+                {voxColourFromLinear(mat.albedo), mat.emissive() ? mat.emissionStrength : 0.0f}));
         }
         p.used = int(order.size());
         return p;
     }
-    // Too many: quantise the albedos; an index emits when most of its voxels do, with their mean strength.
+    // Too many: quantise the albedos; an index emits when most of its voxels do, with their mean
+    // strength.
     r.quantised = true;
     ColourHistogram histogram;
     for (std::size_t m = 1; m < materials.size(); ++m)
@@ -76,7 +79,9 @@ VoxPalette buildPalette(const world::Scene& scene, const std::vector<std::uint64
         const world::Material& mat = materials[m];
         const int i = mapper.nearest(clampAlbedo(mat.albedo)) + 1;
         p.index[m] = std::uint8_t(i);
-        error.add(double(glm::distance(clampAlbedo(mat.albedo), mapper.palette()[std::size_t(i - 1)])), counts[m]);
+        error.add(
+            double(glm::distance(clampAlbedo(mat.albedo), mapper.palette()[std::size_t(i - 1)])),
+            counts[m]);
         voxels[std::size_t(i)] += counts[m];
         if (mat.emissive()) {
             emissiveVoxels[std::size_t(i)] += counts[m];
@@ -86,7 +91,8 @@ VoxPalette buildPalette(const world::Scene& scene, const std::vector<std::uint64
     for (std::size_t i = 0; i < mapper.palette().size(); ++i) {
         p.colour[i + 1] = voxColourFromLinear(mapper.palette()[i]);
         const std::size_t k = i + 1;
-        if (emissiveVoxels[k] * 2 > voxels[k]) p.strength[k] = float(strengthSum[k] / double(emissiveVoxels[k]));
+        if (emissiveVoxels[k] * 2 > voxels[k])
+            p.strength[k] = float(strengthSum[k] / double(emissiveVoxels[k]));
     }
     p.used = int(mapper.palette().size());
     r.meanColourError = error.mean();
@@ -96,7 +102,8 @@ VoxPalette buildPalette(const world::Scene& scene, const std::vector<std::uint64
         if (!counts[m]) continue;
         const world::Material& mat = materials[m];
         const std::size_t i = p.index[m];
-        if (p.colour[i] != voxColourFromLinear(mat.albedo) || p.strength[i] != (mat.emissive() ? mat.emissionStrength : 0.0f))
+        if (p.colour[i] != voxColourFromLinear(mat.albedo) ||
+            p.strength[i] != (mat.emissive() ? mat.emissionStrength : 0.0f))
             r.changedVoxels += counts[m];
     }
     return p;
@@ -170,7 +177,8 @@ Status exportVox(const world::Scene& scene, const fs::path& path, VoxExportRepor
         const glm::ivec3 mv(q.x, extent.z - 1 - q.z, q.y);
         Model& m = modelAt(mv);
         const glm::ivec3 local = mv - m.origin;
-        m.voxels.push_back({std::uint8_t(local.x), std::uint8_t(local.y), std::uint8_t(local.z), palette.index[id]});
+        m.voxels.push_back({std::uint8_t(local.x), std::uint8_t(local.y), std::uint8_t(local.z),
+                            palette.index[id]});
     });
 
     Bytes children;
@@ -186,7 +194,8 @@ Status exportVox(const world::Scene& scene, const fs::path& path, VoxExportRepor
     // Scene graph: root transform 0 -> group 1 -> (transform 2 + 2i -> shape 3 + 2i -> model i).
     {
         Bytes root, group;
-        root.i32(0), root.dict({}), root.i32(1), root.i32(-1), root.i32(-1), root.i32(1), root.dict({});
+        root.i32(0), root.dict({}), root.i32(1), root.i32(-1), root.i32(-1), root.i32(1),
+            root.dict({});
         children.chunk("nTRN", root);
         group.i32(1), group.dict({}), group.i32(std::int32_t(models.size()));
         for (std::size_t i = 0; i < models.size(); ++i) group.i32(std::int32_t(2 + 2 * i));
@@ -194,14 +203,17 @@ Status exportVox(const world::Scene& scene, const fs::path& path, VoxExportRepor
     }
     std::size_t i = 0;
     for (const auto& [key, m] : models) {
-        // The import places voxel v at v - size / 2 + _t: _t = origin + size / 2 puts it at origin + v.
+        // The import places voxel v at v - size / 2 + _t: _t = origin + size / 2 puts it at origin
+        // + v.
         const glm::ivec3 t = m.origin + m.size / 2;
         Bytes transform, shape;
-        transform.i32(std::int32_t(2 + 2 * i)), transform.dict({}), transform.i32(std::int32_t(3 + 2 * i));
+        transform.i32(std::int32_t(2 + 2 * i)), transform.dict({}),
+            transform.i32(std::int32_t(3 + 2 * i));
         transform.i32(-1), transform.i32(0), transform.i32(1);
         transform.dict({{"_t", fmt::format("{} {} {}", t.x, t.y, t.z)}});
         children.chunk("nTRN", transform);
-        shape.i32(std::int32_t(3 + 2 * i)), shape.dict({}), shape.i32(1), shape.i32(std::int32_t(i)), shape.dict({});
+        shape.i32(std::int32_t(3 + 2 * i)), shape.dict({}), shape.i32(1),
+            shape.i32(std::int32_t(i)), shape.dict({});
         children.chunk("nSHP", shape);
         ++i;
     }
@@ -211,10 +223,12 @@ Status exportVox(const world::Scene& scene, const fs::path& path, VoxExportRepor
         children.chunk("LAYR", layer);
     }
     {
-        // Entry k is colour index k + 1; indices the export does not use keep MagicaVoxel's defaults.
+        // Entry k is colour index k + 1; indices the export does not use keep MagicaVoxel's
+        // defaults.
         Bytes rgba;
         for (int k = 1; k <= 256; ++k) {
-            const std::uint32_t c = k <= palette.used ? palette.colour[std::size_t(k)] : voxDefaultPaletteColour(k & 255);
+            const std::uint32_t c = k <= palette.used ? palette.colour[std::size_t(k)]
+                                                      : voxDefaultPaletteColour(k & 255);
             rgba.i32(std::int32_t(c));
         }
         children.chunk("RGBA", rgba);
@@ -225,12 +239,15 @@ Status exportVox(const world::Scene& scene, const fs::path& path, VoxExportRepor
         voxEmitFlux(palette.strength[std::size_t(k)], emit, flux);
         Bytes matl;
         matl.i32(k);
-        matl.dict({{"_type", "_emit"}, {"_emit", fmt::format("{}", emit)}, {"_flux", fmt::format("{}", flux)}});
+        matl.dict({{"_type", "_emit"},
+                   {"_emit", fmt::format("{}", emit)},
+                   {"_flux", fmt::format("{}", flux)}});
         children.chunk("MATL", matl);
         ++r.emissive;
     }
     if (children.data.size() > 0x7FFFFFF0u)
-        return makeError("{}: the world's {} voxels do not fit in one .vox file (2 GiB)", path.string(), r.solidVoxels);
+        return makeError("{}: the world's {} voxels do not fit in one .vox file (2 GiB)",
+                         path.string(), r.solidVoxels);
     Bytes header;
     header.raw("VOX ", 4);
     header.i32(150);

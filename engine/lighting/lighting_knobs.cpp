@@ -1,10 +1,9 @@
 #include "lighting/lighting_knobs.h"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <fmt/format.h>
 #include <type_traits>
 
 namespace engine::lighting {

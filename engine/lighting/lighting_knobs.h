@@ -15,7 +15,8 @@
 namespace engine::lighting {
 
 struct KnobGroup {
-    std::string_view name;       // the technique: lighting, emitters, restir, baselines, reference, cache, path
+    std::string_view
+        name;  // the technique: lighting, emitters, restir, baselines, reference, cache, path
     std::string_view cliPrefix;  // "cache-" makes --cache-rays; scene files use the bare name
     std::span<const Knob> knobs;
 };

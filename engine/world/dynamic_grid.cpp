@@ -54,13 +54,15 @@ private:
 // world voxel is decided by exactly the model cell its centre falls in. Voxels already taken
 // (by an earlier object) stay.
 void voxelizeModelCell(const DynamicObject& o, glm::ivec3 c, const glm::dmat4& worldFromModel,
-                       const glm::dmat4& modelFromWorld, const DynamicGrid& out, ScratchBricks& scratch) {
+                       const glm::dmat4& modelFromWorld, const DynamicGrid& out,
+                       ScratchBricks& scratch) {
     const int dim = kBrickDim;
     const Box cellBox = Box{c * dim, c * dim + dim}.intersect(Box{glm::ivec3(0), o.modelSize});
     if (cellBox.empty()) return;
     glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
     for (int k = 0; k < 8; ++k) {
-        glm::dvec3 corner((k & 1) ? cellBox.max.x : cellBox.min.x, (k & 2) ? cellBox.max.y : cellBox.min.y,
+        glm::dvec3 corner((k & 1) ? cellBox.max.x : cellBox.min.x,
+                          (k & 2) ? cellBox.max.y : cellBox.min.y,
                           (k & 4) ? cellBox.max.z : cellBox.min.z);
         glm::dvec3 w(worldFromModel * glm::dvec4(corner, 1.0));
         lo = glm::min(lo, w);
@@ -89,7 +91,8 @@ DynamicGrid voxelizeObjects(std::span<const DynamicObject> objects) {
     DynamicGrid out;
     if (objects.empty()) return out;
 
-    Box all{glm::ivec3(std::numeric_limits<int>::max()), glm::ivec3(std::numeric_limits<int>::min())};
+    Box all{glm::ivec3(std::numeric_limits<int>::max()),
+            glm::ivec3(std::numeric_limits<int>::min())};
     for (const DynamicObject& o : objects) {
         Box b = o.worldBounds(o.current);
         all.min = glm::min(all.min, b.min);
@@ -97,7 +100,9 @@ DynamicGrid voxelizeObjects(std::span<const DynamicObject> objects) {
         out.instances.push_back({b, o.worldFromModel(o.current), o.worldFromModel(o.previous)});
     }
     const int dim = kBrickDim;
-    out.origin = glm::ivec3(floorDiv(all.min.x, dim), floorDiv(all.min.y, dim), floorDiv(all.min.z, dim)) * dim;
+    out.origin =
+        glm::ivec3(floorDiv(all.min.x, dim), floorDiv(all.min.y, dim), floorDiv(all.min.z, dim)) *
+        dim;
     // Whole 32^3 super cells, as worlds/README.md asks of every world the traversal walks.
     const glm::ivec3 extent = glm::max(all.max - out.origin, glm::ivec3(1));
     out.grid = BrickGrid((extent + 31) / 32 * 32);
@@ -115,7 +120,8 @@ DynamicGrid voxelizeObjects(std::span<const DynamicObject> objects) {
     return out;
 }
 
-bool updateDynamicObjects(std::vector<DynamicObject>& objects, DynamicGrid& grid, double time, double prevTime) {
+bool updateDynamicObjects(std::vector<DynamicObject>& objects, DynamicGrid& grid, double time,
+                          double prevTime) {
     bool changed = grid.instances.size() != objects.size();
     for (DynamicObject& o : objects) {
         RigidTransform current = o.poseAt(time), previous = o.poseAt(prevTime);

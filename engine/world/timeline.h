@@ -63,7 +63,6 @@ public:
     // many it applied. Frames must not go backwards (a fresh scene and timeline replay a slice).
     std::uint32_t applyThrough(std::uint32_t frame, double fps, Scene& scene);
 
-
     const std::vector<TimelineEvent>& events() const { return mEvents; }
 
 private:

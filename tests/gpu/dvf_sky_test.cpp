@@ -2,11 +2,10 @@
 // truth, the sky's direct light by brute-force cosine rays per pixel (`--sky reference`): the
 // mean on two worlds, the per-pixel spread, a roof opened by an edit, and the masks against
 // directions traced on the CPU.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <gtest/gtest.h>
 
 #include "core/hash.h"
 #include "gpu/gpu_test_setup.h"
@@ -300,7 +299,8 @@ TEST_F(DvfSky, SameSceneSameSkyTermEveryRun) {
     const auto lit = std::count_if(first.begin(), first.end(),
                                    [](const glm::vec4& v) { return luminance(v) > 0.001; });
     const double litFraction = double(lit) / double(first.size());
-    std::printf("sky term: %.1f %% of the pixels lit, mean %.5f\n", 100.0 * litFraction, meanLuminance(first));
+    std::printf("sky term: %.1f %% of the pixels lit, mean %.5f\n", 100.0 * litFraction,
+                meanLuminance(first));
     EXPECT_GT(litFraction, 0.5) << "of " << first.size() << " pixels";
     EXPECT_GT(meanLuminance(first), 0.004);
 }

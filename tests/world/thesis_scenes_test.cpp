@@ -1,10 +1,9 @@
 // The thesis's four scenes (§3.2, §5) as shipped worlds: each loads quickly, is deterministic,
 // fits test-sized grids and has the emissive voxel count the thesis reports (Tables 1-3).
-#include <gtest/gtest.h>
-
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <gtest/gtest.h>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -68,7 +67,8 @@ std::uint64_t exposedEmissiveVoxels(const Scene& scene) {
 std::uint64_t voxelFingerprint(const BrickGrid& grid) {
     std::uint64_t hash = 0xcbf29ce484222325ull;  // FNV-1a's offset basis
     auto add = [&](std::int64_t value) {
-        hash = engine::fnv1a64(std::string_view(reinterpret_cast<const char*>(&value), sizeof(value)), hash);
+        hash = engine::fnv1a64(
+            std::string_view(reinterpret_cast<const char*>(&value), sizeof(value)), hash);
     };
     const glm::ivec3 size = grid.sizeInVoxels();
     for (int a = 0; a < 3; ++a) add(size[a]);

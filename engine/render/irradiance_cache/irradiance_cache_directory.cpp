@@ -11,8 +11,10 @@ namespace engine::render {
 namespace {
 
 glm::uvec2 keyWords(const CacheKey& key) {
-    return {static_cast<std::uint32_t>(key.voxel.x) | (static_cast<std::uint32_t>(key.voxel.y) << 16),
-            static_cast<std::uint32_t>(key.voxel.z) | (key.coarse << shared::CACHE_KEY_COARSE_SHIFT) | (key.set << 31)};
+    return {
+        static_cast<std::uint32_t>(key.voxel.x) | (static_cast<std::uint32_t>(key.voxel.y) << 16),
+        static_cast<std::uint32_t>(key.voxel.z) | (key.coarse << shared::CACHE_KEY_COARSE_SHIFT) |
+            (key.set << 31)};
 }
 
 // The rays one update of `key` may trace: S per face traced (CacheWork). A coarse entry traces
@@ -42,7 +44,8 @@ std::uint32_t cacheKeyHash(const CacheKey& key) {
     return pcgHash(w.x ^ pcgHash(w.y));
 }
 
-IrradianceCacheDirectory::IrradianceCacheDirectory(std::uint32_t maxSlots) : mMaxSlots(std::max(maxSlots, 1u)) {}
+IrradianceCacheDirectory::IrradianceCacheDirectory(std::uint32_t maxSlots)
+    : mMaxSlots(std::max(maxSlots, 1u)) {}
 
 void IrradianceCacheDirectory::clear() {
     mSlots.clear();
@@ -62,8 +65,8 @@ void IrradianceCacheDirectory::release(std::uint32_t slot) {
     mFree.push_back(slot);
 }
 
-std::uint32_t IrradianceCacheDirectory::allocate(const CacheKey& key, std::uint64_t frame, double time,
-                                                 CacheFrameLists& lists) {
+std::uint32_t IrradianceCacheDirectory::allocate(const CacheKey& key, std::uint64_t frame,
+                                                 double time, CacheFrameLists& lists) {
     std::uint32_t slot;
     if (!mFree.empty()) {
         slot = mFree.back();
@@ -79,8 +82,8 @@ std::uint32_t IrradianceCacheDirectory::allocate(const CacheKey& key, std::uint6
     s.live = true;
     s.lastSeen = frame;
     s.lastUpdate = time;
-    mEntries[slot] = shared::CacheEntry{glm::ivec4(key.voxel, static_cast<int>(key.set)), static_cast<float>(time), 0u, 0u,
-                                        key.coarse};
+    mEntries[slot] = shared::CacheEntry{glm::ivec4(key.voxel, static_cast<int>(key.set)),
+                                        static_cast<float>(time), 0u, 0u, key.coarse};
     mIndex.emplace(packCacheKey(key), slot);
     lists.tableChanged = true;
     return slot;
@@ -89,17 +92,22 @@ std::uint32_t IrradianceCacheDirectory::allocate(const CacheKey& key, std::uint6
 // Evicts the least recently seen entries (never this frame's) so that `wanted` new keys fit, in
 // one batch of at least an eighth of the slots so eviction does not run every frame. Returns the
 // free slots available afterwards.
-std::uint32_t IrradianceCacheDirectory::makeRoom(std::size_t wanted, std::uint64_t frame, CacheFrameLists& lists) {
+std::uint32_t IrradianceCacheDirectory::makeRoom(std::size_t wanted, std::uint64_t frame,
+                                                 CacheFrameLists& lists) {
     std::size_t available = mFree.size() + (mMaxSlots - mSlots.size());
     if (wanted > available) {
         std::vector<std::uint32_t> candidates;
         for (std::uint32_t slot = 0; slot < mSlots.size(); ++slot) {
             if (mSlots[slot].live && mSlots[slot].lastSeen != frame) candidates.push_back(slot);
         }
-        std::size_t want = std::min(candidates.size(), std::max(wanted - available, std::size_t(mMaxSlots / 8)));
-        std::partial_sort(candidates.begin(), candidates.begin() + static_cast<std::ptrdiff_t>(want), candidates.end(),
+        std::size_t want =
+            std::min(candidates.size(), std::max(wanted - available, std::size_t(mMaxSlots / 8)));
+        std::partial_sort(candidates.begin(),
+                          candidates.begin() + static_cast<std::ptrdiff_t>(want), candidates.end(),
                           [&](std::uint32_t a, std::uint32_t b) {
-                              return mSlots[a].lastSeen != mSlots[b].lastSeen ? mSlots[a].lastSeen < mSlots[b].lastSeen : a < b;
+                              return mSlots[a].lastSeen != mSlots[b].lastSeen
+                                         ? mSlots[a].lastSeen < mSlots[b].lastSeen
+                                         : a < b;
                           });
         for (std::size_t i = 0; i < want; ++i) release(candidates[i]);
         lists.evicted = static_cast<std::uint32_t>(want);
@@ -118,8 +126,8 @@ struct IrradianceCacheDirectory::Candidate {
     std::uint32_t cls() const { return static_cast<std::uint32_t>(order >> 56); }
 };
 
-CacheFrameLists IrradianceCacheDirectory::beginFrame(std::span<const CacheKey> visible, double time, float fadeSeconds,
-                                                     const CacheWork& work) {
+CacheFrameLists IrradianceCacheDirectory::beginFrame(std::span<const CacheKey> visible, double time,
+                                                     float fadeSeconds, const CacheWork& work) {
     CacheFrameLists lists;
     const std::uint64_t frame = ++mFrame;
     fadeDynamicEntries(time, fadeSeconds, work.objectsMoved, lists);
@@ -129,7 +137,8 @@ CacheFrameLists IrradianceCacheDirectory::beginFrame(std::span<const CacheKey> v
     const auto firstFresh = static_cast<std::uint32_t>(mSlots.size());
     const std::vector<Candidate> candidates = rankCandidates(seen, fresh, firstFresh, frame, work);
     const std::vector<bool> chosen = chooseWithinBudget(candidates, work.rayBudget, lists.rays);
-    std::vector<std::uint32_t> selected = slotsForChosen(candidates, chosen, fresh, firstFresh, frame, time, lists);
+    std::vector<std::uint32_t> selected =
+        slotsForChosen(candidates, chosen, fresh, firstFresh, frame, time, lists);
     startUpdates(selected, frame, time, work, lists);
     return lists;
 }
@@ -155,7 +164,8 @@ void IrradianceCacheDirectory::fadeDynamicEntries(double time, float fadeSeconds
 
 // Known keys are marked seen and their slots returned, each once; new ones, sorted and without
 // repeats, go to `fresh`: candidates without a slot yet.
-std::vector<std::uint32_t> IrradianceCacheDirectory::markSeen(std::span<const CacheKey> visible, std::uint64_t frame,
+std::vector<std::uint32_t> IrradianceCacheDirectory::markSeen(std::span<const CacheKey> visible,
+                                                              std::uint64_t frame,
                                                               std::vector<CacheKey>& fresh) {
     std::vector<std::uint32_t> seen;
     for (const CacheKey& key : visible) {
@@ -178,9 +188,8 @@ std::vector<std::uint32_t> IrradianceCacheDirectory::markSeen(std::span<const Ca
 
 // A known entry as a candidate: its class (CacheWork) and the rays its update costs. None when
 // it is converged and fresh enough.
-std::optional<IrradianceCacheDirectory::Candidate> IrradianceCacheDirectory::candidateFor(std::uint32_t slot,
-                                                                                         std::uint64_t frame,
-                                                                                         const CacheWork& work) const {
+std::optional<IrradianceCacheDirectory::Candidate> IrradianceCacheDirectory::candidateFor(
+    std::uint32_t slot, std::uint64_t frame, const CacheWork& work) const {
     const Slot& s = mSlots[slot];
     const std::uint32_t update = updateCost(s.key, work);
     std::uint32_t cost = update;
@@ -212,8 +221,8 @@ std::optional<IrradianceCacheDirectory::Candidate> IrradianceCacheDirectory::can
 // Every candidate in the order it is served: class (CacheWork), then the frame of its last
 // update (most stale first), then the key.
 std::vector<IrradianceCacheDirectory::Candidate> IrradianceCacheDirectory::rankCandidates(
-    std::span<const std::uint32_t> seen, std::span<const CacheKey> fresh, std::uint32_t firstFresh, std::uint64_t frame,
-    const CacheWork& work) const {
+    std::span<const std::uint32_t> seen, std::span<const CacheKey> fresh, std::uint32_t firstFresh,
+    std::uint64_t frame, const CacheWork& work) const {
     std::vector<Candidate> candidates;
     candidates.reserve(seen.size() + fresh.size());
     for (std::uint32_t slot : seen) {
@@ -222,8 +231,8 @@ std::vector<IrradianceCacheDirectory::Candidate> IrradianceCacheDirectory::rankC
     for (std::uint32_t i = 0; i < fresh.size(); ++i) {
         const bool dynamic = fresh[i].set == shared::CACHE_SET_DYNAMIC;
         const std::uint32_t update = updateCost(fresh[i], work);
-        candidates.push_back({candidateOrder(dynamic ? 1 : 0, 0), packCacheKey(fresh[i]), firstFresh + i,
-                              dynamic ? update : 2 * update});
+        candidates.push_back({candidateOrder(dynamic ? 1 : 0, 0), packCacheKey(fresh[i]),
+                              firstFresh + i, dynamic ? update : 2 * update});
     }
     std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
         return a.order != b.order ? a.order < b.order : a.key < b.key;
@@ -233,8 +242,8 @@ std::vector<IrradianceCacheDirectory::Candidate> IrradianceCacheDirectory::rankC
 
 // Spends the budget: dynamic entries up to half of it (so new keys cannot starve a moving
 // object), new keys, then the rest in order. Adds the rays spent to `spent`.
-std::vector<bool> IrradianceCacheDirectory::chooseWithinBudget(std::span<const Candidate> candidates,
-                                                               std::uint64_t rayBudget, std::uint64_t& spent) {
+std::vector<bool> IrradianceCacheDirectory::chooseWithinBudget(
+    std::span<const Candidate> candidates, std::uint64_t rayBudget, std::uint64_t& spent) {
     const std::uint64_t budget = rayBudget == 0 ? ~0ull : rayBudget;
     std::vector<bool> chosen(candidates.size(), false);
     auto take = [&](std::size_t i, std::uint64_t limit) {
@@ -251,13 +260,13 @@ std::vector<bool> IrradianceCacheDirectory::chooseWithinBudget(std::span<const C
 
 // The slots of the chosen candidates, in candidate order: a fresh key gets one, evicting if the
 // memory budget is full, or is dropped (and its rays given back) when there is no room.
-std::vector<std::uint32_t> IrradianceCacheDirectory::slotsForChosen(std::span<const Candidate> candidates,
-                                                                    const std::vector<bool>& chosen,
-                                                                    std::span<const CacheKey> fresh,
-                                                                    std::uint32_t firstFresh, std::uint64_t frame,
-                                                                    double time, CacheFrameLists& lists) {
+std::vector<std::uint32_t> IrradianceCacheDirectory::slotsForChosen(
+    std::span<const Candidate> candidates, const std::vector<bool>& chosen,
+    std::span<const CacheKey> fresh, std::uint32_t firstFresh, std::uint64_t frame, double time,
+    CacheFrameLists& lists) {
     std::size_t wanted = 0;
-    for (std::size_t i = 0; i < candidates.size(); ++i) wanted += chosen[i] && candidates[i].index >= firstFresh;
+    for (std::size_t i = 0; i < candidates.size(); ++i)
+        wanted += chosen[i] && candidates[i].index >= firstFresh;
     std::uint32_t room = wanted ? makeRoom(wanted, frame, lists) : 0;
     std::vector<std::uint32_t> selected;
     for (std::size_t i = 0; i < candidates.size(); ++i) {
@@ -282,11 +291,13 @@ std::vector<std::uint32_t> IrradianceCacheDirectory::slotsForChosen(std::span<co
 
 // This frame's flags and phases: zero except on the selected entries, which are listed in
 // `lists.update`, static ones first, each part in slot order.
-void IrradianceCacheDirectory::startUpdates(std::vector<std::uint32_t>& selected, std::uint64_t frame, double time,
-                                            const CacheWork& work, CacheFrameLists& lists) {
+void IrradianceCacheDirectory::startUpdates(std::vector<std::uint32_t>& selected,
+                                            std::uint64_t frame, double time, const CacheWork& work,
+                                            CacheFrameLists& lists) {
     for (shared::CacheEntry& e : mEntries) e.flags = 0u;
     std::sort(selected.begin(), selected.end(), [&](std::uint32_t a, std::uint32_t b) {
-        bool sa = mSlots[a].key.set == shared::CACHE_SET_STATIC, sb = mSlots[b].key.set == shared::CACHE_SET_STATIC;
+        bool sa = mSlots[a].key.set == shared::CACHE_SET_STATIC,
+             sb = mSlots[b].key.set == shared::CACHE_SET_STATIC;
         return sa != sb ? sa : a < b;
     });
     for (std::uint32_t slot : selected) {
@@ -325,7 +336,8 @@ void IrradianceCacheDirectory::relightAll() {
     for (Slot& s : mSlots) s.reset = s.reset || s.live;
 }
 
-std::uint32_t IrradianceCacheDirectory::invalidateStatic(std::span<const glm::ivec3> editedCellMins, float radius) {
+std::uint32_t IrradianceCacheDirectory::invalidateStatic(std::span<const glm::ivec3> editedCellMins,
+                                                         float radius) {
     if (editedCellMins.empty()) return 0;
     glm::vec3 lo(1e30f), hi(-1e30f);
     for (const glm::ivec3& c : editedCellMins) {
@@ -341,7 +353,8 @@ std::uint32_t IrradianceCacheDirectory::invalidateStatic(std::span<const glm::iv
         glm::vec3 gap = glm::max(glm::max(lo - p, p - hi), glm::vec3(0.0f));
         if (glm::dot(gap, gap) > radius * radius) continue;
         for (const glm::ivec3& c : editedCellMins) {
-            glm::vec3 g = glm::max(glm::max(glm::vec3(c) - p, p - glm::vec3(c + 8)), glm::vec3(0.0f));
+            glm::vec3 g =
+                glm::max(glm::max(glm::vec3(c) - p, p - glm::vec3(c + 8)), glm::vec3(0.0f));
             if (glm::dot(g, g) <= radius * radius) {
                 if (isStatic) {
                     s.traced = 0;
@@ -359,7 +372,8 @@ std::uint32_t IrradianceCacheDirectory::invalidateStatic(std::span<const glm::iv
 
 std::vector<shared::CacheBucket> IrradianceCacheDirectory::buildTable() const {
     const std::uint32_t buckets = std::bit_ceil(std::max<std::uint32_t>(2u * usedSlots(), 64u));
-    std::vector<shared::CacheBucket> table(buckets, shared::CacheBucket{glm::uvec4(shared::CACHE_TABLE_EMPTY)});
+    std::vector<shared::CacheBucket> table(
+        buckets, shared::CacheBucket{glm::uvec4(shared::CACHE_TABLE_EMPTY)});
     for (std::uint32_t slot = 0; slot < mSlots.size(); ++slot) {
         const Slot& s = mSlots[slot];
         if (!s.live) continue;
