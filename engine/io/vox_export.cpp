@@ -141,6 +141,109 @@ struct Model {
     std::vector<VoxVoxel> voxels;
 };
 
+// The models by (z, y, x) of their place in the content box, the order they are written in.
+using Models = std::map<std::tuple<int, int, int>, Model>;
+
+// The content box cut into models of at most kVoxMaxModelSize a side, each holding its voxels
+// as palette indices. Engine (X, Y, Z) -> MagicaVoxel (X, maxZ - 1 - Z, Y), relative to the
+// content box: the inverse of the import's (x, y, z) -> (x, z, -y) up to the shift the import
+// applies.
+Models cutIntoModels(const world::BrickGrid& grid, const world::Box& content,
+                     const VoxPalette& palette, bool empty) {
+    const glm::ivec3 extent = content.size();
+    const glm::ivec3 mvExtent(extent.x, extent.z, extent.y);
+    Models models;
+    auto modelAt = [&](glm::ivec3 mv) -> Model& {
+        const glm::ivec3 chunk = mv / kVoxMaxModelSize;
+        Model& m = models[{chunk.z, chunk.y, chunk.x}];
+        if (m.size.x == 0) {
+            m.origin = chunk * kVoxMaxModelSize;
+            m.size = glm::min(mvExtent - m.origin, glm::ivec3(kVoxMaxModelSize));
+        }
+        return m;
+    };
+    if (empty) modelAt(glm::ivec3(0));  // MagicaVoxel wants at least one model
+    world::forEachSolidVoxel(grid, [&](glm::ivec3 p, world::MaterialId id) {
+        const glm::ivec3 q = p - content.min;
+        const glm::ivec3 mv(q.x, extent.z - 1 - q.z, q.y);
+        Model& m = modelAt(mv);
+        const glm::ivec3 local = mv - m.origin;
+        m.voxels.push_back({std::uint8_t(local.x), std::uint8_t(local.y), std::uint8_t(local.z),
+                            palette.index[id]});
+    });
+    return models;
+}
+
+// SIZE and XYZI of every model; each model's voxels are freed once written.
+void writeModels(Models& models, Bytes& children) {
+    for (auto& [key, m] : models) {
+        Bytes size, xyzi;
+        size.i32(m.size.x), size.i32(m.size.y), size.i32(m.size.z);
+        children.chunk("SIZE", size);
+        xyzi.i32(std::int32_t(m.voxels.size()));
+        xyzi.raw(m.voxels.data(), m.voxels.size() * sizeof(VoxVoxel));
+        children.chunk("XYZI", xyzi);
+        std::vector<VoxVoxel>().swap(m.voxels);  // written: free it before the next model's copy
+    }
+}
+
+// Scene graph: root transform 0 -> group 1 -> (transform 2 + 2i -> shape 3 + 2i -> model i),
+// then the one layer.
+void writeSceneGraph(const Models& models, Bytes& children) {
+    Bytes root, group;
+    root.i32(0), root.dict({}), root.i32(1), root.i32(-1), root.i32(-1), root.i32(1), root.dict({});
+    children.chunk("nTRN", root);
+    group.i32(1), group.dict({}), group.i32(std::int32_t(models.size()));
+    for (std::size_t i = 0; i < models.size(); ++i) group.i32(std::int32_t(2 + 2 * i));
+    children.chunk("nGRP", group);
+    std::size_t i = 0;
+    for (const auto& [key, m] : models) {
+        // The import places voxel v at v - size / 2 + _t: _t = origin + size / 2 puts it at
+        // origin + v.
+        const glm::ivec3 t = m.origin + m.size / 2;
+        Bytes transform, shape;
+        transform.i32(std::int32_t(2 + 2 * i)), transform.dict({}),
+            transform.i32(std::int32_t(3 + 2 * i));
+        transform.i32(-1), transform.i32(0), transform.i32(1);
+        transform.dict({{"_t", fmt::format("{} {} {}", t.x, t.y, t.z)}});
+        children.chunk("nTRN", transform);
+        shape.i32(std::int32_t(3 + 2 * i)), shape.dict({}), shape.i32(1),
+            shape.i32(std::int32_t(i)), shape.dict({});
+        children.chunk("nSHP", shape);
+        ++i;
+    }
+    Bytes layer;
+    layer.i32(0), layer.dict({}), layer.i32(-1);
+    children.chunk("LAYR", layer);
+}
+
+// RGBA, and a MATL for every index that emits. Returns how many emit.
+int writePalette(const VoxPalette& palette, Bytes& children) {
+    // Entry k is colour index k + 1; indices the export does not use keep MagicaVoxel's
+    // defaults.
+    Bytes rgba;
+    for (int k = 1; k <= 256; ++k) {
+        const std::uint32_t c =
+            k <= palette.used ? palette.colour[std::size_t(k)] : voxDefaultPaletteColour(k & 255);
+        rgba.i32(std::int32_t(c));
+    }
+    children.chunk("RGBA", rgba);
+    int emissive = 0;
+    for (int k = 1; k <= palette.used; ++k) {
+        if (palette.strength[std::size_t(k)] <= 0.0f) continue;
+        float emit = 0.0f, flux = 0.0f;
+        voxEmitFlux(palette.strength[std::size_t(k)], emit, flux);
+        Bytes matl;
+        matl.i32(k);
+        matl.dict({{"_type", "_emit"},
+                   {"_emit", fmt::format("{}", emit)},
+                   {"_flux", fmt::format("{}", flux)}});
+        children.chunk("MATL", matl);
+        ++emissive;
+    }
+    return emissive;
+}
+
 }  // namespace
 
 Status exportVox(const world::Scene& scene, const fs::path& path, VoxExportReport* reportOut) {
@@ -156,95 +259,12 @@ Status exportVox(const world::Scene& scene, const fs::path& path, VoxExportRepor
     });
     if (r.solidVoxels == 0) content = {glm::ivec3(0), glm::ivec3(1)};
     const VoxPalette palette = buildPalette(scene, counts, r);
-
-    // Engine (X, Y, Z) -> MagicaVoxel (X, maxZ - 1 - Z, Y), relative to the content box: the
-    // inverse of the import's (x, y, z) -> (x, z, -y) up to the shift the import applies.
-    const glm::ivec3 extent = content.size();
-    const glm::ivec3 mvExtent(extent.x, extent.z, extent.y);
-    std::map<std::tuple<int, int, int>, Model> models;
-    auto modelAt = [&](glm::ivec3 mv) -> Model& {
-        const glm::ivec3 chunk = mv / kVoxMaxModelSize;
-        Model& m = models[{chunk.z, chunk.y, chunk.x}];
-        if (m.size.x == 0) {
-            m.origin = chunk * kVoxMaxModelSize;
-            m.size = glm::min(mvExtent - m.origin, glm::ivec3(kVoxMaxModelSize));
-        }
-        return m;
-    };
-    if (r.solidVoxels == 0) modelAt(glm::ivec3(0));  // MagicaVoxel wants at least one model
-    world::forEachSolidVoxel(grid, [&](glm::ivec3 p, world::MaterialId id) {
-        const glm::ivec3 q = p - content.min;
-        const glm::ivec3 mv(q.x, extent.z - 1 - q.z, q.y);
-        Model& m = modelAt(mv);
-        const glm::ivec3 local = mv - m.origin;
-        m.voxels.push_back({std::uint8_t(local.x), std::uint8_t(local.y), std::uint8_t(local.z),
-                            palette.index[id]});
-    });
+    Models models = cutIntoModels(grid, content, palette, r.solidVoxels == 0);
 
     Bytes children;
-    for (auto& [key, m] : models) {
-        Bytes size, xyzi;
-        size.i32(m.size.x), size.i32(m.size.y), size.i32(m.size.z);
-        children.chunk("SIZE", size);
-        xyzi.i32(std::int32_t(m.voxels.size()));
-        xyzi.raw(m.voxels.data(), m.voxels.size() * sizeof(VoxVoxel));
-        children.chunk("XYZI", xyzi);
-        std::vector<VoxVoxel>().swap(m.voxels);  // written: free it before the next model's copy
-    }
-    // Scene graph: root transform 0 -> group 1 -> (transform 2 + 2i -> shape 3 + 2i -> model i).
-    {
-        Bytes root, group;
-        root.i32(0), root.dict({}), root.i32(1), root.i32(-1), root.i32(-1), root.i32(1),
-            root.dict({});
-        children.chunk("nTRN", root);
-        group.i32(1), group.dict({}), group.i32(std::int32_t(models.size()));
-        for (std::size_t i = 0; i < models.size(); ++i) group.i32(std::int32_t(2 + 2 * i));
-        children.chunk("nGRP", group);
-    }
-    std::size_t i = 0;
-    for (const auto& [key, m] : models) {
-        // The import places voxel v at v - size / 2 + _t: _t = origin + size / 2 puts it at origin
-        // + v.
-        const glm::ivec3 t = m.origin + m.size / 2;
-        Bytes transform, shape;
-        transform.i32(std::int32_t(2 + 2 * i)), transform.dict({}),
-            transform.i32(std::int32_t(3 + 2 * i));
-        transform.i32(-1), transform.i32(0), transform.i32(1);
-        transform.dict({{"_t", fmt::format("{} {} {}", t.x, t.y, t.z)}});
-        children.chunk("nTRN", transform);
-        shape.i32(std::int32_t(3 + 2 * i)), shape.dict({}), shape.i32(1),
-            shape.i32(std::int32_t(i)), shape.dict({});
-        children.chunk("nSHP", shape);
-        ++i;
-    }
-    {
-        Bytes layer;
-        layer.i32(0), layer.dict({}), layer.i32(-1);
-        children.chunk("LAYR", layer);
-    }
-    {
-        // Entry k is colour index k + 1; indices the export does not use keep MagicaVoxel's
-        // defaults.
-        Bytes rgba;
-        for (int k = 1; k <= 256; ++k) {
-            const std::uint32_t c = k <= palette.used ? palette.colour[std::size_t(k)]
-                                                      : voxDefaultPaletteColour(k & 255);
-            rgba.i32(std::int32_t(c));
-        }
-        children.chunk("RGBA", rgba);
-    }
-    for (int k = 1; k <= palette.used; ++k) {
-        if (palette.strength[std::size_t(k)] <= 0.0f) continue;
-        float emit = 0.0f, flux = 0.0f;
-        voxEmitFlux(palette.strength[std::size_t(k)], emit, flux);
-        Bytes matl;
-        matl.i32(k);
-        matl.dict({{"_type", "_emit"},
-                   {"_emit", fmt::format("{}", emit)},
-                   {"_flux", fmt::format("{}", flux)}});
-        children.chunk("MATL", matl);
-        ++r.emissive;
-    }
+    writeModels(models, children);
+    writeSceneGraph(models, children);
+    r.emissive = writePalette(palette, children);
     if (children.data.size() > 0x7FFFFFF0u)
         return makeError("{}: the world's {} voxels do not fit in one .vox file (2 GiB)",
                          path.string(), r.solidVoxels);
