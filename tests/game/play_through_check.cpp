@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "check_expect.h"
 #include "core/log.h"
 #include "gpu/context.h"
 #include "io/image_io.h"
@@ -27,16 +28,6 @@ using namespace engine::scene;
 namespace {
 
 constexpr float kNearVoxels = 3.0f;  // a single voxel's shadow on the ground lies this close
-
-int failures = 0;
-#define EXPECT(cond, ...)                      \
-    do {                                       \
-        if (!(cond)) {                         \
-            std::printf("FAIL: " __VA_ARGS__); \
-            std::printf("\n");                 \
-            ++failures;                        \
-        }                                      \
-    } while (0)
 
 struct Change {
     glm::ivec3 voxel;
