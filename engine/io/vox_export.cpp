@@ -269,6 +269,7 @@ Status exportVox(const world::Scene& scene, const fs::path& path, VoxExportRepor
         return makeError("{}: the world's {} voxels do not fit in one .vox file (2 GiB)",
                          path.string(), r.solidVoxels);
     Bytes header;
+    header.data.reserve(20);  // the five fields below (and GCC 12 then sees no overflow)
     header.raw("VOX ", 4);
     header.i32(150);
     header.raw("MAIN", 4);
