@@ -22,7 +22,6 @@ public:
     void written(double nowSeconds, std::uint64_t worldVersion);
     // A write failed: try again one interval from now.
     void postpone(double nowSeconds) { mLastWrite = nowSeconds; }
-    double intervalSeconds() const { return mInterval; }
 
 private:
     double mInterval;

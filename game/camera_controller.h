@@ -36,8 +36,6 @@ public:
     glm::vec3 forward() const;
     glm::vec3 right() const;
     float yawDegrees() const { return mYaw; }
-    float pitchDegrees() const { return mPitch; }
-    float fovYDegrees() const { return mFovY; }
     CameraSettings& settings() { return mSettings; }
 
 private:

@@ -1,16 +1,14 @@
 #include "game/input.h"
 
+#include <GLFW/glfw3.h>
 #include <algorithm>
 #include <cctype>
 #include <utility>
-
-#include <GLFW/glfw3.h>
 
 namespace game {
 
 void InputState::beginFrame() {
     mPressed.fill(false);
-    mReleased.fill(false);
     mButtonPressed.fill(false);
     mButtonReleased.fill(false);
     mMouseDelta = glm::vec2(0.0f);
@@ -19,23 +17,11 @@ void InputState::beginFrame() {
     mClose = false;
 }
 
-void InputState::releaseAll() {
-    for (int k = 0; k < kMaxKeys; ++k) {
-        if (mKeys[k]) mReleased[k] = true;
-    }
-    for (int b = 0; b < kMaxButtons; ++b) {
-        if (mButtons[b]) mButtonReleased[b] = true;
-    }
-    mKeys.fill(false);
-    mButtons.fill(false);
-}
-
 void InputState::apply(const InputEvent& e) {
     switch (e.type) {
         case InputEventType::Key:
             if (!valid(e.code)) return;
             if (e.down && !mKeys[e.code]) mPressed[e.code] = true;
-            if (!e.down && mKeys[e.code]) mReleased[e.code] = true;
             mKeys[e.code] = e.down;
             break;
         case InputEventType::MouseButton:
@@ -53,13 +39,21 @@ void InputState::apply(const InputEvent& e) {
             mCursor = e.value;
             mHasCursor = true;
             break;
-        case InputEventType::Scroll: mScroll += e.value.y; break;
-        case InputEventType::Char: mChars.push_back(static_cast<unsigned>(e.code)); break;
-        case InputEventType::Close: mClose = true; break;
+        case InputEventType::Scroll:
+            mScroll += e.value.y;
+            break;
+        case InputEventType::Char:
+            mChars.push_back(static_cast<unsigned>(e.code));
+            break;
+        case InputEventType::Close:
+            mClose = true;
+            break;
     }
 }
 
-bool InputState::ctrl() const { return held(GLFW_KEY_LEFT_CONTROL) || held(GLFW_KEY_RIGHT_CONTROL); }
+bool InputState::ctrl() const {
+    return held(GLFW_KEY_LEFT_CONTROL) || held(GLFW_KEY_RIGHT_CONTROL);
+}
 bool InputState::shift() const { return held(GLFW_KEY_LEFT_SHIFT) || held(GLFW_KEY_RIGHT_SHIFT); }
 bool InputState::alt() const { return held(GLFW_KEY_LEFT_ALT) || held(GLFW_KEY_RIGHT_ALT); }
 
@@ -67,7 +61,8 @@ namespace {
 
 std::string lower(std::string_view s) {
     std::string out(s);
-    std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    std::transform(out.begin(), out.end(), out.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
     return out;
 }
 
@@ -80,23 +75,43 @@ std::optional<int> keyFromName(std::string_view name) {
         if (c >= '0' && c <= '9') return GLFW_KEY_0 + (c - '0');
     }
     static const std::pair<const char*, int> kNames[] = {
-        {"space", GLFW_KEY_SPACE},          {"escape", GLFW_KEY_ESCAPE},         {"esc", GLFW_KEY_ESCAPE},
-        {"enter", GLFW_KEY_ENTER},          {"tab", GLFW_KEY_TAB},               {"backspace", GLFW_KEY_BACKSPACE},
-        {"delete", GLFW_KEY_DELETE},        {"up", GLFW_KEY_UP},                 {"down", GLFW_KEY_DOWN},
-        {"left", GLFW_KEY_LEFT},            {"right", GLFW_KEY_RIGHT},           {"leftshift", GLFW_KEY_LEFT_SHIFT},
-        {"rightshift", GLFW_KEY_RIGHT_SHIFT}, {"leftctrl", GLFW_KEY_LEFT_CONTROL}, {"rightctrl", GLFW_KEY_RIGHT_CONTROL},
-        {"ctrl", GLFW_KEY_LEFT_CONTROL},    {"shift", GLFW_KEY_LEFT_SHIFT},      {"alt", GLFW_KEY_LEFT_ALT},
-        {"leftalt", GLFW_KEY_LEFT_ALT},     {"rightalt", GLFW_KEY_RIGHT_ALT},    {"[", GLFW_KEY_LEFT_BRACKET},
-        {"]", GLFW_KEY_RIGHT_BRACKET},      {",", GLFW_KEY_COMMA},               {".", GLFW_KEY_PERIOD},
-        {"-", GLFW_KEY_MINUS},              {"=", GLFW_KEY_EQUAL},               {"pageup", GLFW_KEY_PAGE_UP},
-        {"pagedown", GLFW_KEY_PAGE_DOWN},   {"home", GLFW_KEY_HOME},             {"end", GLFW_KEY_END},
+        {"space", GLFW_KEY_SPACE},
+        {"escape", GLFW_KEY_ESCAPE},
+        {"esc", GLFW_KEY_ESCAPE},
+        {"enter", GLFW_KEY_ENTER},
+        {"tab", GLFW_KEY_TAB},
+        {"backspace", GLFW_KEY_BACKSPACE},
+        {"delete", GLFW_KEY_DELETE},
+        {"up", GLFW_KEY_UP},
+        {"down", GLFW_KEY_DOWN},
+        {"left", GLFW_KEY_LEFT},
+        {"right", GLFW_KEY_RIGHT},
+        {"leftshift", GLFW_KEY_LEFT_SHIFT},
+        {"rightshift", GLFW_KEY_RIGHT_SHIFT},
+        {"leftctrl", GLFW_KEY_LEFT_CONTROL},
+        {"rightctrl", GLFW_KEY_RIGHT_CONTROL},
+        {"ctrl", GLFW_KEY_LEFT_CONTROL},
+        {"shift", GLFW_KEY_LEFT_SHIFT},
+        {"alt", GLFW_KEY_LEFT_ALT},
+        {"leftalt", GLFW_KEY_LEFT_ALT},
+        {"rightalt", GLFW_KEY_RIGHT_ALT},
+        {"[", GLFW_KEY_LEFT_BRACKET},
+        {"]", GLFW_KEY_RIGHT_BRACKET},
+        {",", GLFW_KEY_COMMA},
+        {".", GLFW_KEY_PERIOD},
+        {"-", GLFW_KEY_MINUS},
+        {"=", GLFW_KEY_EQUAL},
+        {"pageup", GLFW_KEY_PAGE_UP},
+        {"pagedown", GLFW_KEY_PAGE_DOWN},
+        {"home", GLFW_KEY_HOME},
+        {"end", GLFW_KEY_END},
     };
     std::string n = lower(name);
     for (const auto& [k, code] : kNames) {
         if (n == k) return code;
     }
-    if (n.size() >= 2 && n.size() <= 3 && n[0] == 'f' && n.find_first_not_of("0123456789", 1) == std::string::npos &&
-        n[1] != '0') {
+    if (n.size() >= 2 && n.size() <= 3 && n[0] == 'f' &&
+        n.find_first_not_of("0123456789", 1) == std::string::npos && n[1] != '0') {
         int f = std::atoi(n.c_str() + 1);
         if (f >= 1 && f <= 12) return GLFW_KEY_F1 + (f - 1);
     }

@@ -6,12 +6,11 @@
 #pragma once
 
 #include <array>
+#include <glm/glm.hpp>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 namespace game {
 
@@ -43,12 +42,9 @@ public:
     // The next cursor position starts a new track (after capturing or releasing the mouse,
     // GLFW moves the cursor: that jump is not motion).
     void resetCursorTracking() { mHasCursor = false; }
-    // Releases everything held (focus lost, mode switched).
-    void releaseAll();
 
     bool held(int key) const { return valid(key) && mKeys[key]; }
     bool pressed(int key) const { return valid(key) && mPressed[key]; }
-    bool released(int key) const { return valid(key) && mReleased[key]; }
     bool buttonHeld(int b) const { return validButton(b) && mButtons[b]; }
     bool buttonPressed(int b) const { return validButton(b) && mButtonPressed[b]; }
     bool buttonReleased(int b) const { return validButton(b) && mButtonReleased[b]; }
@@ -66,7 +62,7 @@ private:
     static bool valid(int key) { return key >= 0 && key < kMaxKeys; }
     static bool validButton(int b) { return b >= 0 && b < kMaxButtons; }
 
-    std::array<bool, kMaxKeys> mKeys{}, mPressed{}, mReleased{};
+    std::array<bool, kMaxKeys> mKeys{}, mPressed{};
     std::array<bool, kMaxButtons> mButtons{}, mButtonPressed{}, mButtonReleased{};
     glm::vec2 mMouseDelta{0.0f};
     glm::vec2 mCursor{0.0f};

@@ -1,15 +1,15 @@
 #include "game/object_tools.h"
 
+#include <GLFW/glfw3.h>
 #include <algorithm>
 #include <cmath>
-#include <utility>
-
-#include <GLFW/glfw3.h>
 #include <fmt/format.h>
+#include <utility>
 
 #include "game/input.h"
 #include "game/world_store.h"
 #include "world/scene_trace.h"
+#include "world/solid_voxels.h"
 #include "world/world_limits.h"
 
 namespace game {
@@ -22,10 +22,14 @@ engine::Result<ObjectModel> loadObjectModel(const fs::path& path) {
     std::error_code ec;
     if (ext == ".vdb" || ext == ".vox") {
         const std::uintmax_t bytes = fs::file_size(path, ec);
-        if (ec) return engine::makeError("{}: cannot read the model: {}", path.string(), ec.message());
+        if (ec)
+            return engine::makeError("{}: cannot read the model: {}", path.string(), ec.message());
         if (bytes > kMaxModelFileBytes)
-            return engine::makeError("{}: {:.1f} MiB is too big for a model (files up to {} MiB, at most {} solid voxels)",
-                                     path.string(), double(bytes) / (1 << 20), kMaxModelFileBytes >> 20, kMaxModelVoxels);
+            return engine::makeError(
+                "{}: {:.1f} MiB is too big for a model (files up to {} MiB, at most {} solid "
+                "voxels)",
+                path.string(), double(bytes) / (1 << 20), kMaxModelFileBytes >> 20,
+                kMaxModelVoxels);
     }
     auto scene = makeWorldStore()->load(path);
     if (!scene) return scene.error();
@@ -33,24 +37,14 @@ engine::Result<ObjectModel> loadObjectModel(const fs::path& path) {
     const std::uint64_t solid = grid.solidVoxels();
     if (solid == 0) return engine::makeError("{}: the model has no solid voxels", path.string());
     if (solid > kMaxModelVoxels)
-        return engine::makeError("{}: {} solid voxels; a model holds at most {}", path.string(), solid, kMaxModelVoxels);
+        return engine::makeError("{}: {} solid voxels; a model holds at most {}", path.string(),
+                                 solid, kMaxModelVoxels);
 
-    // The solid voxels' box, visiting only cells that hold something.
+    // The solid voxels and their box.
     std::vector<std::pair<glm::ivec3, world::MaterialId>> voxels;
     voxels.reserve(solid);
-    const glm::ivec3 cells = grid.sizeInCells();
-    for (int cz = 0; cz < cells.z; ++cz)
-        for (int cy = 0; cy < cells.y; ++cy)
-            for (int cx = 0; cx < cells.x; ++cx) {
-                const glm::ivec3 c(cx, cy, cz);
-                if (grid.cell(c) == shared::CELL_EMPTY) continue;
-                for (int z = 0; z < world::kBrickDim; ++z)
-                    for (int y = 0; y < world::kBrickDim; ++y)
-                        for (int x = 0; x < world::kBrickDim; ++x) {
-                            const glm::ivec3 p = c * world::kBrickDim + glm::ivec3(x, y, z);
-                            if (world::MaterialId m = grid.get(p); m != world::kEmpty) voxels.emplace_back(p, m);
-                        }
-            }
+    world::forEachSolidVoxel(grid,
+                             [&](glm::ivec3 p, world::MaterialId m) { voxels.emplace_back(p, m); });
     glm::ivec3 lo(INT32_MAX), hi(INT32_MIN);
     for (const auto& [p, m] : voxels) {
         lo = glm::min(lo, p);
@@ -58,8 +52,8 @@ engine::Result<ObjectModel> loadObjectModel(const fs::path& path) {
     }
     const glm::ivec3 size = hi - lo;
     if (glm::any(glm::greaterThan(size, glm::ivec3(world::kMaxObjectExtent))))
-        return engine::makeError("{}: the model spans {} x {} x {} voxels; at most {} a side", path.string(), size.x,
-                                 size.y, size.z, world::kMaxObjectExtent);
+        return engine::makeError("{}: the model spans {} x {} x {} voxels; at most {} a side",
+                                 path.string(), size.x, size.y, size.z, world::kMaxObjectExtent);
 
     ObjectModel model;
     model.name = path.stem().string();
@@ -117,7 +111,9 @@ void setPose(world::DynamicObject& object, double time, const ObjectPose& pose, 
     if (keys.size() == 1 && (!addKey || std::abs(keys[0].time - time) <= kKeyTolerance)) {
         keys[0] = makeKey(keys[0].time, pose);
     } else {
-        auto at = std::find_if(keys.begin(), keys.end(), [&](const world::ObjectKey& k) { return k.time >= time - kKeyTolerance; });
+        auto at = std::find_if(keys.begin(), keys.end(), [&](const world::ObjectKey& k) {
+            return k.time >= time - kKeyTolerance;
+        });
         if (at != keys.end() && std::abs(at->time - time) <= kKeyTolerance) {
             *at = makeKey(at->time, pose);
         } else {
@@ -130,11 +126,14 @@ void setPose(world::DynamicObject& object, double time, const ObjectPose& pose, 
 
 std::string describe(const world::DynamicObject& o) {
     const auto& k = o.path.keys();
-    return k.size() == 1 ? "static" : fmt::format("{} keys, {}", k.size(), o.path.loop() ? "looping" : "stops at the end");
+    return k.size() == 1 ? "static"
+                         : fmt::format("{} keys, {}", k.size(),
+                                       o.path.loop() ? "looping" : "stops at the end");
 }
 
 template <typename Change>
-ObjectResult modify(world::Scene& scene, UndoHistory& undo, std::size_t index, double time, Change change) {
+ObjectResult modify(world::Scene& scene, UndoHistory& undo, std::size_t index, double time,
+                    Change change) {
     if (index >= scene.objects.size()) return {false, "no object selected (right click one, or N)"};
     world::DynamicObject before = scene.objects[index];
     std::string label = change(scene.objects[index]);
@@ -149,16 +148,19 @@ ObjectResult modify(world::Scene& scene, UndoHistory& undo, std::size_t index, d
 ObjectPose editPose(const world::DynamicObject& object, double time) {
     const auto& keys = object.path.keys();
     // Clamped by hand: a looping path wraps its last key's time to its first pose.
-    const world::ObjectKey* end = time >= keys.back().time ? &keys.back() : time <= keys.front().time ? &keys.front() : nullptr;
-    const world::RigidTransform pose = end ? world::RigidTransform{end->position, end->rotation} : object.path.at(time);
+    const world::ObjectKey* end = time >= keys.back().time    ? &keys.back()
+                                  : time <= keys.front().time ? &keys.front()
+                                                              : nullptr;
+    const world::RigidTransform pose =
+        end ? world::RigidTransform{end->position, end->rotation} : object.path.at(time);
     const glm::dquat q = pose.rotation;
     // Objects turn about +Y only; a scene file's pitch and roll are dropped by an edit.
     const double yaw = 2.0 * std::atan2(q.y, q.w) * 180.0 / kPi;
     return snapped({pose.position, yaw}, object.modelSize);
 }
 
-ObjectResult placeObject(world::Scene& scene, UndoHistory& undo, const ObjectModel& model, const Pick& target,
-                         double time) {
+ObjectResult placeObject(world::Scene& scene, UndoHistory& undo, const ObjectModel& model,
+                         const Pick& target, double time) {
     if (!target.hit) return {false, "place object: nothing placed: " + missReason(target)};
     // The model's materials, by name, into the world's palette (added where missing).
     std::vector<world::MaterialId> map(model.palette.size(), world::kEmpty);
@@ -174,7 +176,10 @@ ObjectResult placeObject(world::Scene& scene, UndoHistory& undo, const ObjectMod
                     const world::Material& mat = model.palette[m];
                     auto id = scene.palette.find(mat.name);
                     if (!id) id = scene.palette.add(mat);
-                    if (!id) return {false, fmt::format("place object: the palette is full ({} materials)", scene.palette.size())};
+                    if (!id)
+                        return {false,
+                                fmt::format("place object: the palette is full ({} materials)",
+                                            scene.palette.size())};
                     map[m] = *id;
                 }
                 voxels.set({x, y, z}, map[m]);
@@ -196,24 +201,28 @@ ObjectResult placeObject(world::Scene& scene, UndoHistory& undo, const ObjectMod
                          [&](const world::DynamicObject& o) { return o.name == object.name; }))
             break;
     }
-    std::string label = fmt::format("place {} ({} voxels) at {} {} {}", object.name, model.solidVoxels, corner.x,
-                                    corner.y, corner.z);
+    std::string label = fmt::format("place {} ({} voxels) at {} {} {}", object.name,
+                                    model.solidVoxels, corner.x, corner.y, corner.z);
     scene.objects.push_back(std::move(object));
-    const bool undoable = undo.recordObject(scene.objects, scene.objects.size() - 1, std::nullopt, true, label);
+    const bool undoable =
+        undo.recordObject(scene.objects, scene.objects.size() - 1, std::nullopt, true, label);
     refreshObjects(scene, time);
     return {true, label + (undoable ? "" : " - too large to undo within the budget")};
 }
 
-ObjectResult moveObject(world::Scene& scene, UndoHistory& undo, std::size_t index, glm::ivec3 delta, double time) {
+ObjectResult moveObject(world::Scene& scene, UndoHistory& undo, std::size_t index, glm::ivec3 delta,
+                        double time) {
     return modify(scene, undo, index, time, [&](world::DynamicObject& o) {
         ObjectPose pose = editPose(o, time);
         pose.position += glm::dvec3(delta);
         setPose(o, time, pose, false);
-        return fmt::format("move {} by {} {} {} ({})", o.name, delta.x, delta.y, delta.z, describe(o));
+        return fmt::format("move {} by {} {} {} ({})", o.name, delta.x, delta.y, delta.z,
+                           describe(o));
     });
 }
 
-ObjectResult turnObject(world::Scene& scene, UndoHistory& undo, std::size_t index, double degrees, double time) {
+ObjectResult turnObject(world::Scene& scene, UndoHistory& undo, std::size_t index, double degrees,
+                        double time) {
     return modify(scene, undo, index, time, [&](world::DynamicObject& o) {
         ObjectPose pose = editPose(o, time);
         pose.yawDegrees += degrees;
@@ -230,7 +239,8 @@ ObjectResult setObjectKey(world::Scene& scene, UndoHistory& undo, std::size_t in
     });
 }
 
-ObjectResult clearObjectPath(world::Scene& scene, UndoHistory& undo, std::size_t index, double time) {
+ObjectResult clearObjectPath(world::Scene& scene, UndoHistory& undo, std::size_t index,
+                             double time) {
     return modify(scene, undo, index, time, [&](world::DynamicObject& o) {
         o.path = world::ObjectPath({makeKey(time, editPose(o, time))}, false);
         o.startTime.reset();
@@ -238,7 +248,8 @@ ObjectResult clearObjectPath(world::Scene& scene, UndoHistory& undo, std::size_t
     });
 }
 
-ObjectResult toggleObjectLoop(world::Scene& scene, UndoHistory& undo, std::size_t index, double time) {
+ObjectResult toggleObjectLoop(world::Scene& scene, UndoHistory& undo, std::size_t index,
+                              double time) {
     if (index < scene.objects.size() && scene.objects[index].path.keys().size() < 2)
         return {false, scene.objects[index].name + " has no path to loop (K sets keys)"};
     return modify(scene, undo, index, time, [&](world::DynamicObject& o) {
@@ -270,17 +281,21 @@ bool dragObject(world::DynamicObject& object, const Pick& target, double time) {
     return true;
 }
 
-std::optional<std::size_t> pickObject(const world::Scene& scene, glm::vec3 origin, glm::vec3 direction) {
+std::optional<std::size_t> pickObject(const world::Scene& scene, glm::vec3 origin,
+                                      glm::vec3 direction) {
     const float finite = glm::dot(origin, origin) + glm::dot(direction, direction);
     if (!std::isfinite(finite) || glm::dot(direction, direction) == 0.0f) return std::nullopt;
-    const world::SceneHit hit = world::traceScene(scene.grid, &scene.dynamic, origin, direction, kPickDistance);
+    const world::SceneHit hit =
+        world::traceScene(scene.grid, &scene.dynamic, origin, direction, kPickDistance);
     if (!hit.hit || !hit.dynamicSet) return std::nullopt;
     // The same test voxelizeObjects makes: the voxel's centre in the model; first object wins.
     const glm::dvec4 centre(glm::dvec3(hit.voxel) + 0.5, 1.0);
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const world::DynamicObject& o = scene.objects[i];
-        const glm::ivec3 m(glm::floor(glm::dvec3(glm::inverse(o.worldFromModel(o.current)) * centre)));
-        if (world::Box{glm::ivec3(0), o.modelSize}.contains(m) && o.model->get(m) != world::kEmpty) return i;
+        const glm::ivec3 m(
+            glm::floor(glm::dvec3(glm::inverse(o.worldFromModel(o.current)) * centre)));
+        if (world::Box{glm::ivec3(0), o.modelSize}.contains(m) && o.model->get(m) != world::kEmpty)
+            return i;
     }
     return std::nullopt;
 }
@@ -292,15 +307,17 @@ void refreshObjects(world::Scene& scene, double time) {
     scene.dynamic.revision = revision + 1;
 }
 
-ObjectResult ObjectTools::handle(const InputState& input, bool mouseLook, const Pick& target, glm::vec3 origin,
-                                 glm::vec3 direction, world::Scene& scene, UndoHistory& undo, double time) {
+ObjectResult ObjectTools::handle(const InputState& input, bool mouseLook, const Pick& target,
+                                 glm::vec3 origin, glm::vec3 direction, world::Scene& scene,
+                                 UndoHistory& undo, double time) {
     ObjectResult r;
     auto add = [&](ObjectResult x) {
         r.changed |= x.changed;
         if (!x.message.empty()) r.message = std::move(x.message);
     };
     if (mDrag && !input.buttonHeld(GLFW_MOUSE_BUTTON_LEFT)) add(finishDrag(scene, undo));
-    if (mDrag && mDrag->index < scene.objects.size() && dragObject(scene.objects[mDrag->index], target, mDrag->time))
+    if (mDrag && mDrag->index < scene.objects.size() &&
+        dragObject(scene.objects[mDrag->index], target, mDrag->time))
         refreshObjects(scene, time);
     const bool leftPressed = mouseLook && input.buttonPressed(GLFW_MOUSE_BUTTON_LEFT);
     if (leftPressed && selected && pickObject(scene, origin, direction) == selected) {
@@ -308,7 +325,8 @@ ObjectResult ObjectTools::handle(const InputState& input, bool mouseLook, const 
         add({false, "dragging " + scene.objects[*selected].name + " (release to drop)"});
     } else if (leftPressed) {
         if (models.empty()) {
-            add({false, "no model to place: start vox play with --model FILE.vox|FILE.vdb|WORLD.toml"});
+            add({false,
+                 "no model to place: start vox play with --model FILE.vox|FILE.vdb|WORLD.toml"});
         } else {
             ObjectResult placed = placeObject(scene, undo, models[model], target, time);
             if (placed.changed) selected = scene.objects.size() - 1;
@@ -317,7 +335,8 @@ ObjectResult ObjectTools::handle(const InputState& input, bool mouseLook, const 
     }
     if (mouseLook && input.buttonPressed(GLFW_MOUSE_BUTTON_RIGHT)) {
         selected = pickObject(scene, origin, direction);
-        add({false, selected ? "selected " + scene.objects[*selected].name : "no object under the crosshair"});
+        add({false, selected ? "selected " + scene.objects[*selected].name
+                             : "no object under the crosshair"});
     }
     if (input.pressed(GLFW_KEY_N)) {
         if (scene.objects.empty()) {
@@ -336,14 +355,18 @@ ObjectResult ObjectTools::handle(const InputState& input, bool mouseLook, const 
     const std::size_t i = *selected;
     const int step = input.shift() ? 8 : 1;
     const std::pair<int, glm::ivec3> moves[] = {
-        {GLFW_KEY_LEFT, {-step, 0, 0}}, {GLFW_KEY_RIGHT, {step, 0, 0}}, {GLFW_KEY_UP, {0, 0, step}},
-        {GLFW_KEY_DOWN, {0, 0, -step}}, {GLFW_KEY_HOME, {0, step, 0}},  {GLFW_KEY_END, {0, -step, 0}}};
+        {GLFW_KEY_LEFT, {-step, 0, 0}}, {GLFW_KEY_RIGHT, {step, 0, 0}},
+        {GLFW_KEY_UP, {0, 0, step}},    {GLFW_KEY_DOWN, {0, 0, -step}},
+        {GLFW_KEY_HOME, {0, step, 0}},  {GLFW_KEY_END, {0, -step, 0}}};
     for (const auto& [key, delta] : moves) {
         if (input.pressed(key)) add(moveObject(scene, undo, i, delta, time));
     }
-    if (input.pressed(GLFW_KEY_R)) add(turnObject(scene, undo, i, input.shift() ? -90.0 : 90.0, time));
-    if (input.pressed(GLFW_KEY_LEFT_BRACKET)) add(turnObject(scene, undo, i, -kFreeTurnDegrees, time));
-    if (input.pressed(GLFW_KEY_RIGHT_BRACKET)) add(turnObject(scene, undo, i, kFreeTurnDegrees, time));
+    if (input.pressed(GLFW_KEY_R))
+        add(turnObject(scene, undo, i, input.shift() ? -90.0 : 90.0, time));
+    if (input.pressed(GLFW_KEY_LEFT_BRACKET))
+        add(turnObject(scene, undo, i, -kFreeTurnDegrees, time));
+    if (input.pressed(GLFW_KEY_RIGHT_BRACKET))
+        add(turnObject(scene, undo, i, kFreeTurnDegrees, time));
     if (input.pressed(GLFW_KEY_K)) add(setObjectKey(scene, undo, i, time));
     if (input.pressed(GLFW_KEY_L)) add(toggleObjectLoop(scene, undo, i, time));
     if (input.pressed(GLFW_KEY_BACKSPACE)) add(clearObjectPath(scene, undo, i, time));
@@ -364,7 +387,8 @@ ObjectResult ObjectTools::finishDrag(world::Scene& scene, UndoHistory& undo) {
     if (from.position == to.position) return {false, "drag: " + o.name + " stayed where it was"};
     const glm::ivec3 d(glm::round(to.position - from.position));
     std::string label = fmt::format("drag {} by {} {} {} ({})", o.name, d.x, d.y, d.z, describe(o));
-    const bool undoable = undo.recordObject(scene.objects, drag.index, std::move(drag.before), true, label);
+    const bool undoable =
+        undo.recordObject(scene.objects, drag.index, std::move(drag.before), true, label);
     return {true, label + (undoable ? "" : " - too large to undo within the budget")};
 }
 
@@ -374,8 +398,8 @@ void ObjectTools::objectsChanged(const world::Scene& scene) {
 
 std::string ObjectTools::status(const world::Scene& scene) const {
     std::string s = models.empty() ? "object tool: no model (--model FILE)"
-                                   : fmt::format("object tool: model {} ({} voxels, M: next)", models[model].name,
-                                                 models[model].solidVoxels);
+                                   : fmt::format("object tool: model {} ({} voxels, M: next)",
+                                                 models[model].name, models[model].solidVoxels);
     if (selected && *selected < scene.objects.size()) {
         const world::DynamicObject& o = scene.objects[*selected];
         s += fmt::format("; selected {} ({})", o.name, describe(o));

@@ -1,17 +1,16 @@
 #include "game/sandbox.h"
 
+#include <GLFW/glfw3.h>
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <fmt/format.h>
 #include <fstream>
+#include <imgui.h>
 #include <memory>
 #include <optional>
 #include <thread>
-
-#include <GLFW/glfw3.h>
-#include <fmt/format.h>
-#include <imgui.h>
 
 #include "core/atomic_file.h"
 #include "game/autosave.h"
@@ -42,9 +41,10 @@ namespace fs = std::filesystem;
 namespace world = engine::world;
 
 std::string noDisplayMessage(const std::string& why, bool captureCommand) {
-    return fmt::format("vox play: {}; the sandbox needs a window. Render headless instead: "
-                       "`vox render [WORLD] -o out/render.png`{}",
-                       why, captureCommand ? " (or `vox capture` for scripted flythroughs)" : "");
+    return fmt::format(
+        "vox play: {}; the sandbox needs a window. Render headless instead: "
+        "`vox render [WORLD] -o out/render.png`{}",
+        why, captureCommand ? " (or `vox capture` for scripted flythroughs)" : "");
 }
 
 namespace {
@@ -56,15 +56,33 @@ constexpr const char* kSavedViewName = "saved view";
 
 class Sandbox {
 public:
-    explicit Sandbox(const PlayOptions& options) : mOptions(options), mWalk(options.player),
-                                                   mUndo(options.undoMegabytes << 20),
-                                                   mAutosave(options.autosaveMinutes * 60.0) {}
+    explicit Sandbox(const PlayOptions& options)
+        : mOptions(options),
+          mWalk(options.player),
+          mUndo(options.undoMegabytes << 20),
+          mAutosave(options.autosaveMinutes * 60.0) {}
     int run();
 
 private:
     engine::Status init();
+    // What renderFrame() did: `presented` false when the window is minimised.
+    struct RenderedFrame {
+        engine::render::FrameResult result;
+        bool presented = false;
+        double renderCallMs = 0.0;
+        glm::uvec2 size{0};
+    };
+
     void frame();
+    float advanceClock(std::chrono::steady_clock::time_point start);
+    void pollInput();
+    void applyHudActions(const HudActions& actions);
+    void requestScriptCaptures();
+    RenderedFrame renderFrame(glm::uvec2 framebuffer);
+    void adjustRenderScale(const engine::render::FrameResult& result, glm::uvec2 framebuffer);
     void handleInput(float dt);
+    void handleEditClicks();
+    void handleToolKeys(bool hudMouse, bool clickCaptured);
     void handleQuitPrompt();
     void applyEdit(const EditOp& op);
     void handleObjects(bool clicks);
@@ -166,23 +184,28 @@ engine::Status Sandbox::init() {
         if (!script) return script.error();
         mScript = std::move(*script);
     }
-    auto path = engine::scene::resolveWorldPath(mOptions.world.empty() ? "sandbox" : mOptions.world);
+    auto path =
+        engine::scene::resolveWorldPath(mOptions.world.empty() ? "sandbox" : mOptions.world);
     if (!path) return path.error();
     mWorldPath = *path;
     auto scene = mStore->load(mWorldPath);
     if (!scene) return scene.error();
     mScene = std::move(*scene);
     if (!mOptions.camera.empty()) {
-        bool found = std::any_of(mScene.cameras.begin(), mScene.cameras.end(),
-                                 [&](const world::CameraPreset& c) { return c.name == mOptions.camera; });
-        if (!found) return engine::makeError("{}: no camera named '{}'", mWorldPath.string(), mOptions.camera);
+        bool found =
+            std::any_of(mScene.cameras.begin(), mScene.cameras.end(),
+                        [&](const world::CameraPreset& c) { return c.name == mOptions.camera; });
+        if (!found)
+            return engine::makeError("{}: no camera named '{}'", mWorldPath.string(),
+                                     mOptions.camera);
     }
     mCamera.setFromPreset(mScene.camera(mOptions.camera));
     for (std::size_t i = 0; i < mScene.cameras.size(); ++i) {
         if (mScene.cameras[i].name == mCamera.preset().name) mCameraIndex = i;
     }
     // A world of [world] alone (or a colourless .vox) has no material to place with: none is
-    // chosen, and placing and painting are refused until it has one (an object's model brings its own).
+    // chosen, and placing and painting are refused until it has one (an object's model brings its
+    // own).
     mTools.material = mScene.palette.size() > 1 ? 1 : world::kEmpty;
     for (const std::string& m : mOptions.models) {
         auto modelPath = engine::scene::resolveWorldPath(m);
@@ -200,7 +223,8 @@ engine::Status Sandbox::init() {
     }
     if (!mOptions.editLogPath.empty()) {
         mEditLog.open(mOptions.editLogPath);
-        if (!mEditLog) return engine::makeError("{}: cannot write the edit log", mOptions.editLogPath);
+        if (!mEditLog)
+            return engine::makeError("{}: cannot write the edit log", mOptions.editLogPath);
         mEditLog << "# vox play edit log: world " << mWorldPath.string() << "\n";
     }
     if (!mOptions.frameLogPath.empty()) {
@@ -208,7 +232,8 @@ engine::Status Sandbox::init() {
         mFrameLog = &mFrameLogFile.stream();
         // wall: the whole loop iteration (input, HUD, edits, render + present, script actions);
         // render_call: Renderer::render alone; gpu: its passes' GPU time, present included.
-        *mFrameLog << "frame,wall_ms,render_call_ms,gpu_ms,present_gpu_ms,render_width,render_height\n";
+        *mFrameLog
+            << "frame,wall_ms,render_call_ms,gpu_ms,present_gpu_ms,render_width,render_height\n";
     }
     if (!mOptions.walkLogPath.empty()) {
         if (engine::Status s = mWalkLogFile.open(mOptions.walkLogPath); !s) return s;
@@ -220,7 +245,8 @@ engine::Status Sandbox::init() {
     windowOptions.size = mOptions.windowSize;
     windowOptions.title = title();
     auto window = Window::create(windowOptions);
-    if (!window) return engine::Error{noDisplayMessage(window.error().message, mOptions.captureCommand)};
+    if (!window)
+        return engine::Error{noDisplayMessage(window.error().message, mOptions.captureCommand)};
     mWindow = std::move(*window);
 
     engine::gpu::ContextOptions ctxOptions;
@@ -241,11 +267,13 @@ engine::Status Sandbox::init() {
 
     const auto& dev = mCtx->info();
     glm::ivec3 size = mScene.grid.sizeInVoxels();
-    std::printf("vox play: %s (%d x %d x %d voxels, %u bricks) on %s%s; saves to %s\n", mScene.name.c_str(), size.x,
-                size.y, size.z, mScene.grid.liveBricks(), dev.name.c_str(),
-                mCtx->validationEnabled() ? " with validation" : "", mSavePath.string().c_str());
-    if (mScript) std::printf("vox play: replaying %s (%zu steps, fixed %.4f s per frame)\n", mOptions.scriptPath.c_str(),
-                             mScript->steps().size(), double(kScriptStep));
+    std::printf("vox play: %s (%d x %d x %d voxels, %u bricks) on %s%s; saves to %s\n",
+                mScene.name.c_str(), size.x, size.y, size.z, mScene.grid.liveBricks(),
+                dev.name.c_str(), mCtx->validationEnabled() ? " with validation" : "",
+                mSavePath.string().c_str());
+    if (mScript)
+        std::printf("vox play: replaying %s (%zu steps, fixed %.4f s per frame)\n",
+                    mOptions.scriptPath.c_str(), mScript->steps().size(), double(kScriptStep));
     std::fflush(stdout);
     // Live play starts looking around; a script's mouse is logical (never grabs a real one).
     setMouseLook(true);
@@ -270,7 +298,8 @@ int Sandbox::run() {
     mLastFrameStart = std::chrono::steady_clock::now();
     while (!mQuit) frame();
     int exitCode = 0;
-    for (auto [log, file] : {std::pair{mFrameLog, &mFrameLogFile}, std::pair{mWalkLog, &mWalkLogFile}}) {
+    for (auto [log, file] :
+         {std::pair{mFrameLog, &mFrameLogFile}, std::pair{mWalkLog, &mWalkLogFile}}) {
         if (!log) continue;
         if (engine::Status c = file->commit(); !c) {
             std::fprintf(stderr, "vox play: %s\n", c.error().message.c_str());
@@ -278,7 +307,8 @@ int Sandbox::run() {
         }
     }
     if (mEditLog.is_open() && !mEditLog.flush()) {
-        std::fprintf(stderr, "vox play: %s: cannot write the edit log (disk full?)\n", mOptions.editLogPath.c_str());
+        std::fprintf(stderr, "vox play: %s: cannot write the edit log (disk full?)\n",
+                     mOptions.editLogPath.c_str());
         exitCode = 1;
     }
     if (mCtx && mCtx->validationErrors() > 0) {
@@ -289,7 +319,52 @@ int Sandbox::run() {
 }
 
 void Sandbox::frame() {
-    auto start = std::chrono::steady_clock::now();
+    const auto start = std::chrono::steady_clock::now();
+    const float dt = advanceClock(start);
+    pollInput();
+
+    glm::uvec2 framebuffer = mWindow->framebufferSize();
+    glm::uvec2 windowSize = mWindow->windowSize();
+    glm::vec2 cursorScale = windowSize.x > 0 && windowSize.y > 0
+                                ? glm::vec2(framebuffer) / glm::vec2(windowSize)
+                                : glm::vec2(1.0f);
+    mImGui->newFrame(mInput, framebuffer, cursorScale, dt, !mMouseLook);
+    ImGui::NewFrame();
+
+    handleInput(dt);
+
+    if (mTime - mMessageTime > kMessageSeconds) mMessage.clear();
+    HudControls controls{mTools,     mScene.palette, mScene.sky, mRenderScale,
+                         mAutoScale, mExposure,      mLighting};
+    float scaleBefore = mRenderScale;
+    HudActions actions = mHud.draw(hudStats(), controls, mQuitPrompt);
+    if (mRenderScale != scaleBefore) mAutoScale = false;  // moved by hand: the hand wins
+    mRenderScale = std::clamp(mRenderScale, kMinRenderScale, 1.0f);
+    ImGui::Render();
+    applyHudActions(actions);
+    requestScriptCaptures();
+
+    const RenderedFrame rendered = renderFrame(framebuffer);
+    afterFrame(rendered.result, rendered.presented);
+    if (mFrameLog && rendered.presented) {
+        const double wallMs =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count();
+        *mFrameLog << fmt::format("{},{:.3f},{:.3f},{:.3f},{:.3f},{},{}\n", mFrame, wallMs,
+                                  rendered.renderCallMs, rendered.result.totalMs(),
+                                  rendered.result.passMsOf("present"), rendered.size.x,
+                                  rendered.size.y);
+    }
+    if (mWalkLog) *mWalkLog << mWalk.logRow(mFrame, mTime) << "\n";
+    ++mFrame;
+    if (mOptions.maxFrames && mFrame >= mOptions.maxFrames) {
+        if (!mQuit) message(fmt::format("stopping after {} frames (--frames)", mOptions.maxFrames));
+        mQuit = true;
+    }
+}
+
+// This frame's time step: the script's fixed step, or the wall clock's (at most 0.1 s).
+float Sandbox::advanceClock(std::chrono::steady_clock::time_point start) {
     float dt;
     if (mScript) {
         dt = kScriptStep;
@@ -299,8 +374,11 @@ void Sandbox::frame() {
     mCpuFrameMs = std::chrono::duration<double, std::milli>(start - mLastFrameStart).count();
     mLastFrameStart = start;
     mTime += dt;
+    return dt;
+}
 
-    // Input: a script replaces live input entirely, except the close button.
+// Input: a script replaces live input entirely, except the close button.
+void Sandbox::pollInput() {
     std::vector<InputEvent> live = mWindow->pollEvents();
     mInput.beginFrame();
     if (mScript) {
@@ -311,26 +389,15 @@ void Sandbox::frame() {
     } else {
         for (const InputEvent& e : live) mInput.apply(e);
     }
+}
 
-    glm::uvec2 framebuffer = mWindow->framebufferSize();
-    glm::uvec2 windowSize = mWindow->windowSize();
-    glm::vec2 cursorScale = windowSize.x > 0 && windowSize.y > 0 ? glm::vec2(framebuffer) / glm::vec2(windowSize) : glm::vec2(1.0f);
-    mImGui->newFrame(mInput, framebuffer, cursorScale, dt, !mMouseLook);
-    ImGui::NewFrame();
-
-    handleInput(dt);
-
-    if (mTime - mMessageTime > kMessageSeconds) mMessage.clear();
-    HudControls controls{mTools, mScene.palette, mScene.sky, mRenderScale, mAutoScale, mExposure, mLighting};
-    float scaleBefore = mRenderScale;
-    HudActions actions = mHud.draw(hudStats(), controls, mQuitPrompt);
-    if (mRenderScale != scaleBefore) mAutoScale = false;  // moved by hand: the hand wins
-    mRenderScale = std::clamp(mRenderScale, kMinRenderScale, 1.0f);
-    ImGui::Render();
+// The HUD's buttons: undo, redo, save, and the quit prompt's answers.
+void Sandbox::applyHudActions(const HudActions& actions) {
     if (actions.undo) undo();
     if (actions.redo) redo();
     if (actions.save) {
-        if (engine::Status st = save(mSavePath, false); !st) message("save failed: " + st.error().message);
+        if (engine::Status st = save(mSavePath, false); !st)
+            message("save failed: " + st.error().message);
     }
     if (actions.quitSave || actions.quitDiscard || actions.quitCancel) {
         mQuitPrompt = false;
@@ -346,65 +413,60 @@ void Sandbox::frame() {
             mQuit = true;
         }
     }
+}
 
-    // Script captures of the presented window must be requested before the frame is drawn.
-    if (mScript) {
-        for (const ScriptAction& a : mScript->actionsFor(mFrame)) {
-            if (a.kind == ScriptAction::Kind::Capture) {
-                mCaptureRequested = true;
-                mPendingCapturePath = a.path;
-            }
+// Script captures of the presented window must be requested before the frame is drawn.
+void Sandbox::requestScriptCaptures() {
+    if (!mScript) return;
+    for (const ScriptAction& a : mScript->actionsFor(mFrame)) {
+        if (a.kind == ScriptAction::Kind::Capture) {
+            mCaptureRequested = true;
+            mPendingCapturePath = a.path;
         }
     }
+}
 
-    engine::render::FrameResult result;
-    bool presented = false;
-    double renderCallMs = 0.0;
-    glm::uvec2 renderedSize{0};
-    if (mPresenter->beginFrame(framebuffer)) {
-        engine::render::FrameSettings settings;
-        glm::uvec2 size = renderSize(framebuffer);
-        settings.width = size.x;
-        settings.height = size.y;
-        settings.exposure = mExposure;
-        settings.timeSeconds = mTime;  // dynamic objects: the script clock when scripted, else wall clock
-        mPresenter->setOverlay(ImGui::GetDrawData());
-        if (mCaptureRequested) mPresenter->captureThisFrame();
-        const auto renderStart = std::chrono::steady_clock::now();
-        result = mRenderer->render(mScene, mCamera.preset(), settings, mLighting, mPresenter.get());
-        renderCallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - renderStart).count();
-        renderedSize = size;
-        mLastFrame = result;
-        presented = true;
-        if (mAutoScale) {
-            // The passes that scale with the render resolution; presenting fills the window
-            // whatever the scale.
-            double ms = result.totalMs() - result.passMsOf("present");
-            float next = mScaleController.update(mRenderScale, ms);
-            if (next != mRenderScale) {
-                glm::uvec2 from = renderSize(framebuffer);
-                mRenderScale = next;
-                glm::uvec2 to = renderSize(framebuffer);
-                message(fmt::format("render {}x{} -> {}x{}: frame passes took {:.0f} ms (median), aiming at {:.0f} ms "
-                                    "(auto scale)",
-                                    from.x, from.y, to.x, to.y, mScaleController.lastMedianMs(), mScaleController.targetMs()));
-            }
-        }
-    } else {
+// Renders and presents the frame, unless the window is minimised (then it waits a little).
+Sandbox::RenderedFrame Sandbox::renderFrame(glm::uvec2 framebuffer) {
+    RenderedFrame out;
+    if (!mPresenter->beginFrame(framebuffer)) {
         std::this_thread::sleep_for(std::chrono::milliseconds(16));  // minimised: do not spin
+        return out;
     }
-    afterFrame(result, presented);
-    if (mFrameLog && presented) {
-        const double wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-        *mFrameLog << fmt::format("{},{:.3f},{:.3f},{:.3f},{:.3f},{},{}\n", mFrame, wallMs, renderCallMs,
-                                 result.totalMs(), result.passMsOf("present"), renderedSize.x, renderedSize.y);
-    }
-    if (mWalkLog) *mWalkLog << mWalk.logRow(mFrame, mTime) << "\n";
-    ++mFrame;
-    if (mOptions.maxFrames && mFrame >= mOptions.maxFrames) {
-        if (!mQuit) message(fmt::format("stopping after {} frames (--frames)", mOptions.maxFrames));
-        mQuit = true;
-    }
+    engine::render::FrameSettings settings;
+    glm::uvec2 size = renderSize(framebuffer);
+    settings.width = size.x;
+    settings.height = size.y;
+    settings.exposure = mExposure;
+    settings.timeSeconds =
+        mTime;  // dynamic objects: the script clock when scripted, else wall clock
+    mPresenter->setOverlay(ImGui::GetDrawData());
+    if (mCaptureRequested) mPresenter->captureThisFrame();
+    const auto renderStart = std::chrono::steady_clock::now();
+    out.result = mRenderer->render(mScene, mCamera.preset(), settings, mLighting, mPresenter.get());
+    out.renderCallMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - renderStart)
+            .count();
+    out.size = size;
+    out.presented = true;
+    mLastFrame = out.result;
+    if (mAutoScale) adjustRenderScale(out.result, framebuffer);
+    return out;
+}
+
+// Auto scale: the passes that scale with the render resolution steer it; presenting fills the
+// window whatever the scale.
+void Sandbox::adjustRenderScale(const engine::render::FrameResult& result, glm::uvec2 framebuffer) {
+    double ms = result.totalMs() - result.passMsOf("present");
+    float next = mScaleController.update(mRenderScale, ms);
+    if (next == mRenderScale) return;
+    glm::uvec2 from = renderSize(framebuffer);
+    mRenderScale = next;
+    glm::uvec2 to = renderSize(framebuffer);
+    message(fmt::format(
+        "render {}x{} -> {}x{}: frame passes took {:.0f} ms (median), aiming at {:.0f} ms "
+        "(auto scale)",
+        from.x, from.y, to.x, to.y, mScaleController.lastMedianMs(), mScaleController.targetMs()));
 }
 
 void Sandbox::handleInput(float dt) {
@@ -434,48 +496,65 @@ void Sandbox::handleInput(float dt) {
 
     if (!mInput.ctrl() && mInput.pressed(GLFW_KEY_F)) message(mWalk.toggle(mScene, mCamera));
     if (mWalk.active()) {
-        if (std::string m = mWalk.update(mInput, dt, mTime, mMouseLook, mScene, mCamera); !m.empty()) message(m);
+        if (std::string m = mWalk.update(mInput, dt, mTime, mMouseLook, mScene, mCamera);
+            !m.empty())
+            message(m);
     } else {
         mCamera.update(mInput, dt, mMouseLook);
     }
     mTarget = pick(mScene.grid, mCamera.position(), mCamera.forward());
 
-    if (mMouseLook && !clickCaptured && !mObjects.active) {
-        // A press or release that edits nothing says why (the sky, a ray that is not finite).
-        auto use = [&](bool pressed) {
-            bool wasDragging = mTools.dragging();
-            std::optional<EditOp> op = pressed ? mTools.press(mTarget) : mTools.release(mTarget);
-            if (op) applyEdit(*op);
-            else if (pressed && !mTarget.hit) message(fmt::format("{}: nothing edited: {}", toolName(mTools.tool), missReason(mTarget)));
-            else if (!pressed && wasDragging) message(fmt::format("box released over no surface: nothing edited: {}", missReason(mTarget)));
-        };
-        if (mInput.buttonPressed(GLFW_MOUSE_BUTTON_LEFT)) use(true);
-        if (mInput.buttonReleased(GLFW_MOUSE_BUTTON_LEFT)) use(false);
-        // Right button: remove with the current brush, whatever the tool.
-        if (mInput.buttonPressed(GLFW_MOUSE_BUTTON_RIGHT) || mInput.buttonReleased(GLFW_MOUSE_BUTTON_RIGHT)) {
-            Tool saved = mTools.tool;
-            mTools.tool = Tool::Remove;
-            use(mInput.buttonPressed(GLFW_MOUSE_BUTTON_RIGHT));
-            mTools.tool = saved;
-        }
-        if (mInput.buttonPressed(GLFW_MOUSE_BUTTON_MIDDLE) || mInput.pressed(GLFW_KEY_I)) {
-            if (mTools.eyedrop(mTarget)) message("eyedropper: " + mScene.palette[mTools.material].name);
-        }
-    }
+    if (mMouseLook && !clickCaptured && !mObjects.active) handleEditClicks();
 
-    bool ctrl = mInput.ctrl();
-    if (ctrl) {
+    if (mInput.ctrl()) {
         if (mInput.pressed(GLFW_KEY_Z)) mInput.shift() ? redo() : undo();
         if (mInput.pressed(GLFW_KEY_Y)) redo();
         if (mInput.pressed(GLFW_KEY_S)) {
-            if (engine::Status st = save(mSavePath, false); !st) message("save failed: " + st.error().message);
+            if (engine::Status st = save(mSavePath, false); !st)
+                message("save failed: " + st.error().message);
         }
         return;  // Ctrl+key is a command, never also a tool key
     }
+    handleToolKeys(hudMouse, clickCaptured);
+}
+
+// The mouse buttons on the world: the tool (left), removing (right), the eyedropper (middle, I).
+void Sandbox::handleEditClicks() {
+    // A press or release that edits nothing says why (the sky, a ray that is not finite).
+    auto use = [&](bool pressed) {
+        bool wasDragging = mTools.dragging();
+        std::optional<EditOp> op = pressed ? mTools.press(mTarget) : mTools.release(mTarget);
+        if (op)
+            applyEdit(*op);
+        else if (pressed && !mTarget.hit)
+            message(
+                fmt::format("{}: nothing edited: {}", toolName(mTools.tool), missReason(mTarget)));
+        else if (!pressed && wasDragging)
+            message(fmt::format("box released over no surface: nothing edited: {}",
+                                missReason(mTarget)));
+    };
+    if (mInput.buttonPressed(GLFW_MOUSE_BUTTON_LEFT)) use(true);
+    if (mInput.buttonReleased(GLFW_MOUSE_BUTTON_LEFT)) use(false);
+    // Right button: remove with the current brush, whatever the tool.
+    if (mInput.buttonPressed(GLFW_MOUSE_BUTTON_RIGHT) ||
+        mInput.buttonReleased(GLFW_MOUSE_BUTTON_RIGHT)) {
+        Tool saved = mTools.tool;
+        mTools.tool = Tool::Remove;
+        use(mInput.buttonPressed(GLFW_MOUSE_BUTTON_RIGHT));
+        mTools.tool = saved;
+    }
+    if (mInput.buttonPressed(GLFW_MOUSE_BUTTON_MIDDLE) || mInput.pressed(GLFW_KEY_I)) {
+        if (mTools.eyedrop(mTarget)) message("eyedropper: " + mScene.palette[mTools.material].name);
+    }
+}
+
+// Keys without Ctrl: tools, brush, material, render scale, camera presets, HUD, screenshots.
+void Sandbox::handleToolKeys(bool hudMouse, bool clickCaptured) {
     if (mInput.pressed(GLFW_KEY_1)) mTools.tool = Tool::Place;
     if (mInput.pressed(GLFW_KEY_2)) mTools.tool = Tool::Remove;
     if (mInput.pressed(GLFW_KEY_3)) mTools.tool = Tool::Paint;
-    if (mInput.pressed(GLFW_KEY_1) || mInput.pressed(GLFW_KEY_2) || mInput.pressed(GLFW_KEY_3)) mObjects.active = false;
+    if (mInput.pressed(GLFW_KEY_1) || mInput.pressed(GLFW_KEY_2) || mInput.pressed(GLFW_KEY_3))
+        mObjects.active = false;
     if (mInput.pressed(GLFW_KEY_4)) {
         mObjects.active = true;
         mTools.cancelDrag();
@@ -489,7 +568,8 @@ void Sandbox::handleInput(float dt) {
     }
     if (mInput.pressed(GLFW_KEY_MINUS)) mTools.radius = std::max(0.5f, mTools.radius - 0.5f);
     if (mInput.pressed(GLFW_KEY_EQUAL)) mTools.radius = std::min(32.0f, mTools.radius + 0.5f);
-    int materialStep = (mInput.pressed(GLFW_KEY_PERIOD) ? 1 : 0) - (mInput.pressed(GLFW_KEY_COMMA) ? 1 : 0);
+    int materialStep =
+        (mInput.pressed(GLFW_KEY_PERIOD) ? 1 : 0) - (mInput.pressed(GLFW_KEY_COMMA) ? 1 : 0);
     if (!hudMouse && mInput.scroll() != 0.0f) materialStep += mInput.scroll() > 0.0f ? -1 : 1;
     int materials = static_cast<int>(mScene.palette.size()) - 1;
     if (materialStep != 0 && materials > 0) {
@@ -498,9 +578,11 @@ void Sandbox::handleInput(float dt) {
     }
     if (mInput.pressed(GLFW_KEY_PAGE_UP) || mInput.pressed(GLFW_KEY_PAGE_DOWN)) {
         mAutoScale = false;
-        mRenderScale = mInput.pressed(GLFW_KEY_PAGE_UP) ? std::min(1.0f, mRenderScale * 1.25f)
-                                                         : std::max(kMinRenderScale, mRenderScale / 1.25f);
-        message(fmt::format("render scale {:.3f} (auto off; the HUD turns it back on)", mRenderScale));
+        mRenderScale = mInput.pressed(GLFW_KEY_PAGE_UP)
+                           ? std::min(1.0f, mRenderScale * 1.25f)
+                           : std::max(kMinRenderScale, mRenderScale / 1.25f);
+        message(
+            fmt::format("render scale {:.3f} (auto off; the HUD turns it back on)", mRenderScale));
     }
     if (mInput.pressed(GLFW_KEY_C) && !mScene.cameras.empty()) {
         mCameraIndex = (mCameraIndex + 1) % mScene.cameras.size();
@@ -549,16 +631,20 @@ void Sandbox::requestQuit() {
     if (!mQuitPrompt) {
         mQuitPrompt = true;
         setMouseLook(false);
-        message(fmt::format("unsaved changes: Y saves and quits, N quits without saving, Esc cancels ({})",
-                            mSavePath.string()));
+        message(fmt::format(
+            "unsaved changes: Y saves and quits, N quits without saving, Esc cancels ({})",
+            mSavePath.string()));
     }
 }
 
 void Sandbox::applyEdit(const EditOp& op) {
-    if (op.tool != Tool::Remove && (op.material == world::kEmpty || op.material >= mScene.palette.size())) {
-        message(fmt::format("{}: refused: the world has no materials (a --model object brings its own; then , and . "
-                            "choose one)",
-                            toolName(op.tool)));
+    if (op.tool != Tool::Remove &&
+        (op.material == world::kEmpty || op.material >= mScene.palette.size())) {
+        message(
+            fmt::format("{}: refused: the world has no materials (a --model object brings its own; "
+                        "then , and . "
+                        "choose one)",
+                        toolName(op.tool)));
         return;
     }
     if (std::string why = mWalk.refusal(op, mScene.grid); !why.empty()) {
@@ -568,7 +654,8 @@ void Sandbox::applyEdit(const EditOp& op) {
     EditRecord rec = mUndo.record(mScene.grid, op.region(), op.describe(mScene.palette),
                                   [&](world::BrickGrid& grid) { game::applyEdit(grid, op); });
     if (rec.changedCells == 0) {
-        message(op.describe(mScene.palette) + ": nothing changed: " + unchangedReason(mScene.grid, op, mScene.palette));
+        message(op.describe(mScene.palette) +
+                ": nothing changed: " + unchangedReason(mScene.grid, op, mScene.palette));
         return;
     }
     ++mWorldVersion;
@@ -576,18 +663,22 @@ void Sandbox::applyEdit(const EditOp& op) {
     mFrameChangedCells += rec.changedCells;
     if (mEditLog) {
         glm::vec3 o = mCamera.position(), d = mCamera.forward();
-        mEditLog << fmt::format("edit {} {} {} ray {} {} {} {} {} {} box {} {} {} {} {} {} sphere {} {} {} {} material {} cells {}\n",
-                                mFrame, toolName(op.tool), brushName(op.brush), o.x, o.y, o.z, d.x, d.y, d.z, op.box.min.x,
-                                op.box.min.y, op.box.min.z, op.box.max.x, op.box.max.y, op.box.max.z, op.center.x,
-                                op.center.y, op.center.z, op.radius, op.material, rec.changedCells);
+        mEditLog << fmt::format(
+            "edit {} {} {} ray {} {} {} {} {} {} box {} {} {} {} {} {} sphere {} {} {} {} material "
+            "{} cells {}\n",
+            mFrame, toolName(op.tool), brushName(op.brush), o.x, o.y, o.z, d.x, d.y, d.z,
+            op.box.min.x, op.box.min.y, op.box.min.z, op.box.max.x, op.box.max.y, op.box.max.z,
+            op.center.x, op.center.y, op.center.z, op.radius, op.material, rec.changedCells);
         mEditLog.flush();
     }
-    message(fmt::format("{} ({} cell{}){}", op.describe(mScene.palette), rec.changedCells, rec.changedCells == 1 ? "" : "s",
+    message(fmt::format("{} ({} cell{}){}", op.describe(mScene.palette), rec.changedCells,
+                        rec.changedCells == 1 ? "" : "s",
                         rec.undoable ? "" : " - too large to undo within the budget"));
 }
 
 void Sandbox::handleObjects(bool clicks) {
-    ObjectResult r = mObjects.handle(mInput, clicks, mTarget, mCamera.position(), mCamera.forward(), mScene, mUndo, mTime);
+    ObjectResult r = mObjects.handle(mInput, clicks, mTarget, mCamera.position(), mCamera.forward(),
+                                     mScene, mUndo, mTime);
     if (r.changed) ++mWorldVersion;
     if (!r.message.empty()) message(r.message);
 }
@@ -627,14 +718,17 @@ engine::Status Sandbox::save(const fs::path& path, bool autosave) {
     view.name = kSavedViewName;
     // A camera that is not finite would be written and refused on loading: refuse it here.
     if (engine::Status ok = world::checkCamera(view); !ok) return ok;
-    std::erase_if(mScene.cameras, [](const world::CameraPreset& c) { return c.name == kSavedViewName; });
+    std::erase_if(mScene.cameras,
+                  [](const world::CameraPreset& c) { return c.name == kSavedViewName; });
     mScene.cameras.insert(mScene.cameras.begin(), view);
     engine::Status s = mStore->save(mScene, path);
     mScene.cameras = std::move(presets);
     if (!s) return s;
     mAutosave.written(mTime, mWorldVersion);
     if (!autosave) mSavedVersion = mWorldVersion;
-    if (mEditLog) mEditLog << fmt::format("{} {} {}\n", autosave ? "autosave" : "save", mFrame, path.string()) << std::flush;
+    if (mEditLog)
+        mEditLog << fmt::format("{} {} {}\n", autosave ? "autosave" : "save", mFrame, path.string())
+                 << std::flush;
     message(fmt::format("{} {}", autosave ? "autosaved to" : "saved", path.string()));
     return {};
 }
@@ -643,10 +737,12 @@ void Sandbox::logView(const char* what, const fs::path& path) {
     if (!mEditLog) return;
     world::CameraPreset c = mCamera.preset();
     glm::uvec2 size = renderSize(mWindow->framebufferSize());
-    mEditLog << fmt::format("{} {} {} view {} {} {} {} {} {} fov {} size {} {} frame {} exposure {} lighting {}\n", what,
-                            mFrame, path.string(), c.position.x, c.position.y, c.position.z, c.target.x, c.target.y,
-                            c.target.z, c.fovYDegrees, size.x, size.y, mFrame, mExposure,
-                            engine::lighting::methodName(mLighting.method))
+    mEditLog << fmt::format(
+                    "{} {} {} view {} {} {} {} {} {} fov {} size {} {} frame {} exposure {} "
+                    "lighting {}\n",
+                    what, mFrame, path.string(), c.position.x, c.position.y, c.position.z,
+                    c.target.x, c.target.y, c.target.z, c.fovYDegrees, size.x, size.y, mFrame,
+                    mExposure, engine::lighting::methodName(mLighting.method))
              << std::flush;
 }
 
@@ -660,7 +756,8 @@ void Sandbox::writeRenderImage(const fs::path& path) {
         return;
     }
     logView("screenshot", path);
-    message(fmt::format("screenshot {} ({}x{}, rendered image)", path.string(), images.width, images.height));
+    message(fmt::format("screenshot {} ({}x{}, rendered image)", path.string(), images.width,
+                        images.height));
 }
 
 void Sandbox::writeWindowCapture(const fs::path& path) {
@@ -677,16 +774,18 @@ void Sandbox::writeWindowCapture(const fs::path& path) {
         return;
     }
     logView("capture", path);
-    message(fmt::format("screenshot {} ({}x{}, window with HUD)", path.string(), cap.width, cap.height));
+    message(fmt::format("screenshot {} ({}x{}, window with HUD)", path.string(), cap.width,
+                        cap.height));
 }
 
 void Sandbox::afterFrame(const engine::render::FrameResult& result, bool presented) {
-
     if (mFrameEdits > 0 && presented) {
         // The latency contract: this frame showed the edits and uploaded only what they touched.
-        std::printf("frame %llu: presented %zu edit(s) changing %zu cell(s); uploaded %u brick(s), %u cell(s)%s\n",
-                    static_cast<unsigned long long>(mFrame), mFrameEdits, mFrameChangedCells, result.upload.bricks,
-                    result.upload.cells, result.upload.full ? " (full upload)" : "");
+        std::printf(
+            "frame %llu: presented %zu edit(s) changing %zu cell(s); uploaded %u brick(s), %u "
+            "cell(s)%s\n",
+            static_cast<unsigned long long>(mFrame), mFrameEdits, mFrameChangedCells,
+            result.upload.bricks, result.upload.cells, result.upload.full ? " (full upload)" : "");
         std::fflush(stdout);
         mFrameEdits = 0;
         mFrameChangedCells = 0;
@@ -716,18 +815,24 @@ void Sandbox::afterFrame(const engine::render::FrameResult& result, bool present
 void Sandbox::runScriptActions() {
     for (const ScriptAction& a : mScript->actionsFor(mFrame)) {
         switch (a.kind) {
-            case ScriptAction::Kind::Screenshot: writeRenderImage(a.path); break;
-            case ScriptAction::Kind::Capture: break;  // written with the frame above
+            case ScriptAction::Kind::Screenshot:
+                writeRenderImage(a.path);
+                break;
+            case ScriptAction::Kind::Capture:
+                break;  // written with the frame above
             case ScriptAction::Kind::Resize:
                 mWindow->resize(a.size);
                 message(fmt::format("window resized to {}x{}", a.size.x, a.size.y));
                 break;
-            case ScriptAction::Kind::Quit: requestQuit(); break;
+            case ScriptAction::Kind::Quit:
+                requestQuit();
+                break;
         }
     }
     // A script that ends without quitting stops one frame after its last step.
     if (!mQuit && mFrame > mScript->lastFrame()) {
-        message(unsaved() ? "script ended with unsaved changes; quitting without saving" : "script ended");
+        message(unsaved() ? "script ended with unsaved changes; quitting without saving"
+                          : "script ended");
         mQuit = true;
     }
 }

@@ -37,7 +37,6 @@ public:
     std::string refusal(const EditOp& op, const engine::world::BrickGrid& grid) const;
 
     const engine::world::PlayerBody& body() const { return mBody; }
-    double collisionMs() const { return mCollisionMs; }  // this frame's physics on the CPU
     // One HUD line: the mode, the body's state, the collision cost.
     std::string hudText() const;
     // The walk log (`vox play --walk-log`): one CSV row per frame, the body's box in voxels.

@@ -4,11 +4,10 @@
 // can warn about unsaved changes before closing.
 #pragma once
 
+#include <glm/glm.hpp>
 #include <memory>
 #include <string>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "core/error.h"
 #include "game/input.h"
@@ -41,7 +40,6 @@ public:
     // Processes pending window-system events and returns them in order.
     std::vector<InputEvent> pollEvents();
     void setCursorCaptured(bool captured);
-    bool cursorCaptured() const { return mCaptured; }
     void setTitle(const std::string& title);
     void resize(glm::uvec2 size);
 

@@ -1,10 +1,9 @@
 #include "core/allocation_budget.h"
 
-#include <malloc.h>
-
 #include <atomic>
 #include <cstddef>
 #include <cstdlib>
+#include <malloc.h>
 #include <new>
 
 #include "core/check.h"
@@ -20,7 +19,7 @@ std::atomic<std::uint64_t> gTotalLimit{0};
 std::atomic<std::uint64_t> gSingleLimit{0};
 std::atomic<std::uint64_t> gRefused{0};
 std::atomic<bool> gRefusedAsSingle{false};  // the first refusal was the per-allocation ceiling's
-std::atomic<bool> gSoft{false};  // inside a Headroom: the total may be exceeded
+std::atomic<bool> gSoft{false};             // inside a Headroom: the total may be exceeded
 
 void* allocate(std::size_t n, std::size_t align) {
     const bool active = gActive.load(std::memory_order_relaxed);
@@ -28,12 +27,14 @@ void* allocate(std::size_t n, std::size_t align) {
         std::int64_t used = gUsed.load(std::memory_order_relaxed);
         std::uint64_t after = used > 0 ? std::uint64_t(used) + n : n;
         const bool single = n > gSingleLimit.load(std::memory_order_relaxed);
-        if (single || (after > gTotalLimit.load(std::memory_order_relaxed) && !gSoft.load(std::memory_order_relaxed))) {
+        if (single || (after > gTotalLimit.load(std::memory_order_relaxed) &&
+                       !gSoft.load(std::memory_order_relaxed))) {
             std::uint64_t none = 0;
             // "Single" when the ceiling, not the budget, was the limit: a larger budget would not
             // lift it (the ceiling equals the budget only when the budget is the smaller).
             if (gRefused.compare_exchange_strong(none, n ? n : 1))
-                gRefusedAsSingle = single && gSingleLimit.load(std::memory_order_relaxed) < gTotalLimit.load(std::memory_order_relaxed);
+                gRefusedAsSingle = single && gSingleLimit.load(std::memory_order_relaxed) <
+                                                 gTotalLimit.load(std::memory_order_relaxed);
             throw std::bad_alloc();
         }
     }
@@ -45,8 +46,9 @@ void* allocate(std::size_t n, std::size_t align) {
     }
     if (!p) throw std::bad_alloc();
     if (active) [[unlikely]] {
-        std::int64_t now = gUsed.fetch_add(std::int64_t(::malloc_usable_size(p)), std::memory_order_relaxed) +
-                           std::int64_t(::malloc_usable_size(p));
+        std::int64_t now =
+            gUsed.fetch_add(std::int64_t(::malloc_usable_size(p)), std::memory_order_relaxed) +
+            std::int64_t(::malloc_usable_size(p));
         std::int64_t peak = gPeak.load(std::memory_order_relaxed);
         while (now > peak && !gPeak.compare_exchange_weak(peak, now, std::memory_order_relaxed)) {
         }
@@ -63,7 +65,8 @@ void release(void* p) noexcept {
 
 }  // namespace
 
-AllocationBudget::AllocationBudget(std::uint64_t totalBytes, std::uint64_t singleBytes) : mTotal(totalBytes) {
+AllocationBudget::AllocationBudget(std::uint64_t totalBytes, std::uint64_t singleBytes)
+    : mTotal(totalBytes) {
     CHECK_MSG(!gActive.load(), "only one AllocationBudget may be active");
     gUsed = 0;
     gPeak = 0;
@@ -82,10 +85,8 @@ AllocationBudget::~AllocationBudget() {
 
 bool AllocationBudget::exceeded() const { return gRefused.load() != 0; }
 std::uint64_t AllocationBudget::refusedBytes() const { return gRefused.load(); }
-bool AllocationBudget::refusedAsSingleRequest() const { return gRefused.load() != 0 && gRefusedAsSingle.load(); }
-std::uint64_t AllocationBudget::usedBytes() const {
-    std::int64_t u = gUsed.load();
-    return u > 0 ? std::uint64_t(u) : 0;
+bool AllocationBudget::refusedAsSingleRequest() const {
+    return gRefused.load() != 0 && gRefusedAsSingle.load();
 }
 std::uint64_t AllocationBudget::peakBytes() const {
     std::int64_t p = gPeak.load();
@@ -124,8 +125,12 @@ AllocationBudget::LargeAllocations::~LargeAllocations() { gSingleLimit = mSaved;
 // allocate()/release() above so a budget sees every operator new in the process.
 void* operator new(std::size_t n) { return engine::allocate(n, 0); }
 void* operator new[](std::size_t n) { return engine::allocate(n, 0); }
-void* operator new(std::size_t n, std::align_val_t a) { return engine::allocate(n, std::size_t(a)); }
-void* operator new[](std::size_t n, std::align_val_t a) { return engine::allocate(n, std::size_t(a)); }
+void* operator new(std::size_t n, std::align_val_t a) {
+    return engine::allocate(n, std::size_t(a));
+}
+void* operator new[](std::size_t n, std::align_val_t a) {
+    return engine::allocate(n, std::size_t(a));
+}
 void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
     try {
         return engine::allocate(n, 0);
@@ -164,5 +169,9 @@ void operator delete(void* p, std::size_t, std::align_val_t) noexcept { engine::
 void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { engine::release(p); }
 void operator delete(void* p, const std::nothrow_t&) noexcept { engine::release(p); }
 void operator delete[](void* p, const std::nothrow_t&) noexcept { engine::release(p); }
-void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept { engine::release(p); }
-void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept { engine::release(p); }
+void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept {
+    engine::release(p);
+}
+void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept {
+    engine::release(p);
+}

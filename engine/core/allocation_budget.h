@@ -30,13 +30,13 @@ public:
     // a larger budget would not lift.
     bool refusedAsSingleRequest() const;
     std::uint64_t singleBytes() const { return mSingle; }  // the per-allocation ceiling
-    std::uint64_t usedBytes() const;     // net bytes allocated since the budget began
     std::uint64_t peakBytes() const;
     std::uint64_t totalBytes() const { return mTotal; }
 
     // Throws std::bad_alloc, counted as a refused request, when `bytes` more would not fit in the
     // active budget; for callers that know the size of a coming burst of small allocations and
-    // must not be interrupted half way (a library that is not exception-safe). No-op without a budget.
+    // must not be interrupted half way (a library that is not exception-safe). No-op without a
+    // budget.
     static void require(std::uint64_t bytes);
 
     // For calls into code that is not exception-safe when an allocation fails (OpenVDB's tree

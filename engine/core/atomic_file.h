@@ -33,7 +33,6 @@ public:
     // Creates the temporary for `target`; refuses a target that is a folder or whose folder
     // does not exist.
     Status open(const std::filesystem::path& target);
-    bool isOpen() const { return mFd >= 0; }
 
     // Checked writes; the first failure sticks (later writes do nothing) and commit() reports it.
     Status write(const void* data, std::size_t bytes);
@@ -62,7 +61,7 @@ private:
                                         const std::function<Status(const std::filesystem::path&)>&);
     Status writeDirect(const void* data, std::size_t bytes);
     void recordError(std::string_view what, int error);  // keeps the first
-    Status fail(std::string_view what, int error);        // records, returns the first
+    Status fail(std::string_view what, int error);       // records, returns the first
 
     std::filesystem::path mTarget, mTemporary;
     int mFd = -1;
@@ -76,11 +75,13 @@ private:
 Status writeFileAtomically(const std::filesystem::path& target, std::string_view bytes);
 // `write` fills the file (through file.write or file.stream()); committed if it and every write
 // succeeded.
-Status writeFileAtomically(const std::filesystem::path& target, const std::function<Status(AtomicFile& file)>& write);
+Status writeFileAtomically(const std::filesystem::path& target,
+                           const std::function<Status(AtomicFile& file)>& write);
 // For a writer that only takes a path (an external program like ffmpeg): it writes the
 // temporary path it is given; the result is then fsynced (checked) and renamed like any other.
-Status replaceFileAtomically(const std::filesystem::path& target,
-                             const std::function<Status(const std::filesystem::path& temporary)>& writeTo);
+Status replaceFileAtomically(
+    const std::filesystem::path& target,
+    const std::function<Status(const std::filesystem::path& temporary)>& writeTo);
 
 // `.NAME.tmp-PID` for `target`, in the target's folder (core/file_name.h shortens a long NAME).
 std::filesystem::path temporaryPathFor(const std::filesystem::path& target);

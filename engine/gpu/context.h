@@ -1,6 +1,6 @@
 // gpu::Context: the Vulkan instance, the chosen physical device (a real GPU if there is one,
-// else lavapipe), the logical device with one compute queue, and the validation-message
-// counters tests assert on. Only engine/gpu/ includes vulkan.h; the rest of the engine holds
+// else lavapipe), the logical device with one compute queue, and the count of validation
+// errors tests assert on. Only engine/gpu/ includes vulkan.h; the rest of the engine holds
 // gpu:: objects.
 //
 // Headless by default. Given a window (ContextOptions::window) the context also owns the
@@ -9,12 +9,11 @@
 // with VK_KHR_swapchain enabled.
 #pragma once
 
-#include <vulkan/vulkan.h>
-
 #include <atomic>
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vulkan/vulkan.h>
 
 #include "core/error.h"
 
@@ -69,9 +68,8 @@ public:
     // The window's surface; VK_NULL_HANDLE for a headless context.
     VkSurfaceKHR surface() const { return mSurface; }
 
-    // Validation messages seen so far (errors are also printed to stderr).
+    // Validation errors seen so far (every message, warning or error, is printed to stderr).
     std::uint32_t validationErrors() const { return mValidationErrors.load(); }
-    std::uint32_t validationWarnings() const { return mValidationWarnings.load(); }
 
     // Checks of texel views use min(the device's limit, texels) from now on; 0 restores the
     // device's limit. For tests of what a world over the limit does.
@@ -92,10 +90,15 @@ public:
 private:
     Context() = default;
     Status init(const ContextOptions& options);
-    static VKAPI_ATTR VkBool32 VKAPI_CALL onValidationMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
-                                                              VkDebugUtilsMessageTypeFlagsEXT types,
-                                                              const VkDebugUtilsMessengerCallbackDataEXT* data,
-                                                              void* user);
+    // init's steps, in order (the window's surface is made between the instance and the device).
+    Status createInstance(const ContextOptions& options);
+    VkDebugUtilsMessengerCreateInfoEXT messengerCreateInfo();
+    Status pickPhysicalDevice();
+    void readDeviceInfo();
+    Status createDevice();
+    static VKAPI_ATTR VkBool32 VKAPI_CALL onValidationMessage(
+        VkDebugUtilsMessageSeverityFlagBitsEXT severity, VkDebugUtilsMessageTypeFlagsEXT types,
+        const VkDebugUtilsMessengerCallbackDataEXT* data, void* user);
 
     VkInstance mInstance = VK_NULL_HANDLE;
     VkDebugUtilsMessengerEXT mMessenger = VK_NULL_HANDLE;
@@ -113,7 +116,6 @@ private:
     bool mDebugUtils = false;
     std::uint64_t mCompletedSubmissions = 0;
     std::atomic<std::uint32_t> mValidationErrors{0};
-    std::atomic<std::uint32_t> mValidationWarnings{0};
 };
 
 }  // namespace engine::gpu

@@ -208,8 +208,4 @@ void Presenter::endFrame() {
     }
 }
 
-glm::uvec2 Presenter::windowExtent() const {
-    return {mSwapchain->extent().width, mSwapchain->extent().height};
-}
-
 }  // namespace engine::gpu

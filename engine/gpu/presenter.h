@@ -9,10 +9,9 @@
 #pragma once
 
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <memory>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "gpu/buffer.h"
 #include "gpu/context.h"
@@ -53,7 +52,6 @@ public:
     // Called by the renderer after the submission completed: presents, and finishes a capture.
     void endFrame();
 
-    glm::uvec2 windowExtent() const;
     // The last capture (after the frame that asked for it); empty before that.
     const WindowCapture& capture() const { return mCapture; }
 

@@ -13,7 +13,8 @@ void makeSlabs(ImportState& im, const std::vector<std::uint8_t>& marks) {
     const glm::ivec3 cells = (place.worldSize + 7) / 8;
     const std::vector<Box>& leaves = im.topology.leaves;
     std::vector<std::uint64_t> perLayer(std::size_t(cells.z) + 1, 0);
-    const double margin = place.trilinear ? std::max({place.map.scale.x, place.map.scale.y, place.map.scale.z}) : 0.0;
+    const double margin =
+        place.trilinear ? std::max({place.map.scale.x, place.map.scale.y, place.map.scale.z}) : 0.0;
     for (const Box& leaf : leaves) {
         Box w = place.map.span(place.map.orient(leaf), margin).intersect(place.worldBox);
         if (w.empty()) continue;
@@ -42,15 +43,17 @@ void makeSlabs(ImportState& im, const std::vector<std::uint8_t>& marks) {
     im.plan.slabs = int(im.slabs.size());
 }
 
-Status fillSlabs(ImportState& im, world::BrickGrid& grid, const std::vector<std::uint8_t>& marks, bool intoExisting) {
+Status fillSlabs(ImportState& im, world::BrickGrid& grid, const std::vector<std::uint8_t>& marks,
+                 bool intoExisting) {
     const Placement& place = im.place;
     const Box& worldBox = place.worldBox;
     const glm::ivec3 cells = (place.worldSize + 7) / 8;
     const glm::ivec3 lo = worldBox.min >> 3, hi = (worldBox.max - 1) >> 3;
     DirtyListBound dirty(grid);
     for (const Slab& slab : im.slabs) {
-        Box worldPart{glm::ivec3(worldBox.min.x, worldBox.min.y, std::max(worldBox.min.z, slab.cz0 * 8)),
-                      glm::ivec3(worldBox.max.x, worldBox.max.y, std::min(worldBox.max.z, slab.cz1 * 8))};
+        Box worldPart{
+            glm::ivec3(worldBox.min.x, worldBox.min.y, std::max(worldBox.min.z, slab.cz0 * 8)),
+            glm::ivec3(worldBox.max.x, worldBox.max.y, std::min(worldBox.max.z, slab.cz1 * 8))};
         Box sourcePart = place.map.unorient(place.map.needed(worldPart)).intersect(place.sourceBox);
         if (sourcePart.empty()) continue;
         im.shape->attach(im.reader.readRegion(im.grids.shapeIndex, leafAligned(sourcePart)));
@@ -63,11 +66,13 @@ Status fillSlabs(ImportState& im, world::BrickGrid& grid, const std::vector<std:
                     const glm::ivec3 c(cx, cy, cz);
                     if (marks[cellIndex(cells, c)] != kCellSample) continue;
                     world::BrickVoxels voxels;
-                    if (intoExisting) voxels = grid.readCell(c);
-                    else voxels.fill(world::kEmpty);
+                    if (intoExisting)
+                        voxels = grid.readCell(c);
+                    else
+                        voxels.fill(world::kEmpty);
                     bool any = false;
                     for (int i = 0; i < world::kBrickVoxels; ++i) {
-                        const glm::ivec3 t = c * 8 + glm::ivec3(i & 7, (i >> 3) & 7, i >> 6);
+                        const glm::ivec3 t = c * 8 + world::brickVoxelPosition(i);
                         if (!worldBox.contains(t)) continue;
                         Sample s;
                         if (!solidAt(im, t, s)) continue;

@@ -5,13 +5,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <fmt/format.h>
 #include <new>
 
-#include <fmt/format.h>
-
 #include "core/allocation_budget.h"
-#include "core/number_check.h"
 #include "core/memory_budget.h"
+#include "core/number_check.h"
 #include "core/quoted_string.h"
 #include "world/scene.h"
 #include "world/world_limits.h"
@@ -25,7 +24,9 @@ namespace {
 // MagicaVoxel (x, y, z), Z-up, to engine axes before the shift: (x, z, -y).
 glm::ivec3 toEngineAxes(glm::ivec3 v) { return {v.x, v.z, -v.y}; }
 
-std::string mibText(std::uint64_t bytes) { return fmt::format("{:.1f} MiB", double(bytes) / (1 << 20)); }
+std::string mibText(std::uint64_t bytes) {
+    return fmt::format("{:.1f} MiB", double(bytes) / (1 << 20));
+}
 
 // The file read and placed: everything an import needs before it touches a world.
 struct Placed {
@@ -36,7 +37,8 @@ struct Placed {
     VoxImportReport report;
 };
 
-Result<Placed> place(const fs::path& path, const VoxImportOptions& options, const world::Scene* target) {
+Result<Placed> place(const fs::path& path, const VoxImportOptions& options,
+                     const world::Scene* target) {
     auto file = readVoxFile(path);
     if (!file) return file.error();
     Placed p;
@@ -80,16 +82,18 @@ Result<Placed> place(const fs::path& path, const VoxImportOptions& options, cons
             lo = glm::min(lo, e);
             hi = glm::max(hi, e);
         }
-        for (int c = 1; c < 256; ++c) p.used[std::size_t(c)] = p.used[std::size_t(c)] || b.colours[std::size_t(c)];
+        for (int c = 1; c < 256; ++c)
+            p.used[std::size_t(c)] = p.used[std::size_t(c)] || b.colours[std::size_t(c)];
     }
     if (r.placedVoxels > kVoxMaxPlacedVoxels)
-        return makeError("{}: the scene graph places {} voxels, more than the {} an import writes", name, r.placedVoxels,
-                         kVoxMaxPlacedVoxels);
+        return makeError("{}: the scene graph places {} voxels, more than the {} an import writes",
+                         name, r.placedVoxels, kVoxMaxPlacedVoxels);
     for (int c = 1; c < 256; ++c) {
         if (!p.used[std::size_t(c)]) continue;
         ++r.materials;
         auto m = p.file.materials.find(c);
-        if (m != p.file.materials.end() && voxEmissionStrength(m->second) > 0.0f) ++r.emissiveMaterials;
+        if (m != p.file.materials.end() && voxEmissionStrength(m->second) > 0.0f)
+            ++r.emissiveMaterials;
     }
     if (r.placedVoxels == 0) {
         lo = hi = glm::ivec3(0);
@@ -99,38 +103,49 @@ Result<Placed> place(const fs::path& path, const VoxImportOptions& options, cons
     }
     p.contentMin = lo;
 
-    const glm::i64vec3 end = glm::i64vec3(options.offset) + glm::i64vec3(glm::max(r.contentSize, glm::ivec3(1)));
+    const glm::i64vec3 end =
+        glm::i64vec3(options.offset) + glm::i64vec3(glm::max(r.contentSize, glm::ivec3(1)));
     if (target) {
         r.worldSize = target->grid.sizeInVoxels();
     } else {
         if (glm::any(glm::lessThan(options.offset, glm::ivec3(0))) ||
             glm::any(glm::greaterThan(end, glm::i64vec3(world::kMaxWorldExtent))))
-            return makeError("{}: the import would make a world of {}x{}x{} voxels (offset {}, {}, {}), over the "
-                             "engine's limit of {} per axis",
-                             name, end.x, end.y, end.z, options.offset.x, options.offset.y, options.offset.z,
-                             world::kMaxWorldExtent);
+            return makeError(
+                "{}: the import would make a world of {}x{}x{} voxels (offset {}, {}, {}), over "
+                "the "
+                "engine's limit of {} per axis",
+                name, end.x, end.y, end.z, options.offset.x, options.offset.y, options.offset.z,
+                world::kMaxWorldExtent);
         r.worldSize = glm::ivec3(end);
     }
-    const glm::u64vec3 cells = glm::u64vec3((glm::i64vec3(r.worldSize) + std::int64_t(7)) / std::int64_t(8));
+    const glm::u64vec3 cells =
+        glm::u64vec3((glm::i64vec3(r.worldSize) + std::int64_t(7)) / std::int64_t(8));
     const std::uint64_t cellCount = cells.x * cells.y * cells.z;
     if (!target && cellCount > world::kMaxTopGridCells)
-        return makeError("{}: the import would make a world of {}x{}x{} voxels, over the engine's limit of {} top-grid "
-                         "cells",
-                         name, r.worldSize.x, r.worldSize.y, r.worldSize.z, world::kMaxTopGridCells);
+        return makeError(
+            "{}: the import would make a world of {}x{}x{} voxels, over the engine's limit of {} "
+            "top-grid "
+            "cells",
+            name, r.worldSize.x, r.worldSize.y, r.worldSize.z, world::kMaxTopGridCells);
     // Top grid, super grid and dirty flags, plus at most one brick per placed voxel.
     const std::uint64_t bricks = std::min(r.placedVoxels, cellCount);
     std::uint64_t largestModel = 0;  // the dense box one instance is placed through
     for (const VoxModel& m : p.file.models)
-        largestModel = std::max(largestModel, std::uint64_t(m.size.x) * std::uint64_t(m.size.y) * std::uint64_t(m.size.z));
+        largestModel = std::max(largestModel, std::uint64_t(m.size.x) * std::uint64_t(m.size.y) *
+                                                  std::uint64_t(m.size.z));
     std::error_code ec;
-    const std::uint64_t fileBytes = fs::file_size(path, ec);  // read whole while the chunks are parsed
-    r.estimateBytes = (target ? 0 : cellCount * 6) + world::BrickGrid::poolBytesFor(bricks) + p.file.models.size() * 64 +
-                      largestModel * sizeof(world::MaterialId) + (ec ? 0 : fileBytes);
+    const std::uint64_t fileBytes =
+        fs::file_size(path, ec);  // read whole while the chunks are parsed
+    r.estimateBytes = (target ? 0 : cellCount * 6) + world::BrickGrid::poolBytesFor(bricks) +
+                      p.file.models.size() * 64 + largestModel * sizeof(world::MaterialId) +
+                      (ec ? 0 : fileBytes);
     for (const VoxModel& m : p.file.models) r.estimateBytes += m.voxels.size() * sizeof(VoxVoxel);
     if (r.estimateBytes > options.memoryBudgetBytes)
-        return makeError("{}: importing it would need about {} (world {}x{}x{}), over the memory budget of {} ({})",
-                         name, mibText(r.estimateBytes), r.worldSize.x, r.worldSize.y, r.worldSize.z,
-                         mibText(options.memoryBudgetBytes), memoryBudgetAdvice(options.memoryBudgetBytes));
+        return makeError(
+            "{}: importing it would need about {} (world {}x{}x{}), over the memory budget of {} "
+            "({})",
+            name, mibText(r.estimateBytes), r.worldSize.x, r.worldSize.y, r.worldSize.z,
+            mibText(options.memoryBudgetBytes), memoryBudgetAdvice(options.memoryBudgetBytes));
     if (!p.file.skippedChunks.empty()) {
         std::string skipped;
         for (const auto& [id, count] : p.file.skippedChunks)
@@ -151,9 +166,10 @@ Status build(Placed& p, world::Scene& scene, bool intoExisting, const VoxImportO
         m.albedo = voxColourToLinear(p.file.palette[std::size_t(c)]);
         if (auto matl = p.file.materials.find(c); matl != p.file.materials.end()) {
             m.emissionStrength = voxEmissionStrength(matl->second);
-            // The scene key's check (world/scene.h): a file cannot make a world no scene file holds.
-            if (Status ok = checkNumber(fmt::format("material {} emission (_emit x 2^_flux)", c), m.emissionStrength,
-                                        world::kRadianceRange);
+            // The scene key's check (world/scene.h): a file cannot make a world no scene file
+            // holds.
+            if (Status ok = checkNumber(fmt::format("material {} emission (_emit x 2^_flux)", c),
+                                        m.emissionStrength, world::kRadianceRange);
                 !ok)
                 return makeError("{}: {}", p.report.file, ok.error().message);
             if (m.emissionStrength > 0.0f) m.emissionColor = m.albedo;
@@ -161,7 +177,9 @@ Status build(Placed& p, world::Scene& scene, bool intoExisting, const VoxImportO
         std::optional<world::MaterialId> id;
         if (intoExisting) id = scene.palette.find(m.name);
         if (!id) id = scene.palette.add(m);
-        if (!id) return makeError("{}: the palette is full ({} materials)", p.report.file, world::kMaxMaterials - 1);
+        if (!id)
+            return makeError("{}: the palette is full ({} materials)", p.report.file,
+                             world::kMaxMaterials - 1);
         ids[std::size_t(c)] = *id;
     }
     world::BrickGrid& grid = scene.grid;
@@ -176,13 +194,18 @@ Status build(Placed& p, world::Scene& scene, bool intoExisting, const VoxImportO
         if (model.voxels.empty()) continue;
         const glm::ivec3 a = toEngineAxes(voxPlace(in, model.size, glm::ivec3(0))) + shift;
         const glm::ivec3 b = toEngineAxes(voxPlace(in, model.size, model.size - 1)) + shift;
-        const world::Box box = world::Box{glm::min(a, b), glm::max(a, b) + 1}.intersect(grid.bounds());
+        const world::Box box =
+            world::Box{glm::min(a, b), glm::max(a, b) + 1}.intersect(grid.bounds());
         if (box.empty()) continue;
         const glm::ivec3 n = box.size();
-        auto at = [&](glm::ivec3 q) { return std::size_t(q.x) + std::size_t(n.x) * (std::size_t(q.y) + std::size_t(n.y) * std::size_t(q.z)); };
+        auto at = [&](glm::ivec3 q) {
+            return std::size_t(q.x) +
+                   std::size_t(n.x) * (std::size_t(q.y) + std::size_t(n.y) * std::size_t(q.z));
+        };
         dense.assign(std::size_t(n.x) * std::size_t(n.y) * std::size_t(n.z), world::kEmpty);
         for (const VoxVoxel& v : model.voxels) {
-            const glm::ivec3 e = toEngineAxes(voxPlace(in, model.size, glm::ivec3(v.x, v.y, v.z))) + shift;
+            const glm::ivec3 e =
+                toEngineAxes(voxPlace(in, model.size, glm::ivec3(v.x, v.y, v.z))) + shift;
             if (box.contains(e)) dense[at(e - box.min)] = ids[v.colour];
         }
         const glm::ivec3 c0 = box.min / world::kBrickDim, c1 = (box.max - 1) / world::kBrickDim;
@@ -193,9 +216,10 @@ Status build(Placed& p, world::Scene& scene, bool intoExisting, const VoxImportO
                     world::BrickVoxels voxels = grid.readCell(c);
                     bool changed = false;
                     for (int i = 0; i < world::kBrickVoxels; ++i) {
-                        const glm::ivec3 q = c * world::kBrickDim + glm::ivec3(i & 7, (i >> 3) & 7, i >> 6);
+                        const glm::ivec3 q = c * world::kBrickDim + world::brickVoxelPosition(i);
                         if (!box.contains(q)) continue;
-                        if (world::MaterialId m = dense[at(q - box.min)]) voxels[std::size_t(i)] = m, changed = true;
+                        if (world::MaterialId m = dense[at(q - box.min)])
+                            voxels[std::size_t(i)] = m, changed = true;
                     }
                     if (changed) grid.writeCell(c, voxels);
                 }
@@ -210,15 +234,17 @@ Status build(Placed& p, world::Scene& scene, bool intoExisting, const VoxImportO
     return {};
 }
 
-// Runs an import step under the memory budget: a refused allocation becomes an error naming the file.
+// Runs an import step under the memory budget: a refused allocation becomes an error naming the
+// file.
 template <typename T, typename F>
 Result<T> guarded(const fs::path& path, const VoxImportOptions& options, F&& f) {
     AllocationBudget budget(options.memoryBudgetBytes, options.memoryBudgetBytes);
     try {
         return f(budget);
     } catch (const std::bad_alloc&) {
-        return makeError("{}: importing it needs more memory than the budget of {} allows ({})", path.string(),
-                         mibText(options.memoryBudgetBytes), memoryBudgetAdvice(options.memoryBudgetBytes));
+        return makeError("{}: importing it needs more memory than the budget of {} allows ({})",
+                         path.string(), mibText(options.memoryBudgetBytes),
+                         memoryBudgetAdvice(options.memoryBudgetBytes));
     }
 }
 
@@ -257,26 +283,31 @@ void voxEmitFlux(float strength, float& emit, float& flux) {
 }
 
 Result<VoxImportReport> planVoxImport(const fs::path& path, const VoxImportOptions& options) {
-    return guarded<VoxImportReport>(path, options, [&](const AllocationBudget&) -> Result<VoxImportReport> {
-        auto p = place(path, options, nullptr);
-        if (!p) return p.error();
-        return p->report;
-    });
+    return guarded<VoxImportReport>(path, options,
+                                    [&](const AllocationBudget&) -> Result<VoxImportReport> {
+                                        auto p = place(path, options, nullptr);
+                                        if (!p) return p.error();
+                                        return p->report;
+                                    });
 }
 
-Result<world::Scene> importVox(const fs::path& path, const VoxImportOptions& options, VoxImportReport* report) {
-    return guarded<world::Scene>(path, options, [&](const AllocationBudget& budget) -> Result<world::Scene> {
-        auto p = place(path, options, nullptr);
-        if (!p) return p.error();
-        world::Scene scene;
-        if (Status s = build(*p, scene, false, options); !s) return s.error();
-        p->report.peakTrackedBytes = budget.peakBytes();
-        if (report) *report = p->report;
-        return scene;
-    });
+Result<world::Scene> importVox(const fs::path& path, const VoxImportOptions& options,
+                               VoxImportReport* report) {
+    return guarded<world::Scene>(path, options,
+                                 [&](const AllocationBudget& budget) -> Result<world::Scene> {
+                                     auto p = place(path, options, nullptr);
+                                     if (!p) return p.error();
+                                     world::Scene scene;
+                                     if (Status s = build(*p, scene, false, options); !s)
+                                         return s.error();
+                                     p->report.peakTrackedBytes = budget.peakBytes();
+                                     if (report) *report = p->report;
+                                     return scene;
+                                 });
 }
 
-Status importVoxInto(world::Scene& scene, const fs::path& path, const VoxImportOptions& options, VoxImportReport* report) {
+Status importVoxInto(world::Scene& scene, const fs::path& path, const VoxImportOptions& options,
+                     VoxImportReport* report) {
     auto done = guarded<bool>(path, options, [&](const AllocationBudget& budget) -> Result<bool> {
         auto p = place(path, options, &scene);
         if (!p) return p.error();
@@ -292,20 +323,26 @@ Status importVoxInto(world::Scene& scene, const fs::path& path, const VoxImportO
 std::string formatVoxImportReport(const VoxImportReport& r, bool planned) {
     std::string s;
     s += fmt::format("  format       MagicaVoxel .vox, version {}\n", r.version);
-    s += fmt::format("  models       {} model(s), {} visible instance(s); scene graph of {} node(s), {} layer(s) ({} "
-                     "hidden)\n",
-                     r.models, r.instances, r.graphNodes, r.layers, r.hiddenLayers);
-    s += fmt::format("  materials    {} colour(s) in use ({} palette), {} emissive\n", r.materials,
-                     r.defaultPalette ? "MagicaVoxel's default" : "the file's", r.emissiveMaterials);
+    s += fmt::format(
+        "  models       {} model(s), {} visible instance(s); scene graph of {} node(s), {} "
+        "layer(s) ({} "
+        "hidden)\n",
+        r.models, r.instances, r.graphNodes, r.layers, r.hiddenLayers);
+    s +=
+        fmt::format("  materials    {} colour(s) in use ({} palette), {} emissive\n", r.materials,
+                    r.defaultPalette ? "MagicaVoxel's default" : "the file's", r.emissiveMaterials);
     s += "  axes         Z-up turned to Y-up: MagicaVoxel (x, y, z) -> (x, z, -y)\n";
-    s += fmt::format("  world        {} x {} x {} voxels; content {} x {} x {}\n", r.worldSize.x, r.worldSize.y,
-                     r.worldSize.z, r.contentSize.x, r.contentSize.y, r.contentSize.z);
-    s += fmt::format("  memory       about {}; budget {}\n", mibText(r.estimateBytes), mibText(r.budgetBytes));
+    s += fmt::format("  world        {} x {} x {} voxels; content {} x {} x {}\n", r.worldSize.x,
+                     r.worldSize.y, r.worldSize.z, r.contentSize.x, r.contentSize.y,
+                     r.contentSize.z);
+    s += fmt::format("  memory       about {}; budget {}\n", mibText(r.estimateBytes),
+                     mibText(r.budgetBytes));
     if (planned)
         s += fmt::format("  voxels       {} placed by the scene graph\n", r.placedVoxels);
     else
-        s += fmt::format("  imported     {} solid voxels ({} placed; overlaps keep the later instance)\n", r.solidVoxels,
-                         r.placedVoxels);
+        s += fmt::format(
+            "  imported     {} solid voxels ({} placed; overlaps keep the later instance)\n",
+            r.solidVoxels, r.placedVoxels);
     for (const std::string& n : r.notes) s += fmt::format("  note         {}\n", n);
     return s;
 }

@@ -7,6 +7,7 @@
 
 #include "core/check.h"
 #include "lighting/alias_table.h"
+#include "world/solid_voxels.h"
 
 namespace engine::lighting {
 
@@ -16,7 +17,8 @@ using world::BrickGrid;
 using world::kBrickDim;
 using world::MaterialId;
 
-constexpr glm::ivec3 kFaceNormals[6] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
+constexpr glm::ivec3 kFaceNormals[6] = {{-1, 0, 0}, {1, 0, 0},  {0, -1, 0},
+                                        {0, 1, 0},  {0, 0, -1}, {0, 0, 1}};
 
 std::size_t paletteHash(const world::Palette& palette) {
     std::size_t h = palette.size();
@@ -63,7 +65,8 @@ std::uint32_t cellExposure(const BrickGrid& grid, glm::ivec3 cell) {
 
 EmitterList::EmitterList(EmitterSettings settings) : mSettings(settings) {}
 
-void EmitterList::scanCell(const world::Scene& scene, glm::ivec3 cell, std::vector<Candidate>& out) const {
+void EmitterList::scanCell(const world::Scene& scene, glm::ivec3 cell,
+                           std::vector<Candidate>& out) const {
     const BrickGrid& grid = scene.grid;
     const std::uint32_t value = grid.cell(cell);
     if (value == shared::CELL_EMPTY) return;
@@ -92,7 +95,7 @@ void EmitterList::scanCell(const world::Scene& scene, glm::ivec3 cell, std::vect
     for (int i = 0; i < world::kBrickVoxels; ++i) {
         const MaterialId m = voxels[i];
         if (m == world::kEmpty || !scene.palette[m].emissive()) continue;
-        glm::ivec3 p = lo + glm::ivec3(i & 7, (i >> 3) & 7, i >> 6);
+        glm::ivec3 p = lo + world::brickVoxelPosition(i);
         if (std::uint32_t mask = voxelExposure(grid, p)) out.push_back({p, 1, mask, m});
     }
 }
@@ -104,14 +107,8 @@ EmitterUpdateStats EmitterList::rebuild(const world::Scene& scene) {
     for (std::uint32_t slot : std::vector<std::uint32_t>(mAlive)) freeSlot(slot);
     mCellSlots.clear();
     mTotalPower = 0.0;
-    const glm::ivec3 cells = scene.grid.sizeInCells();
-    for (int z = 0; z < cells.z; ++z)
-        for (int y = 0; y < cells.y; ++y)
-            for (int x = 0; x < cells.x; ++x) {
-                glm::ivec3 c{x, y, z};
-                if (scene.grid.cell(c) == shared::CELL_EMPTY) continue;
-                rescanCell(scene, scene.grid.cellIndex(c), c, stats);
-            }
+    world::forEachOccupiedCell(
+        scene.grid, [&](glm::ivec3 c) { rescanCell(scene, scene.grid.cellIndex(c), c, stats); });
     mBuiltSettings = mSettings;
     mBuiltSize = scene.grid.sizeInCells();
     mBuiltPaletteHash = paletteHash(scene.palette);
@@ -131,16 +128,19 @@ EmitterUpdateStats EmitterList::update(const world::Scene& scene) {
     // Touched cells and their face neighbours, each once.
     std::vector<std::uint32_t> todo;
     for (std::uint32_t index : grid.touchedCells()) {
-        glm::ivec3 c(int(index % size.x), int((index / size.x) % size.y), int(index / (std::size_t(size.x) * size.y)));
+        glm::ivec3 c(int(index % size.x), int((index / size.x) % size.y),
+                     int(index / (std::size_t(size.x) * size.y)));
         todo.push_back(index);
         for (const glm::ivec3& n : kFaceNormals) {
-            if (grid.containsCell(c + n)) todo.push_back(static_cast<std::uint32_t>(grid.cellIndex(c + n)));
+            if (grid.containsCell(c + n))
+                todo.push_back(static_cast<std::uint32_t>(grid.cellIndex(c + n)));
         }
     }
     std::sort(todo.begin(), todo.end());
     todo.erase(std::unique(todo.begin(), todo.end()), todo.end());
     for (std::uint32_t index : todo) {
-        glm::ivec3 c(int(index % size.x), int((index / size.x) % size.y), int(index / (std::size_t(size.x) * size.y)));
+        glm::ivec3 c(int(index % size.x), int((index / size.x) % size.y),
+                     int(index / (std::size_t(size.x) * size.y)));
         rescanCell(scene, index, c, stats);
     }
     if (stats.added || stats.removed || stats.changed) mAliasStale = true;
@@ -153,13 +153,15 @@ void EmitterList::rescanCell(const world::Scene& scene, std::size_t cellIndex, g
     std::vector<Candidate> found;
     scanCell(scene, cell, found);
     auto it = mCellSlots.find(static_cast<std::uint32_t>(cellIndex));
-    std::vector<std::uint32_t> old = it == mCellSlots.end() ? std::vector<std::uint32_t>{} : std::move(it->second);
+    std::vector<std::uint32_t> old =
+        it == mCellSlots.end() ? std::vector<std::uint32_t>{} : std::move(it->second);
     if (found.empty() && old.empty()) return;
 
     // Match by position and size so surviving emitters keep their slots.
     std::unordered_map<std::uint64_t, std::uint32_t> oldByKey;
     auto key = [](glm::ivec3 p, int size) {
-        return (std::uint64_t(std::uint32_t(p.x)) << 44) ^ (std::uint64_t(std::uint32_t(p.y)) << 24) ^
+        return (std::uint64_t(std::uint32_t(p.x)) << 44) ^
+               (std::uint64_t(std::uint32_t(p.y)) << 24) ^
                (std::uint64_t(std::uint32_t(p.z)) << 4) ^ std::uint64_t(size == 1 ? 0 : 1);
     };
     for (std::uint32_t slot : old) {
@@ -243,7 +245,8 @@ void EmitterList::writeSlot(std::uint32_t slot, const Candidate& c, const world:
     glm::vec3 radiance = m.emittedRadiance();
     int faces = std::popcount(c.faceMask);
     // Radiant flux of a Lambertian emitter: pi x radiance x exposed area.
-    double power = double(luminance(radiance)) * double(faces) * double(c.size * c.size) * std::numbers::pi;
+    double power =
+        double(luminance(radiance)) * double(faces) * double(c.size * c.size) * std::numbers::pi;
     e.minCorner = glm::ivec4(c.minCorner, c.size);
     e.radiance = glm::vec4(radiance, float(power));
     e.info.x = c.faceMask;

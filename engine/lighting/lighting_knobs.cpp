@@ -1,10 +1,9 @@
 #include "lighting/lighting_knobs.h"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <fmt/format.h>
 #include <type_traits>
 
 namespace engine::lighting {
@@ -621,13 +620,6 @@ Result<LightingSettings> mergeLighting(std::span<const std::vector<KnobValue>> l
         if (Status ok = applyValues(s, layer); !ok) return ok.error();
     }
     return mergeLighting(s, {});
-}
-
-std::vector<KnobValue> knobValues(const KnobGroup& group, const LightingSettings& s,
-                                  std::string_view where) {
-    std::vector<KnobValue> out;
-    for (const Knob& k : group.knobs) out.push_back({&k, knobText(k, s), std::string(where)});
-    return out;
 }
 
 }  // namespace engine::lighting

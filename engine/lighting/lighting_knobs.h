@@ -15,7 +15,8 @@
 namespace engine::lighting {
 
 struct KnobGroup {
-    std::string_view name;       // the technique: lighting, emitters, restir, baselines, reference, cache, path
+    std::string_view
+        name;  // the technique: lighting, emitters, restir, baselines, reference, cache, path
     std::string_view cliPrefix;  // "cache-" makes --cache-rays; scene files use the bare name
     std::span<const Knob> knobs;
 };
@@ -43,8 +44,5 @@ Status validate(const LightingSettings& s);
 Result<LightingSettings> mergeLighting(std::span<const std::vector<KnobValue>> layers);
 // The same onto settings already merged (the HUD's edits).
 Result<LightingSettings> mergeLighting(LightingSettings base, std::span<const KnobValue> values);
-
-// Every knob of `group` at its value in `s` (a scene's [indirect] settings as values to merge).
-std::vector<KnobValue> knobValues(const KnobGroup& group, const LightingSettings& s, std::string_view where);
 
 }  // namespace engine::lighting

@@ -26,7 +26,6 @@ public:
     // Submits what was recorded and begins the second list. `wait`: block until the first
     // submission completes, so the host can read what it wrote. Once per frame.
     gpu::CommandList& submitAndContinue(bool wait);
-    bool continued() const { return mContinued; }
     // Submits the rest and waits for all of it.
     void finish();
     // GPU milliseconds per pass, both submissions, in order. After finish().

@@ -1,5 +1,5 @@
-// GpuWorld: the GPU mirror of a Scene's BrickGrid, palette and dynamic grid (world bindings 0-4 of every
-// ray-tracing shader, see shaders/shared/bindings.h).
+// GpuWorld: the GPU mirror of a Scene's BrickGrid, palette and dynamic grid (world bindings 0-4 of
+// every ray-tracing shader, see shaders/shared/bindings.h).
 //
 // The first sync uploads everything; later syncs upload only the bricks and top-grid cells the
 // grid marked dirty, then clear the marks. The brick pool lives in pages of
@@ -22,11 +22,12 @@ class Uploader;
 namespace engine::render {
 
 struct WorldUploadStats {
-    bool full = false;             // everything was (re)uploaded
-    std::uint32_t bricks = 0;      // bricks uploaded
-    std::uint32_t cells = 0;       // top-grid cells uploaded
+    bool full = false;         // everything was (re)uploaded
+    std::uint32_t bricks = 0;  // bricks uploaded
+    std::uint32_t cells = 0;   // top-grid cells uploaded
     std::uint64_t bytes = 0;
-    std::uint64_t dynamicBytes = 0;  // the dynamic grid, uploaded whole when it changed (0: unchanged)
+    std::uint64_t dynamicBytes =
+        0;  // the dynamic grid, uploaded whole when it changed (0: unchanged)
 };
 
 struct GpuWorldMemory {
@@ -46,7 +47,9 @@ public:
     // afterwards; the caller clears the grid's dirty marks once every consumer has seen them.
     WorldUploadStats sync(const world::Scene& scene, gpu::Uploader& uploader);
     // The next sync uploads everything (a new or resized world).
-    bool needsFullUpload(const world::BrickGrid& grid) const { return grid.sizeInCells() != mSizeInCells; }
+    bool needsFullUpload(const world::BrickGrid& grid) const {
+        return grid.sizeInCells() != mSizeInCells;
+    }
     // Forget the GPU state: the next sync uploads everything.
     void invalidate() {
         mSizeInCells = glm::ivec3(0);
@@ -58,12 +61,12 @@ public:
     const gpu::Buffer& pageTable() const { return mPageTable; }
     const gpu::Buffer& palette() const { return mPalette; }
     const gpu::Buffer& dynamicGridTexels() const { return mDynamic.buffer(); }
-    const GpuDynamicGrid& dynamicGrid() const { return mDynamic; }
     GpuWorldMemory memory() const;
 
 private:
     void ensurePages(std::uint32_t brickCapacity, gpu::Uploader& uploader);
-    void uploadBricks(const world::BrickGrid& grid, std::vector<std::uint32_t>& bricks, gpu::Uploader& uploader);
+    void uploadBricks(const world::BrickGrid& grid, std::vector<std::uint32_t>& bricks,
+                      gpu::Uploader& uploader);
 
     gpu::Context& mCtx;
     glm::ivec3 mSizeInCells{0};

@@ -4,7 +4,6 @@
 
 #include <array>
 #include <cstdint>
-
 #include <glm/glm.hpp>
 
 #include "shared/brick_grid.h"
@@ -18,6 +17,10 @@ inline constexpr int kBrickVoxels = static_cast<int>(shared::BRICK_VOXELS);
 using BrickVoxels = std::array<MaterialId, kBrickVoxels>;
 
 constexpr int brickVoxelIndex(glm::ivec3 local) { return local.x + 8 * local.y + 64 * local.z; }
+// The voxel a brick holds at `index`: the inverse of brickVoxelIndex.
+constexpr glm::ivec3 brickVoxelPosition(int index) {
+    return {index & 7, (index >> 3) & 7, index >> 6};
+}
 
 struct BrickMask {
     std::array<std::uint32_t, shared::BRICK_MASK_WORDS> words{};

@@ -63,9 +63,7 @@ public:
     // many it applied. Frames must not go backwards (a fresh scene and timeline replay a slice).
     std::uint32_t applyThrough(std::uint32_t frame, double fps, Scene& scene);
 
-
     const std::vector<TimelineEvent>& events() const { return mEvents; }
-    std::size_t applied() const { return mNext; }
 
 private:
     void apply(const TimelineEvent& e, Scene& scene);

@@ -13,22 +13,13 @@
 #include <string>
 #include <vector>
 
+#include "check_expect.h"
 #include "scene/scene_file.h"
 #include "world/dynamic_grid.h"
 
 using namespace engine::world;
 
 namespace {
-
-int failures = 0;
-#define EXPECT(cond, ...)                      \
-    do {                                       \
-        if (!(cond)) {                         \
-            std::printf("FAIL: " __VA_ARGS__); \
-            std::printf("\n");                 \
-            ++failures;                        \
-        }                                      \
-    } while (0)
 
 std::vector<std::string> split(const std::string& line) {
     std::vector<std::string> out;

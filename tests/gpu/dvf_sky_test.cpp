@@ -2,11 +2,10 @@
 // truth, the sky's direct light by brute-force cosine rays per pixel (`--sky reference`): the
 // mean on two worlds, the per-pixel spread, a roof opened by an edit, and the masks against
 // directions traced on the CPU.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <gtest/gtest.h>
 
 #include "core/hash.h"
 #include "gpu/gpu_test_setup.h"
@@ -294,8 +293,14 @@ TEST_F(DvfSky, SameSceneSameSkyTermEveryRun) {
         else
             EXPECT_TRUE(term == first) << "run " << run << " differs";
     }
-    // An all-dark term would repeat trivially: the window and the ground outside see the sky.
+    // An all-dark (or all but dark) term would repeat trivially: through the window the sky
+    // reaches the floor and the far walls. Measured: 81 % of the pixels lit, mean 0.008; the
+    // test asks for more than half of each.
     const auto lit = std::count_if(first.begin(), first.end(),
-                                   [](const glm::vec4& v) { return luminance(v) > 0.0; });
-    EXPECT_GT(lit, std::ptrdiff_t(first.size() / 20)) << "of " << first.size() << " pixels";
+                                   [](const glm::vec4& v) { return luminance(v) > 0.001; });
+    const double litFraction = double(lit) / double(first.size());
+    std::printf("sky term: %.1f %% of the pixels lit, mean %.5f\n", 100.0 * litFraction,
+                meanLuminance(first));
+    EXPECT_GT(litFraction, 0.5) << "of " << first.size() << " pixels";
+    EXPECT_GT(meanLuminance(first), 0.004);
 }

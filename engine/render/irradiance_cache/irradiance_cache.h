@@ -100,7 +100,6 @@ public:
     void skip() override { mGBufferHostValid = false; }
 
     void clear();
-    bool configured() const { return mConfigured; }
 
     const IrradianceCacheStats& stats() const { return mStats; }
     const IrradianceCacheDirectory& directory() const { return mDirectory; }

@@ -11,11 +11,11 @@
 
 #include <cstdint>
 #include <functional>
+#include <glm/glm.hpp>
+#include <optional>
 #include <span>
 #include <unordered_map>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "shared/irradiance_cache.h"
 
@@ -24,12 +24,14 @@ namespace engine::render {
 struct CacheKey {
     glm::ivec3 voxel{0};
     std::uint32_t set = shared::CACHE_SET_STATIC;
-    std::uint32_t coarse = 0;  // 0: the voxel's entry; 1 + face: one face of an open 2x2 patch (cache_lod.h)
+    std::uint32_t coarse =
+        0;  // 0: the voxel's entry; 1 + face: one face of an open 2x2 patch (cache_lod.h)
     bool operator==(const CacheKey&) const = default;
 };
 
 std::uint64_t packCacheKey(const CacheKey& key);
-// The bucket a key starts probing at; the shaders compute the same (shaders/irradiance_cache/irradiance_cache.glsl).
+// The bucket a key starts probing at; the shaders compute the same
+// (shaders/irradiance_cache/irradiance_cache.glsl).
 std::uint32_t cacheKeyHash(const CacheKey& key);
 
 // How a frame's rays are spent. Visible entries are taken in this order, the most stale first
@@ -53,26 +55,31 @@ std::uint32_t cacheKeyHash(const CacheKey& key);
 // `openFaces` is given (a floor voxel traces one face, not six); a coarse entry traces one face;
 // a dynamic entry is charged all six (what moves in front of its faces is not known here).
 struct CacheWork {
-    std::uint64_t rayBudget = 0;         // rays per frame; 0: no limit
-    std::uint32_t raysPerUpdate = 96;    // S rays on each of the six faces
-    std::uint32_t phases = 8;            // K / S: the updates a (re)trace takes
-    std::uint32_t convergedAfter = 33;   // about 1 / alpha
+    std::uint64_t rayBudget = 0;        // rays per frame; 0: no limit
+    std::uint32_t raysPerUpdate = 96;   // S rays on each of the six faces
+    std::uint32_t phases = 8;           // K / S: the updates a (re)trace takes
+    std::uint32_t convergedAfter = 33;  // about 1 / alpha
     std::uint32_t refreshFrames = 30;
-    glm::ivec3 nearMin{0}, nearMax{-1};  // voxels near moving objects (class 2); empty when max < min
-    bool objectsMoved = true;            // an object moved, appeared or vanished since the last frame
-    std::function<std::uint32_t(glm::ivec3)> openFaces;  // a static voxel's faces not against static solid; null: six
+    glm::ivec3 nearMin{0},
+        nearMax{-1};           // voxels near moving objects (class 2); empty when max < min
+    bool objectsMoved = true;  // an object moved, appeared or vanished since the last frame
+    std::function<std::uint32_t(glm::ivec3)>
+        openFaces;  // a static voxel's faces not against static solid; null: six
 };
 
 struct CacheFrameLists {
-    std::vector<std::uint32_t> update;  // slots the GPU updates this frame: static ones first, then dynamic
-    std::vector<std::uint32_t> trace;   // of them, static slots tracing their phase in the static world first
-    std::uint32_t staticUpdates = 0;    // static slots at the front of `update`
-    std::uint64_t rays = 0;             // rays the selected updates may trace (the budget's measure)
-    std::uint32_t waiting = 0;          // visible entries (or keys) the budget left for later frames
-    std::uint32_t dropped = 0;          // visible keys left out because the memory budget is full of visible keys
-    std::uint32_t evicted = 0;          // least recently seen entries dropped to make room
-    std::uint32_t faded = 0;            // dynamic entries released after their fade
-    bool tableChanged = false;          // entries were added or removed: re-upload the table
+    std::vector<std::uint32_t>
+        update;  // slots the GPU updates this frame: static ones first, then dynamic
+    std::vector<std::uint32_t>
+        trace;  // of them, static slots tracing their phase in the static world first
+    std::uint32_t staticUpdates = 0;  // static slots at the front of `update`
+    std::uint64_t rays = 0;           // rays the selected updates may trace (the budget's measure)
+    std::uint32_t waiting = 0;        // visible entries (or keys) the budget left for later frames
+    std::uint32_t dropped =
+        0;  // visible keys left out because the memory budget is full of visible keys
+    std::uint32_t evicted = 0;  // least recently seen entries dropped to make room
+    std::uint32_t faded = 0;    // dynamic entries released after their fade
+    bool tableChanged = false;  // entries were added or removed: re-upload the table
 };
 
 class IrradianceCacheDirectory {
@@ -94,7 +101,9 @@ public:
     void clear();
 
     std::uint32_t maxSlots() const { return mMaxSlots; }
-    std::uint32_t usedSlots() const { return static_cast<std::uint32_t>(mSlots.size()); }  // high-water mark
+    std::uint32_t usedSlots() const {
+        return static_cast<std::uint32_t>(mSlots.size());
+    }  // high-water mark
     std::uint32_t liveEntries() const { return static_cast<std::uint32_t>(mIndex.size()); }
     const shared::CacheEntry& entry(std::uint32_t slot) const { return mEntries[slot]; }
     std::span<const shared::CacheEntry> entries() const { return mEntries; }
@@ -108,15 +117,39 @@ private:
     struct Slot {
         CacheKey key;
         bool live = false;
-        bool reset = true;                 // the next update restarts the running mean
-        std::uint32_t traced = 0;          // updates since its static rays were (re)traced from scratch
-        std::uint64_t tracedPhases = 0;    // a dynamic entry: bit p set when phase p's static hits are cached
-        std::uint32_t updates = 0;         // since the last reset
+        bool reset = true;         // the next update restarts the running mean
+        std::uint32_t traced = 0;  // updates since its static rays were (re)traced from scratch
+        std::uint64_t tracedPhases =
+            0;  // a dynamic entry: bit p set when phase p's static hits are cached
+        std::uint32_t updates = 0;  // since the last reset
         std::uint64_t lastSeen = 0;
         std::uint64_t lastUpdateFrame = 0;
-        double lastUpdate = 0.0;           // scene time
+        double lastUpdate = 0.0;  // scene time
     };
-    std::uint32_t allocate(const CacheKey& key, std::uint64_t frame, double time, CacheFrameLists& lists);
+    struct Candidate;
+
+    // beginFrame's steps, in order.
+    void fadeDynamicEntries(double time, float fadeSeconds, bool objectsMoved,
+                            CacheFrameLists& lists);
+    std::vector<std::uint32_t> markSeen(std::span<const CacheKey> visible, std::uint64_t frame,
+                                        std::vector<CacheKey>& fresh);
+    std::vector<Candidate> rankCandidates(std::span<const std::uint32_t> seen,
+                                          std::span<const CacheKey> fresh, std::uint32_t firstFresh,
+                                          std::uint64_t frame, const CacheWork& work) const;
+    std::optional<Candidate> candidateFor(std::uint32_t slot, std::uint64_t frame,
+                                          const CacheWork& work) const;
+    static std::vector<bool> chooseWithinBudget(std::span<const Candidate> candidates,
+                                                std::uint64_t rayBudget, std::uint64_t& spent);
+    std::vector<std::uint32_t> slotsForChosen(std::span<const Candidate> candidates,
+                                              const std::vector<bool>& chosen,
+                                              std::span<const CacheKey> fresh,
+                                              std::uint32_t firstFresh, std::uint64_t frame,
+                                              double time, CacheFrameLists& lists);
+    void startUpdates(std::vector<std::uint32_t>& selected, std::uint64_t frame, double time,
+                      const CacheWork& work, CacheFrameLists& lists);
+
+    std::uint32_t allocate(const CacheKey& key, std::uint64_t frame, double time,
+                           CacheFrameLists& lists);
     std::uint32_t makeRoom(std::size_t wanted, std::uint64_t frame, CacheFrameLists& lists);
     void release(std::uint32_t slot);
 

@@ -31,7 +31,6 @@ public:
     void record(FrameCommands& commands, const FrameBuffers& frame) override;
 
     // Paths per pixel in the running sum after the last prepared frame.
-    std::uint32_t accumulatedPaths() const { return mPaths; }
 
 private:
     gpu::Context& mCtx;

@@ -1,0 +1,34 @@
+// Walking what a BrickGrid holds, in storage order: its occupied cells (x fastest, then y,
+// then z), or the solid voxels in them (x fastest within each cell). Empty cells cost one read
+// of the top grid; their bricks are never touched.
+#pragma once
+
+#include "world/brick_grid.h"
+
+namespace engine::world {
+
+// f(cell) for every cell that is not empty: a brick or a homogeneous cell.
+template <typename F>
+void forEachOccupiedCell(const BrickGrid& grid, F&& f) {
+    const glm::ivec3 cells = grid.sizeInCells();
+    for (int cz = 0; cz < cells.z; ++cz)
+        for (int cy = 0; cy < cells.y; ++cy)
+            for (int cx = 0; cx < cells.x; ++cx) {
+                const glm::ivec3 c(cx, cy, cz);
+                if (grid.cell(c) != shared::CELL_EMPTY) f(c);
+            }
+}
+
+// f(voxel, material) for every voxel that is not empty.
+template <typename F>
+void forEachSolidVoxel(const BrickGrid& grid, F&& f) {
+    forEachOccupiedCell(grid, [&](glm::ivec3 c) {
+        const BrickVoxels voxels = grid.readCell(c);
+        for (int i = 0; i < kBrickVoxels; ++i) {
+            const MaterialId m = voxels[std::size_t(i)];
+            if (m != kEmpty) f(c * kBrickDim + brickVoxelPosition(i), m);
+        }
+    });
+}
+
+}  // namespace engine::world
