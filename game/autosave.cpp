@@ -9,7 +9,8 @@ std::filesystem::path autosavePath(const std::filesystem::path& savePath) {
 }
 
 bool Autosave::due(double nowSeconds, std::uint64_t worldVersion) const {
-    return mInterval > 0.0 && worldVersion != mWrittenVersion && nowSeconds - mLastWrite >= mInterval;
+    return mInterval > 0.0 && worldVersion != mWrittenVersion &&
+           nowSeconds - mLastWrite >= mInterval;
 }
 
 void Autosave::written(double nowSeconds, std::uint64_t worldVersion) {

@@ -1,9 +1,8 @@
 #include "game/camera_controller.h"
 
+#include <GLFW/glfw3.h>
 #include <algorithm>
 #include <cmath>
-
-#include <GLFW/glfw3.h>
 
 namespace game {
 
@@ -15,7 +14,8 @@ void CameraController::setFromPreset(const engine::world::CameraPreset& preset) 
     mPosition = preset.position;
     glm::vec3 d = glm::normalize(preset.target - preset.position);
     mYaw = glm::degrees(std::atan2(d.x, d.z));
-    mPitch = std::clamp(glm::degrees(std::asin(std::clamp(d.y, -1.0f, 1.0f))), -kMaxPitch, kMaxPitch);
+    mPitch =
+        std::clamp(glm::degrees(std::asin(std::clamp(d.y, -1.0f, 1.0f))), -kMaxPitch, kMaxPitch);
     mFovY = preset.fovYDegrees;
     mName = preset.name;
 }

@@ -1,7 +1,6 @@
 #include "game/edit_tools.h"
 
 #include <cmath>
-
 #include <fmt/format.h>
 
 #include "world/ray_traversal.h"
@@ -13,18 +12,24 @@ namespace world = engine::world;
 
 const char* toolName(Tool tool) {
     switch (tool) {
-        case Tool::Place: return "place";
-        case Tool::Remove: return "remove";
-        case Tool::Paint: return "paint";
+        case Tool::Place:
+            return "place";
+        case Tool::Remove:
+            return "remove";
+        case Tool::Paint:
+            return "paint";
     }
     return "?";
 }
 
 const char* brushName(Brush brush) {
     switch (brush) {
-        case Brush::Voxel: return "voxel";
-        case Brush::Box: return "box";
-        case Brush::Sphere: return "sphere";
+        case Brush::Voxel:
+            return "voxel";
+        case Brush::Box:
+            return "box";
+        case Brush::Sphere:
+            return "sphere";
     }
     return "?";
 }
@@ -56,8 +61,10 @@ Pick pick(const world::BrickGrid& grid, glm::vec3 origin, glm::vec3 direction, f
 }
 
 std::string missReason(const Pick& target) {
-    if (!target.validRay) return "the view ray is not finite (camera position or direction is NaN or infinite)";
-    if (!target.hit) return fmt::format("aiming at the sky (nothing within {:.0f} voxels)", kPickDistance);
+    if (!target.validRay)
+        return "the view ray is not finite (camera position or direction is NaN or infinite)";
+    if (!target.hit)
+        return fmt::format("aiming at the sky (nothing within {:.0f} voxels)", kPickDistance);
     return {};
 }
 
@@ -67,45 +74,65 @@ world::Box EditOp::region() const {
 }
 
 std::string EditOp::describe(const world::Palette& palette) const {
-    std::string what = material < palette.size() ? palette[material].name : fmt::format("#{}", material);
+    std::string what =
+        material < palette.size() ? palette[material].name : fmt::format("#{}", material);
     if (brush == Brush::Sphere)
-        return fmt::format("{} sphere r{:.1f} at ({:.1f}, {:.1f}, {:.1f}){}", toolName(tool), radius, center.x, center.y,
-                           center.z, tool == Tool::Remove ? "" : " " + what);
+        return fmt::format("{} sphere r{:.1f} at ({:.1f}, {:.1f}, {:.1f}){}", toolName(tool),
+                           radius, center.x, center.y, center.z,
+                           tool == Tool::Remove ? "" : " " + what);
     glm::ivec3 s = box.size();
     if (s == glm::ivec3(1))
-        return fmt::format("{} voxel ({}, {}, {}){}", toolName(tool), box.min.x, box.min.y, box.min.z,
-                           tool == Tool::Remove ? "" : " " + what);
-    return fmt::format("{} box {}x{}x{} at ({}, {}, {}){}", toolName(tool), s.x, s.y, s.z, box.min.x, box.min.y,
-                       box.min.z, tool == Tool::Remove ? "" : " " + what);
+        return fmt::format("{} voxel ({}, {}, {}){}", toolName(tool), box.min.x, box.min.y,
+                           box.min.z, tool == Tool::Remove ? "" : " " + what);
+    return fmt::format("{} box {}x{}x{} at ({}, {}, {}){}", toolName(tool), s.x, s.y, s.z,
+                       box.min.x, box.min.y, box.min.z, tool == Tool::Remove ? "" : " " + what);
 }
 
 void applyEdit(world::BrickGrid& grid, const EditOp& op) {
     if (op.brush == Brush::Sphere) {
         switch (op.tool) {
-            case Tool::Place: world::fillSphere(grid, op.center, op.radius, op.material); break;
-            case Tool::Remove: world::fillSphere(grid, op.center, op.radius, world::kEmpty); break;
-            case Tool::Paint: world::paintSphere(grid, op.center, op.radius, op.material); break;
+            case Tool::Place:
+                world::fillSphere(grid, op.center, op.radius, op.material);
+                break;
+            case Tool::Remove:
+                world::fillSphere(grid, op.center, op.radius, world::kEmpty);
+                break;
+            case Tool::Paint:
+                world::paintSphere(grid, op.center, op.radius, op.material);
+                break;
         }
         return;
     }
     switch (op.tool) {
-        case Tool::Place: world::fillBox(grid, op.box, op.material); break;
-        case Tool::Remove: world::fillBox(grid, op.box, world::kEmpty); break;
-        case Tool::Paint: world::paintBox(grid, op.box, op.material); break;
+        case Tool::Place:
+            world::fillBox(grid, op.box, op.material);
+            break;
+        case Tool::Remove:
+            world::fillBox(grid, op.box, world::kEmpty);
+            break;
+        case Tool::Paint:
+            world::paintBox(grid, op.box, op.material);
+            break;
     }
 }
 
-std::string unchangedReason(const world::BrickGrid& grid, const EditOp& op, const world::Palette& palette) {
+std::string unchangedReason(const world::BrickGrid& grid, const EditOp& op,
+                            const world::Palette& palette) {
     world::Box r = op.region();
     world::Box b = grid.bounds();
     world::Box inside{glm::max(r.min, b.min), glm::min(r.max, b.max)};
     glm::ivec3 s = b.size();
-    if (inside.empty()) return fmt::format("it lies outside the world (0..{}, 0..{}, 0..{})", s.x, s.y, s.z);
-    std::string what = op.material < palette.size() ? palette[op.material].name : fmt::format("#{}", op.material);
+    if (inside.empty())
+        return fmt::format("it lies outside the world (0..{}, 0..{}, 0..{})", s.x, s.y, s.z);
+    std::string what =
+        op.material < palette.size() ? palette[op.material].name : fmt::format("#{}", op.material);
     switch (op.tool) {
-        case Tool::Place: return fmt::format("every voxel there is already {}", what);
-        case Tool::Remove: return "there is nothing to remove there";
-        case Tool::Paint: return fmt::format("no solid voxel there to paint, or all are already {}", what);
+        case Tool::Place:
+            return fmt::format("every voxel there is already {}", what);
+        case Tool::Remove:
+            return "there is nothing to remove there";
+        case Tool::Paint:
+            return fmt::format("no solid voxel there to paint, or all are already {}", what);
     }
     return {};
 }

@@ -8,10 +8,9 @@
 // through the undo history and can log it (tests replay the log on the CPU).
 #pragma once
 
+#include <glm/glm.hpp>
 #include <optional>
 #include <string>
-
-#include <glm/glm.hpp>
 
 #include "world/brick_grid.h"
 #include "world/material.h"
@@ -46,8 +45,8 @@ std::string missReason(const Pick& target);
 struct EditOp {
     Tool tool = Tool::Place;
     Brush brush = Brush::Voxel;
-    engine::world::Box box;   // Voxel and Box brushes
-    glm::vec3 center{0.0f};   // Sphere brush, in voxel units
+    engine::world::Box box;  // Voxel and Box brushes
+    glm::vec3 center{0.0f};  // Sphere brush, in voxel units
     float radius = 0.0f;
     engine::world::MaterialId material = engine::world::kEmpty;
 
@@ -85,7 +84,9 @@ public:
 
 private:
     // Place works on the empty voxel in front of the face hit; remove and paint on the voxel hit.
-    glm::ivec3 targetVoxel(const Pick& p) const { return tool == Tool::Place ? p.adjacent() : p.voxel; }
+    glm::ivec3 targetVoxel(const Pick& p) const {
+        return tool == Tool::Place ? p.adjacent() : p.voxel;
+    }
     EditOp makeOp() const;
 
     std::optional<glm::ivec3> mAnchor;

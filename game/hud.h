@@ -18,8 +18,8 @@
 #include "game/lighting_panel.h"
 #include "game/undo_history.h"
 #include "lighting/lighting_settings.h"
-#include "render/gpu_world.h"
 #include "render/dvf_sky/dvf_sky.h"
+#include "render/gpu_world.h"
 #include "render/irradiance_cache/irradiance_cache.h"
 #include "shared/frame_params.h"
 #include "world/scene.h"
@@ -32,12 +32,13 @@ struct HudStats {
     glm::uvec2 renderSize{0}, windowSize{0};
     std::uint64_t frame = 0;
     std::uint32_t liveBricks = 0;
-    std::uint64_t emitters = 0;  // lighting::EmitterList entries (exposed emissive voxels, brick lights)
+    std::uint64_t emitters =
+        0;  // lighting::EmitterList entries (exposed emissive voxels, brick lights)
     engine::world::GridMemory cpuMemory;
     engine::render::GpuWorldMemory gpuMemory;
     bool cacheUsed = false;
     engine::render::IrradianceCacheStats cache;
-    bool skyUsed = false;  // the DVF sky term (or its reference) was added
+    bool skyUsed = false;                 // the DVF sky term (or its reference) was added
     std::uint32_t accumulatedFrames = 0;  // frames averaged into the image (--accumulate), 0: off
     engine::render::DvfSkyStats sky;
     UndoStats undo;
@@ -84,7 +85,8 @@ public:
 private:
     void drawCrosshair(const HudStats& stats);
     void drawCompact(const HudStats& stats, HudControls& controls, const HudRect& area);
-    void drawStats(const HudStats& stats, HudControls& controls, HudActions& actions, const HudRect& area);
+    void drawStats(const HudStats& stats, HudControls& controls, HudActions& actions,
+                   const HudRect& area);
     void drawTools(const HudStats& stats, HudControls& controls, const HudRect& area);
     void drawKeys(const HudRect& area, bool compact);
     void drawMessage(const std::string& message, const HudRect& area);

@@ -18,7 +18,8 @@ bool overlaps(const HudRect& a, const HudRect& b) {
 }
 
 bool inside(const HudRect& r, glm::vec2 window) {
-    return r.empty() || (r.min.x >= 0.0f && r.min.y >= 0.0f && r.max().x <= window.x && r.max().y <= window.y);
+    return r.empty() ||
+           (r.min.x >= 0.0f && r.min.y >= 0.0f && r.max().x <= window.x && r.max().y <= window.y);
 }
 
 HudLayout layoutHud(glm::vec2 window, float lineHeight, bool showKeys, bool message) {
@@ -46,12 +47,14 @@ HudLayout layoutHud(glm::vec2 window, float lineHeight, bool showKeys, bool mess
         // its figures onto more lines, and a tall one has the room); it auto-sizes to what it
         // shows. The keys (F1) go below it, and then the strip keeps one line (asked for, the keys
         // matter more than the figures).
-        const float lines = showKeys ? 1.0f : std::max(4.0f, std::floor((0.5f * height - pad) / line));
+        const float lines =
+            showKeys ? 1.0f : std::max(4.0f, std::floor((0.5f * height - pad) / line));
         float stripH = std::min(height, lines * line + pad);
         l.stats = {{margin, top}, {window.x - 2.0f * margin, stripH}};
         if (showKeys) {
             float keysTop = top + stripH + margin;
-            l.keys = {{margin, keysTop}, {window.x - 2.0f * margin, std::max(0.0f, bottom - keysTop)}};
+            l.keys = {{margin, keysTop},
+                      {window.x - 2.0f * margin, std::max(0.0f, bottom - keysTop)}};
         }
         return l;
     }
@@ -68,13 +71,15 @@ HudLayout layoutHud(glm::vec2 window, float lineHeight, bool showKeys, bool mess
     return l;
 }
 
-std::vector<std::string> wrapEntries(const std::vector<std::string>& entries, std::string_view separator, float maxWidth,
+std::vector<std::string> wrapEntries(const std::vector<std::string>& entries,
+                                     std::string_view separator, float maxWidth,
                                      const std::function<float(std::string_view)>& width) {
     std::vector<std::string> lines;
     std::string current;
     for (std::size_t i = 0; i < entries.size(); ++i) {
         // The separator stays with the entry it follows, so a line never starts with one.
-        std::string piece = entries[i] + (i + 1 < entries.size() ? std::string(separator) : std::string());
+        std::string piece =
+            entries[i] + (i + 1 < entries.size() ? std::string(separator) : std::string());
         if (!current.empty() && width(current + piece) > maxWidth) {
             lines.push_back(current);
             current.clear();

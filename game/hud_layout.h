@@ -8,11 +8,10 @@
 #pragma once
 
 #include <functional>
+#include <glm/glm.hpp>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 namespace game {
 
@@ -42,7 +41,8 @@ HudLayout layoutHud(glm::vec2 window, float lineHeight, bool showKeys, bool mess
 
 // Joins entries with `separator` into lines no wider than maxWidth (as measured by `width`),
 // breaking only between entries; an entry wider than maxWidth gets a line of its own.
-std::vector<std::string> wrapEntries(const std::vector<std::string>& entries, std::string_view separator, float maxWidth,
+std::vector<std::string> wrapEntries(const std::vector<std::string>& entries,
+                                     std::string_view separator, float maxWidth,
                                      const std::function<float(std::string_view)>& width);
 
 struct PaletteGrid {

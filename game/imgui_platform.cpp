@@ -1,8 +1,7 @@
 #include "game/imgui_platform.h"
 
-#include <cfloat>
-
 #include <GLFW/glfw3.h>
+#include <cfloat>
 #include <imgui.h>
 
 namespace game {
@@ -15,13 +14,27 @@ ImGuiPlatform::ImGuiPlatform() {
     io.LogFilename = nullptr;
     io.BackendPlatformName = "vox_input_state";
     const int map[][2] = {
-        {ImGuiKey_Tab, GLFW_KEY_TAB},         {ImGuiKey_LeftArrow, GLFW_KEY_LEFT},   {ImGuiKey_RightArrow, GLFW_KEY_RIGHT},
-        {ImGuiKey_UpArrow, GLFW_KEY_UP},      {ImGuiKey_DownArrow, GLFW_KEY_DOWN},   {ImGuiKey_PageUp, GLFW_KEY_PAGE_UP},
-        {ImGuiKey_PageDown, GLFW_KEY_PAGE_DOWN}, {ImGuiKey_Home, GLFW_KEY_HOME},     {ImGuiKey_End, GLFW_KEY_END},
-        {ImGuiKey_Insert, GLFW_KEY_INSERT},   {ImGuiKey_Delete, GLFW_KEY_DELETE},   {ImGuiKey_Backspace, GLFW_KEY_BACKSPACE},
-        {ImGuiKey_Space, GLFW_KEY_SPACE},     {ImGuiKey_Enter, GLFW_KEY_ENTER},     {ImGuiKey_Escape, GLFW_KEY_ESCAPE},
-        {ImGuiKey_A, GLFW_KEY_A},             {ImGuiKey_C, GLFW_KEY_C},             {ImGuiKey_V, GLFW_KEY_V},
-        {ImGuiKey_X, GLFW_KEY_X},             {ImGuiKey_Y, GLFW_KEY_Y},             {ImGuiKey_Z, GLFW_KEY_Z},
+        {ImGuiKey_Tab, GLFW_KEY_TAB},
+        {ImGuiKey_LeftArrow, GLFW_KEY_LEFT},
+        {ImGuiKey_RightArrow, GLFW_KEY_RIGHT},
+        {ImGuiKey_UpArrow, GLFW_KEY_UP},
+        {ImGuiKey_DownArrow, GLFW_KEY_DOWN},
+        {ImGuiKey_PageUp, GLFW_KEY_PAGE_UP},
+        {ImGuiKey_PageDown, GLFW_KEY_PAGE_DOWN},
+        {ImGuiKey_Home, GLFW_KEY_HOME},
+        {ImGuiKey_End, GLFW_KEY_END},
+        {ImGuiKey_Insert, GLFW_KEY_INSERT},
+        {ImGuiKey_Delete, GLFW_KEY_DELETE},
+        {ImGuiKey_Backspace, GLFW_KEY_BACKSPACE},
+        {ImGuiKey_Space, GLFW_KEY_SPACE},
+        {ImGuiKey_Enter, GLFW_KEY_ENTER},
+        {ImGuiKey_Escape, GLFW_KEY_ESCAPE},
+        {ImGuiKey_A, GLFW_KEY_A},
+        {ImGuiKey_C, GLFW_KEY_C},
+        {ImGuiKey_V, GLFW_KEY_V},
+        {ImGuiKey_X, GLFW_KEY_X},
+        {ImGuiKey_Y, GLFW_KEY_Y},
+        {ImGuiKey_Z, GLFW_KEY_Z},
     };
     for (const auto& [imguiKey, glfwKey] : map) io.KeyMap[imguiKey] = glfwKey;
     // Build the font atlas now, so a frame can be built even when nothing draws it.
@@ -34,8 +47,8 @@ ImGuiPlatform::ImGuiPlatform() {
 
 ImGuiPlatform::~ImGuiPlatform() { ImGui::DestroyContext(); }
 
-void ImGuiPlatform::newFrame(const InputState& input, glm::uvec2 framebufferSize, glm::vec2 cursorScale, float dt,
-                             bool cursorVisible) {
+void ImGuiPlatform::newFrame(const InputState& input, glm::uvec2 framebufferSize,
+                             glm::vec2 cursorScale, float dt, bool cursorVisible) {
     ImGuiIO& io = ImGui::GetIO();
     io.DisplaySize = ImVec2(float(framebufferSize.x), float(framebufferSize.y));
     io.DisplayFramebufferScale = ImVec2(1.0f, 1.0f);
@@ -46,9 +59,11 @@ void ImGuiPlatform::newFrame(const InputState& input, glm::uvec2 framebufferSize
     } else {
         io.MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
     }
-    for (int b = 0; b < 3; ++b) io.MouseDown[b] = cursorVisible && (input.buttonHeld(b) || input.buttonPressed(b));
+    for (int b = 0; b < 3; ++b)
+        io.MouseDown[b] = cursorVisible && (input.buttonHeld(b) || input.buttonPressed(b));
     io.MouseWheel = cursorVisible ? input.scroll() : 0.0f;
-    for (int k = 0; k < InputState::kMaxKeys; ++k) io.KeysDown[k] = input.held(k) || input.pressed(k);
+    for (int k = 0; k < InputState::kMaxKeys; ++k)
+        io.KeysDown[k] = input.held(k) || input.pressed(k);
     io.KeyCtrl = input.ctrl();
     io.KeyShift = input.shift();
     io.KeyAlt = input.alt();

@@ -19,8 +19,8 @@ public:
 
     // Starts an ImGui frame. `cursorScale` maps window to framebuffer pixels; with
     // `cursorVisible` false (mouse look) the HUD sees no cursor and no clicks.
-    void newFrame(const InputState& input, glm::uvec2 framebufferSize, glm::vec2 cursorScale, float dt,
-                  bool cursorVisible);
+    void newFrame(const InputState& input, glm::uvec2 framebufferSize, glm::vec2 cursorScale,
+                  float dt, bool cursorVisible);
     // True when the cursor is over the HUD (clicks go to it, not to the world).
     bool wantsMouse() const;
 };

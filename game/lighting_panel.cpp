@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cstring>
-
 #include <imgui.h>
 
 #include "lighting/lighting_knobs.h"
@@ -16,7 +15,8 @@ using engine::lighting::LightingSettings;
 
 // A range spanning orders of magnitude gets a logarithmic slider.
 ImGuiSliderFlags sliderFlags(const Knob& k) {
-    return k.min > 0.0 && k.max / k.min > 100.0 ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None;
+    return k.min > 0.0 && k.max / k.min > 100.0 ? ImGuiSliderFlags_Logarithmic
+                                                : ImGuiSliderFlags_None;
 }
 
 bool drawChoice(const Knob& k, LightingSettings& s) {
@@ -25,7 +25,8 @@ bool drawChoice(const Knob& k, LightingSettings& s) {
     if (ImGui::BeginCombo(k.name.data(), current.c_str())) {
         for (std::string_view c : k.choices) {
             std::string name(c);
-            if (ImGui::Selectable(name.c_str(), name == current)) changed = setKnob(k, s, name).ok();
+            if (ImGui::Selectable(name.c_str(), name == current))
+                changed = setKnob(k, s, name).ok();
         }
         ImGui::EndCombo();
     }
@@ -52,14 +53,15 @@ bool drawWidget(const Knob& k, LightingSettings& s) {
                 return true;
             }
             int v = static_cast<int>(k.get(s));
-            if (!ImGui::SliderInt(k.name.data(), &v, static_cast<int>(k.min), static_cast<int>(k.max), "%d", sliderFlags(k)))
+            if (!ImGui::SliderInt(k.name.data(), &v, static_cast<int>(k.min),
+                                  static_cast<int>(k.max), "%d", sliderFlags(k)))
                 return false;
             return setChecked(k, s, v);
         }
         case KnobKind::Real: {
             float v = static_cast<float>(k.get(s));
-            if (!ImGui::SliderFloat(k.name.data(), &v, static_cast<float>(k.min), static_cast<float>(k.max), "%.3g",
-                                    sliderFlags(k)))
+            if (!ImGui::SliderFloat(k.name.data(), &v, static_cast<float>(k.min),
+                                    static_cast<float>(k.max), "%.3g", sliderFlags(k)))
                 return false;
             return setChecked(k, s, v);
         }
@@ -69,14 +71,17 @@ bool drawWidget(const Knob& k, LightingSettings& s) {
             k.set(s, v ? 1.0 : 0.0);
             return true;
         }
-        case KnobKind::Choice: return drawChoice(k, s);
+        case KnobKind::Choice:
+            return drawChoice(k, s);
         case KnobKind::Custom: {
             if (!k.choices.empty()) return drawChoice(k, s);
             char text[64];
             std::string current = knobText(k, s);
             std::strncpy(text, current.c_str(), sizeof text - 1);
             text[sizeof text - 1] = 0;
-            if (!ImGui::InputText(k.name.data(), text, sizeof text, ImGuiInputTextFlags_EnterReturnsTrue)) return false;
+            if (!ImGui::InputText(k.name.data(), text, sizeof text,
+                                  ImGuiInputTextFlags_EnterReturnsTrue))
+                return false;
             return setKnob(k, s, text).ok();
         }
     }
@@ -86,7 +91,8 @@ bool drawWidget(const Knob& k, LightingSettings& s) {
 bool drawKnob(const Knob& k, LightingSettings& s) {
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
     bool changed = drawWidget(k, s);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%.*s", static_cast<int>(k.help.size()), k.help.data());
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("%.*s", static_cast<int>(k.help.size()), k.help.data());
     return changed;
 }
 
@@ -96,7 +102,8 @@ bool LightingPanel::draw(LightingSettings& settings, float width) {
     LightingSettings edited = settings;
     bool changed = false;
     for (const engine::lighting::KnobGroup& g : engine::lighting::knobGroups()) {
-        bool any = std::any_of(g.knobs.begin(), g.knobs.end(), [&](const Knob& k) { return knobRelevant(k, edited); });
+        bool any = std::any_of(g.knobs.begin(), g.knobs.end(),
+                               [&](const Knob& k) { return knobRelevant(k, edited); });
         if (!any) continue;
         bool open = g.name == "lighting" || g.name == "emitters" || ImGui::TreeNode(g.name.data());
         if (!open) continue;

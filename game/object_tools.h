@@ -17,11 +17,10 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <glm/glm.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "core/error.h"
 #include "game/edit_tools.h"
@@ -32,14 +31,15 @@ namespace game {
 
 class InputState;
 
-inline constexpr std::uint64_t kMaxModelVoxels = 16384;   // solid voxels of one model
-inline constexpr std::uintmax_t kMaxModelFileBytes = 64u << 20;  // a .vdb or .vox larger is not opened
+inline constexpr std::uint64_t kMaxModelVoxels = 16384;  // solid voxels of one model
+inline constexpr std::uintmax_t kMaxModelFileBytes = 64u
+                                                     << 20;  // a .vdb or .vox larger is not opened
 inline constexpr double kKeyTolerance = 1.0 / 60.0;  // s: a key this close to the time is replaced
 inline constexpr double kFreeTurnDegrees = 5.0;
 
 struct ObjectModel {
-    std::string name;                       // the file's stem
-    engine::world::Palette palette;         // the source's materials; `voxels` holds their ids
+    std::string name;                // the file's stem
+    engine::world::Palette palette;  // the source's materials; `voxels` holds their ids
     engine::world::BrickGrid voxels{glm::ivec3(8)};  // the solid voxels' box, from (0, 0, 0)
     glm::ivec3 size{0};
     std::uint64_t solidVoxels = 0;
@@ -59,18 +59,22 @@ struct ObjectResult {
 ObjectResult placeObject(engine::world::Scene& scene, UndoHistory& undo, const ObjectModel& model,
                          const Pick& target, double time);
 // Moves by whole voxels along world axes.
-ObjectResult moveObject(engine::world::Scene& scene, UndoHistory& undo, std::size_t index, glm::ivec3 delta,
-                        double time);
+ObjectResult moveObject(engine::world::Scene& scene, UndoHistory& undo, std::size_t index,
+                        glm::ivec3 delta, double time);
 // Turns about +Y (world up) by `degrees` about the object's centre.
-ObjectResult turnObject(engine::world::Scene& scene, UndoHistory& undo, std::size_t index, double degrees,
-                        double time);
+ObjectResult turnObject(engine::world::Scene& scene, UndoHistory& undo, std::size_t index,
+                        double degrees, double time);
 // Sets a key at `time` with the pose shown at that time.
-ObjectResult setObjectKey(engine::world::Scene& scene, UndoHistory& undo, std::size_t index, double time);
+ObjectResult setObjectKey(engine::world::Scene& scene, UndoHistory& undo, std::size_t index,
+                          double time);
 // Keeps one key, the pose shown at `time`: the object stops there.
-ObjectResult clearObjectPath(engine::world::Scene& scene, UndoHistory& undo, std::size_t index, double time);
+ObjectResult clearObjectPath(engine::world::Scene& scene, UndoHistory& undo, std::size_t index,
+                             double time);
 // A path with two keys or more loops, or stops at its last key.
-ObjectResult toggleObjectLoop(engine::world::Scene& scene, UndoHistory& undo, std::size_t index, double time);
-ObjectResult deleteObject(engine::world::Scene& scene, UndoHistory& undo, std::size_t index, double time);
+ObjectResult toggleObjectLoop(engine::world::Scene& scene, UndoHistory& undo, std::size_t index,
+                              double time);
+ObjectResult deleteObject(engine::world::Scene& scene, UndoHistory& undo, std::size_t index,
+                          double time);
 
 // The object an editing command starts from at `time`: the path's pose, held at the last key
 // after a path's end (recording continues from there), snapped to voxels; yaw in degrees.
@@ -86,7 +90,8 @@ ObjectPose editPose(const engine::world::DynamicObject& object, double time);
 bool dragObject(engine::world::DynamicObject& object, const Pick& target, double time);
 
 // The object whose voxel the view ray hits first (static voxels in front hide it).
-std::optional<std::size_t> pickObject(const engine::world::Scene& scene, glm::vec3 origin, glm::vec3 direction);
+std::optional<std::size_t> pickObject(const engine::world::Scene& scene, glm::vec3 origin,
+                                      glm::vec3 direction);
 
 // Re-voxelises the objects at `time` so picks and the next frame see a change at once.
 void refreshObjects(engine::world::Scene& scene, double time);
@@ -101,8 +106,9 @@ public:
 
     // Clicks only when `mouseLook`: left places, or, pressed on the selected object, drags it
     // until the release (one undo step); right selects. Returns what the frame did.
-    ObjectResult handle(const InputState& input, bool mouseLook, const Pick& target, glm::vec3 origin,
-                        glm::vec3 direction, engine::world::Scene& scene, UndoHistory& undo, double time);
+    ObjectResult handle(const InputState& input, bool mouseLook, const Pick& target,
+                        glm::vec3 origin, glm::vec3 direction, engine::world::Scene& scene,
+                        UndoHistory& undo, double time);
     // Ends a drag as one undo step (at the release; the sandbox calls it before undo and redo).
     ObjectResult finishDrag(engine::world::Scene& scene, UndoHistory& undo);
     // After undo/redo: drops a selection that no longer exists.

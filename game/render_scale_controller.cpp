@@ -17,7 +17,8 @@ float RenderScaleController::update(float scale, double gpuMs) {
     // Down promptly when over budget; up only when well under it, and a little short of the
     // estimate: time is not quite proportional to pixels, and overshooting makes it oscillate.
     if (ratio >= 0.8 && ratio <= 1.6) return scale;
-    double step = ratio < 0.8 ? std::max(std::sqrt(ratio), 0.5) : std::min(0.9 * std::sqrt(ratio), 1.5);
+    double step =
+        ratio < 0.8 ? std::max(std::sqrt(ratio), 0.5) : std::min(0.9 * std::sqrt(ratio), 1.5);
     return std::clamp(static_cast<float>(scale * step), mMinScale, mMaxScale);
 }
 

@@ -8,10 +8,9 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <string>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "lighting/lighting_knobs.h"
 #include "world/player_body.h"
@@ -19,21 +18,22 @@
 namespace game {
 
 struct PlayOptions {
-    std::string world;       // name or path; empty: the default world
-    std::string savePath;    // empty: the world itself if it is a save, else saves/NAME.toml
-    std::string camera;      // preset to start from; empty: the first
+    std::string world;     // name or path; empty: the default world
+    std::string savePath;  // empty: the world itself if it is a save, else saves/NAME.toml
+    std::string camera;    // preset to start from; empty: the first
     glm::uvec2 windowSize{1280, 720};
     float renderScale = 0.25f;  // render resolution as a fraction of the window's (the start value)
     bool autoScale = true;      // then adapt it to keep the GPU time near targetFrameMs
     double targetFrameMs = 50.0;  // GPU time of the passes that scale with the render size
-    std::string scriptPath;     // replay scripted input (fixed time step, live input ignored)
+    std::string scriptPath;       // replay scripted input (fixed time step, live input ignored)
     std::uint64_t maxFrames = 0;  // quit after this many frames; 0: no limit
-    std::string editLogPath;    // write every edit, undo, redo, save and screenshot view here
-    std::string frameLogPath;   // CSV, one row per frame: wall, render call and GPU ms, render size
-    std::string walkLogPath;    // CSV, one row per frame: walk or fly, the player's box (game/walk_controller.h)
-    bool walk = false;          // start in walk mode (F toggles it)
+    std::string editLogPath;      // write every edit, undo, redo, save and screenshot view here
+    std::string frameLogPath;  // CSV, one row per frame: wall, render call and GPU ms, render size
+    std::string walkLogPath;   // CSV, one row per frame: walk or fly, the player's box
+                               // (game/walk_controller.h)
+    bool walk = false;         // start in walk mode (F toggles it)
     engine::world::PlayerSettings player;  // the walking player's size (scale), speeds, gravity
-    double autosaveMinutes = 3.0;  // 0: off
+    double autosaveMinutes = 3.0;          // 0: off
     std::size_t undoMegabytes = 256;
     // Models the object tool (key 4) places: scene files, .vdb or .vox (game/object_tools.h).
     std::vector<std::string> models;

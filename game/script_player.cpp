@@ -3,10 +3,9 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <fmt/format.h>
 #include <fstream>
 #include <sstream>
-
-#include <fmt/format.h>
 
 #include "core/number_check.h"
 #include "core/quoted_string.h"
@@ -33,7 +32,8 @@ bool parseFrame(const std::string& s, std::uint64_t& out) {
 
 }  // namespace
 
-engine::Result<ScriptPlayer> ScriptPlayer::parse(std::string_view text, std::string_view sourceName) {
+engine::Result<ScriptPlayer> ScriptPlayer::parse(std::string_view text,
+                                                 std::string_view sourceName) {
     ScriptPlayer player;
     std::istringstream in{std::string(text)};
     std::uint64_t previous = 0;
@@ -53,9 +53,12 @@ engine::Result<ScriptPlayer> ScriptPlayer::parse(std::string_view text, std::str
         step.line = lineNo;
         bool relative = w[0][0] == '+';
         std::uint64_t frame = 0;
-        if (!parseFrame(relative ? w[0].substr(1) : w[0], frame)) return fail("'" + w[0] + "' is not a frame number");
+        if (!parseFrame(relative ? w[0].substr(1) : w[0], frame))
+            return fail("'" + w[0] + "' is not a frame number");
         step.frame = relative ? previous + frame : frame;
-        if (step.frame < previous) return fail("frame " + std::to_string(step.frame) + " comes before the previous step's");
+        if (step.frame < previous)
+            return fail("frame " + std::to_string(step.frame) +
+                        " comes before the previous step's");
         previous = step.frame;
 
         const std::string& cmd = w[1];
@@ -76,7 +79,8 @@ engine::Result<ScriptPlayer> ScriptPlayer::parse(std::string_view text, std::str
             return fail("expected 'down' or 'up', got '" + s + "'");
         };
         // Every number goes through the one number check (core/number_check.h).
-        auto number = [&](const std::string& word, std::string_view name, const engine::NumberRange& range) -> engine::Result<float> {
+        auto number = [&](const std::string& word, std::string_view name,
+                          const engine::NumberRange& range) -> engine::Result<float> {
             auto v = engine::parseNumber(fmt::format("{} {}", cmd, name), word, range);
             if (!v) return fail(v.error().message);
             return float(*v);
@@ -88,7 +92,8 @@ engine::Result<ScriptPlayer> ScriptPlayer::parse(std::string_view text, std::str
             if (!y) return y.error();
             return glm::vec2(*x, *y);
         };
-        auto push = [&](InputEventType type, int code, bool down, glm::vec2 value, std::uint64_t at) {
+        auto push = [&](InputEventType type, int code, bool down, glm::vec2 value,
+                        std::uint64_t at) {
             ScriptStep s = step;
             s.frame = at;
             s.event = {type, code, down, value};
@@ -100,7 +105,8 @@ engine::Result<ScriptPlayer> ScriptPlayer::parse(std::string_view text, std::str
             if (!code) return code.error();
             auto down = downUp(w[3]);
             if (!down) return down.error();
-            push(cmd == "key" ? InputEventType::Key : InputEventType::MouseButton, *code, *down, {}, step.frame);
+            push(cmd == "key" ? InputEventType::Key : InputEventType::MouseButton, *code, *down, {},
+                 step.frame);
         } else if ((cmd == "tap" || cmd == "click") && args(1)) {
             auto code = cmd == "tap" ? key(w[2]) : button(w[2]);
             if (!code) return code.error();
@@ -110,14 +116,17 @@ engine::Result<ScriptPlayer> ScriptPlayer::parse(std::string_view text, std::str
         } else if ((cmd == "move" || cmd == "cursor") && args(2)) {
             auto v = vec2(kPointerRange);
             if (!v) return v.error();
-            push(cmd == "move" ? InputEventType::MouseMove : InputEventType::CursorPos, 0, false, *v, step.frame);
+            push(cmd == "move" ? InputEventType::MouseMove : InputEventType::CursorPos, 0, false,
+                 *v, step.frame);
         } else if (cmd == "scroll" && args(1)) {
             auto dy = number(w[2], "steps", engine::closedRange(-1e4, 1e4, "steps"));
             if (!dy) return dy.error();
             push(InputEventType::Scroll, 0, false, {0.0f, *dy}, step.frame);
         } else if ((cmd == "screenshot" || cmd == "capture") && args(1)) {
             step.isAction = true;
-            step.action = {cmd == "screenshot" ? ScriptAction::Kind::Screenshot : ScriptAction::Kind::Capture, w[2]};
+            step.action = {
+                cmd == "screenshot" ? ScriptAction::Kind::Screenshot : ScriptAction::Kind::Capture,
+                w[2]};
             player.mSteps.push_back(step);
         } else if (cmd == "resize" && args(2)) {
             auto v = vec2(engine::wholeRange(1, 8192, "pixels"));
@@ -131,7 +140,8 @@ engine::Result<ScriptPlayer> ScriptPlayer::parse(std::string_view text, std::str
             step.action = {ScriptAction::Kind::Quit, {}};
             player.mSteps.push_back(step);
         } else {
-            return fail("unknown command or wrong arguments: '" + line + "' (see game/script_player.h)");
+            return fail("unknown command or wrong arguments: '" + line +
+                        "' (see game/script_player.h)");
         }
     }
     std::stable_sort(player.mSteps.begin(), player.mSteps.end(),

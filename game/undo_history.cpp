@@ -11,7 +11,8 @@ namespace {
 
 // What an object holds of its own: everything but the shared model.
 std::size_t objectBytes(const world::DynamicObject& o) {
-    std::size_t bytes = sizeof(o) + o.name.capacity() + o.path.keys().capacity() * sizeof(world::ObjectKey) +
+    std::size_t bytes = sizeof(o) + o.name.capacity() +
+                        o.path.keys().capacity() * sizeof(world::ObjectKey) +
                         o.generators.capacity() * sizeof(world::GeneratorRecord);
     for (const world::GeneratorRecord& g : o.generators) bytes += g.type.capacity();
     return bytes;
@@ -20,26 +21,30 @@ std::size_t objectBytes(const world::DynamicObject& o) {
 // The heap a model's grid takes: its brick pool in whole pages, however few bricks are live.
 std::size_t modelBytes(const world::BrickGrid& model) {
     const world::GridMemory m = model.memory();
-    return m.topGridBytes + m.superGridBytes + m.bookkeepingBytes + world::BrickGrid::poolBytesFor(model.brickCapacity());
+    return m.topGridBytes + m.superGridBytes + m.bookkeepingBytes +
+           world::BrickGrid::poolBytesFor(model.brickCapacity());
 }
 
 }  // namespace
 
 std::size_t UndoHistory::Step::bytes() const {
     std::size_t object = 0;
-    if (objectOther) object = objectBytes(*objectOther) + (holdsModel ? modelBytes(*objectOther->model) : 0);
+    if (objectOther)
+        object = objectBytes(*objectOther) + (holdsModel ? modelBytes(*objectOther->model) : 0);
     return sizeof(Step) + label.capacity() + cells.capacity() * sizeof(CellState) +
            bricks.capacity() * sizeof(world::BrickVoxels) + object;
 }
 
-bool UndoHistory::holdsModelAlone(const Step& step, const std::vector<world::DynamicObject>& objects) {
+bool UndoHistory::holdsModelAlone(const Step& step,
+                                  const std::vector<world::DynamicObject>& objects) {
     if (!step.objectOther) return false;
     const bool shared = step.objectInScene && step.objectIndex < objects.size() &&
                         objects[step.objectIndex].model == step.objectOther->model;
     return !shared;
 }
 
-void UndoHistory::capture(const world::BrickGrid& grid, glm::ivec3 cell, Step& step, CellState& state) {
+void UndoHistory::capture(const world::BrickGrid& grid, glm::ivec3 cell, Step& step,
+                          CellState& state) {
     std::uint32_t value = grid.cell(cell);
     state.cell = cell;
     if (world::BrickGrid::cellIsBrick(value)) {
@@ -77,7 +82,8 @@ EditRecord UndoHistory::record(world::BrickGrid& grid, const world::Box& region,
         std::uint32_t now = grid.cell(s.cell);
         bool changed;
         if (s.brick == kNoBrick) {
-            changed = world::BrickGrid::cellIsBrick(now) || world::BrickGrid::cellMaterial(now) != s.material;
+            changed = world::BrickGrid::cellIsBrick(now) ||
+                      world::BrickGrid::cellMaterial(now) != s.material;
         } else {
             changed = !world::BrickGrid::cellIsBrick(now) ||
                       grid.brickVoxels(world::BrickGrid::cellBrick(now)) != before.bricks[s.brick];
@@ -122,7 +128,8 @@ void UndoHistory::push(Step step) {
 }
 
 bool UndoHistory::recordObject(const std::vector<world::DynamicObject>& objects, std::size_t index,
-                               std::optional<world::DynamicObject> before, bool existsNow, std::string label) {
+                               std::optional<world::DynamicObject> before, bool existsNow,
+                               std::string label) {
     Step step;
     step.label = std::move(label);
     step.isObject = true;
@@ -144,7 +151,8 @@ void UndoHistory::swapObject(std::vector<world::DynamicObject>& objects, Step& s
         now = std::move(objects[i]);
         objects.erase(objects.begin() + std::ptrdiff_t(i));
     }
-    if (step.objectOther) objects.insert(objects.begin() + std::ptrdiff_t(i), std::move(*step.objectOther));
+    if (step.objectOther)
+        objects.insert(objects.begin() + std::ptrdiff_t(i), std::move(*step.objectOther));
     step.objectInScene = step.objectOther.has_value();
     step.objectOther = std::move(now);
     step.holdsModel = holdsModelAlone(step, objects);
@@ -191,8 +199,10 @@ std::string UndoHistory::undo(world::BrickGrid& grid, std::vector<world::Dynamic
     if (!canUndo()) return {};
     Step& step = mSteps[--mCursor];
     mBytes -= step.bytes();
-    if (step.isObject) swapObject(objects, step);
-    else swap(grid, step);
+    if (step.isObject)
+        swapObject(objects, step);
+    else
+        swap(grid, step);
     mBytes += step.bytes();
     std::string label = step.label;
     enforceBudget();
@@ -203,8 +213,10 @@ std::string UndoHistory::redo(world::BrickGrid& grid, std::vector<world::Dynamic
     if (!canRedo()) return {};
     Step& step = mSteps[mCursor++];
     mBytes -= step.bytes();
-    if (step.isObject) swapObject(objects, step);
-    else swap(grid, step);
+    if (step.isObject)
+        swapObject(objects, step);
+    else
+        swap(grid, step);
     mBytes += step.bytes();
     std::string label = step.label;
     enforceBudget();

@@ -1,9 +1,9 @@
-// Undo/redo for world edits and dynamic-object changes. A step stores, for each top-grid cell the edit changed, that
-// cell's other state: a material for a uniform (or empty) cell, or a copy of its 8^3 brick.
-// Undo and redo swap the stored state with the world's, so one copy serves both directions
-// and the history costs what the edits touched, never a copy of the world. An object step
-// (game/object_tools.h) stores the one object it changed the same way: its other state, or
-// its absence, swapped with the scene's list. The object's model is shared, not copied
+// Undo/redo for world edits and dynamic-object changes. A step stores, for each top-grid cell the
+// edit changed, that cell's other state: a material for a uniform (or empty) cell, or a copy of its
+// 8^3 brick. Undo and redo swap the stored state with the world's, so one copy serves both
+// directions and the history costs what the edits touched, never a copy of the world. An object
+// step (game/object_tools.h) stores the one object it changed the same way: its other state, or its
+// absence, swapped with the scene's list. The object's model is shared, not copied
 // (world/dynamic_object.h): a step counts the model's memory only while it alone keeps the model
 // alive, that is while the scene's object at its index does not hold the same model (a deleted
 // object, a placement undone); a move or a key costs the object's path, not its model.
@@ -46,7 +46,8 @@ public:
     // Runs `edit` on `grid` and records the cells within `region` that it changed as one step.
     // `edit` must not change anything outside `region`. Clears the redo steps if it changed
     // something.
-    EditRecord record(engine::world::BrickGrid& grid, const engine::world::Box& region, std::string label,
+    EditRecord record(engine::world::BrickGrid& grid, const engine::world::Box& region,
+                      std::string label,
                       const std::function<void(engine::world::BrickGrid&)>& edit);
 
     // Records a change the caller has just made to objects[index] as one step: `before` is the
@@ -54,11 +55,14 @@ public:
     // `objects` is the scene's list after the change. Clears the redo steps. Returns false when
     // the step exceeded the budget (not undoable).
     bool recordObject(const std::vector<engine::world::DynamicObject>& objects, std::size_t index,
-                      std::optional<engine::world::DynamicObject> before, bool existsNow, std::string label);
+                      std::optional<engine::world::DynamicObject> before, bool existsNow,
+                      std::string label);
 
     // Each returns the step's label, or an empty string when there is nothing to undo/redo.
-    std::string undo(engine::world::BrickGrid& grid, std::vector<engine::world::DynamicObject>& objects);
-    std::string redo(engine::world::BrickGrid& grid, std::vector<engine::world::DynamicObject>& objects);
+    std::string undo(engine::world::BrickGrid& grid,
+                     std::vector<engine::world::DynamicObject>& objects);
+    std::string redo(engine::world::BrickGrid& grid,
+                     std::vector<engine::world::DynamicObject>& objects);
     // For histories of grid edits only (an object step there is a logic error).
     std::string undo(engine::world::BrickGrid& grid);
     std::string redo(engine::world::BrickGrid& grid);
@@ -91,11 +95,13 @@ private:
         std::size_t bytes() const;
     };
 
-    static void capture(const engine::world::BrickGrid& grid, glm::ivec3 cell, Step& step, CellState& state);
+    static void capture(const engine::world::BrickGrid& grid, glm::ivec3 cell, Step& step,
+                        CellState& state);
     // Writes the step's states into the grid and keeps the grid's previous states in their place.
     static void swap(engine::world::BrickGrid& grid, Step& step);
     static void swapObject(std::vector<engine::world::DynamicObject>& objects, Step& step);
-    static bool holdsModelAlone(const Step& step, const std::vector<engine::world::DynamicObject>& objects);
+    static bool holdsModelAlone(const Step& step,
+                                const std::vector<engine::world::DynamicObject>& objects);
     void push(Step step);
     void enforceBudget();
 

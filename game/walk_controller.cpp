@@ -1,10 +1,9 @@
 #include "game/walk_controller.h"
 
 #include <GLFW/glfw3.h>
-#include <fmt/format.h>
-
 #include <chrono>
 #include <cmath>
+#include <fmt/format.h>
 
 #include "world/dynamic_grid.h"
 

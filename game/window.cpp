@@ -1,9 +1,8 @@
 #include "game/window.h"
 
+#include <GLFW/glfw3.h>
 #include <algorithm>
 #include <cstdlib>
-
-#include <GLFW/glfw3.h>
 
 namespace game {
 
@@ -11,7 +10,9 @@ namespace {
 
 std::string gGlfwError;
 
-void onGlfwError(int, const char* description) { gGlfwError = description ? description : "unknown GLFW error"; }
+void onGlfwError(int, const char* description) {
+    gGlfwError = description ? description : "unknown GLFW error";
+}
 
 Window* self(GLFWwindow* w) { return static_cast<Window*>(glfwGetWindowUserPointer(w)); }
 
@@ -20,7 +21,8 @@ Window* self(GLFWwindow* w) { return static_cast<Window*>(glfwGetWindowUserPoint
 std::string displayProblem() {
     const char* x11 = std::getenv("DISPLAY");
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
-    if ((!x11 || !*x11) && (!wayland || !*wayland)) return "no display (DISPLAY and WAYLAND_DISPLAY are unset)";
+    if ((!x11 || !*x11) && (!wayland || !*wayland))
+        return "no display (DISPLAY and WAYLAND_DISPLAY are unset)";
     // Set is not the same as reachable: try it. GLFW stays initialised for the window that
     // follows (glfwInit again is a no-op): closing the only connection would make an X server
     // without -noreset (Xvfb's default) reset, and the window's connection could race it.
@@ -36,13 +38,15 @@ engine::Result<std::unique_ptr<Window>> Window::create(const WindowOptions& opti
     if (!glfwInit()) return engine::makeError("cannot open the display: {}", gGlfwError);
     if (!glfwVulkanSupported()) {
         glfwTerminate();
-        return engine::makeError("the display has no Vulkan presentation support (GLFW: {})", gGlfwError);
+        return engine::makeError("the display has no Vulkan presentation support (GLFW: {})",
+                                 gGlfwError);
     }
     glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
     glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
     glfwWindowHint(GLFW_VISIBLE, options.visible ? GLFW_TRUE : GLFW_FALSE);
     std::unique_ptr<Window> window(new Window());
-    window->mWindow = glfwCreateWindow(int(options.size.x), int(options.size.y), options.title.c_str(), nullptr, nullptr);
+    window->mWindow = glfwCreateWindow(int(options.size.x), int(options.size.y),
+                                       options.title.c_str(), nullptr, nullptr);
     if (!window->mWindow) {
         glfwTerminate();
         return engine::makeError("cannot create a window: {}", gGlfwError);

@@ -1,8 +1,7 @@
 #include "game/world_file_stem.h"
 
-#include <fmt/format.h>
-
 #include <cctype>
+#include <fmt/format.h>
 
 #include "core/hash.h"
 

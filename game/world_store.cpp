@@ -1,8 +1,7 @@
 #include "game/world_store.h"
 
-#include <string>
-
 #include <fmt/format.h>
+#include <string>
 
 #include "game/world_file_stem.h"
 #include "io/vdb_export.h"
@@ -20,12 +19,14 @@ namespace {
 
 // A model's name for its payload: FNV-1a over its size, voxel ids and their material names, so
 // an unchanged model keeps its file from save to save.
-std::uint64_t modelHash(const engine::world::DynamicObject& o, const engine::world::Palette& palette) {
+std::uint64_t modelHash(const engine::world::DynamicObject& o,
+                        const engine::world::Palette& palette) {
     std::uint64_t h = 1469598103934665603ull;
     auto mix = [&](std::uint64_t v) {
         for (int b = 0; b < 8; ++b) h = (h ^ ((v >> (8 * b)) & 0xff)) * 1099511628211ull;
     };
-    mix(std::uint64_t(o.modelSize.x) | std::uint64_t(o.modelSize.y) << 21 | std::uint64_t(o.modelSize.z) << 42);
+    mix(std::uint64_t(o.modelSize.x) | std::uint64_t(o.modelSize.y) << 21 |
+        std::uint64_t(o.modelSize.z) << 42);
     std::vector<bool> used(palette.size(), false);
     for (int z = 0; z < o.modelSize.z; ++z)
         for (int y = 0; y < o.modelSize.y; ++y)
@@ -49,9 +50,13 @@ public:
         fs::path dir = sceneFile.parent_path();
         std::error_code ec;
         if (!dir.empty()) fs::create_directories(dir, ec);
-        if (ec) return engine::makeError("{}: cannot create the folder: {}", dir.string(), ec.message());
-        if (fs::is_regular_file(sceneFile, ec) && !isSave(sceneFile))  // a folder: writeWorldPair says so
-            return engine::makeError("{}: not a save written by vox play; refusing to overwrite it", sceneFile.string());
+        if (ec)
+            return engine::makeError("{}: cannot create the folder: {}", dir.string(),
+                                     ec.message());
+        if (fs::is_regular_file(sceneFile, ec) &&
+            !isSave(sceneFile))  // a folder: writeWorldPair says so
+            return engine::makeError("{}: not a save written by vox play; refusing to overwrite it",
+                                     sceneFile.string());
 
         // rule "ids": our own file's material grid, mapped by name onto the palette listed above
         // it, which is the same palette in the same order; so every id comes back unchanged.
@@ -63,7 +68,8 @@ public:
         std::vector<std::vector<engine::world::GeneratorRecord>> objectGenerators;
         engine::scene::WorldPairOptions options{.beforeCommit = mFaults.beforeCommit};
         for (const engine::world::DynamicObject& o : scene.objects) {
-            const std::string name = fmt::format("{}.object-{:016x}.vdb", stem, modelHash(o, scene.palette));
+            const std::string name =
+                fmt::format("{}.object-{:016x}.vdb", stem, modelHash(o, scene.palette));
             auto write = [&scene, &o](const fs::path& file) {
                 engine::world::Scene model;
                 model.name = o.name;
@@ -76,7 +82,8 @@ public:
             objectGenerators.push_back({engine::scene::vdbPayloadGenerator(name, /*ids=*/true)});
         }
         auto text = [&](const std::string& payloadName) {
-            std::vector<engine::world::GeneratorRecord> generators{engine::scene::vdbPayloadGenerator(payloadName, /*ids=*/true)};
+            std::vector<engine::world::GeneratorRecord> generators{
+                engine::scene::vdbPayloadGenerator(payloadName, /*ids=*/true)};
             return engine::scene::sceneText(scene, {.headerComment = engine::scene::kSaveMarker,
                                                     .generators = &generators,
                                                     .objectGenerators = &objectGenerators});
@@ -106,6 +113,8 @@ fs::path defaultSavePath(std::string_view worldName) {
     return fs::path("saves") / (worldFileStem(worldName) + ".toml");
 }
 
-std::unique_ptr<WorldStore> makeWorldStore(SaveFaults faults) { return std::make_unique<VdbWorldStore>(std::move(faults)); }
+std::unique_ptr<WorldStore> makeWorldStore(SaveFaults faults) {
+    return std::make_unique<VdbWorldStore>(std::move(faults));
+}
 
 }  // namespace game

@@ -31,7 +31,8 @@ struct SaveFaults {
 class WorldStore {
 public:
     virtual ~WorldStore() = default;
-    virtual engine::Status save(const engine::world::Scene& scene, const std::filesystem::path& sceneFile) = 0;
+    virtual engine::Status save(const engine::world::Scene& scene,
+                                const std::filesystem::path& sceneFile) = 0;
     virtual engine::Result<engine::world::Scene> load(const std::filesystem::path& sceneFile) = 0;
     // True if `sceneFile` is a save this store wrote (and may overwrite); false for hand-written
     // scene files, which a save must never replace.

@@ -1,21 +1,20 @@
 #include "core/atomic_file.h"
 
-#include <fcntl.h>
-#include <signal.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <array>
 #include <atomic>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+#include <fcntl.h>
 #include <mutex>
 #include <set>
+#include <signal.h>
 #include <streambuf>
 #include <string>
+#include <sys/stat.h>
 #include <system_error>
+#include <unistd.h>
 
 #include "core/file_name.h"
 
@@ -35,7 +34,8 @@ bool injectedFailure() {
     std::lock_guard lock(gInjectMutex);
     if (!gEnvironmentRead) {
         gEnvironmentRead = true;
-        if (const char* v = std::getenv("VOX_FAIL_WRITES"); v && std::strncmp(v, "after:", 6) == 0) {
+        if (const char* v = std::getenv("VOX_FAIL_WRITES");
+            v && std::strncmp(v, "after:", 6) == 0) {
             char* end = nullptr;
             unsigned long long n = std::strtoull(v + 6, &end, 10);
             if (end != v + 6 && *end == '\0') gOperationsLeft = n;
@@ -56,10 +56,13 @@ pid_t temporaryOwner(const std::string& name) {
     auto at = name.rfind(kTempMarker);
     if (at == std::string::npos || at == 0) return 0;
     std::string digits = name.substr(at + kTempMarker.size());
-    if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) return 0;
+    if (digits.empty() || digits.size() > 9 ||
+        digits.find_first_not_of("0123456789") != std::string::npos)
+        return 0;
     if (name.front() != '.') {
         const std::string ext = fs::path(name.substr(0, at)).extension().string();
-        constexpr std::array<std::string_view, 8> kOurs = {".png", ".exr", ".vdb", ".toml", ".csv", ".json", ".md", ".mp4"};
+        constexpr std::array<std::string_view, 8> kOurs = {".png", ".exr",  ".vdb", ".toml",
+                                                           ".csv", ".json", ".md",  ".mp4"};
         if (std::find(kOurs.begin(), kOurs.end(), ext) == kOurs.end()) return 0;
     }
     return pid_t(std::stol(digits));
@@ -99,7 +102,8 @@ void forgetTemporary(const fs::path& temporary) {
 }
 
 std::mutex gSweptMutex;
-std::set<fs::path> gSweptFolders;  // each folder once per process: a dead process writes nothing new
+std::set<fs::path>
+    gSweptFolders;  // each folder once per process: a dead process writes nothing new
 
 void sweepOnce(const fs::path& folder) {
     std::error_code ec;
@@ -126,7 +130,8 @@ fs::path temporaryPathFor(const fs::path& target) {
 std::size_t removeStaleTemporaries(const fs::path& folder) {
     std::size_t removed = 0;
     std::error_code ec;
-    for (const fs::directory_entry& e : fs::directory_iterator(folder.empty() ? fs::path(".") : folder, ec)) {
+    for (const fs::directory_entry& e :
+         fs::directory_iterator(folder.empty() ? fs::path(".") : folder, ec)) {
         pid_t pid = temporaryOwner(e.path().filename().string());
         if (pid <= 0 || pid == ::getpid() || !e.is_regular_file(ec)) continue;
         // ESRCH: no such process. EPERM means alive (another user's), so it is left alone.
@@ -144,7 +149,9 @@ void failWritesAfter(std::optional<std::uint64_t> operations) {
 // The stream's buffer: collects small writes, hands them to AtomicFile::write in 64 KiB blocks.
 class AtomicFile::Buffer final : public std::streambuf {
 public:
-    explicit Buffer(AtomicFile& file) : mFile(file) { setp(mData.data(), mData.data() + mData.size()); }
+    explicit Buffer(AtomicFile& file) : mFile(file) {
+        setp(mData.data(), mData.data() + mData.size());
+    }
     // Writes what is buffered; false if the file failed.
     bool drain() {
         const std::size_t n = std::size_t(pptr() - pbase());
@@ -167,7 +174,9 @@ protected:
     pos_type seekoff(off_type off, std::ios_base::seekdir dir, std::ios_base::openmode) override {
         const off_type here = off_type(mFile.tell());
         if (dir == std::ios_base::cur && off == 0) return pos_type(here);
-        off_type target = dir == std::ios_base::beg ? off : dir == std::ios_base::cur ? here + off : -1;
+        off_type target = dir == std::ios_base::beg   ? off
+                          : dir == std::ios_base::cur ? here + off
+                                                      : -1;
         if (target < 0 || !mFile.seek(std::uint64_t(target)).ok()) return pos_type(off_type(-1));
         return pos_type(target);
     }
@@ -190,10 +199,12 @@ Status AtomicFile::open(const fs::path& target) {
     mError.reset();
     mPosition = 0;
     std::error_code ec;
-    if (fs::is_directory(target, ec)) return makeError("{} is a folder; give a file name to write", target.string());
+    if (fs::is_directory(target, ec))
+        return makeError("{} is a folder; give a file name to write", target.string());
     const fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
     if (!fs::is_directory(folder, ec))
-        return makeError("{}: cannot write: '{}' is not a folder", target.string(), folder.string());
+        return makeError("{}: cannot write: '{}' is not a folder", target.string(),
+                         folder.string());
     if (target.filename().string().size() > kMaxFileName)
         return makeError("{}: cannot create: {}", target.string(), std::strerror(ENAMETOOLONG));
     sweepOnce(folder);
@@ -206,13 +217,15 @@ Status AtomicFile::open(const fs::path& target) {
     }
     // A replaced file keeps its permissions (a private save stays private).
     struct stat previous {};
-    if (::stat(target.c_str(), &previous) == 0 && S_ISREG(previous.st_mode)) (void)::fchmod(mFd, previous.st_mode & 07777);
+    if (::stat(target.c_str(), &previous) == 0 && S_ISREG(previous.st_mode))
+        (void)::fchmod(mFd, previous.st_mode & 07777);
     return {};
 }
 
 void AtomicFile::recordError(std::string_view what, int error) {
     if (!mError)
-        mError = makeError("{}: cannot {}: {}", mTarget.string(), what, error ? std::strerror(error) : "unknown error");
+        mError = makeError("{}: cannot {}: {}", mTarget.string(), what,
+                           error ? std::strerror(error) : "unknown error");
 }
 
 Status AtomicFile::fail(std::string_view what, int error) {
@@ -264,15 +277,19 @@ Status AtomicFile::commit() {
     if (mFd < 0 && !mError) return makeError("{}: not open for writing", mTarget.string());
     if (mBuffer) mBuffer->drain();
     if (!mError) {
-        if (injectedFailure()) recordError("flush to disk", ENOSPC);
-        else if (::fsync(mFd) != 0) recordError("flush to disk", errno);
+        if (injectedFailure())
+            recordError("flush to disk", ENOSPC);
+        else if (::fsync(mFd) != 0)
+            recordError("flush to disk", errno);
     }
     if (!mError) {
         const int fd = mFd;
         mFd = -1;
-        if (::close(fd) != 0) recordError("close", errno);  // NFS and quotas report write errors here
+        if (::close(fd) != 0)
+            recordError("close", errno);  // NFS and quotas report write errors here
     }
-    if (!mError && ::rename(mTemporary.c_str(), mTarget.c_str()) != 0) recordError("replace the file", errno);
+    if (!mError && ::rename(mTemporary.c_str(), mTarget.c_str()) != 0)
+        recordError("replace the file", errno);
     if (mError) {
         Error error = *mError;
         abandon();
@@ -306,21 +323,24 @@ Status writeFileAtomically(const fs::path& target, std::string_view bytes) {
     return writeFileAtomically(target, [&](AtomicFile& file) { return file.write(bytes); });
 }
 
-Status writeFileAtomically(const fs::path& target, const std::function<Status(AtomicFile& file)>& write) {
+Status writeFileAtomically(const fs::path& target,
+                           const std::function<Status(AtomicFile& file)>& write) {
     AtomicFile file;
     if (Status s = file.open(target); !s) return s;
     if (Status s = write(file); !s) return s;  // the destructor removes the temporary
     return file.commit();
 }
 
-Status replaceFileAtomically(const fs::path& target, const std::function<Status(const fs::path& temporary)>& writeTo) {
+Status replaceFileAtomically(const fs::path& target,
+                             const std::function<Status(const fs::path& temporary)>& writeTo) {
     AtomicFile file;
     if (Status s = file.open(target); !s) return s;
     if (Status s = writeTo(file.temporary()); !s) return s;
     // The program wrote through its own descriptor: ours still names the same file (unless the
     // program replaced it), so reopen by path for the fsync.
     const int fd = ::open(file.temporary().c_str(), O_WRONLY | O_NOFOLLOW | O_CLOEXEC);
-    if (fd < 0) return makeError("{}: the writer left no file: {}", target.string(), std::strerror(errno));
+    if (fd < 0)
+        return makeError("{}: the writer left no file: {}", target.string(), std::strerror(errno));
     ::close(file.mFd);
     file.mFd = fd;
     return file.commit();

@@ -1,10 +1,9 @@
 // FNV-1a checksums (core/checksum.h).
 #include "core/checksum.h"
 
-#include <fmt/format.h>
-
 #include <cerrno>
 #include <cstring>
+#include <fmt/format.h>
 #include <fstream>
 #include <vector>
 

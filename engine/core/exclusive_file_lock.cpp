@@ -1,12 +1,11 @@
 // flock(2)-based exclusive sections (core/exclusive_file_lock.h).
 #include "core/exclusive_file_lock.h"
 
+#include <cerrno>
+#include <cstring>
 #include <fcntl.h>
 #include <sys/file.h>
 #include <unistd.h>
-
-#include <cerrno>
-#include <cstring>
 
 namespace engine {
 

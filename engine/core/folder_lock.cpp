@@ -1,10 +1,9 @@
 #include "core/folder_lock.h"
 
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <cerrno>
 #include <cstring>
+#include <fcntl.h>
+#include <unistd.h>
 
 namespace engine {
 
@@ -17,7 +16,9 @@ Result<FolderLock> FolderLock::acquire(const std::filesystem::path& folder, std:
                                        std::string_view what) {
     const std::filesystem::path file = folder / ".lock";
     const int fd = ::open(file.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0666);
-    if (fd < 0) return makeError("{}: cannot create the lock file: {}", file.string(), std::strerror(errno));
+    if (fd < 0)
+        return makeError("{}: cannot create the lock file: {}", file.string(),
+                         std::strerror(errno));
     struct flock range {};
     range.l_type = F_WRLCK;
     range.l_whence = SEEK_SET;
@@ -30,7 +31,8 @@ Result<FolderLock> FolderLock::acquire(const std::filesystem::path& folder, std:
         return makeError("{}: cannot lock: {}", file.string(), std::strerror(error));
     }
     struct flock holder = range;
-    const bool known = ::fcntl(fd, F_GETLK, &holder) == 0 && holder.l_type != F_UNLCK && holder.l_pid > 0;
+    const bool known =
+        ::fcntl(fd, F_GETLK, &holder) == 0 && holder.l_type != F_UNLCK && holder.l_pid > 0;
     ::close(fd);
     const std::string claimed = what.empty() ? folder.string() : std::string(what);
     if (known)

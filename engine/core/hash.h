@@ -30,7 +30,8 @@ constexpr std::uint64_t fnv1a64(std::string_view bytes) {
 // Small seeded generator for host-side sampling (tests, generators).
 class Rng {
 public:
-    explicit Rng(std::uint64_t seed) : mState(seed * 6364136223846793005ull + 1442695040888963407ull) {}
+    explicit Rng(std::uint64_t seed)
+        : mState(seed * 6364136223846793005ull + 1442695040888963407ull) {}
     std::uint32_t nextU32() {
         // PCG32 (O'Neill 2014), XSH-RR output.
         std::uint64_t old = mState;

@@ -1,11 +1,10 @@
 // JSON reading and writing (core/json.h).
 #include "core/json.h"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <fmt/format.h>
 #include <optional>
 
 #include "core/quoted_string.h"

@@ -1,12 +1,10 @@
 #include "core/memory_budget.h"
 
-#include <sys/resource.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <atomic>
-
 #include <fmt/format.h>
+#include <sys/resource.h>
+#include <unistd.h>
 
 namespace engine {
 
@@ -45,8 +43,9 @@ bool addressSpaceLimits(std::uint64_t budgetBytes) {
 
 std::string memoryBudgetAdvice(std::uint64_t budgetBytes) {
     if (addressSpaceLimits(budgetBytes))
-        return fmt::format("raise ulimit -v (now {} MiB; the budget is at most three quarters of it)",
-                           addressSpaceLimit() >> 20);
+        return fmt::format(
+            "raise ulimit -v (now {} MiB; the budget is at most three quarters of it)",
+            addressSpaceLimit() >> 20);
     return "raise --memory-budget if the machine has the memory";
 }
 

@@ -24,7 +24,8 @@ bool addressSpaceLimits(std::uint64_t budgetBytes);
 std::string memoryBudgetAdvice(std::uint64_t budgetBytes);
 
 // Thrown where a plan shows the budget would be exceeded deep inside a frame (a new world reaching
-// the renderer); caught with std::bad_alloc at the top of a program, which prints what() as one line.
+// the renderer); caught with std::bad_alloc at the top of a program, which prints what() as one
+// line.
 class MemoryBudgetExceeded : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;

@@ -14,10 +14,10 @@ namespace engine {
 
 struct NumberRange {
     double min = 0.0, max = 0.0;
-    std::string_view unit;      // "degrees", "voxels", "s"; empty: a plain number
-    bool whole = false;         // integers only
-    bool minOpen = false;       // min itself is refused: (min, max]
-    bool maxOpen = false;       // max itself is refused: [min, max)
+    std::string_view unit;  // "degrees", "voxels", "s"; empty: a plain number
+    bool whole = false;     // integers only
+    bool minOpen = false;   // min itself is refused: (min, max]
+    bool maxOpen = false;   // max itself is refused: [min, max)
 };
 
 // closedRange [min, max], aboveRange (min, max], openRange (min, max), wholeRange min..max.
@@ -46,7 +46,8 @@ Status checkNumber(std::string_view name, double value, const NumberRange& range
 // The whole of `text` as a number, or nothing. "nan" and "inf" read as themselves, so that
 // checkNumber refuses them with the range rather than a vaguer "not a number".
 std::optional<double> readNumber(std::string_view text);
-// readNumber then checkNumber; text that is no number: "NAME: expected a number in RANGE, got 'TEXT'".
+// readNumber then checkNumber; text that is no number: "NAME: expected a number in RANGE, got
+// 'TEXT'".
 Result<double> parseNumber(std::string_view name, std::string_view text, const NumberRange& range);
 
 }  // namespace engine

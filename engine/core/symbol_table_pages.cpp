@@ -1,12 +1,11 @@
 #include "core/symbol_table_pages.h"
 
 #if defined(__linux__)
+#include <cstdint>
 #include <elf.h>
 #include <link.h>
 #include <sys/mman.h>
 #include <unistd.h>
-
-#include <cstdint>
 #endif
 
 namespace engine {

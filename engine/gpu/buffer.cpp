@@ -18,9 +18,10 @@ Buffer::Buffer(Context& ctx, BufferKind kind, std::uint64_t bytes, const std::st
     VkMemoryPropertyFlags required = 0, preferred = 0;
     switch (kind) {
         case BufferKind::Storage:
-            info.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT |
-                         VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
-                         VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT;
+            info.usage =
+                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT |
+                VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT;
             preferred = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
             break;
         case BufferKind::Staging:
@@ -42,17 +43,20 @@ Buffer::Buffer(Context& ctx, BufferKind kind, std::uint64_t bytes, const std::st
     VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
     alloc.allocationSize = req.size;
     alloc.memoryTypeIndex = ctx.findMemoryType(req.memoryTypeBits, required, preferred);
-    CHECK_MSG(alloc.memoryTypeIndex != UINT32_MAX, "no memory type for buffer %s", debugName.c_str());
+    CHECK_MSG(alloc.memoryTypeIndex != UINT32_MAX, "no memory type for buffer %s",
+              debugName.c_str());
     if (kind == BufferKind::Storage) alloc.pNext = &flags;
     VK_CHECK(vkAllocateMemory(device, &alloc, nullptr, &mMemory));
     VK_CHECK(vkBindBufferMemory(device, mBuffer, mMemory, 0));
-    if (kind != BufferKind::Storage) VK_CHECK(vkMapMemory(device, mMemory, 0, VK_WHOLE_SIZE, 0, &mMapped));
+    if (kind != BufferKind::Storage)
+        VK_CHECK(vkMapMemory(device, mMemory, 0, VK_WHOLE_SIZE, 0, &mMapped));
     if (kind == BufferKind::Storage) {
         VkBufferDeviceAddressInfo addr{VK_STRUCTURE_TYPE_BUFFER_DEVICE_ADDRESS_INFO};
         addr.buffer = mBuffer;
         mAddress = vkGetBufferDeviceAddress(device, &addr);
     }
-    ctx.setObjectName(VK_OBJECT_TYPE_BUFFER, reinterpret_cast<std::uint64_t>(mBuffer), debugName.c_str());
+    ctx.setObjectName(VK_OBJECT_TYPE_BUFFER, reinterpret_cast<std::uint64_t>(mBuffer),
+                      debugName.c_str());
 }
 
 Buffer::~Buffer() { release(); }
@@ -82,10 +86,18 @@ void Buffer::write(const void* data, std::uint64_t bytes, std::uint64_t offset) 
 namespace {
 std::uint64_t texelBytes(VkFormat format) {
     switch (format) {
-        case VK_FORMAT_R32_UINT: case VK_FORMAT_R32_SFLOAT: return 4;
-        case VK_FORMAT_R32G32_UINT: case VK_FORMAT_R32G32_SFLOAT: return 8;
-        case VK_FORMAT_R32G32B32A32_UINT: case VK_FORMAT_R32G32B32A32_SFLOAT: return 16;
-        default: CHECK_MSG(false, "texel format %d: size unknown", int(format)); return 0;
+        case VK_FORMAT_R32_UINT:
+        case VK_FORMAT_R32_SFLOAT:
+            return 4;
+        case VK_FORMAT_R32G32_UINT:
+        case VK_FORMAT_R32G32_SFLOAT:
+            return 8;
+        case VK_FORMAT_R32G32B32A32_UINT:
+        case VK_FORMAT_R32G32B32A32_SFLOAT:
+            return 16;
+        default:
+            CHECK_MSG(false, "texel format %d: size unknown", int(format));
+            return 0;
     }
 }
 }  // namespace

@@ -4,19 +4,19 @@
 // (setTexelFormat), where a shader declares a usamplerBuffer (gpu::ComputePipeline).
 #pragma once
 
-#include <vulkan/vulkan.h>
-
 #include <cstdint>
 #include <cstring>
 #include <span>
 #include <string>
+#include <vulkan/vulkan.h>
 
 namespace engine::gpu {
 
 class Context;
 
 enum class BufferKind {
-    Storage,   // device-local storage buffer, transfer source and destination, indirect dispatch arguments
+    Storage,   // device-local storage buffer, transfer source and destination, indirect dispatch
+               // arguments
     Staging,   // host-visible, transfer source
     Readback,  // host-visible, transfer destination
 };

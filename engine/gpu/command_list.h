@@ -10,13 +10,12 @@
 // ReGIR's grid) is not declared by its readers: its writer ends with barrier().
 #pragma once
 
-#include <vulkan/vulkan.h>
-
 #include <cstdint>
 #include <span>
 #include <string>
 #include <utility>
 #include <vector>
+#include <vulkan/vulkan.h>
 
 #include "gpu/context.h"
 

@@ -82,7 +82,8 @@ std::vector<VkDescriptorType> declaredBindingTypes(std::span<const std::uint32_t
 // Which bindings 0..count-1 of set 0 the SPIR-V module may write: a storage buffer block none of
 // whose members (nor the variable) is decorated NonWritable (GLSL `readonly`). Texel buffers and
 // bindings the shader does not declare are read-only.
-std::vector<bool> declaredWritableBindings(std::span<const std::uint32_t> code, std::uint32_t count) {
+std::vector<bool> declaredWritableBindings(std::span<const std::uint32_t> code,
+                                           std::uint32_t count) {
     constexpr std::uint32_t kOpTypeStruct = 30, kOpTypePointer = 32, kOpVariable = 59,
                             kOpDecorate = 71, kOpMemberDecorate = 72, kHeaderWords = 5;
     constexpr std::uint32_t kDecorationBinding = 33, kDecorationDescriptorSet = 34,

@@ -7,14 +7,13 @@
 // combination of the values the shader declares, when first used.
 #pragma once
 
-#include <vulkan/vulkan.h>
-
 #include <cstdint>
 #include <initializer_list>
 #include <span>
 #include <string>
 #include <utility>
 #include <vector>
+#include <vulkan/vulkan.h>
 
 namespace engine::gpu {
 

@@ -1,7 +1,7 @@
 #include "gpu/imgui_overlay.h"
 
-#include <imgui.h>
 #include <backends/imgui_impl_vulkan.h>
+#include <imgui.h>
 
 #include "core/check.h"
 #include "gpu/command_list.h"
@@ -14,7 +14,8 @@ namespace {
 void checkImGuiResult(VkResult r) { VK_CHECK(r); }
 }  // namespace
 
-ImGuiOverlay::ImGuiOverlay(Context& ctx, VkFormat colorFormat, std::uint32_t minImageCount, std::uint32_t imageCount)
+ImGuiOverlay::ImGuiOverlay(Context& ctx, VkFormat colorFormat, std::uint32_t minImageCount,
+                           std::uint32_t imageCount)
     : mCtx(ctx) {
     CHECK_MSG(ImGui::GetCurrentContext() != nullptr, "create the ImGui context before the overlay");
     // Load the image the blit wrote; layouts stay COLOR_ATTACHMENT_OPTIMAL, the presenter's
@@ -39,7 +40,8 @@ ImGuiOverlay::ImGuiOverlay(Context& ctx, VkFormat colorFormat, std::uint32_t min
     rp.subpassCount = 1;
     rp.pSubpasses = &subpass;
     VK_CHECK(vkCreateRenderPass(ctx.device(), &rp, nullptr, &mRenderPass));
-    ctx.setObjectName(VK_OBJECT_TYPE_RENDER_PASS, reinterpret_cast<std::uint64_t>(mRenderPass), "hud.renderPass");
+    ctx.setObjectName(VK_OBJECT_TYPE_RENDER_PASS, reinterpret_cast<std::uint64_t>(mRenderPass),
+                      "hud.renderPass");
 
     VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 8};
     VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
@@ -105,7 +107,8 @@ VkFramebuffer ImGuiOverlay::framebuffer(VkImageView view, VkExtent2D extent) {
     return fb;
 }
 
-void ImGuiOverlay::record(VkCommandBuffer cmd, VkImageView view, VkExtent2D extent, ImDrawData* data) {
+void ImGuiOverlay::record(VkCommandBuffer cmd, VkImageView view, VkExtent2D extent,
+                          ImDrawData* data) {
     VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
     begin.renderPass = mRenderPass;
     begin.framebuffer = framebuffer(view, extent);

@@ -3,10 +3,9 @@
 // ImGui context before this and destroys it after.
 #pragma once
 
-#include <vulkan/vulkan.h>
-
 #include <cstdint>
 #include <unordered_map>
+#include <vulkan/vulkan.h>
 
 struct ImDrawData;
 
@@ -16,7 +15,8 @@ class Context;
 
 class ImGuiOverlay {
 public:
-    ImGuiOverlay(Context& ctx, VkFormat colorFormat, std::uint32_t minImageCount, std::uint32_t imageCount);
+    ImGuiOverlay(Context& ctx, VkFormat colorFormat, std::uint32_t minImageCount,
+                 std::uint32_t imageCount);
     ~ImGuiOverlay();
     ImGuiOverlay(const ImGuiOverlay&) = delete;
     ImGuiOverlay& operator=(const ImGuiOverlay&) = delete;

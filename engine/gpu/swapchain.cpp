@@ -14,8 +14,8 @@ namespace {
 // UNORM target shows both unchanged; an sRGB-only surface still works (the presenter then
 // uploads into an sRGB image and the blit's decode/encode cancels out).
 VkSurfaceFormatKHR chooseFormat(const std::vector<VkSurfaceFormatKHR>& formats) {
-    for (VkFormat want : {VK_FORMAT_B8G8R8A8_UNORM, VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_B8G8R8A8_SRGB,
-                          VK_FORMAT_R8G8B8A8_SRGB}) {
+    for (VkFormat want : {VK_FORMAT_B8G8R8A8_UNORM, VK_FORMAT_R8G8B8A8_UNORM,
+                          VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_R8G8B8A8_SRGB}) {
         for (const VkSurfaceFormatKHR& f : formats) {
             if (f.format == want && f.colorSpace == VK_COLOR_SPACE_SRGB_NONLINEAR_KHR) return f;
         }
@@ -36,7 +36,8 @@ Swapchain::Swapchain(Context& ctx, glm::uvec2 framebufferSize) : mCtx(ctx) {
     CHECK_MSG(ctx.surface() != VK_NULL_HANDLE, "Swapchain needs a windowed Context");
     VkSemaphoreCreateInfo info{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
     VK_CHECK(vkCreateSemaphore(ctx.device(), &info, nullptr, &mAcquired));
-    ctx.setObjectName(VK_OBJECT_TYPE_SEMAPHORE, reinterpret_cast<std::uint64_t>(mAcquired), "swapchain.acquired");
+    ctx.setObjectName(VK_OBJECT_TYPE_SEMAPHORE, reinterpret_cast<std::uint64_t>(mAcquired),
+                      "swapchain.acquired");
     build(framebufferSize);
 }
 
@@ -71,14 +72,17 @@ void Swapchain::build(glm::uvec2 framebufferSize) {
 
     VkExtent2D extent = caps.currentExtent;
     if (extent.width == UINT32_MAX) {  // the surface takes its size from the swapchain
-        extent.width = std::clamp(framebufferSize.x, caps.minImageExtent.width, caps.maxImageExtent.width);
-        extent.height = std::clamp(framebufferSize.y, caps.minImageExtent.height, caps.maxImageExtent.height);
+        extent.width =
+            std::clamp(framebufferSize.x, caps.minImageExtent.width, caps.maxImageExtent.width);
+        extent.height =
+            std::clamp(framebufferSize.y, caps.minImageExtent.height, caps.maxImageExtent.height);
     }
     vkDeviceWaitIdle(mCtx.device());
     releaseImages();
     mExtent = extent;
     mOutOfDate = false;
-    if (extent.width == 0 || extent.height == 0) return;  // minimised: build when it has an area again
+    if (extent.width == 0 || extent.height == 0)
+        return;  // minimised: build when it has an area again
 
     VkSurfaceFormatKHR format = chooseFormat(formats);
     mFormat = format.format;
@@ -125,19 +129,23 @@ void Swapchain::build(glm::uvec2 framebufferSize) {
         VkSemaphore s;
         VK_CHECK(vkCreateSemaphore(mCtx.device(), &semInfo, nullptr, &s));
         mPresentReady.push_back(s);
-        mCtx.setObjectName(VK_OBJECT_TYPE_IMAGE, reinterpret_cast<std::uint64_t>(mImages[i]), "swapchain.image");
+        mCtx.setObjectName(VK_OBJECT_TYPE_IMAGE, reinterpret_cast<std::uint64_t>(mImages[i]),
+                           "swapchain.image");
     }
     ++mGeneration;
-    log::info("swapchain {}x{}, {} images, format {}", extent.width, extent.height, count, static_cast<int>(mFormat));
+    log::info("swapchain {}x{}, {} images, format {}", extent.width, extent.height, count,
+              static_cast<int>(mFormat));
 }
 
 bool Swapchain::acquire(glm::uvec2 framebufferSize) {
     if (framebufferSize.x == 0 || framebufferSize.y == 0) return false;
-    if (mOutOfDate || mImages.empty() || framebufferSize != glm::uvec2(mExtent.width, mExtent.height)) {
+    if (mOutOfDate || mImages.empty() ||
+        framebufferSize != glm::uvec2(mExtent.width, mExtent.height)) {
         build(framebufferSize);
         if (mImages.empty()) return false;
     }
-    VkResult r = vkAcquireNextImageKHR(mCtx.device(), mSwapchain, UINT64_MAX, mAcquired, VK_NULL_HANDLE, &mImageIndex);
+    VkResult r = vkAcquireNextImageKHR(mCtx.device(), mSwapchain, UINT64_MAX, mAcquired,
+                                       VK_NULL_HANDLE, &mImageIndex);
     if (r == VK_ERROR_OUT_OF_DATE_KHR) {
         mOutOfDate = true;
         return false;

@@ -7,12 +7,10 @@
 // window's size changes or the surface reports it out of date.
 #pragma once
 
-#include <vulkan/vulkan.h>
-
 #include <cstdint>
-#include <vector>
-
 #include <glm/glm.hpp>
+#include <vector>
+#include <vulkan/vulkan.h>
 
 #include "gpu/context.h"
 

@@ -6,12 +6,14 @@
 
 namespace engine::gpu {
 
-TimestampTimer::TimestampTimer(Context& ctx, std::uint32_t maxPasses) : mCtx(ctx), mMaxPasses(maxPasses) {
+TimestampTimer::TimestampTimer(Context& ctx, std::uint32_t maxPasses)
+    : mCtx(ctx), mMaxPasses(maxPasses) {
     VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
     info.queryType = VK_QUERY_TYPE_TIMESTAMP;
     info.queryCount = 4 * maxPasses;
     VK_CHECK(vkCreateQueryPool(ctx.device(), &info, nullptr, &mPool));
-    ctx.setObjectName(VK_OBJECT_TYPE_QUERY_POOL, reinterpret_cast<std::uint64_t>(mPool), "timestamps");
+    ctx.setObjectName(VK_OBJECT_TYPE_QUERY_POOL, reinterpret_cast<std::uint64_t>(mPool),
+                      "timestamps");
 }
 
 TimestampTimer::~TimestampTimer() { vkDestroyQueryPool(mCtx.device(), mPool, nullptr); }
@@ -41,17 +43,21 @@ void TimestampTimer::begin(VkCommandBuffer cmd, const std::string& pass) {
     mNames.push_back(pass);
 }
 
-void TimestampTimer::end(VkCommandBuffer cmd) { stamp(cmd, 4 * static_cast<std::uint32_t>(mNames.size()) - 2); }
+void TimestampTimer::end(VkCommandBuffer cmd) {
+    stamp(cmd, 4 * static_cast<std::uint32_t>(mNames.size()) - 2);
+}
 
 std::vector<std::pair<std::string, double>> TimestampTimer::results() const {
     std::vector<std::pair<std::string, double>> out;
     if (mNames.empty()) return out;
     std::vector<std::uint64_t> ticks(4 * mNames.size());
-    VK_CHECK(vkGetQueryPoolResults(mCtx.device(), mPool, 0, static_cast<std::uint32_t>(ticks.size()),
-                                   ticks.size() * sizeof(std::uint64_t), ticks.data(), sizeof(std::uint64_t),
-                                   VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+    VK_CHECK(vkGetQueryPoolResults(
+        mCtx.device(), mPool, 0, static_cast<std::uint32_t>(ticks.size()),
+        ticks.size() * sizeof(std::uint64_t), ticks.data(), sizeof(std::uint64_t),
+        VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
     for (std::size_t i = 0; i < mNames.size(); ++i) {
-        double ns = static_cast<double>(ticks[4 * i + 2] - ticks[4 * i]) * mCtx.info().timestampPeriodNs;
+        double ns =
+            static_cast<double>(ticks[4 * i + 2] - ticks[4 * i]) * mCtx.info().timestampPeriodNs;
         out.emplace_back(mNames[i], ns * 1e-6);
     }
     return out;

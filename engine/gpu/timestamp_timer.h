@@ -2,11 +2,10 @@
 // twice, see timestamp_timer.cpp for lavapipe), read back after the frame's submission completes.
 #pragma once
 
-#include <vulkan/vulkan.h>
-
 #include <string>
 #include <utility>
 #include <vector>
+#include <vulkan/vulkan.h>
 
 namespace engine::gpu {
 

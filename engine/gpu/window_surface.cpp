@@ -18,7 +18,8 @@ std::vector<std::string> windowInstanceExtensions() {
 Result<VkSurfaceKHR> createWindowSurface(VkInstance instance, GLFWwindow* window) {
     VkSurfaceKHR surface = VK_NULL_HANDLE;
     VkResult r = glfwCreateWindowSurface(instance, window, nullptr, &surface);
-    if (r != VK_SUCCESS) return makeError("cannot create a Vulkan surface for the window ({})", resultName(r));
+    if (r != VK_SUCCESS)
+        return makeError("cannot create a Vulkan surface for the window ({})", resultName(r));
     return surface;
 }
 

@@ -3,10 +3,9 @@
 // engine/gpu/ sees Vulkan types; the game hands over an opaque GLFWwindow*.
 #pragma once
 
-#include <vulkan/vulkan.h>
-
 #include <string>
 #include <vector>
+#include <vulkan/vulkan.h>
 
 #include "core/error.h"
 

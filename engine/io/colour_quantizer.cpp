@@ -115,8 +115,9 @@ std::vector<glm::vec3> quantizeColours(const ColourHistogram& histogram, int max
         }
         if (bestRange <= 0.0) break;
         Span s = boxes[best];
-        std::sort(entries.begin() + std::ptrdiff_t(s.begin), entries.begin() + std::ptrdiff_t(s.end),
-                  [&](const auto& a, const auto& b) { return a.mean()[bestAxis] < b.mean()[bestAxis]; });
+        std::sort(
+            entries.begin() + std::ptrdiff_t(s.begin), entries.begin() + std::ptrdiff_t(s.end),
+            [&](const auto& a, const auto& b) { return a.mean()[bestAxis] < b.mean()[bestAxis]; });
         std::uint64_t total = 0, acc = 0;
         for (std::size_t i = s.begin; i < s.end; ++i) total += entries[i].weight;
         std::size_t cut = s.begin + 1;
@@ -186,7 +187,8 @@ int ColourMapper::nearest(glm::vec3 colour) {
             best = int(i);
         }
     }
-    if (mMemo.size() < (1u << 20)) mMemo.emplace(key, best);  // bounded: smooth gradients repeat little
+    if (mMemo.size() < (1u << 20))
+        mMemo.emplace(key, best);  // bounded: smooth gradients repeat little
     return best;
 }
 

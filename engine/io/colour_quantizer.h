@@ -10,10 +10,9 @@
 #pragma once
 
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <unordered_map>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 namespace engine::io {
 
@@ -60,7 +59,8 @@ private:
     };
     struct KeyHash {
         std::size_t operator()(const Key& k) const {
-            return std::size_t((std::uint64_t(k.r) * 0x9E3779B97F4A7C15ull) ^ (std::uint64_t(k.g) * 0xC2B2AE3D27D4EB4Full) ^
+            return std::size_t((std::uint64_t(k.r) * 0x9E3779B97F4A7C15ull) ^
+                               (std::uint64_t(k.g) * 0xC2B2AE3D27D4EB4Full) ^
                                (std::uint64_t(k.b) * 0x165667B19E3779F9ull));
         }
     };

@@ -1,17 +1,16 @@
 #include "io/image_io.h"
 
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfIO.h>
+#include <ImfInputFile.h>
+#include <ImfOutputFile.h>
 #include <cstring>
 #include <stdexcept>
 #include <string>
 
 #include "core/atomic_file.h"
-
-#include <ImfChannelList.h>
-#include <ImfFrameBuffer.h>
-#include <ImfHeader.h>
-#include <ImfInputFile.h>
-#include <ImfIO.h>
-#include <ImfOutputFile.h>
 
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #define STBIW_WINDOWS_UTF8
@@ -45,15 +44,19 @@ private:
 
 }  // namespace
 
-Status writePng(const fs::path& path, std::uint32_t width, std::uint32_t height, std::span<const std::uint32_t> rgba8) {
-    if (rgba8.size() != std::size_t(width) * height) return makeError("{}: image size mismatch", path.string());
+Status writePng(const fs::path& path, std::uint32_t width, std::uint32_t height,
+                std::span<const std::uint32_t> rgba8) {
+    if (rgba8.size() != std::size_t(width) * height)
+        return makeError("{}: image size mismatch", path.string());
     // stb encodes into memory (its own file writer ignores fwrite and fclose errors); the
     // checked writer puts the bytes on disk.
     std::string png;
     auto append = [](void* context, void* data, int size) {
-        static_cast<std::string*>(context)->append(static_cast<const char*>(data), std::size_t(size));
+        static_cast<std::string*>(context)->append(static_cast<const char*>(data),
+                                                   std::size_t(size));
     };
-    if (!stbi_write_png_to_func(append, &png, int(width), int(height), 4, rgba8.data(), int(width * 4)))
+    if (!stbi_write_png_to_func(append, &png, int(width), int(height), 4, rgba8.data(),
+                                int(width * 4)))
         return makeError("{}: cannot encode PNG", path.string());
     return writeFileAtomically(path, png);
 }
@@ -71,8 +74,10 @@ Result<PngImage> readPng(const fs::path& path) {
     return img;
 }
 
-Status writeExr(const fs::path& path, std::uint32_t width, std::uint32_t height, std::span<const glm::vec4> linear) {
-    if (linear.size() != std::size_t(width) * height) return makeError("{}: image size mismatch", path.string());
+Status writeExr(const fs::path& path, std::uint32_t width, std::uint32_t height,
+                std::span<const glm::vec4> linear) {
+    if (linear.size() != std::size_t(width) * height)
+        return makeError("{}: image size mismatch", path.string());
     return writeFileAtomically(path, [&](AtomicFile& atomic) -> Status {
         try {
             Imf::Header header{int(width), int(height)};
@@ -83,8 +88,8 @@ Status writeExr(const fs::path& path, std::uint32_t width, std::uint32_t height,
             Imf::FrameBuffer fb;
             char* base = const_cast<char*>(reinterpret_cast<const char*>(linear.data()));
             for (int c = 0; c < 4; ++c) {
-                fb.insert(names[c], Imf::Slice(Imf::FLOAT, base + c * sizeof(float), sizeof(glm::vec4),
-                                               sizeof(glm::vec4) * width));
+                fb.insert(names[c], Imf::Slice(Imf::FLOAT, base + c * sizeof(float),
+                                               sizeof(glm::vec4), sizeof(glm::vec4) * width));
             }
             file.setFrameBuffer(fb);
             file.writePixels(int(height));
@@ -106,12 +111,14 @@ Result<ExrImage> readExr(const fs::path& path) {
         img.height = std::uint32_t(dw.max.y - dw.min.y + 1);
         img.pixels.assign(std::size_t(img.width) * img.height, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
         Imf::FrameBuffer fb;
-        char* base = reinterpret_cast<char*>(img.pixels.data()) -
-                     (std::ptrdiff_t(dw.min.x) + std::ptrdiff_t(dw.min.y) * img.width) * sizeof(glm::vec4);
+        char* base =
+            reinterpret_cast<char*>(img.pixels.data()) -
+            (std::ptrdiff_t(dw.min.x) + std::ptrdiff_t(dw.min.y) * img.width) * sizeof(glm::vec4);
         const char* names[] = {"R", "G", "B", "A"};
         for (int c = 0; c < 4; ++c) {
-            fb.insert(names[c], Imf::Slice(Imf::FLOAT, base + c * sizeof(float), sizeof(glm::vec4),
-                                           sizeof(glm::vec4) * img.width, 1, 1, c == 3 ? 1.0 : 0.0));
+            fb.insert(names[c],
+                      Imf::Slice(Imf::FLOAT, base + c * sizeof(float), sizeof(glm::vec4),
+                                 sizeof(glm::vec4) * img.width, 1, 1, c == 3 ? 1.0 : 0.0));
         }
         file.setFrameBuffer(fb);
         file.readPixels(dw.min.y, dw.max.y);

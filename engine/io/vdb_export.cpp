@@ -28,7 +28,8 @@ class StreamingVdbWriter : private vdb::io::Archive {
 public:
     using GridMaker = std::function<vdb::GridBase::Ptr()>;
 
-    void writeStreamed(std::ostream& os, const vdb::MetaMap& fileMetadata, const std::vector<GridMaker>& makers) const {
+    void writeStreamed(std::ostream& os, const vdb::MetaMap& fileMetadata,
+                       const std::vector<GridMaker>& makers) const {
         vdb::io::StreamMetadata::Ptr streamMetadata = std::make_shared<vdb::io::StreamMetadata>();
         vdb::io::setStreamMetadataPtr(os, streamMetadata, /*transfer=*/false);
         vdb::io::setDataCompression(os, compression());
@@ -39,7 +40,8 @@ public:
         os.write(reinterpret_cast<const char*>(&count), sizeof(count));
         for (const GridMaker& make : makers) {
             vdb::GridBase::Ptr grid = make();
-            grid->insertMeta(vdb::GridBase::META_FILE_COMPRESSION, vdb::StringMetadata(vdb::io::compressionToString(compression())));
+            grid->insertMeta(vdb::GridBase::META_FILE_COMPRESSION,
+                             vdb::StringMetadata(vdb::io::compressionToString(compression())));
             vdb::io::GridDescriptor gd(grid->getName(), grid->type(), grid->saveFloatAsHalf());
             writeGridRecord(os, gd, *grid, streamMetadata);
             vdb::io::setStreamMetadataPtr(os, streamMetadata, false);
@@ -88,7 +90,10 @@ public:
     using ValueOf = std::function<std::optional<ValueT>(MaterialId)>;
 
     BrickGridAsVdb(const BrickGrid& grid, ValueOf value)
-        : GridT(vdb::zeroVal<ValueT>()), mGrid(grid), mValue(std::move(value)), mBackground(vdb::zeroVal<ValueT>()) {
+        : GridT(vdb::zeroVal<ValueT>()),
+          mGrid(grid),
+          mValue(std::move(value)),
+          mBackground(vdb::zeroVal<ValueT>()) {
         static_assert(LeafT::DIM == world::kBrickDim, "bricks must be OpenVDB leaves");
         const glm::ivec3 cells = grid.sizeInCells();
         // The Internal5 nodes (512^3 cells) with anything in them, in root-table order.
@@ -96,7 +101,8 @@ public:
         for (int x = 0; x < nodes.x; ++x)
             for (int y = 0; y < nodes.y; ++y)
                 for (int z = 0; z < nodes.z; ++z)
-                    if (anyContent(glm::ivec3(x, y, z) * kCells5, kCells5)) mRootChildren.emplace_back(x, y, z);
+                    if (anyContent(glm::ivec3(x, y, z) * kCells5, kCells5))
+                        mRootChildren.emplace_back(x, y, z);
         computeStats();
     }
 
@@ -122,7 +128,8 @@ public:
 
     void writeBuffers(std::ostream& os) const override {
         vdb::io::setGridBackgroundValuePtr(os, &mBackground);
-        for (const glm::ivec3& node : mRootChildren) writeInternal5(os, node * kCells5, /*topology=*/false);
+        for (const glm::ivec3& node : mRootChildren)
+            writeInternal5(os, node * kCells5, /*topology=*/false);
     }
 
 private:
@@ -159,7 +166,8 @@ private:
         const world::BrickVoxels& voxels = mGrid.brickVoxels(BrickGrid::cellBrick(mGrid.cell(c)));
         mask.setOff();
         for (vdb::Index i = 0; i < LeafT::SIZE; ++i) {
-            const MaterialId m = voxels[std::size_t(world::brickVoxelIndex(glm::ivec3(int(i >> 6), int((i >> 3) & 7), int(i & 7))))];
+            const MaterialId m = voxels[std::size_t(
+                world::brickVoxelIndex(glm::ivec3(int(i >> 6), int((i >> 3) & 7), int(i & 7))))];
             std::optional<ValueT> v = m != world::kEmpty ? mValue(m) : std::nullopt;
             values[i] = v ? *v : mBackground;
             if (v) mask.setOn(i);
@@ -182,9 +190,11 @@ private:
             valueMask.save(os);
             std::unique_ptr<ValueT[]> values(new ValueT[Int5T::NUM_VALUES]);
             std::fill(values.get(), values.get() + Int5T::NUM_VALUES, mBackground);
-            vdb::io::writeCompressedValues(os, values.get(), Int5T::NUM_VALUES, valueMask, childMask, false);
+            vdb::io::writeCompressedValues(os, values.get(), Int5T::NUM_VALUES, valueMask,
+                                           childMask, false);
         }
-        for (auto it = childMask.beginOn(); it; ++it) writeInternal4(os, first + childCell<Int5T>(it.pos(), kCells4), topology);
+        for (auto it = childMask.beginOn(); it; ++it)
+            writeInternal4(os, first + childCell<Int5T>(it.pos(), kCells4), topology);
     }
 
     void writeInternal4(std::ostream& os, glm::ivec3 first, bool topology) const {
@@ -193,21 +203,31 @@ private:
         for (vdb::Index pos = 0; pos < Int4T::NUM_VALUES; ++pos) {
             values[pos] = mBackground;
             switch (kind(first + childCell<Int4T>(pos, 1), &values[pos])) {
-                case Kind::Tile: valueMask.setOn(pos); break;
-                case Kind::Leaf: childMask.setOn(pos); values[pos] = vdb::zeroVal<ValueT>(); break;
-                case Kind::Empty: values[pos] = mBackground; break;
+                case Kind::Tile:
+                    valueMask.setOn(pos);
+                    break;
+                case Kind::Leaf:
+                    childMask.setOn(pos);
+                    values[pos] = vdb::zeroVal<ValueT>();
+                    break;
+                case Kind::Empty:
+                    values[pos] = mBackground;
+                    break;
             }
         }
         if (topology) {
             childMask.save(os);
             valueMask.save(os);
-            vdb::io::writeCompressedValues(os, values.get(), Int4T::NUM_VALUES, valueMask, childMask, false);
+            vdb::io::writeCompressedValues(os, values.get(), Int4T::NUM_VALUES, valueMask,
+                                           childMask, false);
         }
         typename LeafT::NodeMaskType mask;
         for (auto it = childMask.beginOn(); it; ++it) {
             leaf(first + childCell<Int4T>(it.pos(), 1), values.get(), mask);
             mask.save(os);  // LeafNode::writeTopology(), and the start of LeafNode::writeBuffers()
-            if (!topology) vdb::io::writeCompressedValues(os, values.get(), LeafT::SIZE, mask, typename LeafT::NodeMaskType(), false);
+            if (!topology)
+                vdb::io::writeCompressedValues(os, values.get(), LeafT::SIZE, mask,
+                                               typename LeafT::NodeMaskType(), false);
         }
     }
 
@@ -237,7 +257,8 @@ private:
                     mActive += mask.countOn();
                     for (auto it = mask.beginOn(); it; ++it) {
                         const vdb::Index i = it.pos();
-                        const glm::ivec3 p = c * 8 + glm::ivec3(int(i >> 6), int((i >> 3) & 7), int(i & 7));
+                        const glm::ivec3 p =
+                            c * 8 + glm::ivec3(int(i >> 6), int((i >> 3) & 7), int(i & 7));
                         lo = glm::min(lo, p);
                         hi = glm::max(hi, p);
                     }
@@ -247,12 +268,16 @@ private:
                 int4 += anyContent(node * kCells5 + childCell<Int5T>(pos, kCells4), kCells4);
         }
         if (mActive == 0) lo = hi = glm::ivec3(0);
-        this->insertMeta(vdb::GridBase::META_FILE_BBOX_MIN, vdb::Vec3IMetadata(vdb::Vec3i(lo.x, lo.y, lo.z)));
-        this->insertMeta(vdb::GridBase::META_FILE_BBOX_MAX, vdb::Vec3IMetadata(vdb::Vec3i(hi.x, hi.y, hi.z)));
-        this->insertMeta(vdb::GridBase::META_FILE_VOXEL_COUNT, vdb::Int64Metadata(std::int64_t(mActive)));
+        this->insertMeta(vdb::GridBase::META_FILE_BBOX_MIN,
+                         vdb::Vec3IMetadata(vdb::Vec3i(lo.x, lo.y, lo.z)));
+        this->insertMeta(vdb::GridBase::META_FILE_BBOX_MAX,
+                         vdb::Vec3IMetadata(vdb::Vec3i(hi.x, hi.y, hi.z)));
+        this->insertMeta(vdb::GridBase::META_FILE_VOXEL_COUNT,
+                         vdb::Int64Metadata(std::int64_t(mActive)));
         const std::uint64_t memory = mRootChildren.size() * sizeof(Int5T) + int4 * sizeof(Int4T) +
                                      mLeaves * (sizeof(LeafT) + LeafT::SIZE * sizeof(ValueT));
-        this->insertMeta(vdb::GridBase::META_FILE_MEM_BYTES, vdb::Int64Metadata(std::int64_t(memory)));
+        this->insertMeta(vdb::GridBase::META_FILE_MEM_BYTES,
+                         vdb::Int64Metadata(std::int64_t(memory)));
     }
 
     const BrickGrid& mGrid;
@@ -277,8 +302,10 @@ std::shared_ptr<BrickGridAsVdb<GridT>> gridOf(const world::Scene& scene, const c
 Result<VdbExportOptions> vdbExportOptionsFor(const std::string& tool) {
     VdbExportOptions o;
     o.densityGrid = true;
-    if (tool == "blender") o.zUp = true;  // Blender ignores vox:up_axis: the transform must say it
-    else if (tool != "houdini") return makeError("unknown tool '{}' (known: blender, houdini)", tool);
+    if (tool == "blender")
+        o.zUp = true;  // Blender ignores vox:up_axis: the transform must say it
+    else if (tool != "houdini")
+        return makeError("unknown tool '{}' (known: blender, houdini)", tool);
     return o;
 }
 
@@ -294,18 +321,22 @@ Status exportVdb(const world::Scene& scene, const fs::path& path, const VdbExpor
     if (options.densityGrid) {
         // First, for tools that show or read "the first grid".
         makers.push_back([&] {
-            auto grid = gridOf<vdb::FloatGrid>(scene, vdb_layout::kDensityGrid, options.zUp,
-                                               [](MaterialId) { return std::optional<float>(1.0f); });
+            auto grid =
+                gridOf<vdb::FloatGrid>(scene, vdb_layout::kDensityGrid, options.zUp,
+                                       [](MaterialId) { return std::optional<float>(1.0f); });
             grid->setGridClass(vdb::GRID_FOG_VOLUME);
-            grid->insertMeta("vox:role", vdb::StringMetadata("fog volume, 1 in solid voxels (for other tools)"));
+            grid->insertMeta(
+                "vox:role", vdb::StringMetadata("fog volume, 1 in solid voxels (for other tools)"));
             return grid;
         });
         local.grids.push_back(vdb_layout::kDensityGrid);
     }
     makers.push_back([&] {
-        auto grid = gridOf<vdb::Int32Grid>(scene, vdb_layout::kMaterialGrid, options.zUp,
-                                           [](MaterialId m) { return std::optional<std::int32_t>(m); });
-        grid->insertMeta("vox:role", vdb::StringMetadata("material index into the vox:material.* palette"));
+        auto grid =
+            gridOf<vdb::Int32Grid>(scene, vdb_layout::kMaterialGrid, options.zUp,
+                                   [](MaterialId m) { return std::optional<std::int32_t>(m); });
+        grid->insertMeta("vox:role",
+                         vdb::StringMetadata("material index into the vox:material.* palette"));
         local.tiles = grid->tiles();
         local.leaves = grid->leaves();
         local.solidVoxels = grid->activeVoxels();
@@ -314,10 +345,11 @@ Status exportVdb(const world::Scene& scene, const fs::path& path, const VdbExpor
     local.grids.push_back(vdb_layout::kMaterialGrid);
     if (options.colourGrids) {
         makers.push_back([&] {
-            auto grid = gridOf<vdb::Vec3SGrid>(scene, vdb_layout::kAlbedoGrid, options.zUp, [&](MaterialId m) {
-                glm::vec3 a = palette[m].albedo;
-                return std::optional<vdb::Vec3s>(vdb::Vec3s(a.x, a.y, a.z));
-            });
+            auto grid = gridOf<vdb::Vec3SGrid>(
+                scene, vdb_layout::kAlbedoGrid, options.zUp, [&](MaterialId m) {
+                    glm::vec3 a = palette[m].albedo;
+                    return std::optional<vdb::Vec3s>(vdb::Vec3s(a.x, a.y, a.z));
+                });
             grid->setVectorType(vdb::VEC_INVARIANT);
             grid->insertMeta("vox:role", vdb::StringMetadata("linear albedo"));
             return grid;
@@ -325,13 +357,15 @@ Status exportVdb(const world::Scene& scene, const fs::path& path, const VdbExpor
         local.grids.push_back(vdb_layout::kAlbedoGrid);
         if (anyEmissive) {
             makers.push_back([&] {
-                auto grid = gridOf<vdb::Vec3SGrid>(scene, vdb_layout::kEmissionGrid, options.zUp, [&](MaterialId m) {
-                    if (!palette[m].emissive()) return std::optional<vdb::Vec3s>();
-                    glm::vec3 e = palette[m].emittedRadiance();
-                    return std::optional<vdb::Vec3s>(vdb::Vec3s(e.x, e.y, e.z));
-                });
+                auto grid = gridOf<vdb::Vec3SGrid>(
+                    scene, vdb_layout::kEmissionGrid, options.zUp, [&](MaterialId m) {
+                        if (!palette[m].emissive()) return std::optional<vdb::Vec3s>();
+                        glm::vec3 e = palette[m].emittedRadiance();
+                        return std::optional<vdb::Vec3s>(vdb::Vec3s(e.x, e.y, e.z));
+                    });
                 grid->setVectorType(vdb::VEC_INVARIANT);
-                grid->insertMeta("vox:role", vdb::StringMetadata("emitted radiance (colour x strength)"));
+                grid->insertMeta("vox:role",
+                                 vdb::StringMetadata("emitted radiance (colour x strength)"));
                 return grid;
             });
             local.grids.push_back(vdb_layout::kEmissionGrid);

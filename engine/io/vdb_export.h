@@ -40,7 +40,7 @@ struct VdbExportReport {
     std::uint64_t fileBytes = 0;
 };
 
-Status exportVdb(const world::Scene& scene, const std::filesystem::path& path, const VdbExportOptions& options = {},
-                 VdbExportReport* report = nullptr);
+Status exportVdb(const world::Scene& scene, const std::filesystem::path& path,
+                 const VdbExportOptions& options = {}, VdbExportReport* report = nullptr);
 
 }  // namespace engine::io

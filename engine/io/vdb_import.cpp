@@ -4,7 +4,6 @@
 #include "io/vdb_import.h"
 
 #include <algorithm>
-
 #include <fmt/format.h>
 #if defined(__GLIBC__)
 #include <malloc.h>
@@ -42,7 +41,9 @@ Status buildWorld(ImportState& im, world::Scene& scene, bool intoExisting) {
         if (!intoExisting) grid = world::BrickGrid(place.worldSize);
         const std::uint64_t bricks = grid.liveBricks() + im.plan.sampledCells;
         grid.reserveBricks(std::uint32_t(std::min<std::uint64_t>(bricks, 0x7FFFFFF0u)));
-        if (!im.streaming) marks.assign(std::size_t(volume(Box{glm::ivec3(0), (place.worldSize + 7) / 8})), kCellNone);
+        if (!im.streaming)
+            marks.assign(std::size_t(volume(Box{glm::ivec3(0), (place.worldSize + 7) / 8})),
+                         kCellNone);
     }
     if (im.streaming) {
         if (Status s = streamIntoWorld(im, grid); !s) return s;
@@ -65,13 +66,17 @@ Status buildWorld(ImportState& im, world::Scene& scene, bool intoExisting) {
     if (im.grids.kind == Kind::Fog && im.report.solidVoxels == 0) {
         // A fog threshold above the data: say so rather than write an empty world.
         if (im.largestFogValue >= double(im.options.fogThreshold))
-            return makeError("{}: no voxel of grid '{}' at or above the fog threshold {:g} lands inside the world",
-                             im.file, im.plan.grid, im.options.fogThreshold);
+            return makeError(
+                "{}: no voxel of grid '{}' at or above the fog threshold {:g} lands inside the "
+                "world",
+                im.file, im.plan.grid, im.options.fogThreshold);
         const bool everyVoxel = im.place.map.scale == glm::dvec3(1.0);
-        return makeError("{}: no voxel of grid '{}' reaches the fog threshold {:g}: the largest density {} is {:g} "
-                         "(lower --fog-threshold, fog_threshold in a scene file)",
-                         im.file, im.plan.grid, im.options.fogThreshold, everyVoxel ? "in it" : "sampled",
-                         im.largestFogValue);
+        return makeError(
+            "{}: no voxel of grid '{}' reaches the fog threshold {:g}: the largest density {} is "
+            "{:g} "
+            "(lower --fog-threshold, fog_threshold in a scene file)",
+            im.file, im.plan.grid, im.options.fogThreshold, everyVoxel ? "in it" : "sampled",
+            im.largestFogValue);
     }
 
     const ColourError& colourError = im.palette.colourError;
@@ -118,54 +123,65 @@ void finishReport(ImportState& im, const AllocationBudget& budget, VdbImportRepo
 }  // namespace
 
 Result<VdbImportPlan> planVdbImport(const fs::path& path, const VdbImportOptions& options) {
-    return runGuarded<VdbImportPlan>(path, options, [&](const AllocationBudget&) -> Result<VdbImportPlan> {
-        ImportState im(path, options);
-        if (Status s = planImport(im, nullptr); !s) return s.error();
-        return im.report.plan;
-    });
+    return runGuarded<VdbImportPlan>(path, options,
+                                     [&](const AllocationBudget&) -> Result<VdbImportPlan> {
+                                         ImportState im(path, options);
+                                         if (Status s = planImport(im, nullptr); !s)
+                                             return s.error();
+                                         return im.report.plan;
+                                     });
 }
 
-Result<world::Scene> importVdb(const fs::path& path, const VdbImportOptions& options, VdbImportReport* report) {
-    return runGuarded<world::Scene>(path, options, [&](const AllocationBudget& budget) -> Result<world::Scene> {
-        ImportState im(path, options);
-        if (Status s = planImport(im, nullptr); !s) return s.error();
-        world::Scene scene;
-        if (Status s = buildWorld(im, scene, /*intoExisting=*/false); !s) return s.error();
-        finishReport(im, budget, report);
-        return scene;
-    });
+Result<world::Scene> importVdb(const fs::path& path, const VdbImportOptions& options,
+                               VdbImportReport* report) {
+    return runGuarded<world::Scene>(
+        path, options, [&](const AllocationBudget& budget) -> Result<world::Scene> {
+            ImportState im(path, options);
+            if (Status s = planImport(im, nullptr); !s) return s.error();
+            world::Scene scene;
+            if (Status s = buildWorld(im, scene, /*intoExisting=*/false); !s) return s.error();
+            finishReport(im, budget, report);
+            return scene;
+        });
 }
 
 Status importVdbInto(world::Scene& scene, const fs::path& path, const VdbImportOptions& options,
                      VdbImportReport* report) {
-    auto done = runGuarded<bool>(path, options, [&](const AllocationBudget& budget) -> Result<bool> {
-        ImportState im(path, options);
-        if (Status s = planImport(im, &scene); !s) return s.error();
-        if (Status s = buildWorld(im, scene, /*intoExisting=*/true); !s) return s.error();
-        finishReport(im, budget, report);
-        return true;
-    });
+    auto done =
+        runGuarded<bool>(path, options, [&](const AllocationBudget& budget) -> Result<bool> {
+            ImportState im(path, options);
+            if (Status s = planImport(im, &scene); !s) return s.error();
+            if (Status s = buildWorld(im, scene, /*intoExisting=*/true); !s) return s.error();
+            finishReport(im, budget, report);
+            return true;
+        });
     if (!done) return done.error();
     return {};
 }
 
 std::string formatVdbImportPlan(const VdbImportPlan& p) {
     std::string s;
-    s += fmt::format("  grid         '{}' ({}, class {}) as {}\n", p.grid, p.gridType, p.gridClass, p.kind);
+    s += fmt::format("  grid         '{}' ({}, class {}) as {}\n", p.grid, p.gridType, p.gridClass,
+                     p.kind);
     s += fmt::format("  materials    {}\n", p.rule);
     s += fmt::format("  axes         {}; voxel size {:.6g} (source {:.6g} x {:.6g} x {:.6g})\n",
-                     p.upZ ? "Z-up turned to Y-up" : "Y-up, as stored", p.voxelSize, p.sourceVoxelSize.x,
-                     p.sourceVoxelSize.y, p.sourceVoxelSize.z);
-    s += fmt::format("  source box   [{}, {}, {}] .. [{}, {}, {}] (index space, max exclusive)\n", p.sourceBox.min.x,
-                     p.sourceBox.min.y, p.sourceBox.min.z, p.sourceBox.max.x, p.sourceBox.max.y, p.sourceBox.max.z);
-    s += fmt::format("  world        {} x {} x {} voxels; content at [{}, {}, {}] .. [{}, {}, {}]\n", p.worldSize.x,
-                     p.worldSize.y, p.worldSize.z, p.worldBox.min.x, p.worldBox.min.y, p.worldBox.min.z,
-                     p.worldBox.max.x, p.worldBox.max.y, p.worldBox.max.z);
-    s += fmt::format("  cells        {} read voxel by voxel (at most that many bricks), {} filled whole from tiles\n",
-                     p.sampledCells, p.uniformCells);
-    s += fmt::format("  memory       about {} ({} world, {} source {}); budget {}\n", mib(p.estimateBytes),
-                     mib(p.worldBytes), mib(p.sourceBytes),
-                     p.streamed ? std::string("streamed leaf by leaf") : fmt::format("read in {} slab(s)", p.slabs),
+                     p.upZ ? "Z-up turned to Y-up" : "Y-up, as stored", p.voxelSize,
+                     p.sourceVoxelSize.x, p.sourceVoxelSize.y, p.sourceVoxelSize.z);
+    s += fmt::format("  source box   [{}, {}, {}] .. [{}, {}, {}] (index space, max exclusive)\n",
+                     p.sourceBox.min.x, p.sourceBox.min.y, p.sourceBox.min.z, p.sourceBox.max.x,
+                     p.sourceBox.max.y, p.sourceBox.max.z);
+    s +=
+        fmt::format("  world        {} x {} x {} voxels; content at [{}, {}, {}] .. [{}, {}, {}]\n",
+                    p.worldSize.x, p.worldSize.y, p.worldSize.z, p.worldBox.min.x, p.worldBox.min.y,
+                    p.worldBox.min.z, p.worldBox.max.x, p.worldBox.max.y, p.worldBox.max.z);
+    s += fmt::format(
+        "  cells        {} read voxel by voxel (at most that many bricks), {} filled whole from "
+        "tiles\n",
+        p.sampledCells, p.uniformCells);
+    s += fmt::format("  memory       about {} ({} world, {} source {}); budget {}\n",
+                     mib(p.estimateBytes), mib(p.worldBytes), mib(p.sourceBytes),
+                     p.streamed ? std::string("streamed leaf by leaf")
+                                : fmt::format("read in {} slab(s)", p.slabs),
                      mib(p.budgetBytes));
     for (const std::string& n : p.notes) s += fmt::format("  note         {}\n", n);
     return s;
@@ -173,11 +189,13 @@ std::string formatVdbImportPlan(const VdbImportPlan& p) {
 
 std::string formatVdbImportReport(const VdbImportReport& r) {
     std::string s = formatVdbImportPlan(r.plan);
-    s += fmt::format("  imported     {} solid voxels, {} material(s)\n", r.solidVoxels, r.materials);
+    s +=
+        fmt::format("  imported     {} solid voxels, {} material(s)\n", r.solidVoxels, r.materials);
     if (r.colours > 0)
-        s += fmt::format("  colour error {} voxels mapped to {} colours: mean {:.4f}, max {:.4f} (linear RGB "
-                         "distance)\n",
-                         r.colouredVoxels, r.colours, r.meanColourError, r.maxColourError);
+        s += fmt::format(
+            "  colour error {} voxels mapped to {} colours: mean {:.4f}, max {:.4f} (linear RGB "
+            "distance)\n",
+            r.colouredVoxels, r.colours, r.meanColourError, r.maxColourError);
     return s;
 }
 

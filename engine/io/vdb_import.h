@@ -35,16 +35,21 @@ enum class UpAxis { Auto, Y, Z };  // Auto: Z for Blender's files ("creator" say
 enum class MaterialRule { Auto, Constant, Height, Colour, Ids };
 
 struct VdbImportOptions {
-    std::string grid;        // shape grid by name; empty: ours, else the first usable non-empty one
-    std::string colourGrid;  // vec3 grid for the colour rule; empty: one named color/colour/Cd/albedo/rgb
-    MaterialRule rule = MaterialRule::Auto;  // Auto: ids for id grids, colour when there is a colour grid, else constant
+    std::string grid;  // shape grid by name; empty: ours, else the first usable non-empty one
+    std::string
+        colourGrid;  // vec3 grid for the colour rule; empty: one named color/colour/Cd/albedo/rgb
+    MaterialRule rule = MaterialRule::Auto;  // Auto: ids for id grids, colour when there is a
+                                             // colour grid, else constant
     float fogThreshold = 0.5f;
     int maxColours = 16;  // colour rule: palette size, 1..65534
     world::Material material{"imported", glm::vec3(0.7f), glm::vec3(0.0f), 0.0f};  // constant rule
-    std::vector<world::Material> heightMaterials;  // height rule, bottom to top; empty: 4 default bands
-    double voxelSize = 0.0;  // target voxel size in file units; 0: the file's (smallest axis if non-uniform)
+    std::vector<world::Material>
+        heightMaterials;  // height rule, bottom to top; empty: 4 default bands
+    double voxelSize =
+        0.0;  // target voxel size in file units; 0: the file's (smallest axis if non-uniform)
     std::optional<glm::ivec3> offset;  // world voxel where source voxel (0,0,0) lands; none: auto
-    std::optional<world::Box> crop;    // import only this source index box (min inclusive, max exclusive)
+    std::optional<world::Box>
+        crop;  // import only this source index box (min inclusive, max exclusive)
     UpAxis up = UpAxis::Auto;
     std::uint64_t memoryBudgetBytes = kDefaultVdbMemoryBudget;
 };
@@ -53,17 +58,18 @@ struct VdbImportOptions {
 struct VdbImportPlan {
     std::string file;
     std::string grid, gridType, gridClass;
-    std::string kind;  // "voxengine world", "level set", "fog volume", "integer ids", "mask", "colour"
+    std::string
+        kind;  // "voxengine world", "level set", "fog volume", "integer ids", "mask", "colour"
     std::string rule;  // the material rule, in words
     std::string colourGrid;
     bool voxengine = false;
     bool upZ = false;
     glm::dvec3 sourceVoxelSize{1.0};
-    double voxelSize = 1.0;       // of the imported world
-    glm::dvec3 scale{1.0};        // world voxels per source voxel, per world axis
-    glm::dvec3 offset{0.0};       // world position of source voxel (0,0,0)'s corner
-    world::Box sourceBox;         // source index box imported
-    world::Box worldBox;          // where it lands (clipped to the world)
+    double voxelSize = 1.0;  // of the imported world
+    glm::dvec3 scale{1.0};   // world voxels per source voxel, per world axis
+    glm::dvec3 offset{0.0};  // world position of source voxel (0,0,0)'s corner
+    world::Box sourceBox;    // source index box imported
+    world::Box worldBox;     // where it lands (clipped to the world)
     glm::ivec3 worldSize{0};
     std::uint64_t sourceActiveVoxels = 0, sourceLeaves = 0, sourceTiles = 0;
     std::uint64_t sampledCells = 0;  // cells whose voxels are read: an upper bound on new bricks
@@ -79,25 +85,27 @@ struct VdbImportPlan {
 
 struct VdbImportReport {
     VdbImportPlan plan;
-    std::uint64_t solidVoxels = 0;   // written by this import
-    std::size_t materials = 0;       // palette entries the import used
-    int colours = 0;                 // colour rule: palette size
+    std::uint64_t solidVoxels = 0;  // written by this import
+    std::size_t materials = 0;      // palette entries the import used
+    int colours = 0;                // colour rule: palette size
     std::uint64_t colouredVoxels = 0;
-    double meanColourError = 0.0;    // Euclidean distance in linear RGB, per voxel
+    double meanColourError = 0.0;  // Euclidean distance in linear RGB, per voxel
     double maxColourError = 0.0;
     std::uint64_t peakTrackedBytes = 0;  // heap peak seen by the allocation budget
 };
 
-Result<VdbImportPlan> planVdbImport(const std::filesystem::path& path, const VdbImportOptions& options = {});
+Result<VdbImportPlan> planVdbImport(const std::filesystem::path& path,
+                                    const VdbImportOptions& options = {});
 
 // A new scene holding the import.
-Result<world::Scene> importVdb(const std::filesystem::path& path, const VdbImportOptions& options = {},
+Result<world::Scene> importVdb(const std::filesystem::path& path,
+                               const VdbImportOptions& options = {},
                                VdbImportReport* report = nullptr);
 
 // Into an existing scene (the scene-file generator): solid voxels overwrite the scene's, clipped
 // to its bounds; materials merge into its palette by name (the scene's definition wins).
-Status importVdbInto(world::Scene& scene, const std::filesystem::path& path, const VdbImportOptions& options = {},
-                     VdbImportReport* report = nullptr);
+Status importVdbInto(world::Scene& scene, const std::filesystem::path& path,
+                     const VdbImportOptions& options = {}, VdbImportReport* report = nullptr);
 
 std::string formatVdbImportPlan(const VdbImportPlan& plan);
 std::string formatVdbImportReport(const VdbImportReport& report);

@@ -22,7 +22,8 @@ int heightBand(const ImportState& im, int y) {
 int colourMaterial(ImportState& im, glm::vec3 colour, std::uint64_t voxels = 1) {
     ColourMapper& mapper = *im.palette.mapper;  // nearest() memoises
     int index = mapper.nearest(colour);
-    im.palette.colourError.add(double(glm::length(clampAlbedo(colour) - mapper.palette()[std::size_t(index)])), voxels);
+    im.palette.colourError.add(
+        double(glm::length(clampAlbedo(colour) - mapper.palette()[std::size_t(index)])), voxels);
     return 1 + index;
 }
 
@@ -32,7 +33,8 @@ glm::vec3 colourAt(const ImportState& im, glm::ivec3 t) {
     const AxisMap& map = im.place.map;
     glm::dvec3 x = map.toSourceCentre(map.centre(t));
     vdb::Vec3d ijk(x.x, x.y, x.z);
-    if (!im.grids.sameXform) ijk = im.grids.colourXform->worldToIndex(im.grids.shapeXform->indexToWorld(ijk));
+    if (!im.grids.sameXform)
+        ijk = im.grids.colourXform->worldToIndex(im.grids.shapeXform->indexToWorld(ijk));
     return im.colour->at(vdb::Coord::round(ijk)).colour;
 }
 
@@ -40,11 +42,13 @@ glm::vec3 colourAt(const ImportState& im, glm::ivec3 t) {
 
 bool isSolid(const ImportState& im, const Sample& s) {
     switch (im.grids.kind) {
-        case Kind::LevelSet: return s.scalar < 0.0;
+        case Kind::LevelSet:
+            return s.scalar < 0.0;
         case Kind::Fog:
             if (s.active) im.largestFogValue = std::max(im.largestFogValue, s.scalar);
             return s.active && s.scalar >= double(im.options.fogThreshold);
-        default: return s.active;
+        default:
+            return s.active;
     }
 }
 
@@ -82,16 +86,20 @@ bool solidAt(const ImportState& im, glm::ivec3 t, Sample& s) {
 Result<int> materialFor(ImportState& im, glm::ivec3 t, const Sample& s) {
     const ChosenGrids& g = im.grids;
     switch (g.rule) {
-        case MaterialRule::Constant: return 1;
-        case MaterialRule::Height: return 1 + heightBand(im, t.y);
-        case MaterialRule::Colour: return colourMaterial(im, g.colourIndex >= 0 ? colourAt(im, t) : s.colour);
+        case MaterialRule::Constant:
+            return 1;
+        case MaterialRule::Height:
+            return 1 + heightBand(im, t.y);
+        case MaterialRule::Colour:
+            return colourMaterial(im, g.colourIndex >= 0 ? colourAt(im, t) : s.colour);
         case MaterialRule::Ids: {
             const std::int64_t v = std::int64_t(s.scalar);
             const std::size_t materials = im.palette.materials.size();
             if (g.kind == Kind::VoxIds) {
                 if (v < 1 || std::uint64_t(v) >= materials)
-                    return makeError("{}: corrupt voxengine file: material id {} outside the palette of {}", im.file, v,
-                                     materials - 1);
+                    return makeError(
+                        "{}: corrupt voxengine file: material id {} outside the palette of {}",
+                        im.file, v, materials - 1);
                 return int(v);
             }
             auto it = im.palette.idLut.find(v);
@@ -99,24 +107,28 @@ Result<int> materialFor(ImportState& im, glm::ivec3 t, const Sample& s) {
                 return makeError("{}: id {} was not seen while scanning the grid", im.file, v);
             return it->second;
         }
-        default: return 1;
+        default:
+            return 1;
     }
 }
 
 Result<int> uniformMaterial(ImportState& im, const Sample& tile, const Box& cellBox) {
     switch (im.grids.rule) {
-        case MaterialRule::Constant: return 1;
+        case MaterialRule::Constant:
+            return 1;
         case MaterialRule::Height: {
             int lo = heightBand(im, cellBox.min.y), hi = heightBand(im, cellBox.max.y - 1);
             return lo == hi ? 1 + lo : kVariesInCell;
         }
         case MaterialRule::Colour:
-            if (im.grids.colourIndex >= 0) return kVariesInCell;  // colours come from another grid: read them
+            if (im.grids.colourIndex >= 0)
+                return kVariesInCell;  // colours come from another grid: read them
             return im.palette.mapper ? colourMaterial(im, tile.colour, world::kBrickVoxels) : 0;
         case MaterialRule::Ids:
             if (im.palette.materials.empty()) return 0;
             return materialFor(im, cellBox.min, tile);
-        default: return kVariesInCell;
+        default:
+            return kVariesInCell;
     }
 }
 

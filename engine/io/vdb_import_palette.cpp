@@ -3,7 +3,6 @@
 // in the scene they are imported into (io/vdb_import_state.h).
 #include <algorithm>
 #include <cmath>
-
 #include <fmt/format.h>
 
 #include "io/vdb_import_state.h"
@@ -19,8 +18,9 @@ glm::vec3 idColour(std::int64_t v) {
     // Distinct, pleasant colours for foreign ids: golden-ratio hue steps, fixed saturation/value.
     double h = std::fmod(double(v) * 0.61803398875 + 0.1, 1.0);
     if (h < 0) h += 1.0;
-    glm::vec3 rgb = glm::clamp(glm::abs(glm::mod(glm::vec3(float(h) * 6.0f) + glm::vec3(0, 4, 2), 6.0f) - 3.0f) - 1.0f,
-                               0.0f, 1.0f);
+    glm::vec3 rgb = glm::clamp(
+        glm::abs(glm::mod(glm::vec3(float(h) * 6.0f) + glm::vec3(0, 4, 2), 6.0f) - 3.0f) - 1.0f,
+        0.0f, 1.0f);
     return glm::mix(glm::vec3(1.0f), rgb, 0.55f) * 0.8f;
 }
 
@@ -33,21 +33,24 @@ std::vector<world::Material> defaultHeightMaterials() {
 
 // Every solid value of the shape grid inside the source box: each tile once with the voxels it
 // covers, each active leaf voxel once. Streamed when the import streams, else read in pieces.
-Status forEachSourceValue(ImportState& im, const std::function<Status(const Sample&, std::uint64_t voxels)>& f) {
+Status forEachSourceValue(ImportState& im,
+                          const std::function<Status(const Sample&, std::uint64_t voxels)>& f) {
     const Box& sourceBox = im.place.sourceBox;
     auto tile = [&](const Box& b, const Sample& s) { return f(s, volume(b.intersect(sourceBox))); };
     auto voxel = [&](const Sample& s) { return f(s, 1); };
     if (im.streaming) {
-        return streamSource(im, tile, [&](const vdb::Coord& origin, const Sample* samples) -> Status {
-            // OpenVDB's leaf order: z fastest.
-            for (int i = 0; i < 512; ++i) {
-                if (!samples[i].active) continue;
-                const glm::ivec3 p(origin.x() + (i >> 6), origin.y() + ((i >> 3) & 7), origin.z() + (i & 7));
-                if (!sourceBox.contains(p)) continue;
-                if (Status s = voxel(samples[i]); !s) return s;
-            }
-            return {};
-        });
+        return streamSource(
+            im, tile, [&](const vdb::Coord& origin, const Sample* samples) -> Status {
+                // OpenVDB's leaf order: z fastest.
+                for (int i = 0; i < 512; ++i) {
+                    if (!samples[i].active) continue;
+                    const glm::ivec3 p(origin.x() + (i >> 6), origin.y() + ((i >> 3) & 7),
+                                       origin.z() + (i & 7));
+                    if (!sourceBox.contains(p)) continue;
+                    if (Status s = voxel(samples[i]); !s) return s;
+                }
+                return {};
+            });
     }
     auto topology = makeSource(*im.grids.shapeHeader);
     topology->attach(im.reader.readTopology(im.grids.shapeIndex));
@@ -101,7 +104,8 @@ Status addColourMaterials(ImportState& im) {
     std::vector<glm::vec3> colours = quantizeColours(histogram, im.options.maxColours);
     if (colours.empty()) colours.push_back(glm::vec3(0.7f));
     for (std::size_t i = 0; i < colours.size(); ++i)
-        im.palette.materials.push_back({fmt::format("colour_{:02}", i + 1), colours[i], glm::vec3(0.0f), 0.0f});
+        im.palette.materials.push_back(
+            {fmt::format("colour_{:02}", i + 1), colours[i], glm::vec3(0.0f), 0.0f});
     im.palette.mapper = std::make_unique<ColourMapper>(colours);
     im.report.colours = int(colours.size());
     return {};
@@ -113,9 +117,12 @@ Status buildPalette(ImportState& im) {
     std::vector<world::Material>& materials = im.palette.materials;
     materials.assign(1, world::Material{});
     switch (im.grids.rule) {
-        case MaterialRule::Constant: materials.push_back(im.options.material); return {};
+        case MaterialRule::Constant:
+            materials.push_back(im.options.material);
+            return {};
         case MaterialRule::Height: {
-            auto bands = im.options.heightMaterials.empty() ? defaultHeightMaterials() : im.options.heightMaterials;
+            auto bands = im.options.heightMaterials.empty() ? defaultHeightMaterials()
+                                                            : im.options.heightMaterials;
             materials.insert(materials.end(), bands.begin(), bands.end());
             return {};
         }
@@ -126,8 +133,10 @@ Status buildPalette(ImportState& im) {
                 return {};
             }
             return addIdMaterials(im);
-        case MaterialRule::Colour: return addColourMaterials(im);
-        default: return {};
+        case MaterialRule::Colour:
+            return addColourMaterials(im);
+        default:
+            return {};
     }
 }
 
@@ -141,7 +150,9 @@ Status addToScenePalette(ImportState& im, world::Scene& scene, bool intoExisting
         std::optional<world::MaterialId> id;
         if (intoExisting) id = scene.palette.find(materials[i].name);
         if (!id) id = scene.palette.add(materials[i]);
-        if (!id) return makeError("{}: the palette is full ({} materials)", im.file, world::kMaxMaterials - 1);
+        if (!id)
+            return makeError("{}: the palette is full ({} materials)", im.file,
+                             world::kMaxMaterials - 1);
         remap[i] = *id;
     }
     im.report.materials = materials.size() - 1;

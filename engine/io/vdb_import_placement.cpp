@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cfloat>
 #include <climits>
-
 #include <fmt/format.h>
 
 #include "core/number_check.h"
@@ -61,12 +60,15 @@ std::string blenderEvidence(ImportState& im) {
     const vdb::GridBase& shape = *im.grids.shapeHeader;
     for (const char* where : {"file", "grid"}) {
         const std::string creator = metaString(where[0] == 'f' ? file : shape, "creator");
-        if (creator.find("Blender") != std::string::npos) return fmt::format("its {} creator is '{}'", where, printableText(creator));
+        if (creator.find("Blender") != std::string::npos)
+            return fmt::format("its {} creator is '{}'", where, printableText(creator));
     }
     for (auto it = file.beginMeta(); it != file.endMeta(); ++it)
-        if (it->first.rfind("blender/", 0) == 0) return fmt::format("it has Blender's metadata '{}'", printableText(it->first));
+        if (it->first.rfind("blender/", 0) == 0)
+            return fmt::format("it has Blender's metadata '{}'", printableText(it->first));
     for (const char* key : {"file_base_resolution", "file_voxel_size"})
-        if (shape[key]) return fmt::format("it has Mantaflow's metadata '{}' (Blender's fluid cache)", key);
+        if (shape[key])
+            return fmt::format("it has Mantaflow's metadata '{}' (Blender's fluid cache)", key);
     bool density = false;
     std::string smokeGrid;
     for (const VdbReader::Entry& e : im.reader.grids()) {
@@ -96,7 +98,8 @@ Status orientAndScale(ImportState& im) {
         map.perm[0] = 0, map.perm[1] = 2, map.perm[2] = 1;
         map.sign[0] = 1, map.sign[1] = 1, map.sign[2] = -1;
         if (o.up == UpAxis::Auto)
-            im.plan.notes.push_back(fmt::format("Z-up: written by Blender ({}); --up y to keep its axes", blender));
+            im.plan.notes.push_back(
+                fmt::format("Z-up: written by Blender ({}); --up y to keep its axes", blender));
     }
 
     vdb::Vec3d vs = g.shapeXform->voxelSize();
@@ -105,16 +108,20 @@ Status orientAndScale(ImportState& im) {
     double target = o.voxelSize > 0.0 ? o.voxelSize : smallest;
     if (g.voxengine && o.voxelSize <= 0.0) target = vs.x();
     im.plan.voxelSize = target;
-    bool uniform = std::abs(vs.x() - vs.y()) <= 1e-6 * smallest && std::abs(vs.x() - vs.z()) <= 1e-6 * smallest;
+    bool uniform = std::abs(vs.x() - vs.y()) <= 1e-6 * smallest &&
+                   std::abs(vs.x() - vs.z()) <= 1e-6 * smallest;
     if (!uniform && o.voxelSize <= 0.0)
-        im.plan.notes.push_back(fmt::format("voxels are {:.4g} x {:.4g} x {:.4g}: resampled to a uniform {:.4g}",
-                                            vs.x(), vs.y(), vs.z(), target));
+        im.plan.notes.push_back(
+            fmt::format("voxels are {:.4g} x {:.4g} x {:.4g}: resampled to a uniform {:.4g}",
+                        vs.x(), vs.y(), vs.z(), target));
     for (int a = 0; a < 3; ++a) {
         double s = vs[map.perm[a]] / target;
         if (std::abs(s - 1.0) < 1e-9) s = 1.0;
         if (!(s >= 1.0 / 64.0 && s <= 64.0))
-            return makeError("{}: resampling by {:.4g}x on an axis is outside 1/64..64 (voxel size {:.4g} to {:.4g})",
-                             im.file, s, vs[map.perm[a]], target);
+            return makeError(
+                "{}: resampling by {:.4g}x on an axis is outside 1/64..64 (voxel size {:.4g} to "
+                "{:.4g})",
+                im.file, s, vs[map.perm[a]], target);
         map.scale[a] = s;
     }
     im.plan.scale = map.scale;
@@ -124,15 +131,17 @@ Status orientAndScale(ImportState& im) {
                                                : fmt::format("grid '{}' voxel size", im.plan.grid);
     Status kept = checkNumber(what, target, world::kVoxelSizeRange);
     if (kept && !(float(target) > 0.0f))
-        kept = makeError("{} {:g} is below the smallest a world holds ({:g})", what, target, double(FLT_MIN));
+        kept = makeError("{} {:g} is below the smallest a world holds ({:g})", what, target,
+                         double(FLT_MIN));
     if (!kept) return makeError("{}: {}", im.file, kept.error().message);
     const bool unitScale = map.scale == glm::dvec3(1.0);
     if (g.kind == Kind::LevelSet && !unitScale) {
         im.place.trilinear = glm::all(glm::greaterThanEqual(map.scale, glm::dvec3(1.0)));
         im.place.footprint = !im.place.trilinear;
-        im.plan.notes.push_back(im.place.trilinear
-                                    ? "level set resampled finer: inside where the trilinear distance < 0"
-                                    : "level set resampled coarser: conservative (solid if any source voxel in it is)");
+        im.plan.notes.push_back(
+            im.place.trilinear
+                ? "level set resampled finer: inside where the trilinear distance < 0"
+                : "level set resampled coarser: conservative (solid if any source voxel in it is)");
     }
     return {};
 }
@@ -171,15 +180,18 @@ Status placeOffset(ImportState& im, const world::Scene* target) {
         glm::u64vec3 cells = glm::u64vec3((glm::dvec3(worldSize) + 7.0) / 8.0);
         if (glm::any(glm::greaterThan(worldSize, glm::ivec3(world::kMaxWorldExtent))) ||
             cells.x * cells.y * cells.z > world::kMaxTopGridCells)
-            return makeError("{}: the import would make a world of {}x{}x{} voxels, over the engine's limit ({} per "
-                             "axis, {} top-grid cells); use --voxel-size or --crop",
-                             im.file, worldSize.x, worldSize.y, worldSize.z, world::kMaxWorldExtent,
-                             world::kMaxTopGridCells);
+            return makeError(
+                "{}: the import would make a world of {}x{}x{} voxels, over the engine's limit ({} "
+                "per "
+                "axis, {} top-grid cells); use --voxel-size or --crop",
+                im.file, worldSize.x, worldSize.y, worldSize.z, world::kMaxWorldExtent,
+                world::kMaxTopGridCells);
     }
     place.worldBox = landed.intersect(Box{glm::ivec3(0), worldSize});
     if (place.worldBox.empty())
-        return makeError("{}: nothing of grid '{}' lands inside the world (check --offset and --crop)", im.file,
-                         im.plan.grid);
+        return makeError(
+            "{}: nothing of grid '{}' lands inside the world (check --offset and --crop)", im.file,
+            im.plan.grid);
     if (landed.min != place.worldBox.min || landed.max != place.worldBox.max)
         im.plan.notes.push_back("part of the grid lands outside the world and is cut off");
     im.plan.worldBox = place.worldBox;

@@ -4,10 +4,9 @@
 // inclusive CoordBBox and our max-exclusive Box. Internal to engine/io.
 #pragma once
 
-#include <openvdb/openvdb.h>
-
 #include <cmath>
 #include <cstdint>
+#include <openvdb/openvdb.h>
 
 #include "io/vdb_import.h"
 #include "world/scene.h"
@@ -17,7 +16,8 @@ namespace engine::io::vdb_import {
 using world::Box;
 
 inline Box toBox(const openvdb::CoordBBox& b) {
-    return {glm::ivec3(b.min().x(), b.min().y(), b.min().z()), glm::ivec3(b.max().x(), b.max().y(), b.max().z()) + 1};
+    return {glm::ivec3(b.min().x(), b.min().y(), b.min().z()),
+            glm::ivec3(b.max().x(), b.max().y(), b.max().z()) + 1};
 }
 inline openvdb::CoordBBox toCoordBBox(const Box& b) {
     return openvdb::CoordBBox(openvdb::Coord(b.min.x, b.min.y, b.min.z),
@@ -35,9 +35,9 @@ inline int floorDiv(int a, int b) { return a >= 0 ? a / b : -((-a + b - 1) / b);
 struct AxisMap {
     int perm[3] = {0, 1, 2};  // world axis a reads source axis perm[a]
     int sign[3] = {1, 1, 1};
-    glm::dvec3 scale{1.0};    // world voxels per source voxel, per world axis
-    glm::dvec3 offset{0.0};   // world position of oriented voxel 0's corner
-    bool exact = true;        // scale 1 and whole-voxel offset: a voxel-for-voxel copy
+    glm::dvec3 scale{1.0};   // world voxels per source voxel, per world axis
+    glm::dvec3 offset{0.0};  // world position of oriented voxel 0's corner
+    bool exact = true;       // scale 1 and whole-voxel offset: a voxel-for-voxel copy
 
     glm::ivec3 toSource(glm::ivec3 j) const {
         glm::ivec3 i;
@@ -128,7 +128,8 @@ struct AxisMap {
 // The placement of one import, worked out by the steps in vdb_import_placement.cpp.
 struct Placement {
     AxisMap map;
-    bool trilinear = false;  // level set, finer world on every axis: sample the distance trilinearly
+    bool trilinear =
+        false;  // level set, finer world on every axis: sample the distance trilinearly
     bool footprint = false;  // level set, coarser world on some axis: solid if any source voxel is
     Box sourceBox;           // source index box imported
     Box worldBox;            // where it lands, clipped to the world

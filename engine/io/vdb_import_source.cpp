@@ -40,8 +40,10 @@ public:
             return at(vdb::Coord::round(ijk)).scalar;
         }
     }
-    void forEachLeaf(const std::function<void(const vdb::CoordBBox&, std::uint64_t)>& f) const override {
-        for (auto it = mGrid->tree().cbeginLeaf(); it; ++it) f(it->getNodeBoundingBox(), it->onVoxelCount());
+    void forEachLeaf(
+        const std::function<void(const vdb::CoordBBox&, std::uint64_t)>& f) const override {
+        for (auto it = mGrid->tree().cbeginLeaf(); it; ++it)
+            f(it->getNodeBoundingBox(), it->onVoxelCount());
     }
     Status forEachTile(const TileFn& f) const override {
         auto it = mGrid->tree().cbeginValueAll();
@@ -73,17 +75,25 @@ private:
 
 const char* kindName(Kind kind) {
     switch (kind) {
-        case Kind::VoxIds: return "voxengine world";
-        case Kind::LevelSet: return "level set";
-        case Kind::Fog: return "fog volume";
-        case Kind::Ids: return "integer ids";
-        case Kind::Mask: return "mask";
-        case Kind::Colour: return "colour";
+        case Kind::VoxIds:
+            return "voxengine world";
+        case Kind::LevelSet:
+            return "level set";
+        case Kind::Fog:
+            return "fog volume";
+        case Kind::Ids:
+            return "integer ids";
+        case Kind::Mask:
+            return "mask";
+        case Kind::Colour:
+            return "colour";
     }
     return "?";
 }
 
-bool isColourType(const vdb::GridBase& g) { return g.isType<vdb::Vec3SGrid>() || g.isType<vdb::Vec3DGrid>(); }
+bool isColourType(const vdb::GridBase& g) {
+    return g.isType<vdb::Vec3SGrid>() || g.isType<vdb::Vec3DGrid>();
+}
 
 std::optional<Kind> kindOf(const vdb::GridBase& g) {
     if (g.isType<vdb::FloatGrid>() || g.isType<vdb::DoubleGrid>())

@@ -3,15 +3,13 @@
 // type; and the kinds of grid it imports. Internal to engine/io (it exposes OpenVDB types).
 #pragma once
 
-#include <openvdb/openvdb.h>
-
 #include <cstdint>
 #include <functional>
+#include <glm/glm.hpp>
 #include <memory>
+#include <openvdb/openvdb.h>
 #include <optional>
 #include <type_traits>
-
-#include <glm/glm.hpp>
 
 #include "core/error.h"
 
@@ -56,14 +54,17 @@ public:
     // As read by VdbReader (of the type makeSource() was given); nullptr releases it.
     virtual void attach(openvdb::GridBase::Ptr grid) = 0;
     virtual openvdb::GridBase::ConstPtr base() const = 0;
-    virtual Sample at(const openvdb::Coord& ijk) const = 0;            // leaf values must be loaded
-    virtual double trilinear(const openvdb::Vec3d& ijk) const = 0;     // index space, voxel centres at integers
+    virtual Sample at(const openvdb::Coord& ijk) const = 0;  // leaf values must be loaded
+    virtual double trilinear(
+        const openvdb::Vec3d& ijk) const = 0;  // index space, voxel centres at integers
     // Leaves (node box, active voxel count) and tiles above leaf level (box, value). The
     // walks stop at the first callback that fails and return its error.
-    virtual void forEachLeaf(const std::function<void(const openvdb::CoordBBox&, std::uint64_t)>& f) const = 0;
+    virtual void forEachLeaf(
+        const std::function<void(const openvdb::CoordBBox&, std::uint64_t)>& f) const = 0;
     virtual Status forEachTile(const TileFn& f) const = 0;
     // Active voxels inside `box` of the loaded leaves whose origin lies in `origins`.
-    virtual Status forEachActiveLeafVoxel(const openvdb::CoordBBox& origins, const openvdb::CoordBBox& box,
+    virtual Status forEachActiveLeafVoxel(const openvdb::CoordBBox& origins,
+                                          const openvdb::CoordBBox& box,
                                           const VoxelFn& f) const = 0;
 };
 

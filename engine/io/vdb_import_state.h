@@ -15,13 +15,12 @@
 // points in vdb_import.cpp. Internal to engine/io.
 #pragma once
 
-#include <openvdb/openvdb.h>
-
 #include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <limits>
 #include <memory>
+#include <openvdb/openvdb.h>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -68,14 +67,15 @@ struct Slab {
 enum CellMark : std::uint8_t { kCellNone = 0, kCellUniform = 1, kCellSample = 2 };
 
 inline std::size_t cellIndex(glm::ivec3 cells, glm::ivec3 c) {
-    return std::size_t(c.x) + std::size_t(cells.x) * (std::size_t(c.y) + std::size_t(cells.y) * std::size_t(c.z));
+    return std::size_t(c.x) +
+           std::size_t(cells.x) * (std::size_t(c.y) + std::size_t(cells.y) * std::size_t(c.z));
 }
 
 struct ImportPalette {
-    std::vector<world::Material> materials;  // index 0 unused
-    std::vector<world::MaterialId> remap;    // materials' ids in the scene's palette
+    std::vector<world::Material> materials;       // index 0 unused
+    std::vector<world::MaterialId> remap;         // materials' ids in the scene's palette
     std::unordered_map<std::int64_t, int> idLut;  // ids rule, foreign grids: value -> material
-    std::unique_ptr<ColourMapper> mapper;          // colour rule
+    std::unique_ptr<ColourMapper> mapper;         // colour rule
     ColourError colourError;
 };
 
@@ -142,8 +142,8 @@ Box colourRegion(const ImportState& im, const Box& source);
 Status forEachSolidTile(const ImportState& im, const SourceGrid& topology,
                         const std::function<Status(const Box&, const Sample&)>& f);
 // Active voxels of grid `index` inside `region`, reading its leaves in bounded pieces.
-Status scanActiveVoxels(ImportState& im, std::size_t index, const std::vector<Box>& leaves, const Box& region,
-                        const SourceGrid::VoxelFn& f);
+Status scanActiveVoxels(ImportState& im, std::size_t index, const std::vector<Box>& leaves,
+                        const Box& region, const SourceGrid::VoxelFn& f);
 
 // vdb_import_plan.cpp
 std::string mib(std::uint64_t bytes);
@@ -156,7 +156,8 @@ Status markCells(ImportState& im, const SourceGrid& topology, std::vector<std::u
 
 // vdb_import_slabs.cpp
 void makeSlabs(ImportState& im, const std::vector<std::uint8_t>& marks);
-Status fillSlabs(ImportState& im, world::BrickGrid& grid, const std::vector<std::uint8_t>& marks, bool intoExisting);
+Status fillSlabs(ImportState& im, world::BrickGrid& grid, const std::vector<std::uint8_t>& marks,
+                 bool intoExisting);
 
 // vdb_import_palette.cpp
 Status buildPalette(ImportState& im);

@@ -25,7 +25,8 @@ Status withStreamableTree(const ImportState& im, F&& f) {
     if (g.isType<vdb::Int64Grid>()) return f(static_cast<vdb::Int64Tree*>(nullptr));
     if (g.isType<vdb::Vec3SGrid>()) return f(static_cast<vdb::Vec3STree*>(nullptr));
     if (g.isType<vdb::Vec3DGrid>()) return f(static_cast<vdb::Vec3DTree*>(nullptr));
-    return makeError("{}: truncated, corrupt or unsupported VDB file (grid type cannot be streamed)", im.file);
+    return makeError(
+        "{}: truncated, corrupt or unsupported VDB file (grid type cannot be streamed)", im.file);
 }
 
 // readShapeTopology() without an OpenVDB tree: the same figures from one walk over the nodes.
@@ -49,8 +50,8 @@ Status readTopologyStreamed(ImportState& im) {
         content = unite(content, b);
         plan.uniformCells += volume(b) / world::kBrickVoxels;
     };
-    const typename Stream::Root root =
-        Stream::walk(topology, im.reader.formatVersion(), half, im.reader.fileBytes(), nullptr, tile);
+    const typename Stream::Root root = Stream::walk(topology, im.reader.formatVersion(), half,
+                                                    im.reader.fileBytes(), nullptr, tile);
     std::vector<Box>& leaves = im.topology.leaves;
     Stream::stream(topology, nullptr, im.reader.formatVersion(), half, root, tile,
                    [&](const vdb::Coord& origin, const typename Stream::LeafMask& mask) {
@@ -65,7 +66,8 @@ Status readTopologyStreamed(ImportState& im) {
                            b = Box{glm::ivec3(INT32_MAX), glm::ivec3(INT32_MIN)};
                            for (auto it = mask.beginOn(); it; ++it) {
                                const vdb::Index i = it.pos();
-                               const glm::ivec3 p = o + glm::ivec3(int(i >> 6), int((i >> 3) & 7), int(i & 7));
+                               const glm::ivec3 p =
+                                   o + glm::ivec3(int(i >> 6), int((i >> 3) & 7), int(i & 7));
                                b.min = glm::min(b.min, p);
                                b.max = glm::max(b.max, p + 1);
                            }
@@ -107,16 +109,18 @@ Status streamTree(ImportState& im, const std::function<Status(const Box&, const 
         const Box b = toBox(box).intersect(crop);
         if (!b.empty()) keep(onTile(b, s));
     };
-    const typename Stream::Root root =
-        Stream::walk(topology, im.reader.formatVersion(), half, im.reader.fileBytes(), nullptr, tile, &failed);
+    const typename Stream::Root root = Stream::walk(topology, im.reader.formatVersion(), half,
+                                                    im.reader.fileBytes(), nullptr, tile, &failed);
     if (failed) return failure;
 
     // A second stream over the same file reads the leaf values while the first walks the nodes;
     // it carries the same decoding state (format, compression, grid class and metadata).
     std::ifstream values(im.path, std::ios::in | std::ios::binary);
-    if (!values) return makeError("{}: truncated or corrupt VDB file (cannot reopen {})", im.file, im.file);
+    if (!values)
+        return makeError("{}: truncated or corrupt VDB file (cannot reopen {})", im.file, im.file);
     values.exceptions(std::ios::failbit | std::ios::badbit);
-    vdb::io::setVersion(values, vdb::io::getLibraryVersion(topology), vdb::io::getFormatVersion(topology));
+    vdb::io::setVersion(values, vdb::io::getLibraryVersion(topology),
+                        vdb::io::getFormatVersion(topology));
     vdb::io::setDataCompression(values, vdb::io::getDataCompression(topology));
     vdb::io::setGridClass(values, vdb::io::getGridClass(topology));
     vdb::io::StreamMetadata::Ptr metadata = vdb::io::getStreamMetadataPtr(topology);
@@ -132,7 +136,8 @@ Status streamTree(ImportState& im, const std::function<Status(const Box&, const 
             return !failed && !Box{o, o + 8}.intersect(sourceBox).empty();
         },
         [&](const vdb::Coord& origin, const typename Stream::LeafMask& mask, const ValueT* v) {
-            for (int i = 0; i < 512; ++i) samples[std::size_t(i)] = toSample(v[i], mask.isOn(vdb::Index(i)));
+            for (int i = 0; i < 512; ++i)
+                samples[std::size_t(i)] = toSample(v[i], mask.isOn(vdb::Index(i)));
             keep(onLeaf(origin, samples.data()));
         },
         &failed);
@@ -172,8 +177,8 @@ public:
                             for (int x = part.min.x; x < part.max.x; ++x) {
                                 Result<int> material = materialFor(mIm, {x, y, z}, s);
                                 if (!material) return material.error();
-                                voxels[std::size_t(world::brickVoxelIndex(glm::ivec3(x, y, z) & 7))] =
-                                    remap[std::size_t(*material)];
+                                voxels[std::size_t(world::brickVoxelIndex(
+                                    glm::ivec3(x, y, z) & 7))] = remap[std::size_t(*material)];
                                 mIm.report.solidVoxels++;
                             }
                     mGrid.writeCell(c, voxels);
@@ -192,7 +197,8 @@ public:
         std::array<Part, 8> parts;
         int used = 0;
         for (int i = 0; i < 512; ++i) {
-            const glm::ivec3 src(origin.x() + (i >> 6), origin.y() + ((i >> 3) & 7), origin.z() + (i & 7));
+            const glm::ivec3 src(origin.x() + (i >> 6), origin.y() + ((i >> 3) & 7),
+                                 origin.z() + (i & 7));
             if (!mIm.place.sourceBox.contains(src) || !isSolid(mIm, samples[i])) continue;
             const glm::ivec3 t = mIm.place.map.exactTarget(src);
             if (!mIm.place.worldBox.contains(t)) continue;
@@ -207,7 +213,8 @@ public:
             Result<int> material = materialFor(mIm, t, samples[i]);
             if (!material) return material.error();
             const int local = world::brickVoxelIndex(t & 7);
-            parts[std::size_t(p)].voxels[std::size_t(local)] = mIm.palette.remap[std::size_t(*material)];
+            parts[std::size_t(p)].voxels[std::size_t(local)] =
+                mIm.palette.remap[std::size_t(*material)];
             parts[std::size_t(p)].set.set(std::size_t(local));
             mIm.report.solidVoxels++;
         }
@@ -232,9 +239,11 @@ private:
 
 bool canStream(const ImportState& im) {
     const vdb::GridBase& g = *im.grids.shapeHeader;
-    const bool type = g.isType<vdb::FloatGrid>() || g.isType<vdb::DoubleGrid>() || g.isType<vdb::Int32Grid>() ||
-                      g.isType<vdb::Int64Grid>() || g.isType<vdb::Vec3SGrid>() || g.isType<vdb::Vec3DGrid>();
-    return im.place.map.scale == glm::dvec3(1.0) && im.grids.colourIndex < 0 && type && im.grids.kind != Kind::Mask &&
+    const bool type = g.isType<vdb::FloatGrid>() || g.isType<vdb::DoubleGrid>() ||
+                      g.isType<vdb::Int32Grid>() || g.isType<vdb::Int64Grid>() ||
+                      g.isType<vdb::Vec3SGrid>() || g.isType<vdb::Vec3DGrid>();
+    return im.place.map.scale == glm::dvec3(1.0) && im.grids.colourIndex < 0 && type &&
+           im.grids.kind != Kind::Mask &&
            im.reader.formatVersion() >= vdb::OPENVDB_FILE_VERSION_NODE_MASK_COMPRESSION &&
            im.reader.grids()[im.grids.shapeIndex].parent.empty();
 }
@@ -256,7 +265,9 @@ Status streamIntoWorld(ImportState& im, world::BrickGrid& grid) {
     StreamWriter writer(im, grid);
     return streamSource(
         im, [&](const Box& tile, const Sample& value) { return writer.writeTile(tile, value); },
-        [&](const vdb::Coord& origin, const Sample* samples) { return writer.writeLeaf(origin, samples); });
+        [&](const vdb::Coord& origin, const Sample* samples) {
+            return writer.writeLeaf(origin, samples);
+        });
 }
 
 }  // namespace engine::io::vdb_import

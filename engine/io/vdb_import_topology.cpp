@@ -18,7 +18,9 @@ Status settleSourceBox(ImportState& im, const Box& content) {
     if (sourceBox.empty() && im.grids.voxengine && !crop)
         sourceBox = Box{glm::ivec3(0), glm::ivec3(1)};  // an all-air world of ours: keep it
     if (sourceBox.empty()) {
-        if (crop) return makeError("{}: nothing of grid '{}' lies inside the crop box", im.file, im.plan.grid);
+        if (crop)
+            return makeError("{}: nothing of grid '{}' lies inside the crop box", im.file,
+                             im.plan.grid);
         return makeError("{}: grid '{}' is empty (no active voxels)", im.file, im.plan.grid);
     }
     im.plan.sourceBox = sourceBox;
@@ -77,18 +79,22 @@ void readColourTopology(ImportState& im) {
     im.colour->forEachLeaf([&](const vdb::CoordBBox& node, std::uint64_t on) {
         if (on) im.topology.colourLeaves.push_back(toBox(node));
     });
-    im.topology.colourLeafBytes = 512 * (im.colour->base()->isType<vdb::Vec3DGrid>() ? 24 : 12) + 128;
+    im.topology.colourLeafBytes =
+        512 * (im.colour->base()->isType<vdb::Vec3DGrid>() ? 24 : 12) + 128;
     im.colour->attach(nullptr);
 }
 
 Box colourRegion(const ImportState& im, const Box& source) {
     if (im.grids.sameXform) return source;
-    vdb::BBoxd index = im.grids.colourXform->worldToIndex(im.grids.shapeXform->indexToWorld(toCoordBBox(source)));
+    vdb::BBoxd index =
+        im.grids.colourXform->worldToIndex(im.grids.shapeXform->indexToWorld(toCoordBBox(source)));
     // Widened by a voxel (two above: max is exclusive) so rounding never misses a neighbour.
     return Box{glm::ivec3(int(std::floor(index.min().x())), int(std::floor(index.min().y())),
-                          int(std::floor(index.min().z()))) - 1,
+                          int(std::floor(index.min().z()))) -
+                   1,
                glm::ivec3(int(std::ceil(index.max().x())), int(std::ceil(index.max().y())),
-                          int(std::ceil(index.max().z()))) + 2};
+                          int(std::ceil(index.max().z()))) +
+                   2};
 }
 
 Status forEachSolidTile(const ImportState& im, const SourceGrid& topology,
@@ -102,8 +108,8 @@ Status forEachSolidTile(const ImportState& im, const SourceGrid& topology,
     });
 }
 
-Status scanActiveVoxels(ImportState& im, std::size_t index, const std::vector<Box>& leaves, const Box& region,
-                        const SourceGrid::VoxelFn& f) {
+Status scanActiveVoxels(ImportState& im, std::size_t index, const std::vector<Box>& leaves,
+                        const Box& region, const SourceGrid::VoxelFn& f) {
     auto source = makeSource(*im.reader.readHeader(index));
     // Leaf-aligned z ranges of about 1/8 of the leaves each; a leaf belongs to exactly one.
     std::vector<int> zs;

@@ -17,16 +17,17 @@ namespace engine::io {
 
 struct VdbGridInfo {
     std::string name;
-    std::string type;        // value type ("float", "vec3s", ...) or the stored tree type if unknown
-    std::string gridClass;   // "level set", "fog volume", "unknown", ...
-    std::string transform;   // "uniform scale 0.1", "scale 0.7 x 0.7 x 0.72", or why it is unusable
+    std::string type;       // value type ("float", "vec3s", ...) or the stored tree type if unknown
+    std::string gridClass;  // "level set", "fog volume", "unknown", ...
+    std::string transform;  // "uniform scale 0.1", "scale 0.7 x 0.7 x 0.72", or why it is unusable
     glm::dvec3 voxelSize{0.0};
     std::uint64_t activeVoxels = 0, leaves = 0, activeTiles = 0;
-    world::Box bounds;                 // active voxels, index space (empty if none)
-    std::uint64_t memoryBytes = 0;     // in memory when fully loaded (OpenVDB's file_mem_bytes or an estimate)
+    world::Box bounds;  // active voxels, index space (empty if none)
+    std::uint64_t memoryBytes =
+        0;  // in memory when fully loaded (OpenVDB's file_mem_bytes or an estimate)
     std::vector<std::pair<std::string, std::string>> metadata;
-    std::string note;                  // e.g. counts taken from metadata
-    std::string problem;               // set when the grid could not be read
+    std::string note;     // e.g. counts taken from metadata
+    std::string problem;  // set when the grid could not be read
 };
 
 struct VdbFileInfo {
@@ -40,7 +41,8 @@ struct VdbFileInfo {
     Result<VdbImportPlan> import = Error{"not planned"};
 };
 
-Result<VdbFileInfo> describeVdbFile(const std::filesystem::path& path, const VdbImportOptions& importOptions = {});
+Result<VdbFileInfo> describeVdbFile(const std::filesystem::path& path,
+                                    const VdbImportOptions& importOptions = {});
 std::string formatVdbFileInfo(const VdbFileInfo& info);
 
 }  // namespace engine::io

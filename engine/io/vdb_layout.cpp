@@ -15,8 +15,12 @@ namespace {
 vdb::Vec3s toVdb(glm::vec3 v) { return {v.x, v.y, v.z}; }
 glm::vec3 fromVdb(const vdb::Vec3s& v) { return {v.x(), v.y(), v.z()}; }
 
-std::string materialKey(std::size_t i, const char* field) { return fmt::format("vox:material.{:05}.{}", i, field); }
-std::string cameraKey(std::size_t i, const char* field) { return fmt::format("vox:camera.{:03}.{}", i, field); }
+std::string materialKey(std::size_t i, const char* field) {
+    return fmt::format("vox:material.{:05}.{}", i, field);
+}
+std::string cameraKey(std::size_t i, const char* field) {
+    return fmt::format("vox:camera.{:03}.{}", i, field);
+}
 
 // Typed lookups that report the key instead of throwing; numbers checked by the range the scene
 // file's key has (world/scene.h), so a file cannot give the world what a scene file may not.
@@ -34,8 +38,9 @@ public:
         }
         auto typed = vdb::DynamicPtrCast<const vdb::TypedMetadata<T>>(m);
         if (!typed) {
-            mError = fmt::format("{}: voxengine metadata '{}' has type {}, expected {}", mFile, key, printableText(m->typeName()),
-                                 vdb::TypedMetadata<T>::staticTypeName());
+            mError =
+                fmt::format("{}: voxengine metadata '{}' has type {}, expected {}", mFile, key,
+                            printableText(m->typeName()), vdb::TypedMetadata<T>::staticTypeName());
             return false;
         }
         out = typed->value();
@@ -45,8 +50,9 @@ public:
     bool text(const std::string& key, std::string& out) {
         if (!get(key, out)) return false;
         if (printableText(out) == out) return true;
-        return fail(fmt::format("voxengine metadata '{}' must be printable text, without control characters: '{}'", key,
-                                printableText(out)));
+        return fail(fmt::format(
+            "voxengine metadata '{}' must be printable text, without control characters: '{}'", key,
+            printableText(out)));
     }
     bool number(const std::string& key, float& out, const NumberRange& range) {
         return get(key, out) && check(key, out, range);
@@ -82,8 +88,8 @@ vdb::math::Transform::Ptr gridTransform(double voxelSize, bool zUp) {
     vdb::math::Transform::Ptr xform = vdb::math::Transform::createLinearTransform(voxelSize);
     if (zUp) {
         // OpenVDB's matrices act on row vectors, so this is the turn that takes +y to +z.
-        vdb::Mat4d turn(1, 0, 0, 0,  //
-                        0, 0, 1, 0,  //
+        vdb::Mat4d turn(1, 0, 0, 0,   //
+                        0, 0, 1, 0,   //
                         0, -1, 0, 0,  //
                         0, 0, 0, 1);
         xform->postMult(turn);
@@ -134,28 +140,34 @@ Result<WorldHeader> readWorldMetadata(const vdb::MetaMap& meta, const std::strin
     vdb::Vec3i size(0);
     r.get("vox:format_version", version);
     if (r.error().empty() && version > kFormatVersion)
-        r.fail(fmt::format("voxengine format version {} is newer than this build reads ({})", version, kFormatVersion));
+        r.fail(fmt::format("voxengine format version {} is newer than this build reads ({})",
+                           version, kFormatVersion));
     r.text("vox:world.name", h.name);
     r.get("vox:world.size", size);
     r.number("vox:world.voxel_size", h.voxelSize, world::kVoxelSizeRange);
-    if (auto up = vdb::DynamicPtrCast<const vdb::StringMetadata>(meta["vox:up_axis"])) h.zUp = up->value() == "z";
+    if (auto up = vdb::DynamicPtrCast<const vdb::StringMetadata>(meta["vox:up_axis"]))
+        h.zUp = up->value() == "z";
     h.size = glm::ivec3(size.x(), size.y(), size.z());
     if (r.error().empty()) {
         glm::u64vec3 cells = glm::u64vec3((glm::max(h.size, 1) + 7) / 8);
         if (glm::any(glm::lessThan(h.size, glm::ivec3(1))) ||
             glm::any(glm::greaterThan(h.size, glm::ivec3(world::kMaxWorldExtent))) ||
             cells.x * cells.y * cells.z > world::kMaxTopGridCells)
-            r.fail(fmt::format("vox:world.size {}x{}x{} is outside the engine's limits", h.size.x, h.size.y, h.size.z));
+            r.fail(fmt::format("vox:world.size {}x{}x{} is outside the engine's limits", h.size.x,
+                               h.size.y, h.size.z));
     }
     r.get("vox:palette.count", paletteCount);
-    if (r.error().empty() && (paletteCount < 0 || std::size_t(paletteCount) >= world::kMaxMaterials))
-        r.fail(fmt::format("vox:palette.count {} is outside 0..{}", paletteCount, world::kMaxMaterials - 1));
+    if (r.error().empty() &&
+        (paletteCount < 0 || std::size_t(paletteCount) >= world::kMaxMaterials))
+        r.fail(fmt::format("vox:palette.count {} is outside 0..{}", paletteCount,
+                           world::kMaxMaterials - 1));
     for (std::int32_t i = 1; r.error().empty() && i <= paletteCount; ++i) {
         world::Material m;
         r.text(materialKey(std::size_t(i), "name"), m.name);
         r.vec3(materialKey(std::size_t(i), "albedo"), m.albedo, world::kAlbedoRange);
         r.vec3(materialKey(std::size_t(i), "emission"), m.emissionColor, world::kRadianceRange);
-        r.number(materialKey(std::size_t(i), "strength"), m.emissionStrength, world::kRadianceRange);
+        r.number(materialKey(std::size_t(i), "strength"), m.emissionStrength,
+                 world::kRadianceRange);
         if (r.error().empty()) (void)h.palette.add(m);
     }
     r.get("vox:camera.count", cameraCount);
@@ -168,11 +180,14 @@ Result<WorldHeader> readWorldMetadata(const vdb::MetaMap& meta, const std::strin
         r.vec3(cameraKey(std::size_t(i), "target"), c.target, world::kCoordinateRange);
         r.number(cameraKey(std::size_t(i), "fov"), c.fovYDegrees, world::kFovRange);
         if (r.error().empty())
-            if (Status ok = world::checkCamera(c); !ok) r.fail(fmt::format("{}: {}", cameraKey(std::size_t(i), "target"), ok.error().message));
+            if (Status ok = world::checkCamera(c); !ok)
+                r.fail(
+                    fmt::format("{}: {}", cameraKey(std::size_t(i), "target"), ok.error().message));
         h.cameras.push_back(c);
     }
     r.vec3("vox:sky.sun_direction", h.sky.sunDirection, world::kDirectionRange);
-    if (r.error().empty() && glm::length(h.sky.sunDirection) < 1e-6f) r.fail("vox:sky.sun_direction must not be zero");
+    if (r.error().empty() && glm::length(h.sky.sunDirection) < 1e-6f)
+        r.fail("vox:sky.sun_direction must not be zero");
     r.vec3("vox:sky.sun_radiance", h.sky.sunRadiance, world::kRadianceRange);
     r.vec3("vox:sky.sky_radiance", h.sky.skyRadiance, world::kRadianceRange);
     if (!r.error().empty()) return Error{r.error()};

@@ -21,7 +21,6 @@
 #pragma once
 
 #include <openvdb/openvdb.h>
-
 #include <string>
 #include <vector>
 

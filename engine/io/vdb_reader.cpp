@@ -1,20 +1,17 @@
 #include "io/vdb_reader.h"
 
-#include "io/vdb_tree_stream.h"
-
-#include <openvdb/io/DelayedLoadMetadata.h>
-
 #include <algorithm>
+#include <fmt/format.h>
 #include <memory>
 #include <mutex>
-#include <type_traits>
 #include <new>
+#include <openvdb/io/DelayedLoadMetadata.h>
 #include <system_error>
-
-#include <fmt/format.h>
+#include <type_traits>
 
 #include "core/memory_budget.h"
 #include "core/quoted_string.h"
+#include "io/vdb_tree_stream.h"
 
 namespace engine::io {
 
@@ -40,13 +37,16 @@ std::string oneLine(std::string_view text) {
     return s;
 }
 
-std::string mib(std::uint64_t bytes) { return fmt::format("{:.1f} MiB", double(bytes) / (1 << 20)); }
+std::string mib(std::uint64_t bytes) {
+    return fmt::format("{:.1f} MiB", double(bytes) / (1 << 20));
+}
 
 // OpenVDB's what() reads "IoError: detail"; keep the detail.
 std::string detail(const vdb::Exception& e) {
     std::string what = e.what() ? e.what() : "";
     std::size_t colon = what.find(": ");
-    if (colon != std::string::npos && colon < 24 && what.find(' ') > colon) what = what.substr(colon + 2);
+    if (colon != std::string::npos && colon < 24 && what.find(' ') > colon)
+        what = what.substr(colon + 2);
     return oneLine(what);
 }
 
@@ -79,17 +79,21 @@ void initializeOpenVdb() {
         // as soon as it reads the grid's metadata, and blosc crashes on damaged input (found by
         // the fuzz target). We never delay-load: unregistered, the tables are read as opaque
         // bytes and dropped.
-        if (vdb::io::DelayedLoadMetadata::isRegisteredType()) vdb::io::DelayedLoadMetadata::unregisterType();
+        if (vdb::io::DelayedLoadMetadata::isRegisteredType())
+            vdb::io::DelayedLoadMetadata::unregisterType();
     });
 }
 
-std::uint64_t vdbSingleAllocationLimit(std::uint64_t fileBytes) { return fileBytes + (16ull << 20); }
+std::uint64_t vdbSingleAllocationLimit(std::uint64_t fileBytes) {
+    return fileBytes + (16ull << 20);
+}
 
 Result<std::uint64_t> vdbFileBytes(const fs::path& path) {
     std::error_code ec;
     fs::file_status st = fs::status(path, ec);
     if (ec || !fs::exists(st)) return makeError("{}: cannot open: no such file", path.string());
-    if (!fs::is_regular_file(st)) return makeError("{}: cannot open: not a regular file", path.string());
+    if (!fs::is_regular_file(st))
+        return makeError("{}: cannot open: not a regular file", path.string());
     std::uint64_t bytes = fs::file_size(path, ec);
     if (ec) return makeError("{}: cannot open: {}", path.string(), ec.message());
     if (bytes == 0) return makeError("{}: empty file (0 bytes), not a VDB file", path.string());
@@ -103,23 +107,29 @@ Error vdbError(const fs::path& path, const AllocationBudget* budget) {
     } catch (const std::bad_alloc&) {
         if (budget && budget->refusedAsSingleRequest()) {
             // Not a question of the budget: no legitimate read needs one buffer this large.
-            return makeError("{}: reading it asks for {} bytes of memory in one block, more than any valid file of "
-                             "this size needs ({}: its size plus 16 MiB); the file is damaged (or, if OpenVDB's "
-                             "vdb_print reads it, this is a bug in vox)",
-                             file, budget->refusedBytes(), budget->singleBytes());
+            return makeError(
+                "{}: reading it asks for {} bytes of memory in one block, more than any valid file "
+                "of "
+                "this size needs ({}: its size plus 16 MiB); the file is damaged (or, if OpenVDB's "
+                "vdb_print reads it, this is a bug in vox)",
+                file, budget->refusedBytes(), budget->singleBytes());
         }
         if (budget && budget->exceeded()) {
             return makeError(
-                "{}: reading it needs more memory than the budget of {} allows (a request for {} bytes was "
+                "{}: reading it needs more memory than the budget of {} allows (a request for {} "
+                "bytes was "
                 "refused); the file is damaged or too large ({})",
-                file, mib(budget->totalBytes()), budget->refusedBytes(), memoryBudgetAdvice(budget->totalBytes()));
+                file, mib(budget->totalBytes()), budget->refusedBytes(),
+                memoryBudgetAdvice(budget->totalBytes()));
         }
         return makeError("{}: out of memory while reading", file);
     } catch (const std::ios_base::failure&) {
-        return makeError("{}: truncated or corrupt VDB file (data ends or points outside the file)", file);
+        return makeError("{}: truncated or corrupt VDB file (data ends or points outside the file)",
+                         file);
     } catch (const vdb::IoError& e) {
         std::string what = detail(e);
-        if (what.find("not a VDB file") != std::string::npos) return makeError("{}: not a VDB file", file);
+        if (what.find("not a VDB file") != std::string::npos)
+            return makeError("{}: not a VDB file", file);
         return makeError("{}: truncated or corrupt VDB file ({})", file, what);
     } catch (const vdb::Exception& e) {
         return makeError("{}: truncated, corrupt or unsupported VDB file ({})", file, detail(e));
@@ -149,16 +159,19 @@ VdbReader::VdbReader(const fs::path& path) : mPath(path) {
     // Checked here because OpenVDB only warns (on stderr) and then reads on regardless.
     mStream.read(reinterpret_cast<char*>(&version), sizeof(version));
     if (version > vdb::OPENVDB_FILE_VERSION)
-        throw vdb::IoError(fmt::format("file format {} is newer than this build's OpenVDB reads ({})", version,
-                                       vdb::OPENVDB_FILE_VERSION));
+        throw vdb::IoError(
+            fmt::format("file format {} is newer than this build's OpenVDB reads ({})", version,
+                        vdb::OPENVDB_FILE_VERSION));
     mStream.seekg(0);
 
     Archive::readHeader(mStream);
     mFormatVersion = fileVersion();
     if (mFormatVersion < vdb::OPENVDB_FILE_VERSION_GRID_INSTANCING)
-        throw vdb::IoError(fmt::format("file format {} predates OpenVDB 3 (format {}); re-save it with a newer OpenVDB",
-                                       mFormatVersion, int(vdb::OPENVDB_FILE_VERSION_GRID_INSTANCING)));
-    if (!inputHasGridOffsets()) throw vdb::IoError("file has no grid offsets (written as a stream), not supported");
+        throw vdb::IoError(fmt::format(
+            "file format {} predates OpenVDB 3 (format {}); re-save it with a newer OpenVDB",
+            mFormatVersion, int(vdb::OPENVDB_FILE_VERSION_GRID_INSTANCING)));
+    if (!inputHasGridOffsets())
+        throw vdb::IoError("file has no grid offsets (written as a stream), not supported");
 
     mStreamMetadata = std::make_shared<vdb::io::StreamMetadata>();
     mStreamMetadata->setSeekable(true);
@@ -192,7 +205,8 @@ VdbReader::VdbReader(const fs::path& path) : mPath(path) {
         e.parent = readString();
         bool half = false;
         const std::size_t suffix = sizeof(kHalfFloatSuffix) - 1;
-        if (e.type.size() > suffix && e.type.compare(e.type.size() - suffix, suffix, kHalfFloatSuffix) == 0) {
+        if (e.type.size() > suffix &&
+            e.type.compare(e.type.size() - suffix, suffix, kHalfFloatSuffix) == 0) {
             e.type.resize(e.type.size() - suffix);
             half = true;
         }
@@ -203,9 +217,12 @@ VdbReader::VdbReader(const fs::path& path) : mPath(path) {
         const std::int64_t here = mStream.tellg();
         // An instance stores only metadata and transform (its tree is its parent's), and OpenVDB
         // writes its block offset as 0.
-        const bool blocksInOrder = e.parent.empty() ? pos[0] <= pos[1] && pos[1] <= pos[2] : pos[1] == 0;
-        if (!(here <= pos[0] && pos[0] <= pos[2] && blocksInOrder && std::uint64_t(pos[2]) <= mFileBytes))
-            throw vdb::IoError(fmt::format("grid '{}' reaches past the end of the file's {} bytes", oneLine(e.name), mFileBytes));
+        const bool blocksInOrder =
+            e.parent.empty() ? pos[0] <= pos[1] && pos[1] <= pos[2] : pos[1] == 0;
+        if (!(here <= pos[0] && pos[0] <= pos[2] && blocksInOrder &&
+              std::uint64_t(pos[2]) <= mFileBytes))
+            throw vdb::IoError(fmt::format("grid '{}' reaches past the end of the file's {} bytes",
+                                           oneLine(e.name), mFileBytes));
         vdb::io::GridDescriptor gd(e.uniqueName, e.type, half);
         gd.setInstanceParentName(e.parent);
         gd.setGridPos(pos[0]);
@@ -224,10 +241,13 @@ std::string VdbReader::libraryVersion() const {
 
 int VdbReader::find(const std::string& name) const {
     for (std::size_t i = 0; i < mEntries.size(); ++i)
-        if (mEntries[i].name == name || mEntries[i].uniqueName == name || mEntries[i].displayName == name) return int(i);
+        if (mEntries[i].name == name || mEntries[i].uniqueName == name ||
+            mEntries[i].displayName == name)
+            return int(i);
     // "name[0]": the first of several grids with that name (OpenVDB numbers only the later ones).
     const std::string first = "[0]";
-    if (name.size() > first.size() && name.compare(name.size() - first.size(), first.size(), first) == 0) {
+    if (name.size() > first.size() &&
+        name.compare(name.size() - first.size(), first.size(), first) == 0) {
         const std::string base = name.substr(0, name.size() - first.size());
         for (std::size_t i = 0; i < mEntries.size(); ++i)
             if (mEntries[i].uniqueName == base) return int(i);
@@ -241,22 +261,30 @@ std::size_t VdbReader::treeSource(std::size_t index) const {
     for (std::size_t hops = 0; hops <= mEntries.size(); ++hops) {
         const std::string& parent = mEntries[index].parent;
         if (parent.empty()) return index;
-        auto it = std::find_if(mEntries.begin(), mEntries.end(), [&](const Entry& e) { return e.uniqueName == parent; });
-        if (it == mEntries.end()) throw vdb::KeyError("grid '" + oneLine(mEntries[index].name) + "' is an instance of a missing grid");
+        auto it = std::find_if(mEntries.begin(), mEntries.end(),
+                               [&](const Entry& e) { return e.uniqueName == parent; });
+        if (it == mEntries.end())
+            throw vdb::KeyError("grid '" + oneLine(mEntries[index].name) +
+                                "' is an instance of a missing grid");
         index = std::size_t(it - mEntries.begin());
     }
     throw vdb::KeyError("grid instances form a cycle");
 }
 
-vdb::GridBase::Ptr VdbReader::readHeader(std::size_t index) { return read(index, Depth::Header, vdb::CoordBBox()); }
-vdb::GridBase::Ptr VdbReader::readTopology(std::size_t index) { return read(index, Depth::Topology, vdb::CoordBBox()); }
+vdb::GridBase::Ptr VdbReader::readHeader(std::size_t index) {
+    return read(index, Depth::Header, vdb::CoordBBox());
+}
+vdb::GridBase::Ptr VdbReader::readTopology(std::size_t index) {
+    return read(index, Depth::Topology, vdb::CoordBBox());
+}
 vdb::GridBase::Ptr VdbReader::readRegion(std::size_t index, const vdb::CoordBBox& clip) {
     return read(index, Depth::Region, clip);
 }
 
 vdb::GridBase::Ptr VdbReader::openTree(std::size_t index) {
     const vdb::io::GridDescriptor& gd = mDescriptors.at(index);
-    if (gd.isInstance()) throw vdb::TypeError("grid '" + oneLine(gd.gridName()) + "' is an instance; read it whole");
+    if (gd.isInstance())
+        throw vdb::TypeError("grid '" + oneLine(gd.gridName()) + "' is an instance; read it whole");
     vdb::GridBase::Ptr grid = readGridStart(index);
     return grid;  // the stream is at the topology, with this grid's state set until the next read
 }
@@ -269,7 +297,8 @@ void VdbReader::seekToBuffers(std::size_t index) {
 vdb::GridBase::Ptr VdbReader::readGridStart(std::size_t index) {
     const vdb::io::GridDescriptor& gd = mDescriptors.at(index);
     if (!vdb::GridBase::isRegistered(gd.gridType()))
-        throw vdb::TypeError("grid '" + oneLine(gd.gridName()) + "' has the unknown type " + oneLine(gd.gridType()));
+        throw vdb::TypeError("grid '" + oneLine(gd.gridName()) + "' has the unknown type " +
+                             oneLine(gd.gridType()));
     vdb::GridBase::Ptr grid = vdb::GridBase::createGrid(gd.gridType());
     grid->setSaveFloatAsHalf(gd.saveFloatAsHalf());
     mStream.clear();
@@ -296,9 +325,11 @@ vdb::GridBase::Ptr VdbReader::readGridStart(std::size_t index) {
 vdb::GridBase::Ptr VdbReader::read(std::size_t index, Depth depth, const vdb::CoordBBox& clip) {
     const vdb::io::GridDescriptor& gd = mDescriptors.at(index);
     // Point grids (multi-pass attribute buffers) hold particles, not voxels.
-    const bool points = gd.gridType().find("ptdataidx") != std::string::npos || gd.gridType().find("ptidx") != std::string::npos;
+    const bool points = gd.gridType().find("ptdataidx") != std::string::npos ||
+                        gd.gridType().find("ptidx") != std::string::npos;
     if (points && depth != Depth::Header)
-        throw vdb::TypeError("grid '" + oneLine(gd.gridName()) + "' is a point grid, which cannot be read as voxels");
+        throw vdb::TypeError("grid '" + oneLine(gd.gridName()) +
+                             "' is a point grid, which cannot be read as voxels");
     struct Restore {
         VdbReader& r;
         ~Restore() { vdb::io::setStreamMetadataPtr(r.mStream, r.mStreamMetadata, false); }
@@ -309,7 +340,8 @@ vdb::GridBase::Ptr VdbReader::read(std::size_t index, Depth depth, const vdb::Co
     if (gd.isInstance()) {
         std::size_t source = treeSource(index);
         vdb::GridBase::Ptr parent = read(source, depth, clip);
-        if (parent->type() != grid->type()) throw vdb::TypeError("grid instance of a different type");
+        if (parent->type() != grid->type())
+            throw vdb::TypeError("grid instance of a different type");
         grid->setTree(parent->baseTreePtr());
         return grid;
     }
@@ -317,8 +349,8 @@ vdb::GridBase::Ptr VdbReader::read(std::size_t index, Depth depth, const vdb::Co
     TreeBytes bytes;
     const bool checked = withCheckedTreeType(*grid, [&](auto* tree) {
         using TreeT = std::remove_pointer_t<decltype(tree)>;
-        bytes = TreeStream<TreeT>::walk(mStream, mFormatVersion, grid->saveFloatAsHalf(), mFileBytes,
-                                        depth == Depth::Region ? &clip : nullptr, {})
+        bytes = TreeStream<TreeT>::walk(mStream, mFormatVersion, grid->saveFloatAsHalf(),
+                                        mFileBytes, depth == Depth::Region ? &clip : nullptr, {})
                     .bytes;
     });
     if (!checked)

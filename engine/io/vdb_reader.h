@@ -15,12 +15,11 @@
 // convert at the io boundary with guardedVdbCall() so a message names the file.
 #pragma once
 
-#include <openvdb/openvdb.h>
-
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <openvdb/openvdb.h>
 #include <string>
 #include <vector>
 
@@ -32,11 +31,13 @@ namespace engine::io {
 class VdbReader : private openvdb::io::Archive {
 public:
     struct Entry {
-        std::string name;         // grid name (unique name without the "[n]" suffix)
-        std::string uniqueName;   // as stored: OpenVDB numbers grids of a repeated name "\x1e0", "\x1e1"...
-        std::string displayName;  // OpenVDB's printable form: "density[0]", "density[1]"... (else the name), control characters escaped (core/quoted_string.h)
-        std::string type;        // e.g. "Tree_float_5_4_3"
-        std::string parent;      // instance parent's unique name, empty when not an instance
+        std::string name;  // grid name (unique name without the "[n]" suffix)
+        std::string
+            uniqueName;  // as stored: OpenVDB numbers grids of a repeated name "\x1e0", "\x1e1"...
+        std::string displayName;  // OpenVDB's printable form: "density[0]", "density[1]"... (else
+                                  // the name), control characters escaped (core/quoted_string.h)
+        std::string type;         // e.g. "Tree_float_5_4_3"
+        std::string parent;       // instance parent's unique name, empty when not an instance
     };
 
     // Reads the header, file metadata and grid descriptors.
@@ -96,8 +97,8 @@ Error vdbError(const std::filesystem::path& path, const AllocationBudget* budget
 // Runs f() under an allocation budget of `budgetBytes` and converts failures into an Error that
 // names the file. f returns Result<T> or Status.
 template <typename F>
-auto guardedVdbCall(const std::filesystem::path& path, std::uint64_t budgetBytes, std::uint64_t fileBytes, F&& f)
-    -> decltype(f()) {
+auto guardedVdbCall(const std::filesystem::path& path, std::uint64_t budgetBytes,
+                    std::uint64_t fileBytes, F&& f) -> decltype(f()) {
     AllocationBudget budget(budgetBytes, vdbSingleAllocationLimit(fileBytes));
     try {
         return f();

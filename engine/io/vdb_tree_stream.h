@@ -13,13 +13,12 @@
 // world without ever building an OpenVDB tree.
 #pragma once
 
-#include <openvdb/openvdb.h>
-
 #include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <istream>
 #include <memory>
+#include <openvdb/openvdb.h>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -45,7 +44,8 @@ public:
     // Called for each leaf in value order: return true to receive its values (then onValues),
     // false to skip them.
     using LeafFn = std::function<bool(const openvdb::Coord& origin, const LeafMask& mask)>;
-    using ValuesFn = std::function<void(const openvdb::Coord& origin, const LeafMask& mask, const ValueT* values)>;
+    using ValuesFn = std::function<void(const openvdb::Coord& origin, const LeafMask& mask,
+                                        const ValueT* values)>;
 
     struct RootChild {
         openvdb::Coord origin;
@@ -61,12 +61,16 @@ public:
     // half-float, class). Reports the root's tiles (stream() reports the rest); tiles equal to
     // the background and inactive are not reported. Throws on damaged topology. A callback that
     // sets *stop ends the walk early (a partial Root), reading nothing more.
-    static Root walk(std::istream& is, std::uint32_t version, bool fromHalf, std::uint64_t fileBytes,
-                     const openvdb::CoordBBox* clip, const TileFn& tile, const bool* stop = nullptr) {
+    static Root walk(std::istream& is, std::uint32_t version, bool fromHalf,
+                     std::uint64_t fileBytes, const openvdb::CoordBBox* clip, const TileFn& tile,
+                     const bool* stop = nullptr) {
         namespace vdb = openvdb;
-        std::int32_t buffers = 0;  // TreeBase::readTopology(): always 1 since OpenVDB 3 (it only warns otherwise)
+        std::int32_t buffers =
+            0;  // TreeBase::readTopology(): always 1 since OpenVDB 3 (it only warns otherwise)
         is.read(reinterpret_cast<char*>(&buffers), sizeof(buffers));
-        if (buffers != 1) throw vdb::IoError("multi-buffer trees are not supported (" + std::to_string(buffers) + " buffers)");
+        if (buffers != 1)
+            throw vdb::IoError("multi-buffer trees are not supported (" + std::to_string(buffers) +
+                               " buffers)");
         Root root;
         ValueT& background = root.background;
         is.read(reinterpret_cast<char*>(&background), sizeof(ValueT));
@@ -84,10 +88,12 @@ public:
             throw std::ios_base::failure("root node counts run past the end of the file");
 
         // Root entries are keyed by origin: each must be aligned to its node size and, for
-        // children, unique (OpenVDB overwrites a child with a later one of the same key and leaks it).
+        // children, unique (OpenVDB overwrites a child with a later one of the same key and leaks
+        // it).
         using ChildT = typename RootT::ChildNodeType;
         auto aligned = [](const std::int32_t v[3]) {
-            return (v[0] & (ChildT::DIM - 1)) == 0 && (v[1] & (ChildT::DIM - 1)) == 0 && (v[2] & (ChildT::DIM - 1)) == 0;
+            return (v[0] & (ChildT::DIM - 1)) == 0 && (v[1] & (ChildT::DIM - 1)) == 0 &&
+                   (v[2] & (ChildT::DIM - 1)) == 0;
         };
         TreeBytes& bytes = root.bytes;
         bytes.nodes = std::uint64_t(tiles) * 96;  // a std::map entry per root tile
@@ -101,16 +107,21 @@ public:
             is.read(reinterpret_cast<char*>(&active), sizeof(bool));
             if (!aligned(origin)) throw vdb::IoError("a root tile is not aligned to its node size");
             if (tile && (active || !vdb::math::isExactlyEqual(value, background)))
-                tile(vdb::CoordBBox::createCube(vdb::Coord(origin[0], origin[1], origin[2]), ChildT::DIM), value, active);
+                tile(vdb::CoordBBox::createCube(vdb::Coord(origin[0], origin[1], origin[2]),
+                                                ChildT::DIM),
+                     value, active);
         }
         for (vdb::Index n = 0; n < children; ++n) {
             if (stop && *stop) return root;
             std::int32_t origin[3];
             is.read(reinterpret_cast<char*>(origin), sizeof(origin));
-            if (!aligned(origin)) throw vdb::IoError("a root child is not aligned to its node size");
+            if (!aligned(origin))
+                throw vdb::IoError("a root child is not aligned to its node size");
             bytes.nodes += 96;
-            RootChild child{vdb::Coord(origin[0], origin[1], origin[2]), std::streamoff(is.tellg())};
-            walkNode<ChildT>(is, version, fromHalf, child.origin, background, clip, TileFn(), nullptr, bytes);
+            RootChild child{vdb::Coord(origin[0], origin[1], origin[2]),
+                            std::streamoff(is.tellg())};
+            walkNode<ChildT>(is, version, fromHalf, child.origin, background, clip, TileFn(),
+                             nullptr, bytes);
             root.children.push_back(child);
         }
         // OpenVDB reads values in the order of its root table (sorted by origin), which is the
@@ -128,9 +139,9 @@ public:
     // Tiles below the root are reported here (root tiles were reported by walk()).
     // `values` may be null when no leaf is wanted (a walk for the leaves' masks only). A callback
     // that sets *stop ends the walk at the next node, reading nothing more.
-    static void stream(std::istream& topology, std::istream* values, std::uint32_t version, bool fromHalf,
-                       const Root& root, const TileFn& tile, const LeafFn& wanted, const ValuesFn& onValues,
-                       const bool* stop = nullptr) {
+    static void stream(std::istream& topology, std::istream* values, std::uint32_t version,
+                       bool fromHalf, const Root& root, const TileFn& tile, const LeafFn& wanted,
+                       const ValuesFn& onValues, const bool* stop = nullptr) {
         namespace vdb = openvdb;
         vdb::io::setGridBackgroundValuePtr(topology, &root.background);
         if (values) vdb::io::setGridBackgroundValuePtr(*values, &root.background);
@@ -148,8 +159,8 @@ public:
         for (const RootChild& child : root.children) {
             if (visit.stopped()) return;
             topology.seekg(child.topology);
-            walkNode<typename RootT::ChildNodeType>(topology, version, fromHalf, child.origin, root.background, nullptr,
-                                                    tile, &visit, unused);
+            walkNode<typename RootT::ChildNodeType>(topology, version, fromHalf, child.origin,
+                                                    root.background, nullptr, tile, &visit, unused);
         }
     }
 
@@ -168,27 +179,32 @@ private:
         void operator()(const openvdb::Coord& origin, const LeafMask& mask) const {
             const bool want = wanted(origin, mask);
             if (!values) return;
-            values->seekg(std::streamoff(mask.memUsage()), std::ios_base::cur);  // the stored copy of the mask
+            values->seekg(std::streamoff(mask.memUsage()),
+                          std::ios_base::cur);  // the stored copy of the mask
             if (want) {
                 openvdb::io::readCompressedValues(*values, buffer, LeafT::SIZE, mask, fromHalf);
                 onValues(origin, mask, buffer);
             } else {
-                openvdb::io::readCompressedValues<ValueT, LeafMask>(*values, nullptr, LeafT::SIZE, mask, fromHalf);
+                openvdb::io::readCompressedValues<ValueT, LeafMask>(*values, nullptr, LeafT::SIZE,
+                                                                    mask, fromHalf);
             }
         }
     };
 
     template <typename NodeT>
-    static void walkNode(std::istream& is, std::uint32_t version, bool fromHalf, const openvdb::Coord& origin,
-                         const ValueT& background, const openvdb::CoordBBox* clip, const TileFn& tile,
+    static void walkNode(std::istream& is, std::uint32_t version, bool fromHalf,
+                         const openvdb::Coord& origin, const ValueT& background,
+                         const openvdb::CoordBBox* clip, const TileFn& tile,
                          const LeafVisit* leaves, TreeBytes& bytes) {
         namespace vdb = openvdb;
         typename NodeT::NodeMaskType valueMask;
         bytes.nodes += sizeof(NodeT) + 16;  // the node and malloc's header
         if constexpr (NodeT::LEVEL == 0) {
             valueMask.load(is);
-            constexpr bool inlineValues = std::is_same_v<ValueT, bool>;  // bool and mask leaves are bit sets
-            if (!inlineValues && clip && clip->hasOverlap(vdb::CoordBBox::createCube(origin, NodeT::DIM)))
+            constexpr bool inlineValues =
+                std::is_same_v<ValueT, bool>;  // bool and mask leaves are bit sets
+            if (!inlineValues && clip &&
+                clip->hasOverlap(vdb::CoordBBox::createCube(origin, NodeT::DIM)))
                 bytes.leafValues += NodeT::SIZE * sizeof(ValueT) + 16;
             if (leaves) (*leaves)(origin, valueMask);
         } else {
@@ -216,13 +232,15 @@ private:
                     const bool active = valueMask.isOn(pos);
                     if (!oldVersion) ++v;
                     if (active || !vdb::math::isExactlyEqual(value, background))
-                        tile(vdb::CoordBBox::createCube(childOrigin(pos), ChildT::DIM), value, active);
+                        tile(vdb::CoordBBox::createCube(childOrigin(pos), ChildT::DIM), value,
+                             active);
                 }
             }
             values.reset();
             for (auto it = childMask.beginOn(); it; ++it) {
                 if (leaves && leaves->stopped()) return;
-                walkNode<ChildT>(is, version, fromHalf, childOrigin(it.pos()), background, clip, tile, leaves, bytes);
+                walkNode<ChildT>(is, version, fromHalf, childOrigin(it.pos()), background, clip,
+                                 tile, leaves, bytes);
             }
         }
     }

@@ -21,16 +21,19 @@ namespace engine::io {
 struct VoxExportReport {
     std::size_t models = 0;
     std::uint64_t solidVoxels = 0;
-    int colours = 0;          // palette indices used
-    int emissive = 0;         // of them, with a MATL _emit
-    bool quantised = false;   // more than 255 distinct colours: albedos quantised
-    std::uint64_t changedVoxels = 0;  // voxels whose colour or emission the .vox cannot keep exactly
-    double meanColourError = 0.0;     // linear RGB distance, per voxel (quantised exports)
+    int colours = 0;         // palette indices used
+    int emissive = 0;        // of them, with a MATL _emit
+    bool quantised = false;  // more than 255 distinct colours: albedos quantised
+    std::uint64_t changedVoxels =
+        0;                         // voxels whose colour or emission the .vox cannot keep exactly
+    double meanColourError = 0.0;  // linear RGB distance, per voxel (quantised exports)
     double maxColourError = 0.0;
-    std::uint64_t emissionColourDiffers = 0;  // emissive voxels whose emission colour is not their albedo
+    std::uint64_t emissionColourDiffers =
+        0;  // emissive voxels whose emission colour is not their albedo
     std::uint64_t fileBytes = 0;
 };
 
-Status exportVox(const world::Scene& scene, const std::filesystem::path& path, VoxExportReport* report = nullptr);
+Status exportVox(const world::Scene& scene, const std::filesystem::path& path,
+                 VoxExportReport* report = nullptr);
 
 }  // namespace engine::io

@@ -23,7 +23,8 @@ namespace engine::io {
 
 inline constexpr float kVoxEmissionScale = 4.0f;
 inline constexpr std::uint64_t kDefaultVoxMemoryBudget = 4ull << 30;
-inline constexpr std::uint64_t kVoxMaxPlacedVoxels = 1ull << 31;  // voxels written, overlaps included
+inline constexpr std::uint64_t kVoxMaxPlacedVoxels = 1ull
+                                                     << 31;  // voxels written, overlaps included
 
 // sRGB 8-bit colour (R in the low byte) to linear albedo, and back (rounded to nearest); the pair
 // is exact: voxColourFromLinear(voxColourToLinear(c)) == c for every RGB byte triple.
@@ -46,25 +47,27 @@ struct VoxImportReport {
     std::size_t models = 0, instances = 0, graphNodes = 0, layers = 0, hiddenLayers = 0;
     bool defaultPalette = false;
     std::size_t materials = 0, emissiveMaterials = 0;  // colour indices in use
-    std::uint64_t placedVoxels = 0;                     // over all instances, overlaps included
-    glm::ivec3 contentSize{0};                          // of the placed voxels, engine axes
+    std::uint64_t placedVoxels = 0;                    // over all instances, overlaps included
+    glm::ivec3 contentSize{0};                         // of the placed voxels, engine axes
     glm::ivec3 worldSize{0};
     std::uint64_t estimateBytes = 0, budgetBytes = 0;
-    std::uint64_t solidVoxels = 0;  // in the world after the import
+    std::uint64_t solidVoxels = 0;       // in the world after the import
     std::uint64_t peakTrackedBytes = 0;  // heap peak seen by the allocation budget
     std::vector<std::string> notes;
 };
 
-Result<VoxImportReport> planVoxImport(const std::filesystem::path& path, const VoxImportOptions& options = {});
+Result<VoxImportReport> planVoxImport(const std::filesystem::path& path,
+                                      const VoxImportOptions& options = {});
 
 // A new scene holding the import; named after the file, voxel size 1.
-Result<world::Scene> importVox(const std::filesystem::path& path, const VoxImportOptions& options = {},
+Result<world::Scene> importVox(const std::filesystem::path& path,
+                               const VoxImportOptions& options = {},
                                VoxImportReport* report = nullptr);
 
 // Into an existing scene (the scene-file generator): voxels overwrite the scene's, clipped to its
 // bounds; materials merge into its palette by name (the scene's definition wins).
-Status importVoxInto(world::Scene& scene, const std::filesystem::path& path, const VoxImportOptions& options = {},
-                     VoxImportReport* report = nullptr);
+Status importVoxInto(world::Scene& scene, const std::filesystem::path& path,
+                     const VoxImportOptions& options = {}, VoxImportReport* report = nullptr);
 
 std::string formatVoxImportReport(const VoxImportReport& report, bool planned);
 

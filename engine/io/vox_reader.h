@@ -10,19 +10,19 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <glm/glm.hpp>
 #include <map>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include <glm/glm.hpp>
-
 #include "core/error.h"
 
 namespace engine::io {
 
-inline constexpr int kVoxMaxModelSize = 256;  // MagicaVoxel's limit per axis (XYZI coordinates are bytes)
+inline constexpr int kVoxMaxModelSize =
+    256;  // MagicaVoxel's limit per axis (XYZI coordinates are bytes)
 
 struct VoxVoxel {
     std::uint8_t x, y, z, colour;  // colour: palette index 1..255
@@ -79,8 +79,9 @@ struct VoxMaterial {
 struct VoxFile {
     int version = 0;
     std::vector<VoxModel> models;
-    std::array<std::uint32_t, 256> palette{};  // [i] = colour index i, 0xAABBGGRR (R in the low byte)
-    bool hasPalette = false;                   // false: MagicaVoxel's default palette
+    std::array<std::uint32_t, 256>
+        palette{};            // [i] = colour index i, 0xAABBGGRR (R in the low byte)
+    bool hasPalette = false;  // false: MagicaVoxel's default palette
     std::map<int, VoxNode> nodes;
     std::map<int, VoxLayer> layers;
     std::map<int, VoxMaterial> materials;  // by colour index

@@ -6,7 +6,8 @@
 
 namespace engine::lighting {
 
-std::vector<shared::AliasEntry> buildAliasTable(std::span<const std::uint32_t> slots, std::span<const double> weights) {
+std::vector<shared::AliasEntry> buildAliasTable(std::span<const std::uint32_t> slots,
+                                                std::span<const double> weights) {
     CHECK(slots.size() == weights.size());
     const std::size_t n = weights.size();
     const double total = std::accumulate(weights.begin(), weights.end(), 0.0);

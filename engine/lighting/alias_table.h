@@ -10,6 +10,7 @@
 namespace engine::lighting {
 
 // entries[i] describes slot slots[i]; weights must be >= 0 with a positive sum (else empty).
-std::vector<shared::AliasEntry> buildAliasTable(std::span<const std::uint32_t> slots, std::span<const double> weights);
+std::vector<shared::AliasEntry> buildAliasTable(std::span<const std::uint32_t> slots,
+                                                std::span<const double> weights);
 
 }  // namespace engine::lighting

@@ -64,7 +64,8 @@ private:
         world::MaterialId material;
     };
     void scanCell(const world::Scene& scene, glm::ivec3 cell, std::vector<Candidate>& out) const;
-    void rescanCell(const world::Scene& scene, std::size_t cellIndex, glm::ivec3 cell, EmitterUpdateStats& stats);
+    void rescanCell(const world::Scene& scene, std::size_t cellIndex, glm::ivec3 cell,
+                    EmitterUpdateStats& stats);
     std::uint32_t allocateSlot();
     void freeSlot(std::uint32_t slot);
     void writeSlot(std::uint32_t slot, const Candidate& c, const world::Palette& palette);
@@ -76,9 +77,10 @@ private:
 
     std::vector<shared::GpuEmitter> mSlots;
     std::vector<std::uint32_t> mFreeSlots;
-    std::vector<std::uint32_t> mAlive;         // alive slots, any order
+    std::vector<std::uint32_t> mAlive;          // alive slots, any order
     std::vector<std::uint32_t> mAlivePosition;  // slot -> index in mAlive
-    std::unordered_map<std::uint32_t, std::vector<std::uint32_t>> mCellSlots;  // cell index -> slots
+    std::unordered_map<std::uint32_t, std::vector<std::uint32_t>>
+        mCellSlots;  // cell index -> slots
     double mTotalPower = 0.0;
 
     std::vector<shared::AliasEntry> mAlias;

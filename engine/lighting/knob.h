@@ -24,7 +24,8 @@ enum class KnobKind {
 };
 
 struct Knob {
-    std::string_view name;  // scene-file key; the command line spells it --PREFIX-NAME with '-' for '_'
+    std::string_view
+        name;  // scene-file key; the command line spells it --PREFIX-NAME with '-' for '_'
     std::string_view help;
     KnobKind kind = KnobKind::Count;
     double min = 0.0, max = 0.0;

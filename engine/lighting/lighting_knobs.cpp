@@ -534,9 +534,15 @@ const Knob kExposure[] = {
 };
 
 const KnobGroup kGroups[] = {
-    {"lighting", "", kLighting},   {"emitters", "", kEmitters},   {"restir", "", kRestir},
-    {"baselines", "", kBaselines}, {"reference", "", kReference}, {"cache", "cache-", kCache},
-    {"path", "", kPath},           {"regir", "", kRegir},         {"vct", "", kVct},
+    {"lighting", "", kLighting},
+    {"emitters", "", kEmitters},
+    {"restir", "", kRestir},
+    {"baselines", "", kBaselines},
+    {"reference", "", kReference},
+    {"cache", "cache-", kCache},
+    {"path", "", kPath},
+    {"regir", "", kRegir},
+    {"vct", "", kVct},
     {"accumulation", "", kAccumulation},
     {"exposure", "", kExposure},
 };

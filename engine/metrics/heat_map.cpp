@@ -1,10 +1,9 @@
 #include "metrics/heat_map.h"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <fmt/format.h>
 #include <string>
 
 #include "core/bitmap_font.h"

@@ -35,7 +35,8 @@ SeedSummary summarize(std::span<const double> values) {
     return s;
 }
 
-std::vector<double> perSeedRatios(std::span<const double> numerator, std::span<const double> denominator) {
+std::vector<double> perSeedRatios(std::span<const double> numerator,
+                                  std::span<const double> denominator) {
     std::vector<double> out;
     for (std::size_t i = 0; i < std::min(numerator.size(), denominator.size()); ++i) {
         if (denominator[i] == 0.0 || !std::isfinite(denominator[i])) continue;

@@ -12,9 +12,10 @@ namespace engine::metrics {
 
 struct SeedSummary {
     std::size_t count = 0;
-    double median = 0.0;          // the middle value; the mean of the middle two for an even count
-    double q1 = 0.0, q3 = 0.0;    // quartiles, linear interpolation between order statistics
-    double min = 0.0, max = 0.0;  // the spread the docs print (with 5 seeds the quartiles are shaky)
+    double median = 0.0;        // the middle value; the mean of the middle two for an even count
+    double q1 = 0.0, q3 = 0.0;  // quartiles, linear interpolation between order statistics
+    double min = 0.0,
+           max = 0.0;  // the spread the docs print (with 5 seeds the quartiles are shaky)
 };
 
 // Summary of the values (empty input: all zero). NaN values are kept out and not counted.
@@ -22,6 +23,7 @@ SeedSummary summarize(std::span<const double> values);
 
 // Per-seed ratios numerator[i] / denominator[i] over the seeds both have (the shorter length);
 // a pair with a zero or non-finite denominator is left out.
-std::vector<double> perSeedRatios(std::span<const double> numerator, std::span<const double> denominator);
+std::vector<double> perSeedRatios(std::span<const double> numerator,
+                                  std::span<const double> denominator);
 
 }  // namespace engine::metrics

@@ -34,7 +34,8 @@ glm::vec3 cameraRayDirection(const shared::FrameParams& f, glm::uvec2 pixel) {
 glm::vec3 cameraRayDirectionAt(const shared::FrameParams& f, glm::vec2 imagePosition) {
     glm::vec2 ndc = imagePosition / glm::vec2(f.imageSize.x, f.imageSize.y) * 2.0f - 1.0f;
     float tanHalf = f.cameraPosition.w;
-    glm::vec3 d = glm::vec3(f.cameraForward) + glm::vec3(f.cameraRight) * (ndc.x * tanHalf * f.cameraForward.w) -
+    glm::vec3 d = glm::vec3(f.cameraForward) +
+                  glm::vec3(f.cameraRight) * (ndc.x * tanHalf * f.cameraForward.w) -
                   glm::vec3(f.cameraUp) * (ndc.y * tanHalf);
     return glm::normalize(d);
 }

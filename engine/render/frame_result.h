@@ -21,7 +21,7 @@ struct FrameResult {
     double emitterUpdateMs = 0.0;  // CPU time of the emitter list update
     double dynamicUpdateMs = 0.0;  // CPU time of posing and re-voxelising dynamic objects
     std::uint32_t emitters = 0;
-    std::uint32_t referenceSamples = 0;  // samples per pixel accumulated so far (reference)
+    std::uint32_t referenceSamples = 0;   // samples per pixel accumulated so far (reference)
     std::uint32_t accumulatedFrames = 0;  // frames in the lit image's running mean (accumulate)
     bool cacheUsed = false;
     // The cache had no visible set yet: the first submission waited for the G-buffer.

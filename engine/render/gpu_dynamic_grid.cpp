@@ -40,7 +40,8 @@ std::uint64_t GpuDynamicGrid::sync(const world::DynamicGrid& grid, gpu::Uploader
     h.sizeInCells = glm::ivec4(g.sizeInCells(), 0);
     h.sizeInVoxels = glm::ivec4(g.sizeInVoxels(), 0);
     h.sizeInSuperCells = glm::ivec4(g.sizeInSuperCells(), 0);
-    std::size_t words = shared::DYNAMIC_HEADER_TEXELS;  // offsets count texels from the buffer's start
+    std::size_t words =
+        shared::DYNAMIC_HEADER_TEXELS;   // offsets count texels from the buffer's start
     h.offsets.x = std::uint32_t(words);  // right after the header: shaders take that for granted
     words = align4(words + supers.size());
     h.offsets.y = std::uint32_t(words);
@@ -61,10 +62,10 @@ std::uint64_t GpuDynamicGrid::sync(const world::DynamicGrid& grid, gpu::Uploader
     std::copy(supers.begin(), supers.end(), w + h.offsets.x);
     std::copy(cellWords.begin(), cellWords.end(), w + h.offsets.y);
     for (std::size_t i = 0; i < bricks.size(); ++i) {
-        std::memcpy(w + h.offsets.z + i * shared::BRICK_MASK_WORDS, g.brickMask(bricks[i]).words.data(),
-                    shared::BRICK_MASK_WORDS * 4u);
-        std::memcpy(w + h.offsets.w + i * shared::BRICK_MATERIAL_WORDS, g.brickVoxels(bricks[i]).data(),
-                    shared::BRICK_MATERIAL_WORDS * 4u);
+        std::memcpy(w + h.offsets.z + i * shared::BRICK_MASK_WORDS,
+                    g.brickMask(bricks[i]).words.data(), shared::BRICK_MASK_WORDS * 4u);
+        std::memcpy(w + h.offsets.w + i * shared::BRICK_MATERIAL_WORDS,
+                    g.brickVoxels(bricks[i]).data(), shared::BRICK_MATERIAL_WORDS * 4u);
     }
     for (std::size_t i = 0; i < grid.instances.size(); ++i) {
         const world::DynamicInstance& inst = grid.instances[i];
@@ -91,7 +92,8 @@ std::uint64_t GpuDynamicGrid::sync(const world::DynamicGrid& grid, gpu::Uploader
 }
 
 void GpuDynamicGrid::allocate(std::uint64_t bytes) {
-    gpu::Buffer bigger(mCtx, gpu::BufferKind::Storage, std::max<std::uint64_t>(bytes, 4096), "world.dynamicGrid");
+    gpu::Buffer bigger(mCtx, gpu::BufferKind::Storage, std::max<std::uint64_t>(bytes, 4096),
+                       "world.dynamicGrid");
     bigger.setTexelFormat(VK_FORMAT_R32_UINT);
     mBuffer = std::move(bigger);
 }

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <bit>
-#include <string>
 #include <cstring>
+#include <string>
 
 #include "gpu/context.h"
 #include "gpu/texel_buffer_limit.h"
@@ -20,11 +20,14 @@ static_assert(sizeof(world::BrickVoxels) == kMaterialBytes);
 static_assert(sizeof(world::BrickMask) == kMaskBytes);
 
 std::uint32_t pagesFor(std::uint32_t brickCapacity) {
-    return std::max<std::uint32_t>(1, (brickCapacity + shared::BRICK_PAGE_BRICKS - 1) >> shared::BRICK_PAGE_SHIFT);
+    return std::max<std::uint32_t>(
+        1, (brickCapacity + shared::BRICK_PAGE_BRICKS - 1) >> shared::BRICK_PAGE_SHIFT);
 }
 
-bool samePalette(const std::vector<shared::GpuMaterial>& a, const std::vector<shared::GpuMaterial>& b) {
-    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(shared::GpuMaterial)) == 0;
+bool samePalette(const std::vector<shared::GpuMaterial>& a,
+                 const std::vector<shared::GpuMaterial>& b) {
+    return a.size() == b.size() &&
+           std::memcmp(a.data(), b.data(), a.size() * sizeof(shared::GpuMaterial)) == 0;
 }
 }  // namespace
 
@@ -36,17 +39,21 @@ WorldUploadStats GpuWorld::sync(const world::Scene& scene, gpu::Uploader& upload
 
     // The grid texels (below) must fit one texel view: refused before anything is allocated or
     // changed, so a world over the device's limit leaves the GPU copy as it was.
-    const std::uint64_t pages = std::max<std::uint64_t>(mPages.size(), pagesFor(grid.brickCapacity()));
-    gpu::checkTexelCount(mCtx, grid.cells().size() + grid.superCells().size() + pages * shared::BRICK_PAGE_BRICKS * shared::BRICK_MASK_WORDS,
+    const std::uint64_t pages =
+        std::max<std::uint64_t>(mPages.size(), pagesFor(grid.brickCapacity()));
+    gpu::checkTexelCount(mCtx,
+                         grid.cells().size() + grid.superCells().size() +
+                             pages * shared::BRICK_PAGE_BRICKS * shared::BRICK_MASK_WORDS,
                          "world '" + scene.name + "'");
 
     std::vector<shared::GpuMaterial> palette = scene.palette.toGpu();
     if (!samePalette(palette, mUploadedPalette)) {
         std::uint64_t bytes = palette.size() * sizeof(shared::GpuMaterial);
-        if (!mPalette.valid() || mPalette.size() < bytes)
-        {
-            mPalette = gpu::Buffer(mCtx, gpu::BufferKind::Storage, std::max<std::uint64_t>(bytes, 64 * 48), "world.palette");
-            mPalette.setTexelFormat(VK_FORMAT_R32G32B32A32_UINT);  // GpuMaterial: 3 texels (materialAlbedo)
+        if (!mPalette.valid() || mPalette.size() < bytes) {
+            mPalette = gpu::Buffer(mCtx, gpu::BufferKind::Storage,
+                                   std::max<std::uint64_t>(bytes, 64 * 48), "world.palette");
+            mPalette.setTexelFormat(
+                VK_FORMAT_R32G32B32A32_UINT);  // GpuMaterial: 3 texels (materialAlbedo)
         }
         uploader.write(mPalette, 0, palette.data(), bytes);
         stats.bytes += bytes;
@@ -58,7 +65,8 @@ WorldUploadStats GpuWorld::sync(const world::Scene& scene, gpu::Uploader& upload
     // the pages' masks that the traversal reads as texels, without the page table). More pages
     // outgrow the mask copy: then everything is uploaded again, as for a new world.
     const std::uint64_t gridTexelBytes = grid.cells().size_bytes() + grid.superCells().size_bytes();
-    const std::uint64_t texelBytes = gridTexelBytes + mPages.size() * shared::BRICK_PAGE_BRICKS * kMaskBytes;
+    const std::uint64_t texelBytes =
+        gridTexelBytes + mPages.size() * shared::BRICK_PAGE_BRICKS * kMaskBytes;
     if (needsFullUpload(grid) || mCells.size() != texelBytes) {
         // A new or resized world: upload the top grid and every live brick.
         stats.full = true;
@@ -67,7 +75,8 @@ WorldUploadStats GpuWorld::sync(const world::Scene& scene, gpu::Uploader& upload
         std::span<const std::uint32_t> supers = grid.superCells();
         mCells = gpu::Buffer(mCtx, gpu::BufferKind::Storage, texelBytes, "world.cells");
         mCells.setTexelFormat(VK_FORMAT_R32_UINT);
-        mInfo = gpu::Buffer(mCtx, gpu::BufferKind::Storage, sizeof(shared::BrickGridInfo), "world.info");
+        mInfo = gpu::Buffer(mCtx, gpu::BufferKind::Storage, sizeof(shared::BrickGridInfo),
+                            "world.info");
         uploader.write(mCells, cells.size_bytes(), supers.data(), supers.size_bytes());
         stats.bytes += supers.size_bytes();
         uploader.write(mCells, 0, cells.data(), cells.size_bytes());
@@ -123,36 +132,40 @@ void GpuWorld::ensurePages(std::uint32_t brickCapacity, gpu::Uploader& uploader)
     std::uint64_t tableBytes = std::uint64_t(needed) * sizeof(std::uint64_t);
     if (!mPageTable.valid() || mPageTable.size() < tableBytes) {
         std::uint64_t capacity = std::max<std::uint64_t>(64, std::bit_ceil(std::uint64_t(needed)));
-        mPageTable = gpu::Buffer(mCtx, gpu::BufferKind::Storage, capacity * sizeof(std::uint64_t), "world.pageTable");
+        mPageTable = gpu::Buffer(mCtx, gpu::BufferKind::Storage, capacity * sizeof(std::uint64_t),
+                                 "world.pageTable");
         mPageTable.setTexelFormat(VK_FORMAT_R32G32_UINT);
     }
     while (mPages.size() < needed) {
-        mPages.emplace_back(mCtx, gpu::BufferKind::Storage, kPageBytes, "world.brickPage" + std::to_string(mPages.size()));
+        mPages.emplace_back(mCtx, gpu::BufferKind::Storage, kPageBytes,
+                            "world.brickPage" + std::to_string(mPages.size()));
     }
     std::vector<std::uint64_t> addresses;
     for (const gpu::Buffer& page : mPages) addresses.push_back(page.deviceAddress());
     uploader.write(mPageTable, 0, addresses.data(), addresses.size() * sizeof(std::uint64_t));
 }
 
-void GpuWorld::uploadBricks(const world::BrickGrid& grid, std::vector<std::uint32_t>& bricks, gpu::Uploader& uploader) {
+void GpuWorld::uploadBricks(const world::BrickGrid& grid, std::vector<std::uint32_t>& bricks,
+                            gpu::Uploader& uploader) {
     // Sorted, masks first and materials second: runs of neighbouring bricks then merge into one
     // copy region each (the uploader joins adjacent regions).
     std::sort(bricks.begin(), bricks.end());
     for (std::uint32_t brick : bricks) {
         std::uint64_t local = brick & (shared::BRICK_PAGE_BRICKS - 1u);
-        uploader.write(mPages[brick >> shared::BRICK_PAGE_SHIFT], local * kMaskBytes, grid.brickMask(brick).words.data(),
-                       kMaskBytes);
+        uploader.write(mPages[brick >> shared::BRICK_PAGE_SHIFT], local * kMaskBytes,
+                       grid.brickMask(brick).words.data(), kMaskBytes);
     }
     const std::uint64_t maskTexels = grid.cells().size_bytes() + grid.superCells().size_bytes();
     for (std::uint32_t brick : bricks) {
-        uploader.write(mCells, maskTexels + std::uint64_t(brick) * kMaskBytes, grid.brickMask(brick).words.data(),
-                       kMaskBytes);
+        uploader.write(mCells, maskTexels + std::uint64_t(brick) * kMaskBytes,
+                       grid.brickMask(brick).words.data(), kMaskBytes);
     }
     for (std::uint32_t brick : bricks) {
         std::uint64_t local = brick & (shared::BRICK_PAGE_BRICKS - 1u);
-        uploader.write(mPages[brick >> shared::BRICK_PAGE_SHIFT],
-                       std::uint64_t(shared::BRICK_PAGE_MATERIAL_OFFSET) * 4u + local * kMaterialBytes,
-                       grid.brickVoxels(brick).data(), kMaterialBytes);
+        uploader.write(
+            mPages[brick >> shared::BRICK_PAGE_SHIFT],
+            std::uint64_t(shared::BRICK_PAGE_MATERIAL_OFFSET) * 4u + local * kMaterialBytes,
+            grid.brickVoxels(brick).data(), kMaterialBytes);
     }
 }
 

@@ -1,10 +1,7 @@
 #include "render/memory_plan.h"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <bit>
-
 #include <fmt/format.h>
 
 #include "core/memory_budget.h"

@@ -1,6 +1,7 @@
 // The [indirect] keys of scene/indirect_keys.h: `mode` is the lighting knob `indirect`, every
-// other key a knob of the cache's, the path term's or the cones' table (lighting/lighting_knobs.h), read and range-checked by
-// that table, so a scene file accepts exactly what the command line accepts.
+// other key a knob of the cache's, the path term's or the cones' table (lighting/lighting_knobs.h),
+// read and range-checked by that table, so a scene file accepts exactly what the command line
+// accepts.
 #include "scene/indirect_keys.h"
 
 #include <fmt/format.h>
@@ -38,10 +39,12 @@ void readIndirect(KeyReader& ind, const toml::node& table, world::Scene& scene) 
         const lighting::Knob* knob = indirectKnob(key.str());
         if (!knob) continue;  // KeyReader reports it as unknown
         const toml::node* n = ind.node(key.str());
-        if (Status ok = lighting::setKnob(*knob, s, valueText(value)); !ok) ind.fail(n, "indirect: {}", ok.error().message);
+        if (Status ok = lighting::setKnob(*knob, s, valueText(value)); !ok)
+            ind.fail(n, "indirect: {}", ok.error().message);
         scene.indirect.emplace_back(std::string(key.str()), knobText(*knob, s));
     }
-    if (Status ok = lighting::validate(s); !ok) ind.fail(&table, "indirect: {}", ok.error().message);
+    if (Status ok = lighting::validate(s); !ok)
+        ind.fail(&table, "indirect: {}", ok.error().message);
 }
 
 void writeIndirect(const world::Scene& scene, TomlWriter& out) {
@@ -53,15 +56,23 @@ void writeIndirect(const world::Scene& scene, TomlWriter& out) {
         if (!k || !setKnob(*k, s, text).ok()) continue;  // not from readIndirect: nothing to write
         const double v = k->get ? k->get(s) : 0.0;
         switch (k->kind) {
-            case lighting::KnobKind::Count: out.key(key, static_cast<std::uint32_t>(v)); break;
+            case lighting::KnobKind::Count:
+                out.key(key, static_cast<std::uint32_t>(v));
+                break;
             // In the shortest form that reads back exactly: a float's, or a double's for a value
             // no float holds (a budget in bytes that is no whole MiB).
             case lighting::KnobKind::Real:
-                if (static_cast<double>(static_cast<float>(v)) == v) out.key(key, static_cast<float>(v));
-                else out.key(key, v);
+                if (static_cast<double>(static_cast<float>(v)) == v)
+                    out.key(key, static_cast<float>(v));
+                else
+                    out.key(key, v);
                 break;
-            case lighting::KnobKind::Switch: out.key(key, v != 0.0); break;
-            default: out.key(key, text); break;
+            case lighting::KnobKind::Switch:
+                out.key(key, v != 0.0);
+                break;
+            default:
+                out.key(key, text);
+                break;
         }
     }
 }

@@ -1,11 +1,11 @@
 // The [path] reader and writer of scene/path_file.h.
 #include "scene/path_file.h"
 
-#include "scene/path_table.h"
-#include "world/scene.h"
-
 #include <string>
 #include <vector>
+
+#include "scene/path_table.h"
+#include "world/scene.h"
 
 namespace engine::scene {
 
@@ -60,7 +60,8 @@ TimelineEvent readEvent(const toml::node& node, double duration, std::string_vie
     } else if (type == "sphere") {
         ev.kind = TimelineEvent::Kind::Sphere;
         ev.center = e.vec3("center", {}, world::kCoordinateRange, true);
-        ev.radius = static_cast<float>(e.number("radius", 0.0, aboveRange(0.0, 32768.0, "voxels"), true));
+        ev.radius =
+            static_cast<float>(e.number("radius", 0.0, aboveRange(0.0, 32768.0, "voxels"), true));
         material();
     } else if (type == "voxel") {
         ev.kind = TimelineEvent::Kind::Voxel;

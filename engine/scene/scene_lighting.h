@@ -15,6 +15,7 @@ namespace engine::scene {
 // The scene's settings as knob values (its [indirect] mode and cache knobs).
 std::vector<lighting::KnobValue> sceneLightingValues(const world::Scene& scene);
 // Defaults, then the scene's values (when given), then `overrides`; normalised and validated.
-Result<lighting::LightingSettings> lightingFor(const world::Scene* scene, std::span<const lighting::KnobValue> overrides);
+Result<lighting::LightingSettings> lightingFor(const world::Scene* scene,
+                                               std::span<const lighting::KnobValue> overrides);
 
 }  // namespace engine::scene

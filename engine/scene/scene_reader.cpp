@@ -8,8 +8,8 @@
 
 #include "core/allocation_budget.h"
 #include "core/memory_budget.h"
-#include "scene/generator_registry.h"
 #include "lighting/lighting_knobs.h"
+#include "scene/generator_registry.h"
 #include "scene/indirect_keys.h"
 #include "scene/path_table.h"
 #include "scene/scene_file.h"
@@ -23,20 +23,25 @@ namespace {
 // Runs a generator within the memory budget less what the world holds already, so a world too
 // large for the machine fails with one line instead of aborting in an allocation. Importers
 // (vdb, vox) plan and budget their own reading.
-Status runWithinBudget(const GeneratorEntry& entry, const world::GeneratorRecord& record, world::Scene& scene) {
+Status runWithinBudget(const GeneratorEntry& entry, const world::GeneratorRecord& record,
+                       world::Scene& scene) {
     if (entry.type == "vdb" || entry.type == "vox") return entry.run(record.params, scene);
     const std::uint64_t budget = memoryBudgetBytes();
     const world::GridMemory m = scene.grid.memory();
-    const std::uint64_t held = m.topGridBytes + m.superGridBytes + m.brickPoolBytes + m.bookkeepingBytes;
+    const std::uint64_t held =
+        m.topGridBytes + m.superGridBytes + m.brickPoolBytes + m.bookkeepingBytes;
     const std::uint64_t left = budget > held ? budget - held : 0;
     try {
         AllocationBudget allocations(left, left);
         AllocationBudget::LargeAllocations large;
         return entry.run(record.params, scene);
     } catch (const std::bad_alloc&) {
-        return makeError("generator '{}' needs more memory than the budget of {:.0f} MiB allows (the world held {:.0f} "
-                         "MiB before it): make the world smaller, or {}",
-                         entry.type, double(budget) / (1 << 20), double(held) / (1 << 20), memoryBudgetAdvice(budget));
+        return makeError(
+            "generator '{}' needs more memory than the budget of {:.0f} MiB allows (the world held "
+            "{:.0f} "
+            "MiB before it): make the world smaller, or {}",
+            entry.type, double(budget) / (1 << 20), double(held) / (1 << 20),
+            memoryBudgetAdvice(budget));
     }
 }
 
@@ -147,7 +152,8 @@ private:
         if (!entry)
             fail(g.node("type"), "unknown generator '{}' (known: {})", type, knownGeneratorTypes());
         world::GeneratorRecord record{type, entry->parse(g)};
-        if (Status s = runWithinBudget(*entry, record, scene); !s) fail(&node, "{}", s.error().message);
+        if (Status s = runWithinBudget(*entry, record, scene); !s)
+            fail(&node, "{}", s.error().message);
         records.push_back(std::move(record));
     }
 
@@ -249,8 +255,10 @@ private:
         // move its last bits, and load -> write -> load would drift.
         scene.sky.sunDirection =
             std::abs(glm::length(dir) - 1.0f) > 1e-6f ? glm::normalize(dir) : dir;
-        scene.sky.sunRadiance = sky.vec3("sun_radiance", scene.sky.sunRadiance, world::kRadianceRange);
-        scene.sky.skyRadiance = sky.vec3("sky_radiance", scene.sky.skyRadiance, world::kRadianceRange);
+        scene.sky.sunRadiance =
+            sky.vec3("sun_radiance", scene.sky.sunRadiance, world::kRadianceRange);
+        scene.sky.skyRadiance =
+            sky.vec3("sky_radiance", scene.sky.skyRadiance, world::kRadianceRange);
         if (sky.has("sky_light")) {
             const toml::node* at = sky.node("sky_light");
             const lighting::Knob* knob = lighting::knobForOption("sky");

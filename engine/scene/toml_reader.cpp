@@ -30,7 +30,8 @@ KeyReader::~KeyReader() noexcept(false) {
 void KeyReader::finish() {
     mFinished = true;
     for (auto&& [key, node] : mTable) {
-        if (!mUsed.count(std::string(key.str()))) fail(&node, "unknown key '{}'", printableText(key.str()));
+        if (!mUsed.count(std::string(key.str())))
+            fail(&node, "unknown key '{}'", printableText(key.str()));
     }
 }
 
@@ -43,9 +44,11 @@ void KeyReader::acceptAll() {
     for (auto&& [key, node] : mTable) mUsed.insert(std::string(key.str()));
 }
 
-const std::string& KeyReader::printable(const toml::node* at, std::string_view key, const std::string& text) const {
+const std::string& KeyReader::printable(const toml::node* at, std::string_view key,
+                                        const std::string& text) const {
     if (printableText(text) != text)
-        fail(at, "'{}' must be printable text, without control characters: '{}'", key, printableText(text));
+        fail(at, "'{}' must be printable text, without control characters: '{}'", key,
+             printableText(text));
     return text;
 }
 
@@ -145,14 +148,14 @@ glm::vec3 KeyReader::vec3(std::string_view key, glm::vec3 fallback, const Number
                           bool required) {
     return glm::vec3(vector<3>(key, glm::dvec3(fallback), range, required));
 }
-glm::ivec2 KeyReader::ivec2(std::string_view key, glm::ivec2 fallback,
-                            const NumberRange& range, bool required) {
+glm::ivec2 KeyReader::ivec2(std::string_view key, glm::ivec2 fallback, const NumberRange& range,
+                            bool required) {
     NumberRange whole = range;
     whole.whole = true;
     return glm::ivec2(vector<2>(key, glm::dvec2(fallback), whole, required));
 }
-glm::ivec3 KeyReader::ivec3(std::string_view key, glm::ivec3 fallback,
-                            const NumberRange& range, bool required) {
+glm::ivec3 KeyReader::ivec3(std::string_view key, glm::ivec3 fallback, const NumberRange& range,
+                            bool required) {
     NumberRange whole = range;
     whole.whole = true;
     return glm::ivec3(vector<3>(key, glm::dvec3(fallback), whole, required));

@@ -3,15 +3,14 @@
 // parse and become a returned Error at its edge (parseToml); nothing throws past this layer.
 #pragma once
 
-#include <fmt/format.h>
-#include <toml++/toml.h>
-
 #include <filesystem>
+#include <fmt/format.h>
 #include <functional>
 #include <glm/glm.hpp>
 #include <set>
 #include <string>
 #include <string_view>
+#include <toml++/toml.h>
 #include <vector>
 
 #include "core/error.h"
@@ -42,7 +41,8 @@ Result<T> parseToml(std::string_view text, std::string_view source,
         toml::table root = toml::parse(text, source);
         return read(root);
     } catch (const toml::parse_error& e) {
-        return makeError("{}:{}: {}", source, e.source().begin.line, printableText(e.description()));
+        return makeError("{}:{}: {}", source, e.source().begin.line,
+                         printableText(e.description()));
     } catch (const ParseError& e) {
         return Error{e.message};
     }
@@ -105,7 +105,8 @@ private:
     glm::vec<N, double> vector(std::string_view key, glm::vec<N, double> fallback,
                                NumberRange range, bool required);
     void check(const toml::node* at, std::string_view name, double value, const NumberRange& range);
-    const std::string& printable(const toml::node* at, std::string_view key, const std::string& text) const;
+    const std::string& printable(const toml::node* at, std::string_view key,
+                                 const std::string& text) const;
 
     std::string mSource;
     const toml::table& mTable;

@@ -1,9 +1,8 @@
 #include "scene/world_pair.h"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <cstdint>
+#include <fmt/format.h>
 #include <fstream>
 #include <optional>
 #include <set>
@@ -107,9 +106,10 @@ bool sceneFileMarked(const fs::path& sceneFile, std::string_view marker) {
            first.compare(2, marker.size(), marker) == 0;
 }
 
-Status writeWorldPair(const world::Scene& scene, const fs::path& sceneFile,
-                      const std::function<std::string(const std::string& payloadFileName)>& sceneText,
-                      const WorldPairOptions& options) {
+Status writeWorldPair(
+    const world::Scene& scene, const fs::path& sceneFile,
+    const std::function<std::string(const std::string& payloadFileName)>& sceneText,
+    const WorldPairOptions& options) {
     // The scene file's temporary first: a scene path that is a folder (or in no folder) is
     // refused before any payload is written.
     AtomicFile sceneOut;

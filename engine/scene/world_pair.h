@@ -46,9 +46,10 @@ struct WorldPairOptions {
 };
 
 // `sceneText(payloadFileName)` gives the scene file's text for the payload's file name.
-Status writeWorldPair(const world::Scene& scene, const std::filesystem::path& sceneFile,
-                      const std::function<std::string(const std::string& payloadFileName)>& sceneText,
-                      const WorldPairOptions& options = {});
+Status writeWorldPair(
+    const world::Scene& scene, const std::filesystem::path& sceneFile,
+    const std::function<std::string(const std::string& payloadFileName)>& sceneText,
+    const WorldPairOptions& options = {});
 
 // What payload names begin with: the scene file's stem, shortened if needed so that
 // `STEM.object-HASH.vdb` and `STEM.N.vdb` fit in a folder entry.

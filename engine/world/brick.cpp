@@ -14,7 +14,8 @@ BrickMask BrickMask::build(const BrickVoxels& voxels) {
                 mask.words[i >> 5] |= 1u << (i & 31);
                 int b2 = (x >> 1) + 4 * (y >> 1) + 16 * (z >> 1);
                 mask.words[shared::MASK_COARSE_WORD + (b2 >> 5)] |= 1u << (b2 & 31);
-                mask.words[shared::MASK_QUARTER_WORD] |= 1u << ((x >> 2) + 2 * (y >> 2) + 4 * (z >> 2));
+                mask.words[shared::MASK_QUARTER_WORD] |=
+                    1u << ((x >> 2) + 2 * (y >> 2) + 4 * (z >> 2));
             }
         }
     }

@@ -22,7 +22,8 @@ BrickGrid::BrickGrid(glm::ivec3 sizeInVoxels) {
     mCellDirty.assign(count, 0);
     mCellTouched.assign(count, 0);
     mSizeInSuperCells = (mSizeInCells + 3) / 4;
-    std::size_t supers = static_cast<std::size_t>(mSizeInSuperCells.x) * mSizeInSuperCells.y * mSizeInSuperCells.z;
+    std::size_t supers =
+        static_cast<std::size_t>(mSizeInSuperCells.x) * mSizeInSuperCells.y * mSizeInSuperCells.z;
     mSuperCells.assign(supers, shared::SUPER_SKIP_MAX);  // all air
     mSuperCounts.assign(supers, 0);
     mSuperDirty.assign(supers, 0);
@@ -98,9 +99,9 @@ void BrickGrid::writeCellUniform(glm::ivec3 c, MaterialId material) {
 }
 
 std::uint32_t BrickGrid::homogeneousCells() const {
-    return static_cast<std::uint32_t>(std::count_if(mCells.begin(), mCells.end(), [](std::uint32_t v) {
-        return (v & shared::CELL_HOMOGENEOUS) != 0;
-    }));
+    return static_cast<std::uint32_t>(
+        std::count_if(mCells.begin(), mCells.end(),
+                      [](std::uint32_t v) { return (v & shared::CELL_HOMOGENEOUS) != 0; }));
 }
 
 std::uint64_t BrickGrid::solidVoxels() const {
@@ -140,9 +141,11 @@ GridMemory BrickGrid::memory() const {
     m.superGridBytes = mSuperCells.size() * sizeof(std::uint32_t) + mSuperCounts.size();
     m.brickPoolBytes = mBrickVoxels.size() * kBrickBytes;
     m.liveBrickBytes = liveBricks() * kBrickBytes;
-    m.bookkeepingBytes = mFreeBricks.size() * sizeof(std::uint32_t) + mBrickDirty.size() + mCellDirty.size() +
-                         mSuperDirty.size() + mCellTouched.size() + mTouchedCells.size() * sizeof(std::uint32_t) +
-                         (mDirtyBricks.size() + mDirtyCells.size() + mDirtySuperCells.size()) * sizeof(std::uint32_t);
+    m.bookkeepingBytes = mFreeBricks.size() * sizeof(std::uint32_t) + mBrickDirty.size() +
+                         mCellDirty.size() + mSuperDirty.size() + mCellTouched.size() +
+                         mTouchedCells.size() * sizeof(std::uint32_t) +
+                         (mDirtyBricks.size() + mDirtyCells.size() + mDirtySuperCells.size()) *
+                             sizeof(std::uint32_t);
     return m;
 }
 

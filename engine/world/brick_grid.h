@@ -8,10 +8,9 @@
 #pragma once
 
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <span>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "world/brick.h"
 #include "world/paged_pool.h"
@@ -32,9 +31,10 @@ struct Box {
 
 struct GridMemory {
     std::size_t topGridBytes = 0;
-    std::size_t superGridBytes = 0;  // skip distances and counts over 4^3 cells (5/256 of the top grid)
-    std::size_t brickPoolBytes = 0;  // capacity of the pool (live + free bricks), voxels + masks
-    std::size_t liveBrickBytes = 0;  // live bricks only
+    std::size_t superGridBytes =
+        0;  // skip distances and counts over 4^3 cells (5/256 of the top grid)
+    std::size_t brickPoolBytes = 0;    // capacity of the pool (live + free bricks), voxels + masks
+    std::size_t liveBrickBytes = 0;    // live bricks only
     std::size_t bookkeepingBytes = 0;  // free list and dirty flags
 };
 
@@ -49,7 +49,8 @@ public:
     Box bounds() const { return {glm::ivec3(0), sizeInVoxels()}; }
     bool contains(glm::ivec3 p) const { return bounds().contains(p); }
     bool containsCell(glm::ivec3 c) const {
-        return glm::all(glm::greaterThanEqual(c, glm::ivec3(0))) && glm::all(glm::lessThan(c, mSizeInCells));
+        return glm::all(glm::greaterThanEqual(c, glm::ivec3(0))) &&
+               glm::all(glm::lessThan(c, mSizeInCells));
     }
 
     // Voxel access. Reads outside the world return kEmpty; writes outside are ignored.
@@ -70,32 +71,41 @@ public:
     std::size_t superCellIndex(glm::ivec3 s) const {
         return static_cast<std::size_t>(s.x) +
                static_cast<std::size_t>(mSizeInSuperCells.x) *
-                   (static_cast<std::size_t>(s.y) + static_cast<std::size_t>(mSizeInSuperCells.y) * s.z);
+                   (static_cast<std::size_t>(s.y) +
+                    static_cast<std::size_t>(mSizeInSuperCells.y) * s.z);
     }
     std::span<const std::uint32_t> superCells() const { return mSuperCells; }
     std::span<const std::uint8_t> superCellCounts() const { return mSuperCounts; }
-    BrickVoxels readCell(glm::ivec3 c) const;           // expands homogeneous cells
+    BrickVoxels readCell(glm::ivec3 c) const;            // expands homogeneous cells
     void writeCell(glm::ivec3 c, const BrickVoxels& v);  // collapses uniform bricks
     void writeCellUniform(glm::ivec3 c, MaterialId material);
 
-    static bool cellIsBrick(std::uint32_t cell) { return cell != shared::CELL_EMPTY && !(cell & shared::CELL_HOMOGENEOUS); }
+    static bool cellIsBrick(std::uint32_t cell) {
+        return cell != shared::CELL_EMPTY && !(cell & shared::CELL_HOMOGENEOUS);
+    }
     static std::uint32_t cellBrick(std::uint32_t cell) { return cell - 1u; }
     static MaterialId cellMaterial(std::uint32_t cell) {
-        return cell == shared::CELL_EMPTY ? kEmpty : static_cast<MaterialId>(cell & shared::CELL_MATERIAL_MASK);
+        return cell == shared::CELL_EMPTY
+                   ? kEmpty
+                   : static_cast<MaterialId>(cell & shared::CELL_MATERIAL_MASK);
     }
 
     // Brick pool.
     const BrickVoxels& brickVoxels(std::uint32_t brick) const { return mBrickVoxels[brick]; }
     const BrickMask& brickMask(std::uint32_t brick) const { return mBrickMasks[brick]; }
     std::uint32_t brickCapacity() const { return static_cast<std::uint32_t>(mBrickVoxels.size()); }
-    std::uint32_t liveBricks() const { return brickCapacity() - static_cast<std::uint32_t>(mFreeBricks.size()); }
+    std::uint32_t liveBricks() const {
+        return brickCapacity() - static_cast<std::uint32_t>(mFreeBricks.size());
+    }
     std::uint32_t homogeneousCells() const;  // solid homogeneous cells (no storage)
     std::uint64_t solidVoxels() const;
     // Heap bytes of a pool of n bricks (voxels, masks, dirty flag), whole pages: what an importer
     // plans for its bricks.
     static std::uint64_t poolBytesFor(std::uint64_t bricks) {
-        const std::uint64_t pages = (bricks + shared::BRICK_PAGE_BRICKS - 1) / shared::BRICK_PAGE_BRICKS;
-        return pages * shared::BRICK_PAGE_BRICKS * (sizeof(BrickVoxels) + sizeof(BrickMask)) + bricks;
+        const std::uint64_t pages =
+            (bricks + shared::BRICK_PAGE_BRICKS - 1) / shared::BRICK_PAGE_BRICKS;
+        return pages * shared::BRICK_PAGE_BRICKS * (sizeof(BrickVoxels) + sizeof(BrickMask)) +
+               bricks;
     }
     // Reserves bookkeeping for n bricks (the pool itself grows by pages and never regrows).
     void reserveBricks(std::uint32_t n);
@@ -125,8 +135,8 @@ private:
     glm::ivec3 mSizeInCells;
     glm::ivec3 mSizeInSuperCells;
     std::vector<std::uint32_t> mCells;
-    std::vector<std::uint32_t> mSuperCells;   // skip distances (what the GPU reads)
-    std::vector<std::uint8_t> mSuperCounts;   // non-empty cells per super cell (0..64)
+    std::vector<std::uint32_t> mSuperCells;  // skip distances (what the GPU reads)
+    std::vector<std::uint8_t> mSuperCounts;  // non-empty cells per super cell (0..64)
     std::vector<std::uint8_t> mSuperDirty;
     std::vector<std::uint32_t> mDirtySuperCells;
     // Paged like the GPU's brick pool, so growth never copies the pool.

@@ -9,10 +9,9 @@
 #pragma once
 
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <span>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "world/brick_grid.h"
 #include "world/dynamic_object.h"
@@ -30,7 +29,7 @@ struct DynamicInstance {
 
 struct DynamicGrid {
     BrickGrid grid{glm::ivec3(8)};
-    glm::ivec3 origin{0};  // world voxel of grid voxel (0,0,0); brick-aligned
+    glm::ivec3 origin{0};                    // world voxel of grid voxel (0,0,0); brick-aligned
     std::vector<DynamicInstance> instances;  // one per object, in scene order
     std::uint64_t revision = 0;              // changes whenever the grid is rebuilt
 
@@ -44,6 +43,7 @@ DynamicGrid voxelizeObjects(std::span<const DynamicObject> objects);
 
 // Poses every object at `time` (current) and `prevTime` (previous) and rebuilds `grid` if any
 // pose changed (its revision then counts up). Returns whether it rebuilt.
-bool updateDynamicObjects(std::vector<DynamicObject>& objects, DynamicGrid& grid, double time, double prevTime);
+bool updateDynamicObjects(std::vector<DynamicObject>& objects, DynamicGrid& grid, double time,
+                          double prevTime);
 
 }  // namespace engine::world

@@ -2,9 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <utility>
-
 #include <glm/gtc/matrix_transform.hpp>
+#include <utility>
 
 #include "core/check.h"
 
@@ -20,7 +19,8 @@ glm::dquat rotationFromAxisAngle(glm::dvec3 axis, double degrees) {
     return glm::angleAxis(glm::radians(degrees), glm::normalize(axis));
 }
 
-ObjectPath::ObjectPath(std::vector<ObjectKey> keys, bool loop) : mKeys(std::move(keys)), mLoop(loop) {
+ObjectPath::ObjectPath(std::vector<ObjectKey> keys, bool loop)
+    : mKeys(std::move(keys)), mLoop(loop) {
     CHECK(!mKeys.empty());
     for (std::size_t i = 1; i < mKeys.size(); ++i) CHECK(mKeys[i].time > mKeys[i - 1].time);
     for (ObjectKey& k : mKeys) k.rotation = glm::normalize(k.rotation);
@@ -58,7 +58,8 @@ RigidTransform ObjectPath::at(double t) const {
     if (t <= first.time) return hold(first);
     if (t >= mKeys.back().time) return hold(mKeys.back());
 
-    auto after = std::upper_bound(mKeys.begin(), mKeys.end(), t, [](double v, const ObjectKey& k) { return v < k.time; });
+    auto after = std::upper_bound(mKeys.begin(), mKeys.end(), t,
+                                  [](double v, const ObjectKey& k) { return v < k.time; });
     std::size_t k = std::size_t(after - mKeys.begin()) - 1;
     const ObjectKey& k0 = mKeys[k];
     const ObjectKey& k1 = mKeys[k + 1];
@@ -69,7 +70,8 @@ RigidTransform ObjectPath::at(double t) const {
     double h00 = 2.0 * s3 - 3.0 * s2 + 1.0, h10 = s3 - 2.0 * s2 + s;
     double h01 = -2.0 * s3 + 3.0 * s2, h11 = s3 - s2;
     RigidTransform out;
-    out.position = h00 * k0.position + (h10 * dt) * tangent(k) + h01 * k1.position + (h11 * dt) * tangent(k + 1);
+    out.position = h00 * k0.position + (h10 * dt) * tangent(k) + h01 * k1.position +
+                   (h11 * dt) * tangent(k + 1);
     out.rotation = glm::slerp(k0.rotation, k1.rotation, s);  // shortest arc
     return out;
 }
@@ -83,7 +85,8 @@ Box DynamicObject::worldBounds(const RigidTransform& t) const {
     glm::dmat4 m = worldFromModel(t);
     glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
     for (int c = 0; c < 8; ++c) {
-        glm::dvec3 corner((c & 1) ? modelSize.x : 0, (c & 2) ? modelSize.y : 0, (c & 4) ? modelSize.z : 0);
+        glm::dvec3 corner((c & 1) ? modelSize.x : 0, (c & 2) ? modelSize.y : 0,
+                          (c & 4) ? modelSize.z : 0);
         glm::dvec3 w(m * glm::dvec4(corner, 1.0));
         lo = glm::min(lo, w);
         hi = glm::max(hi, w);

@@ -12,13 +12,12 @@
 // is const from then on.
 #pragma once
 
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <glm/glm.hpp>
-#include <glm/gtc/quaternion.hpp>
 
 #include "world/brick_grid.h"
 #include "world/generator_record.h"
@@ -26,8 +25,8 @@
 namespace engine::world {
 
 struct ObjectKey {
-    double time = 0.0;             // seconds
-    glm::dvec3 position{0.0};      // world position of the model centre, voxel units
+    double time = 0.0;         // seconds
+    glm::dvec3 position{0.0};  // world position of the model centre, voxel units
     glm::dquat rotation{1.0, 0.0, 0.0, 0.0};
     // The rotation as the scene file gave it, so a writer gives back the very same quaternion:
     // none, yaw/pitch/roll degrees in `angles`, or an axis in `angles` and `angle` degrees.
@@ -71,8 +70,9 @@ struct DynamicObject {
     std::vector<GeneratorRecord> generators;  // what built `model`, for writing the scene back
     glm::ivec3 modelSize{8};  // the model's extent in voxels (the grid rounds it up to bricks)
     ObjectPath path;
-    // Set when a flythrough's timeline has a `dynamic` start event for this object (Timeline::bind):
-    // the object holds its first pose until then and runs its path from that moment.
+    // Set when a flythrough's timeline has a `dynamic` start event for this object
+    // (Timeline::bind): the object holds its first pose until then and runs its path from that
+    // moment.
     std::optional<double> startTime;
     // Set by updateDynamicObjects (world/dynamic_grid.h): the poses of this frame and the last.
     RigidTransform current, previous;

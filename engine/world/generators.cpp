@@ -29,22 +29,27 @@ void generateTerrain(BrickGrid& grid, const TerrainParams& p) {
     m.soil = p.soil;
     m.rock = p.rock;
     m.soilDepth = p.soilDepth;
-    fillHeightField(grid, [&](int x, int z) { return terrainHeight(p, x, z); }, m);
+    fillHeightField(
+        grid, [&](int x, int z) { return terrainHeight(p, x, z); }, m);
 }
 
 void generateCornellBox(BrickGrid& grid, const CornellParams& p) {
     const glm::ivec3 o = p.origin;
     const int n = p.interior, w = p.wall;
     const int outer = n + 2 * w;
-    auto box = [&](glm::ivec3 lo, glm::ivec3 hi, MaterialId m) { fillBox(grid, Box{o + lo, o + hi}, m); };
+    auto box = [&](glm::ivec3 lo, glm::ivec3 hi, MaterialId m) {
+        fillBox(grid, Box{o + lo, o + hi}, m);
+    };
     box({0, 0, 0}, {outer, w, outer}, p.white);              // floor
     box({0, outer - w, 0}, {outer, outer, outer}, p.white);  // ceiling
     box({0, 0, outer - w}, {outer, outer, outer}, p.white);  // back wall
     box({0, 0, 0}, {w, outer, outer}, p.green);              // right as seen from the opening
     box({outer - w, 0, 0}, {outer, outer, outer}, p.red);    // left as seen from the opening
     // Two blocks, as in the classic box but axis-aligned (all faces stay axis-aligned here).
-    box({w + n * 15 / 64, w, w + n * 35 / 64}, {w + n * 35 / 64, w + n * 40 / 64, w + n * 55 / 64}, p.white);
-    box({w + n * 37 / 64, w, w + n * 12 / 64}, {w + n * 55 / 64, w + n * 20 / 64, w + n * 30 / 64}, p.white);
+    box({w + n * 15 / 64, w, w + n * 35 / 64}, {w + n * 35 / 64, w + n * 40 / 64, w + n * 55 / 64},
+        p.white);
+    box({w + n * 37 / 64, w, w + n * 12 / 64}, {w + n * 55 / 64, w + n * 20 / 64, w + n * 30 / 64},
+        p.white);
     // Ceiling light: brick-aligned so each 8^3 is a homogeneous emissive cell (a brick light).
     int span = p.lightBricks * 8;
     int start = ((w + (n - span) / 2) / 8) * 8;
@@ -63,13 +68,15 @@ void generateBuildings(BrickGrid& grid, const BuildingsParams& p) {
     Rng rng(p.seed);
     const glm::ivec3 size = grid.sizeInVoxels();
     for (int i = 0; i < p.count; ++i) {
-        int sx = rng.uniformInt(p.minSize.x, p.maxSize.x), sz = rng.uniformInt(p.minSize.y, p.maxSize.y);
+        int sx = rng.uniformInt(p.minSize.x, p.maxSize.x),
+            sz = rng.uniformInt(p.minSize.y, p.maxSize.y);
         int h = rng.uniformInt(p.minHeight, p.maxHeight);
         int x0 = rng.uniformInt(p.margin, std::max(p.margin, size.x - p.margin - sx));
         int z0 = rng.uniformInt(p.margin, std::max(p.margin, size.z - p.margin - sz));
         int ground = 0;
         for (int z = z0; z < z0 + sz; z += 2)
-            for (int x = x0; x < x0 + sx; x += 2) ground = std::max(ground, groundHeight(grid, x, z));
+            for (int x = x0; x < x0 + sx; x += 2)
+                ground = std::max(ground, groundHeight(grid, x, z));
         int top = std::min(ground + h, size.y - 2);
         glm::ivec3 lo{x0, std::max(ground - 3, 0), z0}, hi{x0 + sx, top, z0 + sz};
         fillBox(grid, Box{lo, hi}, p.wall);
@@ -102,7 +109,9 @@ void generateLamps(BrickGrid& grid, const LampsParams& p) {
         int top = std::min(ground + p.postHeight, size.y - p.lampSize);
         fillBox(grid, Box{{x, ground, z}, {x + 1, top, z + 1}}, p.post);
         int half = p.lampSize / 2;
-        fillBox(grid, Box{{x - half, top, z - half}, {x - half + p.lampSize, top + p.lampSize, z - half + p.lampSize}},
+        fillBox(grid,
+                Box{{x - half, top, z - half},
+                    {x - half + p.lampSize, top + p.lampSize, z - half + p.lampSize}},
                 p.light);
     }
     reportProgress("lamps", std::uint64_t(p.count), std::uint64_t(p.count));

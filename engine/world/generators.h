@@ -4,7 +4,6 @@
 #pragma once
 
 #include <cstdint>
-
 #include <glm/glm.hpp>
 
 #include "world/brick_grid.h"
@@ -34,8 +33,9 @@ struct CornellParams {
     int lightBricks = 16;  // the ceiling light is lightBricks x lightBricks emissive 8^3 bricks
     MaterialId white = kEmpty, red = kEmpty, green = kEmpty, light = kEmpty;
 };
-// Cornell box of the thesis §3.2: open at -Z, red wall at +X (left when looking in), green at -X, two white blocks,
-// a ceiling light of lightBricks^2 brick-aligned emissive bricks hanging under the ceiling.
+// Cornell box of the thesis §3.2: open at -Z, red wall at +X (left when looking in), green at -X,
+// two white blocks, a ceiling light of lightBricks^2 brick-aligned emissive bricks hanging under
+// the ceiling.
 void generateCornellBox(BrickGrid& grid, const CornellParams& p);
 
 struct BuildingsParams {

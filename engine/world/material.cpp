@@ -2,7 +2,9 @@
 
 namespace engine::world {
 
-Palette::Palette() { mMaterials.push_back(Material{"empty", glm::vec3(0.0f), glm::vec3(0.0f), 0.0f}); }
+Palette::Palette() {
+    mMaterials.push_back(Material{"empty", glm::vec3(0.0f), glm::vec3(0.0f), 0.0f});
+}
 
 std::optional<MaterialId> Palette::add(Material material) {
     if (mMaterials.size() >= kMaxMaterials) return std::nullopt;

@@ -4,12 +4,11 @@
 #pragma once
 
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "shared/material.h"
 
@@ -26,7 +25,10 @@ struct Material {
     float emissionStrength = 0.0f;
 
     glm::vec3 emittedRadiance() const { return emissionColor * emissionStrength; }
-    bool emissive() const { return emissionStrength > 0.0f && glm::any(glm::greaterThan(emissionColor, glm::vec3(0.0f))); }
+    bool emissive() const {
+        return emissionStrength > 0.0f &&
+               glm::any(glm::greaterThan(emissionColor, glm::vec3(0.0f)));
+    }
     bool operator==(const Material&) const = default;
 };
 

@@ -37,11 +37,15 @@ public:
 
     // Appends a value-initialised element.
     void emplace_back() {
-        if (mSize == mPages.size() * kPageSize) mPages.push_back(std::make_unique<T[]>(kPageSize));
-        else (*this)[mSize] = T{};
+        if (mSize == mPages.size() * kPageSize)
+            mPages.push_back(std::make_unique<T[]>(kPageSize));
+        else
+            (*this)[mSize] = T{};
         ++mSize;
     }
-    void reservePages(std::size_t elements) { mPages.reserve((elements + kPageSize - 1) / kPageSize); }
+    void reservePages(std::size_t elements) {
+        mPages.reserve((elements + kPageSize - 1) / kPageSize);
+    }
 
 private:
     std::vector<std::unique_ptr<T[]>> mPages;

@@ -23,7 +23,9 @@ void PlayerBody::place(const CollisionWorld& world, glm::dvec3 feet) {
     const double half = 0.5 * mSettings.width * mSettings.scale + kSkin;
     // Wherever the camera was -- far out, or nowhere (NaN) -- the body starts inside the world's
     // sides, above its floor and no higher than any position a file may give (kCoordinateRange).
-    auto within = [](double v, double lo, double hi, double ifNaN) { return std::isnan(v) ? ifNaN : std::clamp(v, lo, hi); };
+    auto within = [](double v, double lo, double hi, double ifNaN) {
+        return std::isnan(v) ? ifNaN : std::clamp(v, lo, hi);
+    };
     mFeet.x = within(feet.x, half, std::max(half, size.x - half), 0.5 * size.x);
     mFeet.z = within(feet.z, half, std::max(half, size.z - half), 0.5 * size.z);
     mFeet.y = within(feet.y, kSkin, kCoordinateRange.max, size.y);

@@ -30,7 +30,8 @@ Box overlappedVoxels(const PlayerBox& box) {
 
 int CollisionWorld::solidTop() const {
     int top = grid.sizeInVoxels().y;
-    if (dynamic && dynamic->present()) top = std::max(top, dynamic->origin.y + dynamic->grid.sizeInVoxels().y);
+    if (dynamic && dynamic->present())
+        top = std::max(top, dynamic->origin.y + dynamic->grid.sizeInVoxels().y);
     return top;
 }
 

@@ -12,7 +12,6 @@
 #pragma once
 
 #include <cstdint>
-
 #include <glm/glm.hpp>
 
 #include "world/brick_grid.h"

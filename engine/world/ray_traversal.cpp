@@ -92,7 +92,9 @@ RayHit traceRay(const BrickGrid& grid, const Ray& ray, TraversalMode mode) {
                 s = 8;
             } else if (cell & shared::CELL_HOMOGENEOUS) {
                 if (exact > 1) refine();
-                return RayHit{true, v, face, t, static_cast<MaterialId>(cell & shared::CELL_MATERIAL_MASK), steps};
+                return RayHit{
+                    true, v, face, t, static_cast<MaterialId>(cell & shared::CELL_MATERIAL_MASK),
+                    steps};
             } else {
                 const std::uint32_t brick = BrickGrid::cellBrick(cell);
                 const BrickMask& mask = grid.brickMask(brick);
@@ -106,7 +108,9 @@ RayHit traceRay(const BrickGrid& grid, const Ray& ray, TraversalMode mode) {
                     } else {
                         if (exact > 1) refine();
                         if (mask.voxel(v & 7))
-                            return RayHit{true, v, face, t, grid.brickVoxels(brick)[brickVoxelIndex(v & 7)], steps};
+                            return RayHit{
+                                true, v, face, t, grid.brickVoxels(brick)[brickVoxelIndex(v & 7)],
+                                steps};
                     }
                 }
             }
@@ -121,7 +125,8 @@ RayHit traceRay(const BrickGrid& grid, const Ray& ray, TraversalMode mode) {
             tDelta = float(s) * absInv;
             level = s;
         }
-        const int axis = tNext.x <= tNext.y ? (tNext.x <= tNext.z ? 0 : 2) : (tNext.y <= tNext.z ? 1 : 2);
+        const int axis =
+            tNext.x <= tNext.y ? (tNext.x <= tNext.z ? 0 : 2) : (tNext.y <= tNext.z ? 1 : 2);
         const float best = tNext[axis];
         // tExit, not just tMax: a 32^3 super cell can reach past the world's edge, and the ray
         // must not walk on outside it (it would read cells of the next row).

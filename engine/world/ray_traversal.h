@@ -9,9 +9,8 @@
 #pragma once
 
 #include <cstdint>
-#include <limits>
-
 #include <glm/glm.hpp>
+#include <limits>
 
 #include "world/brick_grid.h"
 
@@ -37,7 +36,8 @@ enum class TraversalMode {
     PlainTwoLevel,  // cells, then every voxel of a non-empty brick: the classic baseline
 };
 
-RayHit traceRay(const BrickGrid& grid, const Ray& ray, TraversalMode mode = TraversalMode::Hierarchical);
+RayHit traceRay(const BrickGrid& grid, const Ray& ray,
+                TraversalMode mode = TraversalMode::Hierarchical);
 
 // Face normals by face index (shared::FACE_*).
 glm::ivec3 faceNormal(std::uint32_t face);

@@ -6,13 +6,19 @@ namespace engine::world {
 
 Status checkCamera(const CameraPreset& c) {
     for (int i = 0; i < 3; ++i) {
-        for (auto [what, v] : {std::pair{"position", c.position[i]}, std::pair{"target", c.target[i]}}) {
-            if (Status ok = checkNumber(fmt::format("camera '{}' {} {}", c.name, what, "xyz"[i]), v, kCoordinateRange); !ok)
+        for (auto [what, v] :
+             {std::pair{"position", c.position[i]}, std::pair{"target", c.target[i]}}) {
+            if (Status ok = checkNumber(fmt::format("camera '{}' {} {}", c.name, what, "xyz"[i]), v,
+                                        kCoordinateRange);
+                !ok)
                 return ok;
         }
     }
-    if (Status ok = checkNumber(fmt::format("camera '{}' fov", c.name), c.fovYDegrees, kFovRange); !ok) return ok;
-    if (glm::length(c.target - c.position) < 1e-4f) return makeError("camera '{}': target equals position", c.name);
+    if (Status ok = checkNumber(fmt::format("camera '{}' fov", c.name), c.fovYDegrees, kFovRange);
+        !ok)
+        return ok;
+    if (glm::length(c.target - c.position) < 1e-4f)
+        return makeError("camera '{}': target equals position", c.name);
     return {};
 }
 
@@ -36,7 +42,8 @@ std::uint64_t Scene::emissiveVoxels() const {
             count += palette[BrickGrid::cellMaterial(c)].emissive() ? kBrickVoxels : 0;
             continue;
         }
-        for (MaterialId m : grid.brickVoxels(BrickGrid::cellBrick(c))) count += palette[m].emissive();
+        for (MaterialId m : grid.brickVoxels(BrickGrid::cellBrick(c)))
+            count += palette[m].emissive();
     }
     return count;
 }

@@ -2,13 +2,12 @@
 // lighting it (camera presets, sun and sky), and the dynamic objects moving through it.
 #pragma once
 
+#include <glm/glm.hpp>
 #include <memory>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "core/number_check.h"
 #include "world/brick_grid.h"
@@ -30,8 +29,10 @@ inline constexpr NumberRange kCoordinateRange = closedRange(-1e7, 1e7, "voxels")
 // file's keys, a .vdb file's metadata and its grid's transform.
 inline constexpr NumberRange kVoxelSizeRange = aboveRange(0.0, 1e6, "m");
 inline constexpr NumberRange kAlbedoRange = closedRange(0.0, 1.0);
-inline constexpr NumberRange kRadianceRange = closedRange(0.0, 1e6);  // emission, its strength, sun and sky
-inline constexpr NumberRange kDirectionRange = closedRange(-1e6, 1e6);  // the sun's, not yet normalised
+inline constexpr NumberRange kRadianceRange =
+    closedRange(0.0, 1e6);  // emission, its strength, sun and sky
+inline constexpr NumberRange kDirectionRange =
+    closedRange(-1e6, 1e6);  // the sun's, not yet normalised
 
 struct CameraPreset {
     std::string name;
@@ -57,7 +58,8 @@ struct SkyLight {
 struct Scene {
     std::string name = "untitled";
     std::string sourcePath;  // the file it came from, for messages
-    float voxelSize = 1.0f;  // edge of a voxel in world units (metres); exported as the VDB transform
+    float voxelSize =
+        1.0f;  // edge of a voxel in world units (metres); exported as the VDB transform
     Palette palette;
     BrickGrid grid{glm::ivec3(8)};
     std::vector<CameraPreset> cameras;

@@ -8,8 +8,9 @@ namespace engine::world {
 
 namespace {
 SceneHit fromRayHit(const RayHit& h, glm::ivec3 origin, bool dynamicSet) {
-    return SceneHit{h.hit, h.voxel + origin, h.hit ? h.face : shared::FACE_NONE, h.t, h.material, h.steps,
-                    h.hit && dynamicSet};
+    return SceneHit{
+        h.hit,   h.voxel + origin,   h.hit ? h.face : shared::FACE_NONE, h.t, h.material,
+        h.steps, h.hit && dynamicSet};
 }
 }  // namespace
 
@@ -30,7 +31,8 @@ SceneHit traceDynamic(const DynamicGrid& dyn, glm::vec3 o, glm::vec3 d, float tM
     return fromRayHit(traceRay(dyn.grid, Ray{local, d, tMax}), dyn.origin, true);
 }
 
-SceneHit traceScene(const BrickGrid& staticGrid, const DynamicGrid* dyn, glm::vec3 o, glm::vec3 d, float tMax) {
+SceneHit traceScene(const BrickGrid& staticGrid, const DynamicGrid* dyn, glm::vec3 o, glm::vec3 d,
+                    float tMax) {
     SceneHit s = fromRayHit(traceRay(staticGrid, Ray{o, d, tMax}), glm::ivec3(0), false);
     if (!dyn || !dyn->present()) return s;
     const float ts = s.hit ? faceHitT(o, d, s.voxel, s.face) : tMax;

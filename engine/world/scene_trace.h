@@ -9,7 +9,6 @@
 #pragma once
 
 #include <cstdint>
-
 #include <glm/glm.hpp>
 
 #include "world/brick_grid.h"
@@ -21,7 +20,7 @@ struct SceneHit {
     bool hit = false;
     glm::ivec3 voxel{0};  // world voxel coordinates
     std::uint32_t face = shared::FACE_NONE;
-    float t = 0.0f;       // the traversal's distance (in units of |d|) to the entry face
+    float t = 0.0f;  // the traversal's distance (in units of |d|) to the entry face
     std::uint32_t material = 0;
     std::uint32_t steps = 0;  // DDA steps of both traversals
     bool dynamicSet = false;  // the voxel belongs to the dynamic grid
@@ -36,6 +35,7 @@ SceneHit traceDynamic(const DynamicGrid& dyn, glm::vec3 o, glm::vec3 d, float tM
 
 // Static first; ts = faceHitT(static hit) (tMax if none); then dynamic with tMax = ts; the
 // dynamic hit wins only if hit && faceHitT(dynamic hit) < ts (strict: static wins ties).
-SceneHit traceScene(const BrickGrid& staticGrid, const DynamicGrid* dyn, glm::vec3 o, glm::vec3 d, float tMax);
+SceneHit traceScene(const BrickGrid& staticGrid, const DynamicGrid* dyn, glm::vec3 o, glm::vec3 d,
+                    float tMax);
 
 }  // namespace engine::world

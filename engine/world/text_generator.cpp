@@ -1,8 +1,7 @@
 #include "world/text_generator.h"
 
-#include <fmt/format.h>
-
 #include <cstdlib>
+#include <fmt/format.h>
 
 #include "core/bitmap_font.h"
 #include "world/world_edits.h"

@@ -90,8 +90,8 @@ Status Timeline::bind(Scene& scene) {
                     names += (names.empty() ? "" : ", ") + o.name;
                 }
                 if (!object)
-                    return makeError("{}: no dynamic object named '{}' (the scene has: {})", e.where, e.object,
-                                     names.empty() ? "none" : names);
+                    return makeError("{}: no dynamic object named '{}' (the scene has: {})",
+                                     e.where, e.object, names.empty() ? "none" : names);
                 object->startTime = std::min(object->startTime.value_or(e.time), e.time);
                 break;
             }

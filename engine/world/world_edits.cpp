@@ -60,7 +60,8 @@ Coverage boxCoverage(const Box& box, const Box& cellBox) {
 void fillBox(BrickGrid& grid, const Box& box, MaterialId material) {
     editShape(
         grid, box, [&](const Box& cellBox) { return boxCoverage(box, cellBox); },
-        [&](glm::ivec3 p) { return box.contains(p); }, [&](glm::ivec3, MaterialId) { return material; });
+        [&](glm::ivec3 p) { return box.contains(p); },
+        [&](glm::ivec3, MaterialId) { return material; });
 }
 
 Box sphereBounds(glm::vec3 center, float radius) {
@@ -80,7 +81,8 @@ void editSphere(BrickGrid& grid, glm::vec3 center, float radius, Op&& op) {
         // The sphere is convex: a cell whose 8 corner voxel centres are inside is fully inside.
         int corners = 0;
         for (int i = 0; i < 8; ++i) {
-            glm::ivec3 corner{(i & 1) ? cellBox.max.x - 1 : cellBox.min.x, (i & 2) ? cellBox.max.y - 1 : cellBox.min.y,
+            glm::ivec3 corner{(i & 1) ? cellBox.max.x - 1 : cellBox.min.x,
+                              (i & 2) ? cellBox.max.y - 1 : cellBox.min.y,
                               (i & 4) ? cellBox.max.z - 1 : cellBox.min.z};
             corners += inside(corner);
         }
@@ -88,7 +90,8 @@ void editSphere(BrickGrid& grid, glm::vec3 center, float radius, Op&& op) {
         // Otherwise the closest point test decides whether the cell can touch the sphere at all.
         glm::vec3 closest = glm::clamp(center, glm::vec3(cellBox.min), glm::vec3(cellBox.max));
         glm::vec3 d = closest - center;
-        return glm::dot(d, d) <= (radius + 1.0f) * (radius + 1.0f) ? Coverage::Partial : Coverage::None;
+        return glm::dot(d, d) <= (radius + 1.0f) * (radius + 1.0f) ? Coverage::Partial
+                                                                   : Coverage::None;
     };
     editShape(grid, sphereBounds(center, radius), coverage, inside, op);
 }
@@ -107,7 +110,8 @@ void paintBox(BrickGrid& grid, const Box& box, MaterialId material) {
 }
 
 void paintSphere(BrickGrid& grid, glm::vec3 center, float radius, MaterialId material) {
-    editSphere(grid, center, radius, [&](glm::ivec3, MaterialId m) { return m == kEmpty ? kEmpty : material; });
+    editSphere(grid, center, radius,
+               [&](glm::ivec3, MaterialId m) { return m == kEmpty ? kEmpty : material; });
 }
 
 void replaceMaterial(BrickGrid& grid, const Box& region, MaterialId from, MaterialId to) {
@@ -135,7 +139,8 @@ void pasteRegion(BrickGrid& grid, const BrickGrid& clip, glm::ivec3 at, bool ski
     editShape(
         grid, target,
         [&](const Box& cellBox) {
-            return boxCoverage(target, cellBox) == Coverage::None ? Coverage::None : Coverage::Partial;
+            return boxCoverage(target, cellBox) == Coverage::None ? Coverage::None
+                                                                  : Coverage::Partial;
         },
         [&](glm::ivec3 p) { return target.contains(p); },
         [&](glm::ivec3 p, MaterialId old) {

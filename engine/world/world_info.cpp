@@ -37,35 +37,41 @@ WorldInfo describeWorld(const Scene& scene) {
 std::string formatWorldInfo(const WorldInfo& i, const std::string& title) {
     std::string s;
     s += fmt::format("world        {}\n", title);
-    s += fmt::format("size         {} x {} x {} voxels ({} x {} x {} cells of 8^3)\n", i.sizeInVoxels.x,
-                     i.sizeInVoxels.y, i.sizeInVoxels.z, i.sizeInCells.x, i.sizeInCells.y, i.sizeInCells.z);
-    s += fmt::format("cells        {} total: {} empty, {} homogeneous (no storage), {} bricks\n", i.cells, i.emptyCells,
-                     i.homogeneousCells, i.bricks);
+    s += fmt::format("size         {} x {} x {} voxels ({} x {} x {} cells of 8^3)\n",
+                     i.sizeInVoxels.x, i.sizeInVoxels.y, i.sizeInVoxels.z, i.sizeInCells.x,
+                     i.sizeInCells.y, i.sizeInCells.z);
+    s += fmt::format("cells        {} total: {} empty, {} homogeneous (no storage), {} bricks\n",
+                     i.cells, i.emptyCells, i.homogeneousCells, i.bricks);
     s += fmt::format("brick pool   {} live bricks, {} free for reuse\n", i.bricks, i.freeBricks);
     s += fmt::format("voxels       {} solid, {} emissive\n", i.solidVoxels, i.emissiveVoxels);
     s += fmt::format("materials    {}\n", i.materials);
     s += "memory\n";
     s += fmt::format("  top grid     {:>12}  ({} bytes)\n", bytes(i.topGridBytes), i.topGridBytes);
-    s += fmt::format("  super grid   {:>12}  ({} bytes: skip distance and count per 4^3 cells)\n", bytes(i.superGridBytes),
-                     i.superGridBytes);
+    s += fmt::format("  super grid   {:>12}  ({} bytes: skip distance and count per 4^3 cells)\n",
+                     bytes(i.superGridBytes), i.superGridBytes);
     s += fmt::format("  brick pool   {:>12}  ({} bytes: 1024 voxel + 80 mask bytes per brick)\n",
                      bytes(i.brickPoolBytes), i.brickPoolBytes);
     s += fmt::format("  palette      {:>12}  ({} bytes)\n", bytes(i.paletteBytes), i.paletteBytes);
-    s += fmt::format("  bookkeeping  {:>12}  ({} bytes: free list, dirty flags)\n", bytes(i.bookkeepingBytes),
-                     i.bookkeepingBytes);
-    s += fmt::format("  total        {:>12}  ({} bytes; a dense uint16 grid would take {})\n", bytes(i.totalBytes()),
-                     i.totalBytes(), bytes(std::size_t(i.sizeInVoxels.x) * i.sizeInVoxels.y * i.sizeInVoxels.z * 2));
+    s += fmt::format("  bookkeeping  {:>12}  ({} bytes: free list, dirty flags)\n",
+                     bytes(i.bookkeepingBytes), i.bookkeepingBytes);
+    s +=
+        fmt::format("  total        {:>12}  ({} bytes; a dense uint16 grid would take {})\n",
+                    bytes(i.totalBytes()), i.totalBytes(),
+                    bytes(std::size_t(i.sizeInVoxels.x) * i.sizeInVoxels.y * i.sizeInVoxels.z * 2));
     return s;
 }
 
 std::string worldInfoJson(const WorldInfo& i) {
     return fmt::format(
-        "{{\"size\": [{}, {}, {}], \"cells\": {}, \"empty_cells\": {}, \"homogeneous_cells\": {}, \"bricks\": {}, "
+        "{{\"size\": [{}, {}, {}], \"cells\": {}, \"empty_cells\": {}, \"homogeneous_cells\": {}, "
+        "\"bricks\": {}, "
         "\"free_bricks\": {}, \"solid_voxels\": {}, \"emissive_voxels\": {}, \"materials\": {}, "
-        "\"bytes\": {{\"top_grid\": {}, \"super_grid\": {}, \"brick_pool\": {}, \"palette\": {}, \"bookkeeping\": {}, \"total\": {}}}}}",
-        i.sizeInVoxels.x, i.sizeInVoxels.y, i.sizeInVoxels.z, i.cells, i.emptyCells, i.homogeneousCells, i.bricks,
-        i.freeBricks, i.solidVoxels, i.emissiveVoxels, i.materials, i.topGridBytes, i.superGridBytes, i.brickPoolBytes, i.paletteBytes,
-        i.bookkeepingBytes, i.totalBytes());
+        "\"bytes\": {{\"top_grid\": {}, \"super_grid\": {}, \"brick_pool\": {}, \"palette\": {}, "
+        "\"bookkeeping\": {}, \"total\": {}}}}}",
+        i.sizeInVoxels.x, i.sizeInVoxels.y, i.sizeInVoxels.z, i.cells, i.emptyCells,
+        i.homogeneousCells, i.bricks, i.freeBricks, i.solidVoxels, i.emissiveVoxels, i.materials,
+        i.topGridBytes, i.superGridBytes, i.brickPoolBytes, i.paletteBytes, i.bookkeepingBytes,
+        i.totalBytes());
 }
 
 }  // namespace engine::world

@@ -25,7 +25,9 @@ struct WorldInfo {
     std::size_t brickPoolBytes = 0;
     std::size_t paletteBytes = 0;
     std::size_t bookkeepingBytes = 0;
-    std::size_t totalBytes() const { return topGridBytes + superGridBytes + brickPoolBytes + paletteBytes + bookkeepingBytes; }
+    std::size_t totalBytes() const {
+        return topGridBytes + superGridBytes + brickPoolBytes + paletteBytes + bookkeepingBytes;
+    }
 };
 
 WorldInfo describeWorld(const Scene& scene);

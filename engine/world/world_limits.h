@@ -6,7 +6,8 @@
 
 namespace engine::world {
 
-// Largest world: 2^25 top-grid cells (a 128 MiB top grid, the largest storage buffer lavapipe binds).
+// Largest world: 2^25 top-grid cells (a 128 MiB top grid, the largest storage buffer lavapipe
+// binds).
 inline constexpr std::uint64_t kMaxTopGridCells = 1ull << 25;
 inline constexpr int kMaxWorldExtent = 1 << 15;
 // Largest dynamic object model per axis: it is re-voxelised every frame it moves.

@@ -2,16 +2,15 @@
 // disk) gives one line naming the path and the reason, removes the temporary and leaves the
 // previous file byte-identical; a folder at the output path is refused up front; temporaries of
 // dead processes are removed; an output folder (or a range of it) is claimed by one process.
-#include <gtest/gtest.h>
-
-#include <sys/wait.h>
-#include <unistd.h>
+#include "core/atomic_file.h"
 
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <string>
+#include <sys/wait.h>
+#include <unistd.h>
 
-#include "core/atomic_file.h"
 #include "core/folder_lock.h"
 
 namespace fs = std::filesystem;
@@ -107,7 +106,8 @@ TEST(AtomicFile, AReplacedFileKeepsItsPermissions) {
     ASSERT_TRUE(engine::writeFileAtomically(file, "a").ok());
     fs::permissions(file, fs::perms::owner_read | fs::perms::owner_write);
     ASSERT_TRUE(engine::writeFileAtomically(file, "b").ok());
-    EXPECT_EQ(fs::status(file).permissions() & fs::perms::all, fs::perms::owner_read | fs::perms::owner_write);
+    EXPECT_EQ(fs::status(file).permissions() & fs::perms::all,
+              fs::perms::owner_read | fs::perms::owner_write);
 }
 
 // A writer that only takes a path (ffmpeg): its file is fsynced (checked) and renamed; a failed
@@ -127,7 +127,8 @@ TEST(AtomicFile, APathWriterIsCheckedAndRenamedLikeAnyOther) {
     EXPECT_EQ(s.error().message, file.string() + ": cannot flush to disk: No space left on device");
     EXPECT_EQ(bytesOf(file), "previous");
     EXPECT_EQ(filesIn(dir.path()), 1u);
-    s = engine::replaceFileAtomically(file, [](const fs::path&) -> engine::Status { return engine::makeError("ffmpeg failed"); });
+    s = engine::replaceFileAtomically(
+        file, [](const fs::path&) -> engine::Status { return engine::makeError("ffmpeg failed"); });
     EXPECT_FALSE(s.ok());
     EXPECT_EQ(bytesOf(file), "previous");
     EXPECT_EQ(filesIn(dir.path()), 1u);
@@ -142,7 +143,8 @@ TEST(AtomicFile, AnOutputPathThatIsAFolderIsRefusedWithoutSuccess) {
     fs::create_directory(folder);
     engine::Status s = engine::writeFileAtomically(folder, "x");
     ASSERT_FALSE(s.ok());
-    EXPECT_EQ(s.error().message.rfind(folder.string() + " is a folder", 0), 0u) << s.error().message;
+    EXPECT_EQ(s.error().message.rfind(folder.string() + " is a folder", 0), 0u)
+        << s.error().message;
     EXPECT_EQ(s.error().message.find("Success"), std::string::npos);
     EXPECT_TRUE(fs::is_directory(folder));
     EXPECT_EQ(filesIn(dir.path()), 1u);
@@ -156,8 +158,10 @@ TEST(AtomicFile, TemporariesOfDeadProcessesAreRemoved) {
     const fs::path live = dir / ".c.png.tmp-1";  // init is alive
     const fs::path mine = dir / (".d.png.tmp-" + std::to_string(::getpid()));
     const fs::path notOurs = dir / "notes.tmp-draft";
-    const fs::path usersFile = dir / ("notes.txt.tmp-" + std::to_string(dead));  // not an extension we write
-    for (const fs::path& p : {stale, staleOldStyle, live, mine, notOurs, usersFile}) std::ofstream(p) << "partial";
+    const fs::path usersFile =
+        dir / ("notes.txt.tmp-" + std::to_string(dead));  // not an extension we write
+    for (const fs::path& p : {stale, staleOldStyle, live, mine, notOurs, usersFile})
+        std::ofstream(p) << "partial";
     EXPECT_EQ(engine::removeStaleTemporaries(dir.path()), 2u);
     EXPECT_FALSE(fs::exists(stale));
     EXPECT_FALSE(fs::exists(staleOldStyle));
@@ -200,8 +204,9 @@ TEST(FolderLock, AnOverlappingClaimIsRefusedNamingTheHolder) {
     int status = 0;
     ::waitpid(child, &status, 0);
     ASSERT_FALSE(overlapping.ok());
-    EXPECT_EQ(overlapping.error().message,
-              dir.path().string() + " is in use by another vox capture (pid " + std::to_string(child) + ")");
+    EXPECT_EQ(overlapping.error().message, dir.path().string() +
+                                               " is in use by another vox capture (pid " +
+                                               std::to_string(child) + ")");
     EXPECT_FALSE(whole.ok());
     EXPECT_TRUE(disjoint.ok()) << disjoint.error().message;
     // The holder has exited: the kernel released its lock.

@@ -1,7 +1,6 @@
 #include "core/bitmap_font.h"
 
 #include <gtest/gtest.h>
-
 #include <set>
 #include <string>
 

@@ -1,10 +1,9 @@
 // FNV-1a 64 gives the published test vectors, and a file's checksum is its bytes'.
 #include "core/checksum.h"
 
-#include <gtest/gtest.h>
-
 #include <cstdio>
 #include <fstream>
+#include <gtest/gtest.h>
 
 TEST(Checksum, MatchesFnv1a64TestVectors) {
     EXPECT_EQ(engine::fnv1a64(""), 0xcbf29ce484222325ull);

@@ -2,7 +2,6 @@
 #include "core/json.h"
 
 #include <gtest/gtest.h>
-
 #include <limits>
 
 using engine::Json;

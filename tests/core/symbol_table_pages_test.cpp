@@ -4,12 +4,11 @@
 // would reset the GOT to the file's zeros and crash the round trip below).
 #include "core/symbol_table_pages.h"
 
-#include <gtest/gtest.h>
-#include <openvdb/openvdb.h>
-
 #include <cctype>
 #include <cstdio>
 #include <fstream>
+#include <gtest/gtest.h>
+#include <openvdb/openvdb.h>
 #include <string>
 
 #include "io/vdb_export.h"
@@ -55,8 +54,8 @@ TEST(SymbolTablePages, ReleasesLibopenvdbSymbolTablesAndOpenVdbStillWorks) {
 
     // Everything the linker resolved still resolves: export, import, and OpenVDB's own reader.
     vox_test::ScratchDir dir("pages");
-    auto scene =
-        engine::scene::loadSceneFile(std::filesystem::path(VOX_SOURCE_DIR) / "worlds" / "cornell.toml");
+    auto scene = engine::scene::loadSceneFile(std::filesystem::path(VOX_SOURCE_DIR) / "worlds" /
+                                              "cornell.toml");
     ASSERT_TRUE(scene.ok()) << scene.error().message;
     const auto file = dir / "cornell.vdb";
     Status s = io::exportVdb(*scene, file, {});

@@ -47,7 +47,8 @@ TEST_F(EditLatency, NextFrameShowsTheEditAndUploadsOnlyTouchedBricks) {
     auto op = tools.press(target);
     ASSERT_TRUE(op);
     game::UndoHistory history(1 << 20);
-    game::EditRecord rec = history.record(scene.grid, op->region(), "place", [&](BrickGrid& g) { game::applyEdit(g, *op); });
+    game::EditRecord rec = history.record(scene.grid, op->region(), "place",
+                                          [&](BrickGrid& g) { game::applyEdit(g, *op); });
     ASSERT_EQ(rec.changedCells, 1u);
 
     auto next = renderer.render(scene, camera.preset(), settings, lighting);

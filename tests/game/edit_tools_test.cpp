@@ -1,10 +1,10 @@
 // The pick finds the voxel under the crosshair; each tool and brush edits what it should.
-#include <gtest/gtest.h>
+#include "game/edit_tools.h"
 
+#include <gtest/gtest.h>
 #include <limits>
 #include <utility>
 
-#include "game/edit_tools.h"
 #include "world/world_edits.h"
 
 using namespace engine::world;
@@ -126,10 +126,11 @@ TEST(EditTools, PickRefusesARayThatIsNotFinite) {
     fillBox(grid, Box{{0, 0, 0}, {1, 1, 1}}, 2);  // something at (0, 0, 0) to hit by mistake
     const float nan = std::numeric_limits<float>::quiet_NaN();
     const float inf = std::numeric_limits<float>::infinity();
-    for (auto [origin, direction] : {std::pair{glm::vec3(nan, 30.0f, 5.0f), glm::vec3(0.0f, -1.0f, 0.0f)},
-                                     std::pair{glm::vec3(5.0f, 30.0f, 5.0f), glm::vec3(0.0f, nan, 0.0f)},
-                                     std::pair{glm::vec3(inf, 30.0f, 5.0f), glm::vec3(0.0f, -1.0f, 0.0f)},
-                                     std::pair{glm::vec3(5.0f, 30.0f, 5.0f), glm::vec3(0.0f)}}) {
+    for (auto [origin, direction] :
+         {std::pair{glm::vec3(nan, 30.0f, 5.0f), glm::vec3(0.0f, -1.0f, 0.0f)},
+          std::pair{glm::vec3(5.0f, 30.0f, 5.0f), glm::vec3(0.0f, nan, 0.0f)},
+          std::pair{glm::vec3(inf, 30.0f, 5.0f), glm::vec3(0.0f, -1.0f, 0.0f)},
+          std::pair{glm::vec3(5.0f, 30.0f, 5.0f), glm::vec3(0.0f)}}) {
         game::Pick p = game::pick(grid, origin, direction);
         EXPECT_FALSE(p.hit);
         EXPECT_FALSE(p.validRay);
@@ -164,7 +165,8 @@ TEST(EditTools, UnchangedEditsSayWhy) {
     op.tool = Tool::Place;
     op.material = 1;
     op.box = Box{{100, 5, 5}, {101, 6, 6}};
-    EXPECT_EQ(game::unchangedReason(grid, op, palette), "it lies outside the world (0..64, 0..32, 0..64)");
+    EXPECT_EQ(game::unchangedReason(grid, op, palette),
+              "it lies outside the world (0..64, 0..32, 0..64)");
     op.box = Box{{5, 5, 5}, {6, 6, 6}};
     EXPECT_EQ(game::unchangedReason(grid, op, palette), "every voxel there is already stone");
     op.tool = Tool::Remove;

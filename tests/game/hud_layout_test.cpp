@@ -1,10 +1,9 @@
 // The HUD's layout (game/hud_layout.h): panels inside the window and never overlapping from
 // 320x180 to 4K, entries wrapped only between entries, long palettes scrolling in a bounded grid.
-#include <gtest/gtest.h>
-
-#include <regex>
-
 #include "game/hud_layout.h"
+
+#include <gtest/gtest.h>
+#include <regex>
 
 using game::HudLayout;
 using game::HudRect;
@@ -16,12 +15,14 @@ constexpr float kLine = 17.0f;  // ImGui's default font (13 px) plus item spacin
 std::vector<HudRect> panels(const HudLayout& l) { return {l.stats, l.tools, l.keys, l.message}; }
 
 void expectClean(glm::vec2 window, bool keys, bool message) {
-    SCOPED_TRACE(testing::Message() << window.x << "x" << window.y << (keys ? " keys" : "") << (message ? " message" : ""));
+    SCOPED_TRACE(testing::Message() << window.x << "x" << window.y << (keys ? " keys" : "")
+                                    << (message ? " message" : ""));
     HudLayout l = game::layoutHud(window, kLine, keys, message);
     auto r = panels(l);
     for (std::size_t i = 0; i < r.size(); ++i) {
         EXPECT_TRUE(game::inside(r[i], window)) << "panel " << i;
-        for (std::size_t j = i + 1; j < r.size(); ++j) EXPECT_FALSE(game::overlaps(r[i], r[j])) << "panels " << i << ", " << j;
+        for (std::size_t j = i + 1; j < r.size(); ++j)
+            EXPECT_FALSE(game::overlaps(r[i], r[j])) << "panels " << i << ", " << j;
     }
     // The stats always get room for at least one line; a message for at least one; keys too.
     EXPECT_GE(l.stats.size.y, kLine * l.fontScale);
@@ -39,7 +40,8 @@ void expectClean(glm::vec2 window, bool keys, bool message) {
 }  // namespace
 
 TEST(HudLayout, PanelsInsideAndApartAtTheNamedSizes) {
-    for (glm::vec2 w : {glm::vec2(320, 180), glm::vec2(640, 360), glm::vec2(1280, 720), glm::vec2(3840, 2160)})
+    for (glm::vec2 w :
+         {glm::vec2(320, 180), glm::vec2(640, 360), glm::vec2(1280, 720), glm::vec2(3840, 2160)})
         for (bool keys : {false, true})
             for (bool message : {false, true}) expectClean(w, keys, message);
 }
@@ -67,9 +69,12 @@ TEST(HudLayout, CompactBelowTheThresholdAndScaledAt4K) {
 
 TEST(HudLayout, WrapsOnlyBetweenEntries) {
     // Pass names with their milliseconds, as the HUD shows them with --indirect cache.
-    std::vector<std::string> entries = {"primary 1.25",  "shadow 0.50",     "restir initial 12.75", "restir temporal 3.00",
-                                        "cache update 20.125", "cache gather 4.50", "denoise 7.25",      "tonemap 0.10"};
-    auto chars = [](std::string_view s) { return static_cast<float>(s.size()) * 7.0f; };  // 7 px per glyph
+    std::vector<std::string> entries = {
+        "primary 1.25",        "shadow 0.50",       "restir initial 12.75", "restir temporal 3.00",
+        "cache update 20.125", "cache gather 4.50", "denoise 7.25",         "tonemap 0.10"};
+    auto chars = [](std::string_view s) {
+        return static_cast<float>(s.size()) * 7.0f;
+    };  // 7 px per glyph
     for (float maxWidth : {7.0f, 70.0f, 100.0f, 140.0f, 168.0f, 200.0f, 300.0f, 1000.0f}) {
         SCOPED_TRACE(maxWidth);
         auto lines = game::wrapEntries(entries, ", ", maxWidth, chars);
@@ -85,7 +90,8 @@ TEST(HudLayout, WrapsOnlyBetweenEntries) {
             joined += (joined.empty() ? "" : " ") + line;
         }
         std::string expected;
-        for (std::size_t i = 0; i < entries.size(); ++i) expected += entries[i] + (i + 1 < entries.size() ? ", " : "");
+        for (std::size_t i = 0; i < entries.size(); ++i)
+            expected += entries[i] + (i + 1 < entries.size() ? ", " : "");
         EXPECT_EQ(joined, expected);  // nothing lost, nothing reordered
     }
     EXPECT_EQ(game::wrapEntries(entries, ", ", 1000.0f, chars).size(), 1u);
@@ -94,7 +100,8 @@ TEST(HudLayout, WrapsOnlyBetweenEntries) {
 
 TEST(HudLayout, ThreeHundredMaterialsScrollInsideTheirBox) {
     const float cell = 23.0f;  // a swatch (19 px) plus spacing
-    for (glm::vec2 box : {glm::vec2(40, 30), glm::vec2(150, 100), glm::vec2(300, 400), glm::vec2(1800, 600)}) {
+    for (glm::vec2 box :
+         {glm::vec2(40, 30), glm::vec2(150, 100), glm::vec2(300, 400), glm::vec2(1800, 600)}) {
         game::PaletteGrid g = game::paletteGrid(300, box.x, box.y, cell);
         EXPECT_EQ(g.rows, (300 + g.columns - 1) / g.columns);
         EXPECT_GE(g.columns * g.rows, 300);
@@ -112,9 +119,12 @@ TEST(HudLayout, ThreeHundredMaterialsScrollInsideTheirBox) {
 TEST(HudLayout, CompactStripInANarrowTallWindowHasRoomForAllItsLines) {
     // The strip's figures wrapped at a narrow width take more than four lines; a tall window has
     // the room, so the strip gets it (a short window keeps it to four lines, to leave the view).
-    const std::vector<std::string> entries = {"249.1 ms", "4 fps", "GPU 210.3 ms", "place voxel", "material 12 (light)",
-                                              "target 120 45 300", "unsaved", "walk: on the ground", "F1: keys"};
-    auto chars = [](std::string_view s) { return static_cast<float>(s.size()) * 7.0f; };  // 7 px per glyph
+    const std::vector<std::string> entries = {
+        "249.1 ms",          "4 fps",   "GPU 210.3 ms",        "place voxel", "material 12 (light)",
+        "target 120 45 300", "unsaved", "walk: on the ground", "F1: keys"};
+    auto chars = [](std::string_view s) {
+        return static_cast<float>(s.size()) * 7.0f;
+    };                        // 7 px per glyph
     const float pad = 16.0f;  // ImGui's window padding, both sides
     for (glm::vec2 window : {glm::vec2(200, 700), glm::vec2(240, 1000)}) {
         SCOPED_TRACE(testing::Message() << window.x << "x" << window.y);

@@ -2,19 +2,17 @@
 // is placed on the face under the crosshair, moves by whole voxels, turns about Y, records keys
 // at the current time, loses its path, is deleted; every command undoes and redoes exactly; and
 // a save gives the objects back (model voxels, path keys, loop).
-#include <gtest/gtest.h>
-
-#include <unistd.h>
-
-#include <filesystem>
-#include <fstream>
-#include <sstream>
+#include "game/object_tools.h"
 
 #include <GLFW/glfw3.h>
+#include <filesystem>
 #include <fmt/format.h>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <sstream>
+#include <unistd.h>
 
 #include "game/input.h"
-#include "game/object_tools.h"
 #include "game/world_store.h"
 #include "io/vdb_export.h"
 #include "io/vox_export.h"
@@ -92,21 +90,25 @@ std::string dynamicVoxels(const Scene& scene) {
         for (int y = 0; y < size.y; ++y)
             for (int x = 0; x < size.x; ++x) {
                 const glm::ivec3 w = glm::ivec3(x, y, z) + scene.dynamic.origin;
-                if (MaterialId m = scene.dynamic.get(w); m != kEmpty) out += fmt::format("{} {} {} {}\n", w.x, w.y, w.z, m);
+                if (MaterialId m = scene.dynamic.get(w); m != kEmpty)
+                    out += fmt::format("{} {} {} {}\n", w.x, w.y, w.z, m);
             }
     return out;
 }
 
-std::size_t lines(const std::string& s) { return std::size_t(std::count(s.begin(), s.end(), '\n')); }
+std::size_t lines(const std::string& s) {
+    return std::size_t(std::count(s.begin(), s.end(), '\n'));
+}
 
 // Everything an object command may change, in words: names, models, keys, loop.
 std::string describeObjects(const Scene& scene) {
     std::string out;
     for (const DynamicObject& o : scene.objects) {
-        out += fmt::format("{} size {} {} {} voxels {} loop {}\n", o.name, o.modelSize.x, o.modelSize.y, o.modelSize.z,
-                           o.model->solidVoxels(), o.path.loop());
+        out += fmt::format("{} size {} {} {} voxels {} loop {}\n", o.name, o.modelSize.x,
+                           o.modelSize.y, o.modelSize.z, o.model->solidVoxels(), o.path.loop());
         for (const ObjectKey& k : o.path.keys())
-            out += fmt::format("  key {} at {} {} {} yaw {}\n", k.time, k.position.x, k.position.y, k.position.z, k.angles.x);
+            out += fmt::format("  key {} at {} {} {} yaw {}\n", k.time, k.position.x, k.position.y,
+                               k.position.z, k.angles.x);
     }
     return out;
 }
@@ -138,17 +140,21 @@ TEST(ObjectTools, LoadsAModelFromASceneFileAVoxAndAVdbCroppedToItsVoxels) {
 TEST(ObjectTools, RefusesModelsBeyondTheCapOrEmpty) {
     TempDir dir;
     std::string big = crateWorld();
-    big += "[[generator]]\ntype = \"box\"\nmin = [0, 8, 0]\nmax = [32, 24, 32]\nmaterial = \"crate\"\n";  // 16384 more
+    big +=
+        "[[generator]]\ntype = \"box\"\nmin = [0, 8, 0]\nmax = [32, 24, 32]\nmaterial = "
+        "\"crate\"\n";  // 16384 more
     auto refused = game::loadObjectModel(writeText(dir.path() / "big.toml", big));
     ASSERT_FALSE(refused.ok());
-    EXPECT_NE(refused.error().message.find("16397 solid voxels; a model holds at most 16384"), std::string::npos)
+    EXPECT_NE(refused.error().message.find("16397 solid voxels; a model holds at most 16384"),
+              std::string::npos)
         << refused.error().message;
 
     std::string empty = crateWorld();
     empty = empty.substr(0, empty.find("[[generator]]"));
     auto none = game::loadObjectModel(writeText(dir.path() / "empty.toml", empty));
     ASSERT_FALSE(none.ok());
-    EXPECT_NE(none.error().message.find("no solid voxels"), std::string::npos) << none.error().message;
+    EXPECT_NE(none.error().message.find("no solid voxels"), std::string::npos)
+        << none.error().message;
 }
 
 TEST(ObjectTools, PlacesTheModelOnTheFaceUnderTheCrosshair) {
@@ -192,9 +198,12 @@ TEST(ObjectTools, PicksTheObjectUnderTheCrosshair) {
     game::UndoHistory undo(64 << 20);
     game::placeObject(scene, undo, crate, lookDownAt(scene, 10.5f, 10.5f), 0.0);
     game::placeObject(scene, undo, crate, lookDownAt(scene, 40.5f, 40.5f), 0.0);
-    EXPECT_EQ(game::pickObject(scene, {40.5f, 30.0f, 40.5f}, {0.0f, -1.0f, 0.0f}), std::optional<std::size_t>(1));
-    EXPECT_EQ(game::pickObject(scene, {10.5f, 30.0f, 10.5f}, {0.0f, -1.0f, 0.0f}), std::optional<std::size_t>(0));
-    EXPECT_EQ(game::pickObject(scene, {20.5f, 30.0f, 20.5f}, {0.0f, -1.0f, 0.0f}), std::nullopt);  // the floor
+    EXPECT_EQ(game::pickObject(scene, {40.5f, 30.0f, 40.5f}, {0.0f, -1.0f, 0.0f}),
+              std::optional<std::size_t>(1));
+    EXPECT_EQ(game::pickObject(scene, {10.5f, 30.0f, 10.5f}, {0.0f, -1.0f, 0.0f}),
+              std::optional<std::size_t>(0));
+    EXPECT_EQ(game::pickObject(scene, {20.5f, 30.0f, 20.5f}, {0.0f, -1.0f, 0.0f}),
+              std::nullopt);  // the floor
 }
 
 TEST(ObjectTools, MovesByWholeVoxelsAndTurnsAboutYShowingTheModelExactly) {
@@ -267,7 +276,8 @@ TEST(ObjectTools, KeysRecordThePoseShownAtTheirTime) {
     ASSERT_EQ(scene.objects[0].path.keys().size(), 4u);
     const ObjectKey& mid = scene.objects[0].path.keys()[2];
     EXPECT_EQ(mid.time, 3.0);
-    EXPECT_EQ(mid.position, glm::ceil(shown.position - half - 0.5) + half);  // halves round down unturned
+    EXPECT_EQ(mid.position,
+              glm::ceil(shown.position - half - 0.5) + half);  // halves round down unturned
     EXPECT_EQ(scene.objects[0].poseAt(3.0).position, mid.position);
 
     // Clearing the path leaves the object static where it is shown.
@@ -282,7 +292,8 @@ TEST(ObjectTools, EveryCommandUndoesAndRedoesExactly) {
     game::ObjectModel crate = crateModel(dir);
     Scene scene = floorScene();
     game::UndoHistory undo(64 << 20);
-    std::vector<std::pair<std::string, std::string>> states{{describeObjects(scene), dynamicVoxels(scene)}};
+    std::vector<std::pair<std::string, std::string>> states{
+        {describeObjects(scene), dynamicVoxels(scene)}};
     auto step = [&](game::ObjectResult r) {
         ASSERT_TRUE(r.changed) << r.message;
         states.emplace_back(describeObjects(scene), dynamicVoxels(scene));
@@ -341,7 +352,8 @@ TEST(ObjectTools, PlacedObjectsSaveAndLoadEqual) {
     // Both objects have the same model: one payload of its own beside the world's.
     std::vector<std::string> payloads;
     for (const auto& e : fs::directory_iterator(file.parent_path()))
-        if (e.path().filename().string().starts_with("objects.object-")) payloads.push_back(e.path().filename().string());
+        if (e.path().filename().string().starts_with("objects.object-"))
+            payloads.push_back(e.path().filename().string());
     ASSERT_EQ(payloads.size(), 1u);
     // Saving the loaded scene again names the same payload; deleting the objects removes it.
     ASSERT_TRUE(store->save(*loaded, file).ok());
@@ -366,11 +378,14 @@ TEST(ObjectTools, DraggingTheSelectedObjectFollowsTheCrosshairAndUndoesInOneStep
     // One frame looking straight down at (x, z), the left button going down/up or held as it is.
     auto frame = [&](std::optional<bool> left, float x, float z) {
         input.beginFrame();
-        if (left) input.apply({game::InputEventType::MouseButton, GLFW_MOUSE_BUTTON_LEFT, *left, {}});
+        if (left)
+            input.apply({game::InputEventType::MouseButton, GLFW_MOUSE_BUTTON_LEFT, *left, {}});
         const glm::vec3 origin(x, 30.0f, z), down(0.0f, -1.0f, 0.0f);
-        return tools.handle(input, true, game::pick(scene.grid, origin, down), origin, down, scene, undo, 1.0);
+        return tools.handle(input, true, game::pick(scene.grid, origin, down), origin, down, scene,
+                            undo, 1.0);
     };
-    ASSERT_TRUE(frame(true, 20.5f, 20.5f).changed);  // places crate_1 (lowest corner 19 4 19), selected
+    ASSERT_TRUE(
+        frame(true, 20.5f, 20.5f).changed);  // places crate_1 (lowest corner 19 4 19), selected
     frame(false, 20.5f, 20.5f);
     ASSERT_EQ(tools.selected, std::optional<std::size_t>(0));
     const std::string placed = dynamicVoxels(scene);
@@ -414,14 +429,16 @@ TEST(ObjectTools, FourHundredNudgesKeepMemoryFlat) {
     game::ObjectModel crate = crateModel(dir);
     Scene scene = floorScene();
     game::UndoHistory undo(256u << 20);  // vox play's default: the budget drops nothing here
-    ASSERT_TRUE(game::placeObject(scene, undo, crate, lookDownAt(scene, 20.5f, 20.5f), 0.0).changed);
+    ASSERT_TRUE(
+        game::placeObject(scene, undo, crate, lookDownAt(scene, 20.5f, 20.5f), 0.0).changed);
     const std::size_t bound = 64u << 20;
     const std::size_t start = residentBytes();
     for (int i = 0; i < 400; ++i) {
         ASSERT_TRUE(game::moveObject(scene, undo, 0, {i % 2 == 0 ? 1 : -1, 0, 0}, 0.0).changed);
         // Stop at once past the bound: the leak would take gigabytes by the end.
         ASSERT_LE(residentBytes(), start + bound)
-            << "after " << i + 1 << " nudges the process grew by " << (residentBytes() - start) / double(1 << 20) << " MiB";
+            << "after " << i + 1 << " nudges the process grew by "
+            << (residentBytes() - start) / double(1 << 20) << " MiB";
     }
     EXPECT_EQ(undo.stats().undoSteps, 401u);
     EXPECT_EQ(undo.stats().droppedSteps, 0u);
@@ -448,7 +465,8 @@ TEST(ObjectTools, TheUndoBudgetCountsWhatAStepHoldsAndDropsOldSteps) {
     // A budget of 64 KiB: nudges share the model, so a few hundred bytes each; the oldest go.
     game::UndoHistory small(64u << 10);
     game::placeObject(scene, small, crate, lookDownAt(scene, 40.5f, 40.5f), 0.0);
-    for (int i = 0; i < 400; ++i) game::moveObject(scene, small, 1, {i % 2 == 0 ? 1 : -1, 0, 0}, 0.0);
+    for (int i = 0; i < 400; ++i)
+        game::moveObject(scene, small, 1, {i % 2 == 0 ? 1 : -1, 0, 0}, 0.0);
     const game::UndoStats s = small.stats();
     EXPECT_LE(s.bytes, s.maxBytes);
     EXPECT_GT(s.droppedSteps, 0u);
@@ -471,5 +489,6 @@ TEST(ObjectTools, AStepTooLargeToKeepEndsTheHistoryAndFreesWhatItHeld) {
     game::deleteObject(scene, undo, 0, 0.0);
     EXPECT_FALSE(undo.canUndo());
     EXPECT_EQ(undo.stats().bytes, 0u);
-    EXPECT_TRUE(model.expired()) << "the deleted crate's model is still held (" << model.use_count() << " holders)";
+    EXPECT_TRUE(model.expired()) << "the deleted crate's model is still held (" << model.use_count()
+                                 << " holders)";
 }

@@ -1,11 +1,11 @@
 // Scripts parse into frame-numbered events; mistakes name the file and line.
-#include <gtest/gtest.h>
+#include "game/script_player.h"
 
 #include <GLFW/glfw3.h>
+#include <gtest/gtest.h>
 
 #include "game/camera_controller.h"
 #include "game/render_scale_controller.h"
-#include "game/script_player.h"
 
 using game::InputEventType;
 using game::ScriptPlayer;
@@ -64,7 +64,8 @@ TEST(ScriptPlayer, ErrorsNameFileAndLine) {
     expectError("0 click sideways\n", "unknown mouse button");
     expectError("0 fly away\n", "bad.script:1: unknown command");
     expectError("0 key W sideways\n", "expected 'down' or 'up'");
-    expectError("0 resize 0 10\n", "bad.script:1: resize x must be positive, not 0; allowed: 1..8192 pixels");
+    expectError("0 resize 0 10\n",
+                "bad.script:1: resize x must be positive, not 0; allowed: 1..8192 pixels");
     // Numbers go through the one number check: no NaN or infinite mouse motion reaches the camera.
     expectError("0 move nan 0\n", "bad.script:1: move x must be a finite number");
     expectError("0 move 0 inf\n", "bad.script:1: move y must be a finite number");
@@ -100,7 +101,9 @@ TEST(CameraController, SameInputSameFlightAndPresetsRoundTrip) {
     EXPECT_LT(glm::length(cam.forward() - want), 1e-5f);
     EXPECT_EQ(cam.preset().position, start.position);
     // Right matches the renderer's basis (forward x world up).
-    EXPECT_LT(glm::length(cam.right() - glm::normalize(glm::cross(cam.forward(), glm::vec3(0, 1, 0)))), 1e-5f);
+    EXPECT_LT(
+        glm::length(cam.right() - glm::normalize(glm::cross(cam.forward(), glm::vec3(0, 1, 0)))),
+        1e-5f);
 }
 
 TEST(RenderScaleController, SettlesNearTheTargetAndIgnoresNoise) {
@@ -119,5 +122,6 @@ TEST(RenderScaleController, SettlesNearTheTargetAndIgnoresNoise) {
     EXPECT_LE(changes, 4);  // a few steps, then it holds
     // Within the band, noise changes nothing.
     game::RenderScaleController steady(66.0, 1.0f / 16.0f, 1.0f);
-    for (int frame = 0; frame < 200; ++frame) EXPECT_EQ(steady.update(0.3f, frame % 2 ? 60.0 : 75.0), 0.3f);
+    for (int frame = 0; frame < 200; ++frame)
+        EXPECT_EQ(steady.update(0.3f, frame % 2 ? 60.0 : 75.0), 0.3f);
 }

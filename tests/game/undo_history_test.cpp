@@ -1,10 +1,11 @@
 // Undo/redo restores the world exactly, costs what the edits touched, and stays within its
 // memory budget.
+#include "game/undo_history.h"
+
 #include <gtest/gtest.h>
 
 #include "core/hash.h"
 #include "game/edit_tools.h"
-#include "game/undo_history.h"
 #include "world/random_worlds.h"
 
 using namespace engine::world;
@@ -21,7 +22,8 @@ EditOp randomEdit(engine::Rng& rng, glm::ivec3 size) {
     op.tool = static_cast<game::Tool>(rng.uniformInt(0, 2));
     op.brush = static_cast<game::Brush>(rng.uniformInt(0, 2));
     op.material = op.tool == game::Tool::Remove ? kEmpty : MaterialId(rng.uniformInt(1, 6));
-    glm::ivec3 a(rng.uniformInt(0, size.x - 1), rng.uniformInt(0, size.y - 1), rng.uniformInt(0, size.z - 1));
+    glm::ivec3 a(rng.uniformInt(0, size.x - 1), rng.uniformInt(0, size.y - 1),
+                 rng.uniformInt(0, size.z - 1));
     if (op.brush == game::Brush::Voxel) {
         op.box = {a, a + 1};
     } else if (op.brush == game::Brush::Box) {
@@ -53,7 +55,8 @@ TEST(UndoHistory, ThousandRandomEditsUndoToTheStartBitForBitAndRedoToTheEnd) {
     std::size_t changed = 0, tried = 0;
     while (changed < 1000) {
         EditOp op = randomEdit(rng, grid.sizeInVoxels());
-        game::EditRecord r = history.record(grid, op.region(), "edit", [&](BrickGrid& g) { game::applyEdit(g, op); });
+        game::EditRecord r = history.record(grid, op.region(), "edit",
+                                            [&](BrickGrid& g) { game::applyEdit(g, op); });
         ++tried;
         if (r.changedCells == 0) continue;
         ASSERT_TRUE(r.undoable) << "edit " << tried;
@@ -62,7 +65,8 @@ TEST(UndoHistory, ThousandRandomEditsUndoToTheStartBitForBitAndRedoToTheEnd) {
     const BrickGrid end = grid;
     EXPECT_FALSE(end == start);
     EXPECT_EQ(history.stats().undoSteps, changed);
-    std::printf("undo history after %zu edits: %.2f MiB\n", changed, double(history.stats().bytes) / kMiB);
+    std::printf("undo history after %zu edits: %.2f MiB\n", changed,
+                double(history.stats().bytes) / kMiB);
 
     while (history.canUndo()) ASSERT_FALSE(history.undo(grid).empty());
     expectSameCells(grid, start);
@@ -83,7 +87,8 @@ TEST(UndoHistory, StoresChangedBricksNotTheWorld) {
     op.tool = game::Tool::Place;
     op.box = {{100, 30, 100}, {101, 31, 101}};  // in an empty cell
     op.material = 2;
-    game::EditRecord r = history.record(grid, op.region(), "one voxel", [&](BrickGrid& g) { game::applyEdit(g, op); });
+    game::EditRecord r = history.record(grid, op.region(), "one voxel",
+                                        [&](BrickGrid& g) { game::applyEdit(g, op); });
     EXPECT_EQ(r.changedCells, 1u);
     // One empty cell's state (a material id) and bookkeeping: far below one brick, let alone
     // the world.
@@ -133,7 +138,8 @@ TEST(UndoHistory, AnEditLargerThanTheBudgetIsAppliedButNotUndoable) {
     op.tool = game::Tool::Paint;
     op.box = grid.bounds();
     op.material = 6;
-    game::EditRecord r = history.record(grid, op.region(), "paint all", [&](BrickGrid& g) { game::applyEdit(g, op); });
+    game::EditRecord r = history.record(grid, op.region(), "paint all",
+                                        [&](BrickGrid& g) { game::applyEdit(g, op); });
     EXPECT_GT(r.changedCells, 16u);
     EXPECT_FALSE(r.undoable);
     EXPECT_FALSE(history.canUndo());
@@ -148,7 +154,8 @@ TEST(UndoHistory, ANewEditClearsRedoAndUnchangedEditsRecordNothing) {
     op.box = {{1, 1, 1}, {2, 2, 2}};
     op.material = 1;
     history.record(grid, op.region(), "a", [&](BrickGrid& g) { game::applyEdit(g, op); });
-    game::EditRecord same = history.record(grid, op.region(), "again", [&](BrickGrid& g) { game::applyEdit(g, op); });
+    game::EditRecord same =
+        history.record(grid, op.region(), "again", [&](BrickGrid& g) { game::applyEdit(g, op); });
     EXPECT_EQ(same.changedCells, 0u);
     EXPECT_EQ(history.stats().undoSteps, 1u);
     EXPECT_EQ(history.undo(grid), "a");

@@ -3,14 +3,13 @@
 // error, or the process dying there) — leaves the previous save readable and unchanged.
 #include "game/world_store.h"
 
+#include <filesystem>
 #include <fmt/format.h>
+#include <fstream>
 #include <gtest/gtest.h>
+#include <set>
 #include <sys/wait.h>
 #include <unistd.h>
-
-#include <filesystem>
-#include <fstream>
-#include <set>
 
 #include "core/atomic_file.h"
 #include "core/hash.h"
@@ -102,10 +101,11 @@ void expectSameWorld(const Scene& a, const Scene& b, const std::string& what) {
     auto ca = a.grid.cells(), cb = b.grid.cells();
     std::size_t differing = 0;
     for (std::size_t i = 0; i < ca.size(); ++i) {
-        bool same = BrickGrid::cellIsBrick(ca[i]) == BrickGrid::cellIsBrick(cb[i]) &&
-                    (BrickGrid::cellIsBrick(ca[i])
-                         ? a.grid.brickVoxels(BrickGrid::cellBrick(ca[i])) == b.grid.brickVoxels(BrickGrid::cellBrick(cb[i]))
-                         : ca[i] == cb[i]);
+        bool same =
+            BrickGrid::cellIsBrick(ca[i]) == BrickGrid::cellIsBrick(cb[i]) &&
+            (BrickGrid::cellIsBrick(ca[i]) ? a.grid.brickVoxels(BrickGrid::cellBrick(ca[i])) ==
+                                                 b.grid.brickVoxels(BrickGrid::cellBrick(cb[i]))
+                                           : ca[i] == cb[i]);
         differing += !same;
     }
     EXPECT_EQ(differing, 0u) << what << ": cells differ";
@@ -123,7 +123,9 @@ TEST(WorldStore, SaveAndLoadRoundTripExactly) {
     EXPECT_TRUE(store->isSave(file));
     // The scene file names the payload with the lossless rule.
     const std::string text = bytesOf(file);
-    EXPECT_NE(text.find("type = \"vdb\"\nsource = \"world.1.vdb\"\nrule = \"ids\""), std::string::npos) << text;
+    EXPECT_NE(text.find("type = \"vdb\"\nsource = \"world.1.vdb\"\nrule = \"ids\""),
+              std::string::npos)
+        << text;
     EXPECT_EQ(countFiles(dir.path(), ".vdb"), 1u);
     auto loaded = store->load(file);
     ASSERT_TRUE(loaded.ok()) << loaded.error().message;
@@ -164,18 +166,25 @@ TEST(WorldStore, RoundTripsBitForBitAfterEdits) {
     auto store = game::makeWorldStore();
     engine::Rng rng(2024);
     const glm::ivec3 size = scene.grid.sizeInVoxels();
-    auto voxel = [&] { return glm::ivec3(rng.uniformInt(0, size.x - 1), rng.uniformInt(0, size.y - 1), rng.uniformInt(0, size.z - 1)); };
+    auto voxel = [&] {
+        return glm::ivec3(rng.uniformInt(0, size.x - 1), rng.uniformInt(0, size.y - 1),
+                          rng.uniformInt(0, size.z - 1));
+    };
     for (int round = 0; round < 6; ++round) {
         if (round == 3) {
-            Material glow{"glow \"new\"", glm::vec3(0.9f, 0.2f, 0.1f), glm::vec3(1.0f, 0.5f, 0.25f), 7.5f};
+            Material glow{"glow \"new\"", glm::vec3(0.9f, 0.2f, 0.1f), glm::vec3(1.0f, 0.5f, 0.25f),
+                          7.5f};
             ASSERT_TRUE(scene.palette.add(glow).has_value());
         }
         const int materials = int(scene.palette.size()) - 1;
-        for (int i = 0; i < 300; ++i) scene.grid.set(voxel(), MaterialId(rng.uniformInt(0, materials)));
+        for (int i = 0; i < 300; ++i)
+            scene.grid.set(voxel(), MaterialId(rng.uniformInt(0, materials)));
         glm::ivec3 a = voxel(), b = voxel();
-        fillBox(scene.grid, Box{glm::min(a, b), glm::max(a, b) + 1}, MaterialId(rng.uniformInt(1, materials)));
+        fillBox(scene.grid, Box{glm::min(a, b), glm::max(a, b) + 1},
+                MaterialId(rng.uniformInt(1, materials)));
         fillSphere(scene.grid, glm::vec3(voxel()), rng.uniform(2.0f, 9.0f), kEmpty);
-        paintSphere(scene.grid, glm::vec3(voxel()), rng.uniform(2.0f, 9.0f), MaterialId(rng.uniformInt(1, materials)));
+        paintSphere(scene.grid, glm::vec3(voxel()), rng.uniform(2.0f, 9.0f),
+                    MaterialId(rng.uniformInt(1, materials)));
         scene.grid.writeCellUniform(glm::ivec3(round % 6, 1, 2), kEmpty);
         scene.grid.writeCellUniform(glm::ivec3(1, round % 5, 3), MaterialId(1 + round % materials));
         scene.grid.clearDirty();
@@ -223,7 +232,8 @@ TEST(WorldStore, FailedPayloadWriteLeavesThePreviousSaveIntact) {
     fs::path file = dir.path() / "world.toml";
     Scene first = makeScene(8);
     ASSERT_TRUE(game::makeWorldStore()->save(first, file).ok());
-    const std::string sceneBefore = bytesOf(file), payloadBefore = bytesOf(dir.path() / "world.1.vdb");
+    const std::string sceneBefore = bytesOf(file),
+                      payloadBefore = bytesOf(dir.path() / "world.1.vdb");
 
     // The exporter writes WORLD.2.vdb through a temporary file beside it; a folder in the way
     // makes that write fail (as a full disk or a read-only folder would).
@@ -260,7 +270,8 @@ TEST(WorldStore, ProcessDyingBetweenWriteAndRenameLeavesThePreviousSaveReadable)
     Scene second = makeScene(5);
     game::SaveFaults faults;
     faults.beforeCommit = []() -> engine::Status { ::_exit(3); };  // killed mid-save
-    EXPECT_EXIT((void)game::makeWorldStore(faults)->save(second, file), ::testing::ExitedWithCode(3), "");
+    EXPECT_EXIT((void)game::makeWorldStore(faults)->save(second, file),
+                ::testing::ExitedWithCode(3), "");
 
     auto loaded = game::makeWorldStore()->load(file);
     ASSERT_TRUE(loaded.ok()) << loaded.error().message;
@@ -299,7 +310,8 @@ TEST(WorldStore, DamagedOrMissingPayloadIsAnErrorNamingTheFiles) {
 
     fs::resize_file(payload, full.size() / 2);
     expectError("cut in half", "");
-    std::ofstream(payload, std::ios::binary | std::ios::trunc) << "not a vdb file at all, just some text";
+    std::ofstream(payload, std::ios::binary | std::ios::trunc)
+        << "not a vdb file at all, just some text";
     expectError("text", "not a VDB file");
     fs::remove(payload);
     expectError("missing", "cannot open");
@@ -322,8 +334,10 @@ TEST(WorldStore, SavedDragonCityKeepsItsDragonPathAndIndirectSettings) {
     // dragon_city as shipped, plus the lighting settings and flythrough a user may give it.
     fs::path original = fs::path(VOX_SOURCE_DIR) / "worlds" / "dragon_city.toml";
     std::string text = bytesOf(original);
-    ASSERT_EQ(text.find("[indirect]"), std::string::npos) << "dragon_city has its own [indirect] now: drop this one";
-    ASSERT_EQ(text.find("[path]"), std::string::npos) << "dragon_city has its own [path] now: drop this one";
+    ASSERT_EQ(text.find("[indirect]"), std::string::npos)
+        << "dragon_city has its own [indirect] now: drop this one";
+    ASSERT_EQ(text.find("[path]"), std::string::npos)
+        << "dragon_city has its own [path] now: drop this one";
     text += R"(
 [indirect]
 mode = "cache"
@@ -383,14 +397,14 @@ on = false
 
 TEST(Autosave, DueAfterTheIntervalOnlyWhenTheWorldChanged) {
     game::Autosave autosave(180.0);
-    EXPECT_FALSE(autosave.due(10.0, 0));    // nothing changed
-    EXPECT_FALSE(autosave.due(10.0, 3));    // changed, too early
+    EXPECT_FALSE(autosave.due(10.0, 0));  // nothing changed
+    EXPECT_FALSE(autosave.due(10.0, 3));  // changed, too early
     EXPECT_TRUE(autosave.due(180.0, 3));
     autosave.written(180.0, 3);
-    EXPECT_FALSE(autosave.due(400.0, 3));   // unchanged since written
+    EXPECT_FALSE(autosave.due(400.0, 3));  // unchanged since written
     EXPECT_FALSE(autosave.due(300.0, 4));
     EXPECT_TRUE(autosave.due(360.0, 4));
-    autosave.postpone(360.0);               // a failed write: retry one interval later
+    autosave.postpone(360.0);  // a failed write: retry one interval later
     EXPECT_FALSE(autosave.due(400.0, 4));
     EXPECT_TRUE(autosave.due(540.0, 4));
     EXPECT_FALSE(game::Autosave(0.0).due(1e9, 7));  // disabled
@@ -399,8 +413,9 @@ TEST(Autosave, DueAfterTheIntervalOnlyWhenTheWorldChanged) {
 
 // A scene file's `name` chose the default save path unchecked: "../../x" saved outside saves/.
 TEST(WorldStore, HostileWorldNamesSaveInsideTheSavesFolder) {
-    const char* hostile[] = {"../../x", "/etc/passwd", "..", "a/../../b", "C:\\x\\y", "", "....", "x\ny", "./.hidden",
-                             "name/with/slashes", "\xff\xfe"};
+    const char* hostile[] = {"../../x", "/etc/passwd", "..",   "a/../../b", "C:\\x\\y",
+                             "",        "....",        "x\ny", "./.hidden", "name/with/slashes",
+                             "\xff\xfe"};
     for (const char* name : hostile) {
         std::filesystem::path p = game::defaultSavePath(name);
         EXPECT_EQ(p.parent_path(), std::filesystem::path("saves")) << "'" << name << "' -> " << p;
@@ -409,7 +424,8 @@ TEST(WorldStore, HostileWorldNamesSaveInsideTheSavesFolder) {
         EXPECT_NE(file.front(), '.') << p;
         EXPECT_EQ(p.extension(), ".toml") << p;
     }
-    EXPECT_EQ(game::defaultSavePath("dragon city"), std::filesystem::path("saves/dragon city.toml"));
+    EXPECT_EQ(game::defaultSavePath("dragon city"),
+              std::filesystem::path("saves/dragon city.toml"));
     EXPECT_EQ(game::defaultSavePath(std::string(300, 'a')).filename().string().size(), 64u + 5u);
 }
 
@@ -419,7 +435,8 @@ TEST(WorldStore, ASaveOverAFolderSaysSoAndLeavesNoPayload) {
     fs::create_directory(dir.path() / "world.toml");
     engine::Status s = game::makeWorldStore()->save(makeScene(6), dir.path() / "world.toml");
     ASSERT_FALSE(s.ok());
-    EXPECT_EQ(s.error().message, (dir.path() / "world.toml").string() + " is a folder; give a file name to write");
+    EXPECT_EQ(s.error().message,
+              (dir.path() / "world.toml").string() + " is a folder; give a file name to write");
     EXPECT_EQ(countFiles(dir.path(), ".vdb"), 0u);
 }
 
@@ -430,7 +447,8 @@ TEST(WorldStore, AFullDiskAtAnyStepOfASaveKeepsThePreviousSave) {
     const fs::path file = dir.path() / "world.toml";
     Scene first = makeScene(10), second = makeScene(11);
     ASSERT_TRUE(game::makeWorldStore()->save(first, file).ok());
-    const std::string sceneBefore = bytesOf(file), payloadBefore = bytesOf(dir.path() / "world.1.vdb");
+    const std::string sceneBefore = bytesOf(file),
+                      payloadBefore = bytesOf(dir.path() / "world.1.vdb");
     const std::set<fs::path> filesBefore = filesIn(dir.path());
     int failures = 0;
     for (std::uint64_t n = 0; n < 400; ++n) {
@@ -439,7 +457,8 @@ TEST(WorldStore, AFullDiskAtAnyStepOfASaveKeepsThePreviousSave) {
         engine::failWritesAfter(std::nullopt);
         if (s.ok()) break;
         ++failures;
-        EXPECT_NE(s.error().message.find("No space left on device"), std::string::npos) << s.error().message;
+        EXPECT_NE(s.error().message.find("No space left on device"), std::string::npos)
+            << s.error().message;
         ASSERT_EQ(bytesOf(file), sceneBefore) << "operation " << n;
         ASSERT_EQ(bytesOf(dir.path() / "world.1.vdb"), payloadBefore) << "operation " << n;
         ASSERT_EQ(filesIn(dir.path()), filesBefore) << "operation " << n;

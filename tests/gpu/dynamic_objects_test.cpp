@@ -1,14 +1,13 @@
 // Dynamic objects on the GPU: traceScene against the CPU reference hit for hit, the G-buffer's
 // dynamic flag and world voxels, motion vectors that follow a moving object, and shadows cast by
 // objects.
-#include <gtest/gtest.h>
-
 #include <cstdio>
+#include <gtest/gtest.h>
 
 #include "gpu/gpu_test_setup.h"
 #include "gpu/texel_buffer_limit.h"
-#include "world/random_worlds.h"
 #include "scene/scene_file.h"
+#include "world/random_worlds.h"
 #include "world/scene_trace.h"
 
 using namespace engine::world;
@@ -24,14 +23,16 @@ DynamicObject makeObject(glm::ivec3 size, std::uint32_t seed) {
     for (int z = 0; z < size.z; ++z)
         for (int y = 0; y < size.y; ++y)
             for (int x = 0; x < size.x; ++x)
-                if ((x * 7 + y * 3 + z * 5 + int(seed)) % 5 != 0) model.set({x, y, z}, MaterialId(1 + (x + y + seed) % 7));
+                if ((x * 7 + y * 3 + z * 5 + int(seed)) % 5 != 0)
+                    model.set({x, y, z}, MaterialId(1 + (x + y + seed) % 7));
     o.model = std::make_shared<const BrickGrid>(std::move(model));
     return o;
 }
 
 // A random world with three rotated objects, one of them half outside the static world.
 Scene sceneWithRotatedObjects() {
-    Scene scene = gpu_testing::sceneWith(testing_worlds::makeWorld(testing_worlds::Kind::Sparse, 21, {64, 48, 64}));
+    Scene scene = gpu_testing::sceneWith(
+        testing_worlds::makeWorld(testing_worlds::Kind::Sparse, 21, {64, 48, 64}));
     scene.objects.push_back(makeObject({20, 9, 13}, 1));
     scene.objects.back().current = {{22.3, 17.9, 25.2}, rotationFromYawPitchRoll({31, -17, 52})};
     scene.objects.push_back(makeObject({16, 16, 6}, 2));
@@ -63,15 +64,18 @@ TEST_F(DynamicObjects, GpuTraceSceneMatchesTheCpuHitForHit) {
     std::vector<Ray> rays = testing_worlds::makeRays(scene.grid, 17, 30000);
     // And rays aimed at the objects, from anywhere around the world.
     engine::Rng rng(5);
-    glm::vec3 lo(scene.dynamic.origin), hi(scene.dynamic.origin + scene.dynamic.grid.sizeInVoxels());
+    glm::vec3 lo(scene.dynamic.origin),
+        hi(scene.dynamic.origin + scene.dynamic.grid.sizeInVoxels());
     for (int i = 0; i < 20000; ++i) {
         glm::vec3 target(rng.uniform(lo.x, hi.x), rng.uniform(lo.y, hi.y), rng.uniform(lo.z, hi.z));
         glm::vec3 origin(rng.uniform(-10, 74), rng.uniform(-10, 58), rng.uniform(-10, 74));
         glm::vec3 d = target - origin;
         if (glm::length(d) < 1e-3f) continue;
-        rays.push_back(Ray{origin, glm::normalize(d), i % 7 == 0 ? rng.uniform(1.0f, 40.0f) : 1.0e30f});
+        rays.push_back(
+            Ray{origin, glm::normalize(d), i % 7 == 0 ? rng.uniform(1.0f, 40.0f) : 1.0e30f});
     }
-    std::vector<shared::TraceRayOutput> gpu = gpu_testing::traceOnGpu(scene, rays, shared::TRACE_MODE_SCENE);
+    std::vector<shared::TraceRayOutput> gpu =
+        gpu_testing::traceOnGpu(scene, rays, shared::TRACE_MODE_SCENE);
     int hits = 0, dynamicHits = 0, mismatches = 0, exactT = 0;
     for (std::size_t i = 0; i < rays.size(); ++i) {
         const Ray& r = rays[i];
@@ -81,20 +85,25 @@ TEST_F(DynamicObjects, GpuTraceSceneMatchesTheCpuHitForHit) {
         float gpuT = glm::uintBitsToFloat(g.data.z);
         hits += cpu.hit;
         dynamicHits += cpu.dynamicSet;
-        bool same = gpuHit == cpu.hit && (!cpu.hit || (glm::ivec3(g.voxel) == cpu.voxel && std::uint32_t(g.voxel.w) == cpu.face &&
-                                                       g.data.y == cpu.material && gpuDynamic == cpu.dynamicSet));
+        bool same = gpuHit == cpu.hit &&
+                    (!cpu.hit ||
+                     (glm::ivec3(g.voxel) == cpu.voxel && std::uint32_t(g.voxel.w) == cpu.face &&
+                      g.data.y == cpu.material && gpuDynamic == cpu.dynamicSet));
         if (same) {
             exactT += !cpu.hit || (gpuT == cpu.t && g.data.w == cpu.steps);
             continue;
         }
         ++mismatches;
         EXPECT_LT(testing_worlds::nearestEdgeDistance(r, (cpu.hit ? cpu.t : 0.0f) + 100.0f), 1e-3f)
-            << "ray " << i << ": a mismatch that is not a grazing case; cpu " << cpu.hit << "/" << cpu.dynamicSet << " "
-            << cpu.voxel.x << "," << cpu.voxel.y << "," << cpu.voxel.z << " gpu " << gpuHit << "/" << gpuDynamic << " "
-            << g.voxel.x << "," << g.voxel.y << "," << g.voxel.z;
+            << "ray " << i << ": a mismatch that is not a grazing case; cpu " << cpu.hit << "/"
+            << cpu.dynamicSet << " " << cpu.voxel.x << "," << cpu.voxel.y << "," << cpu.voxel.z
+            << " gpu " << gpuHit << "/" << gpuDynamic << " " << g.voxel.x << "," << g.voxel.y << ","
+            << g.voxel.z;
     }
-    std::printf("traceScene GPU vs CPU: %zu rays, %d hits, %d on objects, %d mismatches, %d with identical t and steps\n",
-                rays.size(), hits, dynamicHits, mismatches, exactT);
+    std::printf(
+        "traceScene GPU vs CPU: %zu rays, %d hits, %d on objects, %d mismatches, %d with identical "
+        "t and steps\n",
+        rays.size(), hits, dynamicHits, mismatches, exactT);
     EXPECT_GT(dynamicHits, int(rays.size()) / 10) << "the objects are in the way of many rays";
     EXPECT_LE(mismatches * 10000, int(rays.size())) << "more than 0.01% of rays disagree";
     EXPECT_GE(exactT, int(rays.size()) - mismatches - int(rays.size()) / 1000);
@@ -102,7 +111,8 @@ TEST_F(DynamicObjects, GpuTraceSceneMatchesTheCpuHitForHit) {
 
 TEST_F(DynamicObjects, StaticPathIsUnchangedWithoutObjects) {
     // With no objects traceScene is the plain static traversal, to the bit.
-    Scene scene = gpu_testing::sceneWith(testing_worlds::makeWorld(testing_worlds::Kind::Sparse, 4, {48, 40, 56}));
+    Scene scene = gpu_testing::sceneWith(
+        testing_worlds::makeWorld(testing_worlds::Kind::Sparse, 4, {48, 40, 56}));
     std::vector<Ray> rays = testing_worlds::makeRays(scene.grid, 3, 5000);
     auto scene_ = gpu_testing::traceOnGpu(scene, rays, shared::TRACE_MODE_SCENE);
     auto plain = gpu_testing::traceOnGpu(scene, rays, shared::TRACE_MODE_HIERARCHICAL);
@@ -147,7 +157,8 @@ TEST_F(DynamicObjects, MotionVectorsFollowAMovingObject) {
             }
             if (!dynamicFlag) continue;
             ++onObject;
-            EXPECT_NE(scene.dynamic.get(glm::ivec3(g.voxel)), kEmpty) << "voxel is in world coordinates";
+            EXPECT_NE(scene.dynamic.get(glm::ivec3(g.voxel)), kEmpty)
+                << "voxel is in world coordinates";
             ASSERT_EQ(g.motion.w, 1.0f);
             // The CPU's answer: the same material point one frame earlier, seen by the same camera.
             glm::dvec3 p(g.position);
@@ -155,15 +166,18 @@ TEST_F(DynamicObjects, MotionVectorsFollowAMovingObject) {
             glm::dvec3 rel = prev - glm::dvec3(camera.position);
             glm::dvec3 fw(f.cameraForward), rt(f.cameraRight), up(f.cameraUp);
             double z = glm::dot(rel, fw), tanHalf = f.cameraPosition.w, aspect = f.cameraForward.w;
-            glm::dvec2 ndc(glm::dot(rel, rt) / (z * tanHalf * aspect), -glm::dot(rel, up) / (z * tanHalf));
+            glm::dvec2 ndc(glm::dot(rel, rt) / (z * tanHalf * aspect),
+                           -glm::dot(rel, up) / (z * tanHalf));
             glm::dvec2 expected = (ndc * 0.5 + 0.5) * glm::dvec2(settings.width, settings.height);
             double err = glm::length(expected - glm::dvec2(g.motion.x, g.motion.y));
             worst = std::max(worst, err);
             EXPECT_LT(err, 0.05) << "pixel " << x << "," << y;
             moved += glm::length(glm::dvec2(x + 0.5, y + 0.5) - expected) > 0.5;
         }
-    std::printf("motion vectors: %d object pixels, %d moved by more than half a pixel, worst error %.4f px\n", onObject,
-                moved, worst);
+    std::printf(
+        "motion vectors: %d object pixels, %d moved by more than half a pixel, worst error %.4f "
+        "px\n",
+        onObject, moved, worst);
     EXPECT_GT(onObject, 100);
     EXPECT_GT(moved, onObject / 2) << "the object does move between the frames";
 }
@@ -203,7 +217,8 @@ TEST_F(DynamicObjects, ObjectsCastShadows) {
     ASSERT_GT(floorUnder, 50);
     ASSERT_GT(floorOpen, 50);
     EXPECT_EQ(shadowed, floorUnder);
-    for (float r : underRadiance) EXPECT_LT(r, 0.5 * openSum / floorOpen) << "the floor under the slab is in its shadow";
+    for (float r : underRadiance)
+        EXPECT_LT(r, 0.5 * openSum / floorOpen) << "the floor under the slab is in its shadow";
     (void)camera;
 }
 
@@ -218,7 +233,8 @@ TEST_F(DynamicObjects, ShippedWorldsRenderWithTheirObjects) {
             settings.timeSeconds = t;
             renderer.render(scene, scene.camera(), settings, kPreview);
             FrameImages img = renderer.readback();
-            for (const auto& g : img.gbuffer) dynamicPixels += (g.data.w & shared::GBUFFER_FLAG_DYNAMIC) != 0;
+            for (const auto& g : img.gbuffer)
+                dynamicPixels += (g.data.w & shared::GBUFFER_FLAG_DYNAMIC) != 0;
         }
         EXPECT_GT(dynamicPixels, 0) << name << ": its objects are in view of its first camera";
     }
@@ -235,16 +251,20 @@ TEST_F(DynamicObjects, AGridOverTheTexelLimitIsRefusedWithItsSize) {
     Renderer renderer(gpu_testing::context());
     gpu_testing::context().limitTexelBuffers(100000);
     try {
-        renderer.render(scene, {"test", {32, 24, -10}, {32, 10, 32}, 60.0f}, frame(32, 32), kPreview);
+        renderer.render(scene, {"test", {32, 24, -10}, {32, 10, 32}, 60.0f}, frame(32, 32),
+                        kPreview);
         ADD_FAILURE() << "no error";
     } catch (const engine::gpu::TexelBufferTooLarge& e) {
-        EXPECT_NE(std::string(e.what()).find("the dynamic objects' grid too large for the GPU's texel buffer: "),
+        EXPECT_NE(std::string(e.what()).find(
+                      "the dynamic objects' grid too large for the GPU's texel buffer: "),
                   std::string::npos)
             << e.what();
-        EXPECT_NE(std::string(e.what()).find(" texels, limit 100000"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find(" texels, limit 100000"), std::string::npos)
+            << e.what();
     }
     gpu_testing::context().limitTexelBuffers(0);  // the device's
     // The refused grid was not taken for uploaded: with the limit back, the next frame sends it.
-    auto again = renderer.render(scene, {"test", {32, 24, -10}, {32, 10, 32}, 60.0f}, frame(32, 32), kPreview);
+    auto again = renderer.render(scene, {"test", {32, 24, -10}, {32, 10, 32}, 60.0f}, frame(32, 32),
+                                 kPreview);
     EXPECT_GT(again.upload.dynamicBytes, 0u);
 }

@@ -1,9 +1,8 @@
 // Flythroughs on the GPU: timeline events reach the image on their frame, whole captures repeat
 // exactly, and a slice rendered after a warm-up agrees with the whole capture.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <cstdio>
+#include <gtest/gtest.h>
 #include <string>
 
 #include "gpu/gpu_test_setup.h"

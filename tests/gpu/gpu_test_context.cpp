@@ -3,9 +3,8 @@
 
 #include <cstdio>
 #include <cstdlib>
-#include <memory>
-
 #include <fmt/format.h>
+#include <memory>
 
 #include "gpu/buffer.h"
 #include "gpu/command_list.h"
@@ -27,7 +26,8 @@ engine::gpu::Context& context() {
             std::abort();
         }
         std::printf("GPU tests on %s (%s), validation %s\n", (*created)->info().name.c_str(),
-                    (*created)->info().driver.c_str(), (*created)->validationEnabled() ? "on" : "off");
+                    (*created)->info().driver.c_str(),
+                    (*created)->validationEnabled() ? "on" : "off");
         return std::move(created).value();
     }();
     return *ctx;
@@ -47,18 +47,23 @@ engine::world::Scene sceneWith(engine::world::BrickGrid grid, int materials) {
 
 namespace {
 
-std::vector<shared::TraceRayOutput> traceThrough(engine::render::GpuWorld& world, engine::world::Scene& scene,
-                                                 const std::vector<engine::world::Ray>& rays, std::uint32_t mode) {
+std::vector<shared::TraceRayOutput> traceThrough(engine::render::GpuWorld& world,
+                                                 engine::world::Scene& scene,
+                                                 const std::vector<engine::world::Ray>& rays,
+                                                 std::uint32_t mode) {
     using namespace engine;
     gpu::Context& ctx = context();
     gpu::Uploader uploader(ctx);
     render::TraceRaysPass pass(ctx);
     std::vector<shared::TraceRayInput> inputs;
-    for (const world::Ray& r : rays) inputs.push_back({glm::vec4(r.origin, r.tMax), glm::vec4(r.direction, 0.0f)});
+    for (const world::Ray& r : rays)
+        inputs.push_back({glm::vec4(r.origin, r.tMax), glm::vec4(r.direction, 0.0f)});
     shared::TraceRaysParams params{glm::uvec4(std::uint32_t(rays.size()), mode, 0u, 0u)};
     gpu::Buffer paramsBuf(ctx, gpu::BufferKind::Storage, sizeof(params), "test.params");
-    gpu::Buffer raysBuf(ctx, gpu::BufferKind::Storage, inputs.size() * sizeof(inputs[0]), "test.rays");
-    gpu::Buffer hitsBuf(ctx, gpu::BufferKind::Storage, inputs.size() * sizeof(shared::TraceRayOutput), "test.hits");
+    gpu::Buffer raysBuf(ctx, gpu::BufferKind::Storage, inputs.size() * sizeof(inputs[0]),
+                        "test.rays");
+    gpu::Buffer hitsBuf(ctx, gpu::BufferKind::Storage,
+                        inputs.size() * sizeof(shared::TraceRayOutput), "test.hits");
     gpu::Buffer readback(ctx, gpu::BufferKind::Readback, hitsBuf.size(), "test.readback");
     gpu::CommandList cmd(ctx);
     cmd.begin();
@@ -76,14 +81,17 @@ std::vector<shared::TraceRayOutput> traceThrough(engine::render::GpuWorld& world
 
 }  // namespace
 
-std::vector<shared::TraceRayOutput> traceOnGpu(engine::world::Scene& scene, const std::vector<engine::world::Ray>& rays,
+std::vector<shared::TraceRayOutput> traceOnGpu(engine::world::Scene& scene,
+                                               const std::vector<engine::world::Ray>& rays,
                                                std::uint32_t mode) {
     engine::render::GpuWorld world(context());
     return traceThrough(world, scene, rays, mode);
 }
 
-std::vector<shared::TraceRayOutput> traceOnGpu(engine::render::GpuWorld& world, engine::world::Scene& scene,
-                                               const std::vector<engine::world::Ray>& rays, std::uint32_t mode) {
+std::vector<shared::TraceRayOutput> traceOnGpu(engine::render::GpuWorld& world,
+                                               engine::world::Scene& scene,
+                                               const std::vector<engine::world::Ray>& rays,
+                                               std::uint32_t mode) {
     std::vector<shared::TraceRayOutput> out = traceThrough(world, scene, rays, mode);
     scene.grid.clearDirty();
     return out;

@@ -23,7 +23,8 @@ engine::world::Scene loadWorld(const std::string& name) {
     return scene.ok() ? std::move(scene).value() : engine::world::Scene{};
 }
 
-engine::world::Scene paletteScene(glm::ivec3 size, std::initializer_list<engine::world::Material> materials,
+engine::world::Scene paletteScene(glm::ivec3 size,
+                                  std::initializer_list<engine::world::Material> materials,
                                   bool darkSky) {
     engine::world::Scene scene;
     scene.grid = engine::world::BrickGrid(size);
@@ -42,8 +43,9 @@ FrameImages renderOnce(engine::world::Scene& scene, const engine::world::CameraP
     return renderer.readback();
 }
 
-FrameImages renderFrames(Renderer& renderer, engine::world::Scene& scene, const LightingSettings& lighting,
-                         const FrameSettings& settings, int frames) {
+FrameImages renderFrames(Renderer& renderer, engine::world::Scene& scene,
+                         const LightingSettings& lighting, const FrameSettings& settings,
+                         int frames) {
     for (int i = 0; i < frames; ++i) renderer.render(scene, scene.camera(), settings, lighting);
     return renderer.readback();
 }

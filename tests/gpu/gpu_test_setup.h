@@ -5,11 +5,10 @@
 #pragma once
 
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <initializer_list>
 #include <string>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "gpu/gpu_test_context.h"
 #include "render/renderer.h"
@@ -36,7 +35,8 @@ engine::world::Scene loadWorld(const std::string& name);
 
 // An empty world of `size` voxels whose palette is `materials` (ids 1..n in order). With
 // `darkSky`, no sun and no sky: every bit of light comes from the emitters.
-engine::world::Scene paletteScene(glm::ivec3 size, std::initializer_list<engine::world::Material> materials,
+engine::world::Scene paletteScene(glm::ivec3 size,
+                                  std::initializer_list<engine::world::Material> materials,
                                   bool darkSky);
 
 // One frame of `scene` from `camera` by a fresh Renderer, read back.
@@ -45,8 +45,9 @@ FrameImages renderOnce(engine::world::Scene& scene, const engine::world::CameraP
 
 // `frames` frames of `scene` from its first camera by `renderer` (its history carries on), the
 // last one read back.
-FrameImages renderFrames(Renderer& renderer, engine::world::Scene& scene, const LightingSettings& lighting,
-                         const FrameSettings& settings, int frames);
+FrameImages renderFrames(Renderer& renderer, engine::world::Scene& scene,
+                         const LightingSettings& lighting, const FrameSettings& settings,
+                         int frames);
 
 // Rec. 709 luminance of linear RGB.
 inline double luminance(const glm::vec4& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }

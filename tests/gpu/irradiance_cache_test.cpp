@@ -1,10 +1,9 @@
 // The voxel-face irradiance cache against the path tracer's indirect light, and where such caches
 // are known to fail: light leaking through thin walls, memory growing with the world, stale rays
 // after edits.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <cstdlib>
+#include <gtest/gtest.h>
 #include <map>
 #include <tuple>
 
@@ -27,11 +26,12 @@ constexpr MaterialId kWhite = 1, kRed = 2, kLamp = 3, kGreen = 4;
 
 // Under the default sun and sky.
 Scene makeScene(glm::ivec3 size) {
-    return paletteScene(size,
-                        {Material{"white", glm::vec3(0.75f)}, Material{"red", glm::vec3(0.8f, 0.15f, 0.1f)},
-                         Material{"lamp", glm::vec3(0.8f), glm::vec3(1.0f, 0.85f, 0.6f), 8.0f},
-                         Material{"green", glm::vec3(0.1f, 0.7f, 0.2f)}},
-                        false);
+    return paletteScene(
+        size,
+        {Material{"white", glm::vec3(0.75f)}, Material{"red", glm::vec3(0.8f, 0.15f, 0.1f)},
+         Material{"lamp", glm::vec3(0.8f), glm::vec3(1.0f, 0.85f, 0.6f), 8.0f},
+         Material{"green", glm::vec3(0.1f, 0.7f, 0.2f)}},
+        false);
 }
 
 // An open courtyard: a floor, a red wall and a green wall in a corner, a pillar, sun and sky and
@@ -44,20 +44,23 @@ Scene courtyard(glm::ivec3 size = {64, 40, 64}) {
     fillBox(scene.grid, Box{{24, 4, 24}, {30, 20, 30}}, kWhite);
     fillBox(scene.grid, Box{{10, 12, 40}, {12, 14, 42}}, kLamp);
     scene.sky.sunDirection = glm::normalize(glm::vec3(-0.5f, 1.0f, -0.6f));
-    scene.cameras.push_back(CameraPreset{"corner", {8.0f, 26.0f, 6.0f}, {46.0f, 6.0f, 44.0f}, 70.0f});
+    scene.cameras.push_back(
+        CameraPreset{"corner", {8.0f, 26.0f, 6.0f}, {46.0f, 6.0f, 44.0f}, 70.0f});
     scene.grid.clearDirty();
     return scene;
 }
 
 LightingSettings cacheLighting(std::uint32_t bounces = 1) {
     LightingSettings l;
-    l.method = Method::Preview;  // the direct term does not matter here: only the cache's own output is compared
+    l.method = Method::Preview;  // the direct term does not matter here: only the cache's own
+                                 // output is compared
     l.indirect = Indirect::Cache;
     l.cache.bounces = bounces;
     return l;
 }
 
-std::vector<glm::vec4> cacheIndirect(Scene& scene, const LightingSettings& l, std::uint32_t size, int frames) {
+std::vector<glm::vec4> cacheIndirect(Scene& scene, const LightingSettings& l, std::uint32_t size,
+                                     int frames) {
     Renderer r(gpu_testing::context());
     return renderFrames(r, scene, l, frame(size), frames).indirect;
 }
@@ -89,17 +92,21 @@ DynamicObject movingBall(double seconds) {
 
 // The path tracer's indirect light (with `bounces` minus without) from `camera`, at pixel centres
 // like the cache's gather.
-std::vector<glm::vec4> referenceIndirectAt(Scene& scene, const engine::world::CameraPreset& camera, std::uint32_t size,
-                                           std::uint32_t bounces, std::uint32_t spp, double time, std::uint32_t seed) {
+std::vector<glm::vec4> referenceIndirectAt(Scene& scene, const engine::world::CameraPreset& camera,
+                                           std::uint32_t size, std::uint32_t bounces,
+                                           std::uint32_t spp, double time, std::uint32_t seed) {
     auto run = [&](std::uint32_t b) {
         Renderer r(gpu_testing::context());
         LightingSettings l;
         l.method = Method::Reference;
-        l.referenceFilter = engine::lighting::ReferenceFilter::PixelCentre;  // the cache is gathered at pixel centres
+        l.referenceFilter =
+            engine::lighting::ReferenceFilter::PixelCentre;  // the cache is gathered at pixel
+                                                             // centres
         l.bounces = b;
         l.seed = seed;
         l.samplesPerFrame = 32;
-        for (std::uint32_t i = 0; i < spp / 32; ++i) r.render(scene, camera, frameAt(size, time), l);
+        for (std::uint32_t i = 0; i < spp / 32; ++i)
+            r.render(scene, camera, frameAt(size, time), l);
         return r.readback().radiance;
     };
     std::vector<glm::vec4> with = run(bounces), without = run(0);
@@ -107,8 +114,9 @@ std::vector<glm::vec4> referenceIndirectAt(Scene& scene, const engine::world::Ca
     return with;
 }
 
-std::vector<glm::vec4> referenceIndirect(Scene& scene, std::uint32_t size, std::uint32_t bounces, std::uint32_t spp,
-                                         double time = 0.0, std::uint32_t seed = 1) {
+std::vector<glm::vec4> referenceIndirect(Scene& scene, std::uint32_t size, std::uint32_t bounces,
+                                         std::uint32_t spp, double time = 0.0,
+                                         std::uint32_t seed = 1) {
     return referenceIndirectAt(scene, scene.camera(), size, bounces, spp, time, seed);
 }
 
@@ -124,8 +132,8 @@ double meanOf(const std::vector<glm::vec4>& img) {
 struct IndirectError {
     double rmae = 0.0, relativeMae = 0.0, meanRatio = 0.0;
 };
-IndirectError indirectError(const std::vector<glm::vec4>& cache, const std::vector<glm::vec4>& ref, std::uint32_t w,
-                            std::uint32_t h) {
+IndirectError indirectError(const std::vector<glm::vec4>& cache, const std::vector<glm::vec4>& ref,
+                            std::uint32_t w, std::uint32_t h) {
     auto e = engine::metrics::compareImages({cache, w, h}, {ref, w, h});
     EXPECT_TRUE(e);
     const double refMean = meanOf(ref);
@@ -139,16 +147,20 @@ std::vector<glm::vec4> average(const std::vector<glm::vec4>& a, const std::vecto
 }
 
 // The converged cache (one bounce, defaults but K) with the lighting seed `seed`.
-std::vector<glm::vec4> cacheIndirectSeeded(Scene& scene, const engine::world::CameraPreset& camera, std::uint32_t size,
-                                           int frames, std::uint32_t directions, std::uint32_t seed, float maxRay = 0.0f,
+std::vector<glm::vec4> cacheIndirectSeeded(Scene& scene, const engine::world::CameraPreset& camera,
+                                           std::uint32_t size, int frames, std::uint32_t directions,
+                                           std::uint32_t seed, float maxRay = 0.0f,
                                            float lodDistance = 0.0f) {
     LightingSettings l = cacheLighting(1);
     l.cache.directions = directions;
     l.cache.lodDistance = lodDistance;
     if (maxRay > 0.0f) l.cache.maxRayLength = maxRay;
-    if (const char* v = std::getenv("VOX_MEASURE_LIGHT_SAMPLES")) l.cache.lightSamples = std::uint32_t(std::strtoul(v, nullptr, 10));
-    if (const char* v = std::getenv("VOX_MEASURE_BUDGET")) l.cache.rayBudget = std::uint32_t(std::strtoul(v, nullptr, 10));
-    if (const char* v = std::getenv("VOX_MEASURE_NEIGHBOURHOOD")) l.cache.neighbourhood = std::uint32_t(std::strtoul(v, nullptr, 10));
+    if (const char* v = std::getenv("VOX_MEASURE_LIGHT_SAMPLES"))
+        l.cache.lightSamples = std::uint32_t(std::strtoul(v, nullptr, 10));
+    if (const char* v = std::getenv("VOX_MEASURE_BUDGET"))
+        l.cache.rayBudget = std::uint32_t(std::strtoul(v, nullptr, 10));
+    if (const char* v = std::getenv("VOX_MEASURE_NEIGHBOURHOOD"))
+        l.cache.neighbourhood = std::uint32_t(std::strtoul(v, nullptr, 10));
     l.seed = seed;
     Renderer r(gpu_testing::context());
     for (int i = 0; i < frames; ++i) r.render(scene, camera, frameAt(size, 0.0), l);
@@ -173,12 +185,15 @@ TEST_F(IrradianceCache, OneBounceMatchesReference) {
     scene.objects.push_back(movingBall(0.5));
     const std::uint32_t size = 48;
     Renderer r(gpu_testing::context());
-    for (std::uint32_t i = 0; i < 96; ++i) r.render(scene, scene.camera(), frameAt(size, i / 60.0), cacheLighting(1));
+    for (std::uint32_t i = 0; i < 96; ++i)
+        r.render(scene, scene.camera(), frameAt(size, i / 60.0), cacheLighting(1));
     std::vector<glm::vec4> cache = r.readback().indirect;
     std::vector<glm::vec4> ref = referenceIndirect(scene, size, 1, 2048, 95 / 60.0);
     const double refMean = meanOf(ref), cacheMean = meanOf(cache), err = mae(cache, ref);
-    std::printf("one bounce: reference indirect mean %.5f, cache %.5f (%+.1f %%), MAE %.5f = %.1f %% of the mean\n", refMean,
-                cacheMean, 100.0 * (cacheMean / refMean - 1.0), err, 100.0 * err / refMean);
+    std::printf(
+        "one bounce: reference indirect mean %.5f, cache %.5f (%+.1f %%), MAE %.5f = %.1f %% of "
+        "the mean\n",
+        refMean, cacheMean, 100.0 * (cacheMean / refMean - 1.0), err, 100.0 * err / refMean);
     ASSERT_GT(refMean, 0.01);
     EXPECT_NEAR(cacheMean / refMean, 1.0, 0.10);
     EXPECT_LT(err / refMean, 0.25);
@@ -193,8 +208,10 @@ TEST_F(IrradianceCache, MultiBounceApproachesMultiBounceReference) {
     std::vector<glm::vec4> one = cacheIndirect(scene, cacheLighting(1), size, 64);
     std::vector<glm::vec4> many = cacheIndirect(scene, cacheLighting(4), size, 64);
     const double refMean = meanOf(ref);
-    std::printf("multi-bounce: reference mean %.5f; cache 1 bounce %.5f (MAE %.5f), 4 bounces %.5f (MAE %.5f)\n", refMean,
-                meanOf(one), mae(one, ref), meanOf(many), mae(many, ref));
+    std::printf(
+        "multi-bounce: reference mean %.5f; cache 1 bounce %.5f (MAE %.5f), 4 bounces %.5f (MAE "
+        "%.5f)\n",
+        refMean, meanOf(one), mae(one, ref), meanOf(many), mae(many, ref));
     EXPECT_LT(mae(many, ref), 0.8 * mae(one, ref));
     EXPECT_NEAR(meanOf(many) / refMean, 1.0, 0.15);
 }
@@ -219,8 +236,10 @@ ThinWallResult thinWall(float lodDistance) {
     fillBox(scene.grid, Box{{24, 4, 8}, {40, 19, 40}}, 0);
     fillBox(scene.grid, Box{{12, 10, 20}, {14, 12, 22}}, kLamp);
     // Look into the room through the camera placed inside it, and out at the lit side.
-    scene.cameras.push_back(CameraPreset{"inside", {38.0f, 16.0f, 24.0f}, {24.0f, 6.0f, 24.0f}, 80.0f});
-    scene.cameras.push_back(CameraPreset{"outside", {4.0f, 16.0f, 24.0f}, {23.0f, 6.0f, 24.0f}, 80.0f});
+    scene.cameras.push_back(
+        CameraPreset{"inside", {38.0f, 16.0f, 24.0f}, {24.0f, 6.0f, 24.0f}, 80.0f});
+    scene.cameras.push_back(
+        CameraPreset{"outside", {4.0f, 16.0f, 24.0f}, {23.0f, 6.0f, 24.0f}, 80.0f});
     scene.grid.clearDirty();
 
     Renderer r(gpu_testing::context());
@@ -240,13 +259,17 @@ ThinWallResult thinWall(float lodDistance) {
     out.outsideMean = meanOf(r.readback().indirect);
     for (const glm::vec4& p : inside) out.insideMax = std::max({out.insideMax, p.x, p.y, p.z});
     // The gather's fallback: the room's voxels have no entries in the first frame inside, and the
-    // nearest entries of the floor's plane are the lit ones outside, two voxels away under the wall.
+    // nearest entries of the floor's plane are the lit ones outside, two voxels away under the
+    // wall.
     Renderer first(gpu_testing::context());
     for (int i = 0; i < 12; ++i) first.render(scene, scene.camera("outside"), frame(48), l);
     first.render(scene, scene.camera("inside"), frame(48), l);
-    for (const glm::vec4& p : first.readback().indirect) out.firstLookInsideMax = std::max({out.firstLookInsideMax, p.x, p.y, p.z});
-    std::printf("thin wall (lod_distance %g): indirect outside mean %.4f; inside max %.3g (first look %.3g); coarse entries %u\n",
-                lodDistance, out.outsideMean, out.insideMax, out.firstLookInsideMax, out.coarseEntries);
+    for (const glm::vec4& p : first.readback().indirect)
+        out.firstLookInsideMax = std::max({out.firstLookInsideMax, p.x, p.y, p.z});
+    std::printf(
+        "thin wall (lod_distance %g): indirect outside mean %.4f; inside max %.3g (first look "
+        "%.3g); coarse entries %u\n",
+        lodDistance, out.outsideMean, out.insideMax, out.firstLookInsideMax, out.coarseEntries);
     return out;
 }
 
@@ -254,8 +277,8 @@ ThinWallResult thinWall(float lodDistance) {
 
 TEST_F(IrradianceCache, ThinWallDoesNotLeak) {
     const ThinWallResult fine = thinWall(0.0f);
-    EXPECT_GT(fine.outsideMean, 0.02);  // the cache works on the lit side
-    EXPECT_EQ(fine.insideMax, 0.0f);    // and nothing crosses the wall
+    EXPECT_GT(fine.outsideMean, 0.02);         // the cache works on the lit side
+    EXPECT_EQ(fine.insideMax, 0.0f);           // and nothing crosses the wall
     EXPECT_EQ(fine.firstLookInsideMax, 0.0f);  // not even through the gather's fallback
     EXPECT_EQ(fine.coarseEntries, 0u);
     const ThinWallResult coarse = thinWall(1.0f);
@@ -272,11 +295,13 @@ TEST_F(IrradianceCache, ThinWallDoesNotLeak) {
 TEST_F(IrradianceCache, NewlyVisibleVoxelsGetLightInTheirFirstFrame) {
     Scene scene = courtyard();
     const engine::world::CameraPreset before = scene.camera();
-    engine::world::CameraPreset after = before;  // a step sideways and forwards: new voxels come into view
+    engine::world::CameraPreset after =
+        before;  // a step sideways and forwards: new voxels come into view
     after.position += glm::vec3(4.0f, 0.0f, 3.0f);
     after.target += glm::vec3(4.0f, 0.0f, 3.0f);
     const std::uint32_t size = 48;
-    auto firstFrameAfterTheStep = [&](std::uint32_t fallback, FrameImages& images, std::vector<bool>& isNew) {
+    auto firstFrameAfterTheStep = [&](std::uint32_t fallback, FrameImages& images,
+                                      std::vector<bool>& isNew) {
         Renderer r(gpu_testing::context());
         LightingSettings l = cacheLighting(1);
         l.cache.fallbackRadius = fallback;
@@ -287,7 +312,8 @@ TEST_F(IrradianceCache, NewlyVisibleVoxelsGetLightInTheirFirstFrame) {
         for (std::size_t p = 0; p < images.gbuffer.size(); ++p) {
             const shared::GBufferTexel& g = images.gbuffer[p];
             if (g.voxel.w >= 6 || (g.data.w & shared::GBUFFER_FLAG_DYNAMIC) != 0u) continue;
-            isNew[p] = r.irradianceCache().directory().slotOf({glm::ivec3(g.voxel), shared::CACHE_SET_STATIC}) == ~0u;
+            isNew[p] = r.irradianceCache().directory().slotOf(
+                           {glm::ivec3(g.voxel), shared::CACHE_SET_STATIC}) == ~0u;
         }
     };
     FrameImages with, without;
@@ -303,7 +329,8 @@ TEST_F(IrradianceCache, NewlyVisibleVoxelsGetLightInTheirFirstFrame) {
         const double c = (converged[p].x + converged[p].y + converged[p].z) / 3.0;
         if (!isNew[p] || c <= 0.0) continue;
         const double w = (with.indirect[p].x + with.indirect[p].y + with.indirect[p].z) / 3.0;
-        const double wo = (without.indirect[p].x + without.indirect[p].y + without.indirect[p].z) / 3.0;
+        const double wo =
+            (without.indirect[p].x + without.indirect[p].y + without.indirect[p].z) / 3.0;
         ++newPixels;
         darkWith += w == 0.0;
         darkWithout += wo == 0.0;
@@ -311,11 +338,16 @@ TEST_F(IrradianceCache, NewlyVisibleVoxelsGetLightInTheirFirstFrame) {
         sumConverged += c;
         absError += std::abs(w - c);
     }
-    std::printf("newly visible voxels: %u pixels; without an indirect term in their first frame: %u with the fallback, "
-                "%u without; their mean %.4f against the converged cache's %.4f (%+.1f %%), MAE %.1f %% of it\n",
-                newPixels, darkWith, darkWithout, sumWith / std::max(newPixels, 1u), sumConverged / std::max(newPixels, 1u),
-                100.0 * (sumWith / sumConverged - 1.0), 100.0 * absError / sumConverged);
-    ASSERT_GT(newPixels, 50u) << "the step must bring new voxels into view for this test to mean anything";
+    std::printf(
+        "newly visible voxels: %u pixels; without an indirect term in their first frame: %u with "
+        "the fallback, "
+        "%u without; their mean %.4f against the converged cache's %.4f (%+.1f %%), MAE %.1f %% of "
+        "it\n",
+        newPixels, darkWith, darkWithout, sumWith / std::max(newPixels, 1u),
+        sumConverged / std::max(newPixels, 1u), 100.0 * (sumWith / sumConverged - 1.0),
+        100.0 * absError / sumConverged);
+    ASSERT_GT(newPixels, 50u)
+        << "the step must bring new voxels into view for this test to mean anything";
     EXPECT_GT(darkWithout, 0u) << "without the fallback some new pixels read nothing";
     EXPECT_EQ(darkWith, 0u);
     EXPECT_NEAR(sumWith / sumConverged, 1.0, 0.15);
@@ -341,10 +373,12 @@ TEST_F(IrradianceCache, FarSurfacesShareCoarseEntries) {
     std::vector<glm::vec4> fine = run(0.0f, fineEntries, fineCoarse);
     std::vector<glm::vec4> lod = run(40.0f, lodEntries, lodCoarse);
     const double fineMean = meanOf(fine), lodMean = meanOf(lod), err = mae(lod, fine) / fineMean;
-    std::printf("lod: entries %u fine, %u with lod_distance 40 (%u coarse, %.2fx); indirect mean %.4f vs %.4f (%+.1f %%), "
-                "MAE %.1f %% of the mean\n",
-                fineEntries, lodEntries, lodCoarse, double(lodEntries) / fineEntries, fineMean, lodMean,
-                100.0 * (lodMean / fineMean - 1.0), 100.0 * err);
+    std::printf(
+        "lod: entries %u fine, %u with lod_distance 40 (%u coarse, %.2fx); indirect mean %.4f vs "
+        "%.4f (%+.1f %%), "
+        "MAE %.1f %% of the mean\n",
+        fineEntries, lodEntries, lodCoarse, double(lodEntries) / fineEntries, fineMean, lodMean,
+        100.0 * (lodMean / fineMean - 1.0), 100.0 * err);
     EXPECT_EQ(fineCoarse, 0u);
     EXPECT_GT(lodCoarse, 100u);
     // Measured: 0.55x the entries, mean -0.0 %, MAE 0.7 % of the mean.
@@ -360,18 +394,22 @@ TEST_F(IrradianceCache, LongRaysInALargeSealedRoomSeeNoSky) {
     fillBox(scene.grid, Box{{0, 0, 0}, {272, 272, 272}}, kWhite);
     fillBox(scene.grid, Box{{4, 4, 4}, {268, 268, 268}}, 0);  // interior 264^3, walls 4 thick
     scene.sky.skyRadiance = glm::vec3(1.0f);
-    scene.cameras.push_back(CameraPreset{"inside", {136.0f, 200.0f, 40.0f}, {136.0f, 4.0f, 200.0f}, 80.0f});
+    scene.cameras.push_back(
+        CameraPreset{"inside", {136.0f, 200.0f, 40.0f}, {136.0f, 4.0f, 200.0f}, 80.0f});
     scene.grid.clearDirty();
     LightingSettings l = cacheLighting(1);
     l.cache.directions = 32;
     std::vector<glm::vec4> inside = cacheIndirect(scene, l, 32, 4);
     float insideMax = 0.0f;
     for (const glm::vec4& p : inside) insideMax = std::max({insideMax, p.x, p.y, p.z});
-    // The old limit (250 voxels, then the most a packed hit could hold) shows what the test catches.
+    // The old limit (250 voxels, then the most a packed hit could hold) shows what the test
+    // catches.
     l.cache.maxRayLength = 250.0f;
     const double cutShort = meanOf(cacheIndirect(scene, l, 32, 4));
-    std::printf("large sealed room: indirect max %.3g (rays of up to %.0f voxels); mean %.4f with rays cut at 250\n",
-                insideMax, shared::CACHE_MAX_RAY_LENGTH, cutShort);
+    std::printf(
+        "large sealed room: indirect max %.3g (rays of up to %.0f voxels); mean %.4f with rays cut "
+        "at 250\n",
+        insideMax, shared::CACHE_MAX_RAY_LENGTH, cutShort);
     EXPECT_EQ(insideMax, 0.0f);
     EXPECT_GT(cutShort, 0.01);
 }
@@ -386,19 +424,24 @@ TEST_F(IrradianceCache, MemoryDoesNotGrowWithTheWorld) {
     fillBox(large.grid, Box{{52, 4, 0}, {56, 30, 52}}, kGreen);
     fillBox(large.grid, Box{{24, 4, 24}, {30, 20, 30}}, kWhite);
     fillBox(large.grid, Box{{10, 12, 40}, {12, 14, 42}}, kLamp);
-    for (int i = 0; i < 12; ++i) fillBox(large.grid, Box{{100 + 12 * i, 4, 120}, {106 + 12 * i, 30, 200}}, kRed);  // out of view
+    for (int i = 0; i < 12; ++i)
+        fillBox(large.grid, Box{{100 + 12 * i, 4, 120}, {106 + 12 * i, 30, 200}},
+                kRed);  // out of view
     large.sky = small.sky;
     large.cameras = small.cameras;
     large.grid.clearDirty();
     auto stats = [](Scene& scene) {
         Renderer r(gpu_testing::context());
         engine::render::FrameResult result;
-        for (int i = 0; i < 3; ++i) result = r.render(scene, scene.camera(), frame(48), cacheLighting(1));
+        for (int i = 0; i < 3; ++i)
+            result = r.render(scene, scene.camera(), frame(48), cacheLighting(1));
         return result.cache;
     };
     auto a = stats(small), b = stats(large);
-    std::printf("cache: %u entries, %llu bytes (64x40x64 world) vs %u entries, %llu bytes (256x40x256)\n", a.entries,
-                static_cast<unsigned long long>(a.bytes), b.entries, static_cast<unsigned long long>(b.bytes));
+    std::printf(
+        "cache: %u entries, %llu bytes (64x40x64 world) vs %u entries, %llu bytes (256x40x256)\n",
+        a.entries, static_cast<unsigned long long>(a.bytes), b.entries,
+        static_cast<unsigned long long>(b.bytes));
     EXPECT_GT(a.entries, 100u);
     EXPECT_EQ(a.entries, b.entries);
     EXPECT_EQ(a.bytes, b.bytes);
@@ -414,7 +457,8 @@ TEST_F(IrradianceCache, EditsInvalidateOnlyNearbyStaticRays) {
     l.cache.rayBudget = 0;  // every visible entry every frame: the counts below are exact
     const std::uint32_t phases = l.cache.directions / l.cache.raysPerUpdate;
     engine::render::FrameResult first;
-    for (std::uint32_t i = 0; i <= phases; ++i) first = r.render(scene, scene.camera(), frame(48), l);
+    for (std::uint32_t i = 0; i <= phases; ++i)
+        first = r.render(scene, scene.camera(), frame(48), l);
     EXPECT_EQ(first.cache.traced, 0u) << "all K directions are cached after K/S updates";
     // More than 16 voxels from everything the camera sees: nothing to invalidate.
     scene.grid.set({8, 20, 120}, kWhite);
@@ -423,7 +467,8 @@ TEST_F(IrradianceCache, EditsInvalidateOnlyNearbyStaticRays) {
     // In the middle of the courtyard: some entries, not all.
     scene.grid.set({32, 4, 32}, kWhite);
     auto near = r.render(scene, scene.camera(), frame(48), l).cache;
-    std::printf("edit: %u of %u live entries re-trace (max ray length 16)\n", near.invalidated, near.entries);
+    std::printf("edit: %u of %u live entries re-trace (max ray length 16)\n", near.invalidated,
+                near.entries);
     EXPECT_GT(near.invalidated, 0u);
     EXPECT_LT(near.invalidated, near.entries);
     EXPECT_EQ(near.traced, near.invalidated);
@@ -440,13 +485,16 @@ TEST_F(IrradianceCache, RayBudgetHoldsOnTheGpu) {
         Renderer r(gpu_testing::context());
         LightingSettings l = cacheLighting(1);
         l.cache.rayBudget = budget;
-        l.cache.neighbourhood = 5;  // the ball's 5^3 surroundings: demand far above the budget without one
+        l.cache.neighbourhood =
+            5;  // the ball's 5^3 surroundings: demand far above the budget without one
         std::uint64_t most = 0, total = 0;
         std::uint32_t framesWaiting = 0;
         for (std::uint32_t i = 0; i < 40; ++i) {
-            if (i == 20) fillBox(copy.grid, Box{{30, 4, 10}, {34, 12, 14}}, kWhite);  // an edit mid-way
+            if (i == 20)
+                fillBox(copy.grid, Box{{30, 4, 10}, {34, 12, 14}}, kWhite);  // an edit mid-way
             auto c = r.render(copy, copy.camera(), frameAt(48, i / 30.0), l).cache;
-            EXPECT_LE(c.raysTraced, c.rays) << "frame " << i << ": the shaders traced more than the directory allowed";
+            EXPECT_LE(c.raysTraced, c.rays)
+                << "frame " << i << ": the shaders traced more than the directory allowed";
             if (budget) EXPECT_LE(c.rays, budget) << "frame " << i;
             most = std::max(most, c.raysTraced);
             total += c.raysTraced;
@@ -457,12 +505,16 @@ TEST_F(IrradianceCache, RayBudgetHoldsOnTheGpu) {
     const std::uint32_t budget = 20000;
     auto [most, total, waiting] = run(budget);
     auto [mostFree, totalFree, waitingFree] = run(0);
-    std::printf("ray budget %u: most rays in a frame %llu, %llu in 40 frames, %u frames with entries waiting; "
-                "without a budget: most %llu, total %llu\n",
-                budget, static_cast<unsigned long long>(most), static_cast<unsigned long long>(total), waiting,
-                static_cast<unsigned long long>(mostFree), static_cast<unsigned long long>(totalFree));
+    std::printf(
+        "ray budget %u: most rays in a frame %llu, %llu in 40 frames, %u frames with entries "
+        "waiting; "
+        "without a budget: most %llu, total %llu\n",
+        budget, static_cast<unsigned long long>(most), static_cast<unsigned long long>(total),
+        waiting, static_cast<unsigned long long>(mostFree),
+        static_cast<unsigned long long>(totalFree));
     EXPECT_LE(most, budget);
-    // Charged for the faces the shaders trace (not six per voxel), the budget is spent, not just held.
+    // Charged for the faces the shaders trace (not six per voxel), the budget is spent, not just
+    // held.
     EXPECT_GT(most, 3 * std::uint64_t(budget) / 4);
     EXPECT_GT(waiting, 0u) << "the budget must bind for this test to mean anything";
     EXPECT_GT(mostFree, 4 * std::uint64_t(budget));
@@ -483,7 +535,8 @@ TEST_F(IrradianceCache, LampSwitchedOnReachesTheCacheWithinBoundedFrames) {
     fillBox(scene.grid, Box{{20, 4, 20}, {26, 14, 26}}, kWhite);
     const Box lamp{{28, 8, 32}, {32, 12, 36}};
     fillBox(scene.grid, lamp, kWhite);  // off: plain white for now
-    scene.cameras.push_back(CameraPreset{"corner", {4.0f, 22.0f, 4.0f}, {40.0f, 6.0f, 40.0f}, 70.0f});
+    scene.cameras.push_back(
+        CameraPreset{"corner", {4.0f, 22.0f, 4.0f}, {40.0f, 6.0f, 40.0f}, 70.0f});
     scene.grid.clearDirty();
     Renderer r(gpu_testing::context());
     LightingSettings l = cacheLighting(1);
@@ -507,10 +560,13 @@ TEST_F(IrradianceCache, LampSwitchedOnReachesTheCacheWithinBoundedFrames) {
         reached = i;
     }
     const std::uint32_t perEntry = 2 * shared::CACHE_FACES * l.cache.raysPerUpdate;
-    const std::uint32_t bound = 2 * ((entries * perEntry + l.cache.rayBudget - 1) / l.cache.rayBudget) + 2;
-    std::printf("lamp on: indirect mean %.4f before, %.4f steady; 90 %% reached after %zu frames and kept "
-                "(bound %u: %u entries, budget %u rays); frames 1-4: %.4f %.4f %.4f %.4f\n",
-                before, steady, reached + 1, bound, entries, l.cache.rayBudget, means[0], means[1], means[2], means[3]);
+    const std::uint32_t bound =
+        2 * ((entries * perEntry + l.cache.rayBudget - 1) / l.cache.rayBudget) + 2;
+    std::printf(
+        "lamp on: indirect mean %.4f before, %.4f steady; 90 %% reached after %zu frames and kept "
+        "(bound %u: %u entries, budget %u rays); frames 1-4: %.4f %.4f %.4f %.4f\n",
+        before, steady, reached + 1, bound, entries, l.cache.rayBudget, means[0], means[1],
+        means[2], means[3]);
     EXPECT_EQ(before, 0.0);
     EXPECT_GT(steady, 0.005);
     EXPECT_LE(reached + 1, bound);
@@ -522,7 +578,8 @@ namespace {
 
 std::vector<std::uint32_t> readUints(const engine::gpu::Buffer& buffer) {
     engine::gpu::Context& ctx = gpu_testing::context();
-    engine::gpu::Buffer host(ctx, engine::gpu::BufferKind::Readback, buffer.size(), "test.readback");
+    engine::gpu::Buffer host(ctx, engine::gpu::BufferKind::Readback, buffer.size(),
+                             "test.readback");
     engine::gpu::CommandList cmd(ctx);
     cmd.begin();
     cmd.copyBuffer(buffer, host, {{0, 0, buffer.size()}});
@@ -542,7 +599,8 @@ std::uint32_t packHit(glm::ivec3 origin, glm::vec3 d, const SceneHit& h) {
     if (!h.hit) return shared::CACHE_HIT_MISS;
     const glm::ivec3 sign(d.x < 0.0f ? -1 : 1, d.y < 0.0f ? -1 : 1, d.z < 0.0f ? -1 : 1);
     glm::uvec3 rel(glm::clamp((h.voxel - origin) * sign + 2, 0, 511));
-    return rel.x | (rel.y << 9) | (rel.z << 18) | (h.face << 27) | (h.dynamicSet ? shared::CACHE_HIT_DYNAMIC : 0u);
+    return rel.x | (rel.y << 9) | (rel.z << 18) | (h.face << 27) |
+           (h.dynamicSet ? shared::CACHE_HIT_DYNAMIC : 0u);
 }
 
 }  // namespace
@@ -553,7 +611,8 @@ std::uint32_t packHit(glm::ivec3 origin, glm::vec3 d, const SceneHit& h) {
 // entry, and with coarse entries everywhere their patch is open (lod_distance 1).
 // With `frames` > 8 (K / S), dynamic entries update again in phases whose static hits they cached
 // (visibility_dynamic.comp): `reused` counts those in the last frame's list.
-void expectDivideAndWinExact(float lodDistance, std::uint32_t frames = 5, double seconds = 2.4, std::size_t* reused = nullptr) {
+void expectDivideAndWinExact(float lodDistance, std::uint32_t frames = 5, double seconds = 2.4,
+                             std::size_t* reused = nullptr) {
     Scene a = loadWorld("thin_wall.toml"), b = loadWorld("thin_wall.toml");
     Renderer divide(gpu_testing::context()), full(gpu_testing::context());
     LightingSettings ld = cacheLighting(1), lf = cacheLighting(1);
@@ -565,7 +624,8 @@ void expectDivideAndWinExact(float lodDistance, std::uint32_t frames = 5, double
     // face the crate (the default 3^3 leaves ~85 in the last list).
     ld.cache.neighbourhood = lf.cache.neighbourhood = 5;
     lf.cache.fullRetrace = true;
-    // The crate slides to the wall over these frames (by 2.4 s): static rays cached early see it arrive.
+    // The crate slides to the wall over these frames (by 2.4 s): static rays cached early see it
+    // arrive.
     for (std::uint32_t i = 0; i < frames; ++i) {
         const double time = seconds * i / (frames - 1);
         divide.render(a, a.camera("outside"), frameAt(64, time), ld);
@@ -578,7 +638,8 @@ void expectDivideAndWinExact(float lodDistance, std::uint32_t frames = 5, double
     const std::uint32_t S = cd.raysPerUpdate();
     const std::size_t rays = cd.updateList().size() * shared::CACHE_FACES * S;
     std::size_t dynamicEntries = 0;
-    for (std::uint32_t slot : cd.updateList()) dynamicEntries += cd.directory().entry(slot).voxel.w == int(shared::CACHE_SET_DYNAMIC);
+    for (std::uint32_t slot : cd.updateList())
+        dynamicEntries += cd.directory().entry(slot).voxel.w == int(shared::CACHE_SET_DYNAMIC);
     std::printf("%zu dynamic entries in the last update list\n", dynamicEntries);
     std::vector<std::uint32_t> hd = readUints(cd.selectedHits()), hf = readUints(cf.selectedHits());
 
@@ -587,7 +648,9 @@ void expectDivideAndWinExact(float lodDistance, std::uint32_t frames = 5, double
         const shared::CacheEntry& e = cd.directory().entry(cd.updateList()[item]);
         const glm::ivec3 v(e.voxel);
         coarse += e.coarse != 0;
-        if (reused && e.voxel.w == int(shared::CACHE_SET_DYNAMIC) && (e.flags & shared::CACHE_ENTRY_TRACE) == 0u) ++*reused;
+        if (reused && e.voxel.w == int(shared::CACHE_SET_DYNAMIC) &&
+            (e.flags & shared::CACHE_ENTRY_TRACE) == 0u)
+            ++*reused;
         for (std::uint32_t face = 0; face < 6; ++face) {
             glm::ivec3 n = v;
             n[face >> 1] += (face & 1u) ? 1 : -1;
@@ -597,8 +660,10 @@ void expectDivideAndWinExact(float lodDistance, std::uint32_t frames = 5, double
                 exposed = !a.dynamic.grid.contains(local) || a.dynamic.grid.get(local) == kEmpty;
             }
             glm::vec3 o = rayOrigin(v, face);
-            if (e.coarse != 0) {  // one face of an open 2x2 patch; its rays start at the patch's centre
-                exposed = e.coarse == 1 + face && engine::render::coarsePatchKey(a.grid, v, face).has_value();
+            if (e.coarse !=
+                0) {  // one face of an open 2x2 patch; its rays start at the patch's centre
+                exposed = e.coarse == 1 + face &&
+                          engine::render::coarsePatchKey(a.grid, v, face).has_value();
                 o[((face >> 1) + 1) % 3] += 0.5f;
                 o[((face >> 1) + 2) % 3] += 0.5f;
             }
@@ -606,8 +671,9 @@ void expectDivideAndWinExact(float lodDistance, std::uint32_t frames = 5, double
             for (std::uint32_t j = 0; j < S; ++j) {
                 const std::size_t at = (item * shared::CACHE_FACES + face) * S + j;
                 if (hd[at] != hf[at]) ++gpuMismatch;
-                glm::vec3 d = cd.rayDirection(v, std::uint32_t(e.voxel.w), face,
-                                              cd.directionIndex(cd.updateList()[item], j), e.coarse);
+                glm::vec3 d =
+                    cd.rayDirection(v, std::uint32_t(e.voxel.w), face,
+                                    cd.directionIndex(cd.updateList()[item], j), e.coarse);
                 SceneHit h = traceScene(a.grid, &a.dynamic, o, d, shared::CACHE_MAX_RAY_LENGTH);
                 ++traced;
                 dynamicHits += h.hit && h.dynamicSet;
@@ -615,9 +681,12 @@ void expectDivideAndWinExact(float lodDistance, std::uint32_t frames = 5, double
             }
         }
     }
-    std::printf("divide and win (lod_distance %g): %zu rays of %zu entries (%zu coarse), %zu traced (exposed faces), "
-                "%zu hit the crate; %zu differ from the GPU full re-trace, %zu from the CPU traceScene\n",
-                lodDistance, rays, cd.updateList().size(), coarse, traced, dynamicHits, gpuMismatch, cpuMismatch);
+    std::printf(
+        "divide and win (lod_distance %g): %zu rays of %zu entries (%zu coarse), %zu traced "
+        "(exposed faces), "
+        "%zu hit the crate; %zu differ from the GPU full re-trace, %zu from the CPU traceScene\n",
+        lodDistance, rays, cd.updateList().size(), coarse, traced, dynamicHits, gpuMismatch,
+        cpuMismatch);
     EXPECT_GT(dynamicHits, lodDistance > 0.0f ? 20u : 100u);
     if (lodDistance > 0.0f) EXPECT_GT(coarse, 100u);
     EXPECT_EQ(gpuMismatch, 0u);
@@ -656,20 +725,23 @@ Scene splitWorld(bool crateAtWall) {
     fillBox(crateModel, Box{{0, 0, 0}, {8, 8, 8}}, kGreen);
     crate.model = std::make_shared<const BrickGrid>(std::move(crateModel));
     ObjectKey key;
-    key.position = crateAtWall ? glm::dvec3(28.0, 8.0, 32.0) : glm::dvec3(6.0, 8.0, 8.0);  // x 24..31: touching the wall
+    key.position = crateAtWall ? glm::dvec3(28.0, 8.0, 32.0)
+                               : glm::dvec3(6.0, 8.0, 8.0);  // x 24..31: touching the wall
     crate.path = ObjectPath({key}, false);
     scene.objects.push_back(std::move(crate));
-    scene.cameras.push_back(CameraPreset{"east", {60.0f, 20.0f, 32.0f}, {34.0f, 6.0f, 32.0f}, 80.0f});
-    scene.cameras.push_back(CameraPreset{"west", {2.0f, 20.0f, 32.0f}, {31.0f, 6.0f, 32.0f}, 80.0f});
+    scene.cameras.push_back(
+        CameraPreset{"east", {60.0f, 20.0f, 32.0f}, {34.0f, 6.0f, 32.0f}, 80.0f});
+    scene.cameras.push_back(
+        CameraPreset{"west", {2.0f, 20.0f, 32.0f}, {31.0f, 6.0f, 32.0f}, 80.0f});
     scene.grid.clearDirty();
     return scene;
 }
 
 }  // namespace
 
-// No leaks from dynamic onto static: with the crate pressed against the west face of the wall, every
-// static entry east of the wall holds bit for bit what it holds with the crate far away — while
-// entries on the west side, which see the crate, do change.
+// No leaks from dynamic onto static: with the crate pressed against the west face of the wall,
+// every static entry east of the wall holds bit for bit what it holds with the crate far away —
+// while entries on the west side, which see the crate, do change.
 TEST_F(IrradianceCache, ObjectAgainstAWallDoesNotChangeTheFarSide) {
     auto run = [](bool crateAtWall) {
         Scene scene = splitWorld(crateAtWall);
@@ -679,17 +751,22 @@ TEST_F(IrradianceCache, ObjectAgainstAWallDoesNotChangeTheFarSide) {
         // not a leak).
         LightingSettings l = cacheLighting(1);
         l.cache.rayBudget = 0;
-        // The east view first, so east entries get the same slots (and random numbers) in both runs.
-        for (std::uint32_t i = 0; i < 16; ++i) r.render(scene, scene.camera(i % 2 ? "west" : "east"), frameAt(48, 0.0), l);
+        // The east view first, so east entries get the same slots (and random numbers) in both
+        // runs.
+        for (std::uint32_t i = 0; i < 16; ++i)
+            r.render(scene, scene.camera(i % 2 ? "west" : "east"), frameAt(48, 0.0), l);
         std::vector<std::uint32_t> filtered = readUints(r.irradianceCache().filtered());
         std::map<std::uint64_t, glm::uvec4> byKey;  // static face values by (voxel, face)
         const auto& dir = r.irradianceCache().directory();
         for (std::uint32_t slot = 0; slot < dir.usedSlots(); ++slot) {
             const shared::CacheEntry& e = dir.entry(slot);
-            if (e.voxel.w != int(shared::CACHE_SET_STATIC) || dir.slotOf({glm::ivec3(e.voxel), 0}) != slot) continue;
+            if (e.voxel.w != int(shared::CACHE_SET_STATIC) ||
+                dir.slotOf({glm::ivec3(e.voxel), 0}) != slot)
+                continue;
             for (std::uint32_t f = 0; f < 6; ++f) {
                 const std::uint32_t* v = &filtered[(slot * 6 + f) * 4];
-                byKey[engine::render::packCacheKey({glm::ivec3(e.voxel), 0}) * 8 + f] = {v[0], v[1], v[2], v[3]};
+                byKey[engine::render::packCacheKey({glm::ivec3(e.voxel), 0}) * 8 + f] = {
+                    v[0], v[1], v[2], v[3]};
             }
         }
         return std::make_pair(byKey, r.irradianceCache().stats());
@@ -710,8 +787,9 @@ TEST_F(IrradianceCache, ObjectAgainstAWallDoesNotChangeTheFarSide) {
             westChanged += changed;
         }
     }
-    std::printf("crate against the wall: east of it %zu static faces, %zu changed; west %zu, %zu changed\n", east,
-                eastChanged, west, westChanged);
+    std::printf(
+        "crate against the wall: east of it %zu static faces, %zu changed; west %zu, %zu changed\n",
+        east, eastChanged, west, westChanged);
     EXPECT_GT(east, 1000u);
     EXPECT_EQ(eastChanged, 0u);
     EXPECT_GT(westChanged, 100u);
@@ -756,7 +834,8 @@ TEST_F(IrradianceCache, StableAwayFromAMovingObjectAndFadesAfterItLeaves) {
                 // Away from the object: more than 8 voxels from its box this frame.
                 glm::dvec3 c = scene.objects[0].current.position;
                 if (glm::length(glm::dvec3(glm::vec3(g.position)) - c) < 8.0 + 5.2) continue;
-                changeSum += std::abs(images.indirect[p].x - prev[p].x) + std::abs(images.indirect[p].y - prev[p].y) +
+                changeSum += std::abs(images.indirect[p].x - prev[p].x) +
+                             std::abs(images.indirect[p].y - prev[p].y) +
                              std::abs(images.indirect[p].z - prev[p].z);
                 meanSum += images.indirect[p].x + images.indirect[p].y + images.indirect[p].z;
                 ++measured;
@@ -765,8 +844,10 @@ TEST_F(IrradianceCache, StableAwayFromAMovingObjectAndFadesAfterItLeaves) {
         prev = images.indirect;
     }
     const double relativeChange = changeSum / meanSum;
-    std::printf("stability: mean |frame - previous| of the static indirect away from the object = %.2f %% of its mean\n",
-                100.0 * relativeChange);
+    std::printf(
+        "stability: mean |frame - previous| of the static indirect away from the object = %.2f %% "
+        "of its mean\n",
+        100.0 * relativeChange);
     EXPECT_GT(measured, 1000);
     EXPECT_LT(relativeChange, 0.03);
 
@@ -775,7 +856,8 @@ TEST_F(IrradianceCache, StableAwayFromAMovingObjectAndFadesAfterItLeaves) {
         const auto& dir = r.irradianceCache().directory();
         std::uint32_t n = 0;
         for (std::uint32_t s = 0; s < dir.usedSlots(); ++s)
-            n += dir.entry(s).voxel.w == int(shared::CACHE_SET_DYNAMIC) && dir.slotOf({glm::ivec3(dir.entry(s).voxel), 1}) == s;
+            n += dir.entry(s).voxel.w == int(shared::CACHE_SET_DYNAMIC) &&
+                 dir.slotOf({glm::ivec3(dir.entry(s).voxel), 1}) == s;
         return n;
     };
     std::uint32_t frames = 0;
@@ -786,8 +868,10 @@ TEST_F(IrradianceCache, StableAwayFromAMovingObjectAndFadesAfterItLeaves) {
         if (dynamicEntries() == 0) break;
         ++frames;
     }
-    std::printf("fade: %u dynamic entries when the object left; all released %u frames later (cool-down 0.3 s = 18 frames)\n",
-                before, frames);
+    std::printf(
+        "fade: %u dynamic entries when the object left; all released %u frames later (cool-down "
+        "0.3 s = 18 frames)\n",
+        before, frames);
     EXPECT_GT(before, 0u);
     EXPECT_GE(frames, 16u);
     EXPECT_LE(frames, 20u);
@@ -807,7 +891,8 @@ Scene litRoom() {
     fillBox(scene.grid, Box{{16, 2, 20}, {22, 24, 26}}, kWhite);
     fillBox(scene.grid, Box{{8, 30, 28}, {12, 32, 32}}, kLamp);
     scene.sky.sunDirection = glm::normalize(glm::vec3(-0.5f, 1.0f, -0.6f));
-    scene.cameras.push_back(CameraPreset{"inside", {34.0f, 20.0f, 34.0f}, {8.0f, 6.0f, 8.0f}, 80.0f});
+    scene.cameras.push_back(
+        CameraPreset{"inside", {34.0f, 20.0f, 34.0f}, {8.0f, 6.0f, 8.0f}, 80.0f});
     scene.grid.clearDirty();
     return scene;
 }
@@ -826,12 +911,14 @@ TEST_F(IrradianceCache, SampledBounceLightMatchesEveryHitAtConvergence) {
     std::vector<glm::vec4> all = cacheIndirect(scene, every, size, 96);
     std::vector<glm::vec4> four = cacheIndirect(scene, sampled, size, 96);
     const double ratio = meanOf(four) / meanOf(all), err = mae(four, all) / meanOf(all);
-    std::printf("bounce light at 4 hits of 16 against every hit, lit room, 96 frames at %ux%u: mean %.5f vs %.5f, ratio %.4f, "
-                "MAE %.4f of the mean\n",
-                size, size, meanOf(four), meanOf(all), ratio, err);
+    std::printf(
+        "bounce light at 4 hits of 16 against every hit, lit room, 96 frames at %ux%u: mean %.5f "
+        "vs %.5f, ratio %.4f, "
+        "MAE %.4f of the mean\n",
+        size, size, meanOf(four), meanOf(all), ratio, err);
     ASSERT_GT(meanOf(all), 0.01);
     EXPECT_NEAR(ratio, 1.0, 0.02);  // measured 1.004
-    EXPECT_LT(err, 0.10);           // measured 0.063: the noise of 4 light samples instead of up to 16
+    EXPECT_LT(err, 0.10);  // measured 0.063: the noise of 4 light samples instead of up to 16
 }
 
 // ---- Structured bias of the direction sets -----------------------------------------------------
@@ -849,14 +936,20 @@ TEST_F(IrradianceCache, DirectionErrorAveragesOutAcrossSeeds) {
     std::vector<glm::vec4> ref = referenceIndirectAt(scene, camera, size, 1, 1024, 0.0, 1);
     std::vector<glm::vec4> one = cacheIndirectSeeded(scene, camera, size, frames, 32, 1);
     std::vector<glm::vec4> two = cacheIndirectSeeded(scene, camera, size, frames, 32, 2);
-    IndirectError e1 = indirectError(one, ref, size, size), e2 = indirectError(two, ref, size, size);
+    IndirectError e1 = indirectError(one, ref, size, size),
+                  e2 = indirectError(two, ref, size, size);
     IndirectError eAvg = indirectError(average(one, two), ref, size, size);
-    std::printf("seeds, K = 32, %d frames at %ux%u vs 1024 spp: relative MAE seed 1 %.4f, seed 2 %.4f, their average %.4f "
-                "(%.2fx); MAE/mean %.4f %.4f -> %.4f; mean ratio %.4f %.4f\n",
-                frames, size, size, e1.rmae, e2.rmae, eAvg.rmae, eAvg.rmae / (0.5 * (e1.rmae + e2.rmae)), e1.relativeMae,
-                e2.relativeMae, eAvg.relativeMae, e1.meanRatio, e2.meanRatio);
-    EXPECT_LT(eAvg.rmae, 0.85 * 0.5 * (e1.rmae + e2.rmae));  // shared set: 0.0283 for both and their average (1.00x)
-    EXPECT_LT(e1.rmae, 0.022);  // one seed, the filter averaging independent neighbours (shared set: 0.0283)
+    std::printf(
+        "seeds, K = 32, %d frames at %ux%u vs 1024 spp: relative MAE seed 1 %.4f, seed 2 %.4f, "
+        "their average %.4f "
+        "(%.2fx); MAE/mean %.4f %.4f -> %.4f; mean ratio %.4f %.4f\n",
+        frames, size, size, e1.rmae, e2.rmae, eAvg.rmae, eAvg.rmae / (0.5 * (e1.rmae + e2.rmae)),
+        e1.relativeMae, e2.relativeMae, eAvg.relativeMae, e1.meanRatio, e2.meanRatio);
+    EXPECT_LT(
+        eAvg.rmae,
+        0.85 * 0.5 * (e1.rmae + e2.rmae));  // shared set: 0.0283 for both and their average (1.00x)
+    EXPECT_LT(e1.rmae,
+              0.022);  // one seed, the filter averaging independent neighbours (shared set: 0.0283)
     EXPECT_NEAR(e1.meanRatio, 1.0, 0.05);
 }
 
@@ -868,7 +961,8 @@ TEST_F(IrradianceCache, DirectionSetsAreCosineDistributedAndDifferPerEntry) {
     Renderer r(gpu_testing::context());
     r.render(scene, scene.camera(), frame(16), cacheLighting(1));
     const auto& cache = r.irradianceCache();
-    const std::uint32_t K = static_cast<std::uint32_t>(cache.directions().size() / shared::CACHE_DIRECTION_SETS);
+    const std::uint32_t K =
+        static_cast<std::uint32_t>(cache.directions().size() / shared::CACHE_DIRECTION_SETS);
     ASSERT_EQ(K, 128u);
     double worstTilt = 0.0, worstCos = 0.0;
     glm::dvec3 all(0.0);
@@ -886,8 +980,11 @@ TEST_F(IrradianceCache, DirectionSetsAreCosineDistributedAndDifferPerEntry) {
         worstCos = std::max(worstCos, std::abs(sum.z - 2.0 / 3.0));
     }
     all /= double(K * shared::CACHE_DIRECTION_SETS);
-    std::printf("direction sets: %u of %u; worst |mean (x, y)| %.4f, worst |mean cos - 2/3| %.4f; over all sets %.4f and %.4f\n",
-                shared::CACHE_DIRECTION_SETS, K, worstTilt, worstCos, glm::length(glm::dvec2(all)), std::abs(all.z - 2.0 / 3.0));
+    std::printf(
+        "direction sets: %u of %u; worst |mean (x, y)| %.4f, worst |mean cos - 2/3| %.4f; over all "
+        "sets %.4f and %.4f\n",
+        shared::CACHE_DIRECTION_SETS, K, worstTilt, worstCos, glm::length(glm::dvec2(all)),
+        std::abs(all.z - 2.0 / 3.0));
     // Independent cosine samples would give about 0.06 and 0.02 per set; stratified sets do better.
     EXPECT_LT(worstTilt, 0.05);
     EXPECT_LT(worstCos, 0.01);
@@ -895,9 +992,12 @@ TEST_F(IrradianceCache, DirectionSetsAreCosineDistributedAndDifferPerEntry) {
     EXPECT_LT(std::abs(all.z - 2.0 / 3.0), 0.002);
     using engine::render::IrradianceCache;
     const glm::ivec3 v{20, 4, 20};
-    EXPECT_EQ(IrradianceCache::directionRotation(v, 0, 1), IrradianceCache::directionRotation(v, 0, 1));
-    EXPECT_NE(IrradianceCache::directionRotation(v, 0, 1), IrradianceCache::directionRotation(v, 0, 2));
-    EXPECT_NE(IrradianceCache::directionRotation(v, 0, 1), IrradianceCache::directionRotation(v, 1, 1));
+    EXPECT_EQ(IrradianceCache::directionRotation(v, 0, 1),
+              IrradianceCache::directionRotation(v, 0, 1));
+    EXPECT_NE(IrradianceCache::directionRotation(v, 0, 1),
+              IrradianceCache::directionRotation(v, 0, 2));
+    EXPECT_NE(IrradianceCache::directionRotation(v, 0, 1),
+              IrradianceCache::directionRotation(v, 1, 1));
     EXPECT_NE(cache.rayDirection(v, 0, 3, 0), cache.rayDirection(v + glm::ivec3(1, 0, 0), 0, 3, 0));
 }
 
@@ -908,7 +1008,8 @@ TEST_F(IrradianceCache, DirectionSetsAreCosineDistributedAndDifferPerEntry) {
 // _LOD, _LIGHT_SAMPLES, _BUDGET, _NEIGHBOURHOOD (cache knobs) and _CACHE (a folder keeping the
 // references) change it.
 TEST_F(IrradianceCache, DISABLED_MeasureScenes) {
-    const std::uint32_t size = envOr("VOX_MEASURE_SIZE", 64), frames = envOr("VOX_MEASURE_FRAMES", 64);
+    const std::uint32_t size = envOr("VOX_MEASURE_SIZE", 64),
+                        frames = envOr("VOX_MEASURE_FRAMES", 64);
     const std::uint32_t spp = envOr("VOX_MEASURE_SPP", 1024), k = envOr("VOX_MEASURE_K", 128);
     const float maxRay = float(envOr("VOX_MEASURE_MAX_RAY", 0));
     const float lod = float(envOr("VOX_MEASURE_LOD", 0));  // the cache's lod_distance
@@ -920,13 +1021,15 @@ TEST_F(IrradianceCache, DISABLED_MeasureScenes) {
         // References are kept in VOX_MEASURE_CACHE (a folder) when set: the same for every run.
         auto reference = [&](std::uint32_t seed) {
             const char* dir = std::getenv("VOX_MEASURE_CACHE");
-            const std::string file = dir ? std::string(dir) + "/" + name + "_" + std::to_string(size) + "_" +
-                                               std::to_string(spp) + "_" + std::to_string(seed) + ".bin"
+            const std::string file = dir ? std::string(dir) + "/" + name + "_" +
+                                               std::to_string(size) + "_" + std::to_string(spp) +
+                                               "_" + std::to_string(seed) + ".bin"
                                          : std::string();
             std::vector<glm::vec4> img(std::size_t(size) * size);
             if (!file.empty()) {
                 if (std::FILE* f = std::fopen(file.c_str(), "rb")) {
-                    const bool ok = std::fread(img.data(), sizeof(glm::vec4), img.size(), f) == img.size();
+                    const bool ok =
+                        std::fread(img.data(), sizeof(glm::vec4), img.size(), f) == img.size();
                     std::fclose(f);
                     if (ok) return img;
                 }
@@ -942,12 +1045,15 @@ TEST_F(IrradianceCache, DISABLED_MeasureScenes) {
         };
         std::vector<glm::vec4> r1 = reference(1), r2 = reference(2);
         std::vector<glm::vec4> ref = average(r1, r2);
-        // The reference's own noise: seed 2 against seed 1, halved for the average of both (1/sqrt 2
-        // per seed, 1/sqrt 2 again for the average).
+        // The reference's own noise: seed 2 against seed 1, halved for the average of both (1/sqrt
+        // 2 per seed, 1/sqrt 2 again for the average).
         IndirectError noise = indirectError(r2, r1, size, size);
-        std::vector<glm::vec4> c1 = cacheIndirectSeeded(scene, camera, size, int(frames), k, 1, maxRay, lod);
-        std::vector<glm::vec4> c2 = cacheIndirectSeeded(scene, camera, size, int(frames), k, 2, maxRay, lod);
-        IndirectError e1 = indirectError(c1, ref, size, size), e2 = indirectError(c2, ref, size, size);
+        std::vector<glm::vec4> c1 =
+            cacheIndirectSeeded(scene, camera, size, int(frames), k, 1, maxRay, lod);
+        std::vector<glm::vec4> c2 =
+            cacheIndirectSeeded(scene, camera, size, int(frames), k, 2, maxRay, lod);
+        IndirectError e1 = indirectError(c1, ref, size, size),
+                      e2 = indirectError(c2, ref, size, size);
         IndirectError ea = indirectError(average(c1, c2), ref, size, size);
         // With the mean's error taken out: what is left is the per-pixel structure.
         std::vector<glm::vec4> scaled = c1;
@@ -961,12 +1067,15 @@ TEST_F(IrradianceCache, DISABLED_MeasureScenes) {
                     glm::uvec3 c(glm::clamp(glm::vec3(img[i]) / scale, 0.0f, 1.0f) * 255.0f);
                     rgba[i] = c.x | (c.y << 8) | (c.z << 16) | 0xFF000000u;
                 }
-                (void)engine::io::writePng(std::string(dir) + "/" + name + "_" + what + ".png", size, size, rgba);
+                (void)engine::io::writePng(std::string(dir) + "/" + name + "_" + what + ".png",
+                                           size, size, rgba);
             };
             png(ref, "reference");
             png(c1, "cache");
-            auto raw = [&](const std::vector<glm::vec4>& img, const char* what) {  // for per-region analysis
-                if (std::FILE* f = std::fopen((std::string(dir) + "/" + name + "_" + what + ".bin").c_str(), "wb")) {
+            auto raw = [&](const std::vector<glm::vec4>& img,
+                           const char* what) {  // for per-region analysis
+                if (std::FILE* f = std::fopen(
+                        (std::string(dir) + "/" + name + "_" + what + ".bin").c_str(), "wb")) {
                     std::fwrite(img.data(), sizeof(glm::vec4), img.size(), f);
                     std::fclose(f);
                 }
@@ -974,13 +1083,18 @@ TEST_F(IrradianceCache, DISABLED_MeasureScenes) {
             raw(ref, "reference");
             raw(c1, "cache");
         }
-        std::printf("MEASURE %s mean-corrected seed1 rmae %.4f mae/mean %.4f\n", name.c_str(), es.rmae, es.relativeMae);
+        std::printf("MEASURE %s mean-corrected seed1 rmae %.4f mae/mean %.4f\n", name.c_str(),
+                    es.rmae, es.relativeMae);
         std::printf("MEASURE lod_distance %g\n", lod);
-        std::printf("MEASURE %s K=%u frames=%u size=%u spp=2x%u ref-mean=%.5f | ref noise (seed 2 vs 1) rmae %.4f mae/mean %.4f | "
-                    "cache seed1 rmae %.4f mae/mean %.4f mean %.4f | seed2 rmae %.4f mae/mean %.4f mean %.4f | "
-                    "avg rmae %.4f mae/mean %.4f\n",
-                    name.c_str(), k, frames, size, spp, meanOf(ref), noise.rmae, noise.relativeMae, e1.rmae, e1.relativeMae,
-                    e1.meanRatio, e2.rmae, e2.relativeMae, e2.meanRatio, ea.rmae, ea.relativeMae);
+        std::printf(
+            "MEASURE %s K=%u frames=%u size=%u spp=2x%u ref-mean=%.5f | ref noise (seed 2 vs 1) "
+            "rmae %.4f mae/mean %.4f | "
+            "cache seed1 rmae %.4f mae/mean %.4f mean %.4f | seed2 rmae %.4f mae/mean %.4f mean "
+            "%.4f | "
+            "avg rmae %.4f mae/mean %.4f\n",
+            name.c_str(), k, frames, size, spp, meanOf(ref), noise.rmae, noise.relativeMae, e1.rmae,
+            e1.relativeMae, e1.meanRatio, e2.rmae, e2.relativeMae, e2.meanRatio, ea.rmae,
+            ea.relativeMae);
         std::fflush(stdout);
     }
 }

@@ -2,10 +2,9 @@
 // true probabilities, and resampling from them converges to the same image as alias-table draws.
 #include "render/light_tiles/light_tiles.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <cstring>
+#include <gtest/gtest.h>
 #include <map>
 
 #include "gpu/command_list.h"

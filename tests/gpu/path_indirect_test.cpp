@@ -1,10 +1,9 @@
 // The path-traced indirect term (`--indirect path`, render/path_indirect/): its mean against the
 // reference path tracer's indirect light (with bounces minus without), and its accumulation —
 // a running mean over still frames that restarts when the camera moves.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <cstdio>
+#include <gtest/gtest.h>
 
 #include "gpu/gpu_test_setup.h"
 #include "gpu/sample_stats.h"
@@ -19,11 +18,12 @@ namespace {
 // An open courtyard under sun and sky with one lamp: a floor, a red and a green wall, a pillar.
 // Its indirect light is sun, sky and lamp bouncing off coloured surfaces.
 Scene courtyard() {
-    Scene scene = paletteScene({32, 24, 32},
-                               {Material{"white", glm::vec3(0.75f)}, Material{"red", glm::vec3(0.8f, 0.15f, 0.1f)},
-                                Material{"lamp", glm::vec3(0.8f), glm::vec3(1.0f, 0.85f, 0.6f), 8.0f},
-                                Material{"green", glm::vec3(0.1f, 0.7f, 0.2f)}},
-                               false);
+    Scene scene = paletteScene(
+        {32, 24, 32},
+        {Material{"white", glm::vec3(0.75f)}, Material{"red", glm::vec3(0.8f, 0.15f, 0.1f)},
+         Material{"lamp", glm::vec3(0.8f), glm::vec3(1.0f, 0.85f, 0.6f), 8.0f},
+         Material{"green", glm::vec3(0.1f, 0.7f, 0.2f)}},
+        false);
     const MaterialId white = 1, red = 2, lamp = 3, green = 4;
     fillBox(scene.grid, Box{{0, 0, 0}, {32, 2, 32}}, white);
     fillBox(scene.grid, Box{{0, 2, 26}, {32, 16, 28}}, red);
@@ -31,12 +31,14 @@ Scene courtyard() {
     fillBox(scene.grid, Box{{12, 2, 12}, {15, 10, 15}}, white);
     fillBox(scene.grid, Box{{5, 6, 20}, {7, 8, 22}}, lamp);
     scene.sky.sunDirection = glm::normalize(glm::vec3(-0.5f, 1.0f, -0.6f));
-    scene.cameras.push_back(CameraPreset{"corner", {4.0f, 14.0f, 3.0f}, {23.0f, 3.0f, 22.0f}, 70.0f});
+    scene.cameras.push_back(
+        CameraPreset{"corner", {4.0f, 14.0f, 3.0f}, {23.0f, 3.0f, 22.0f}, 70.0f});
     scene.grid.clearDirty();
     return scene;
 }
 
-LightingSettings pathLighting(std::uint32_t samples, std::uint32_t bounces, std::uint32_t seed, bool accumulate = true) {
+LightingSettings pathLighting(std::uint32_t samples, std::uint32_t bounces, std::uint32_t seed,
+                              bool accumulate = true) {
     LightingSettings l;
     l.method = Method::Preview;  // only the indirect term is compared
     l.indirect = Indirect::Path;
@@ -56,12 +58,14 @@ double meanOf(const std::vector<glm::vec4>& img) {
 // The reference's indirect light through the pixel centres: (bounces) minus (direct only), by
 // two renderers the caller keeps (new settings restart their accumulation; a renderer is slow
 // to make on a CPU device).
-std::vector<glm::vec4> referenceIndirect(Renderer& with, Renderer& without, Scene& scene, std::uint32_t size,
-                                         std::uint32_t bounces, std::uint32_t spp, std::uint32_t seed) {
+std::vector<glm::vec4> referenceIndirect(Renderer& with, Renderer& without, Scene& scene,
+                                         std::uint32_t size, std::uint32_t bounces,
+                                         std::uint32_t spp, std::uint32_t seed) {
     auto run = [&](Renderer& r, std::uint32_t b) {
         LightingSettings l;
         l.method = Method::Reference;
-        l.referenceFilter = engine::lighting::ReferenceFilter::PixelCentre;  // the G-buffer's pixels
+        l.referenceFilter =
+            engine::lighting::ReferenceFilter::PixelCentre;  // the G-buffer's pixels
         l.bounces = b;
         l.seed = seed;
         l.samplesPerFrame = 32;
@@ -83,18 +87,25 @@ class PathIndirect : public GpuTest {};
 TEST_F(PathIndirect, MeanMatchesReferenceIndirect) {
     Scene scene = courtyard();
     constexpr std::uint32_t kSize = 24, kSpp = 64, kSeeds = 3;
-    Renderer r(gpu_testing::context()), with(gpu_testing::context()), without(gpu_testing::context());
+    Renderer r(gpu_testing::context()), with(gpu_testing::context()),
+        without(gpu_testing::context());
     for (std::uint32_t bounces : {1u, 3u}) {
         std::vector<double> path, reference;
         for (std::uint32_t seed = 1; seed <= kSeeds; ++seed) {
-            // A still camera: 4 frames of 16 paths accumulate to 64 per pixel (new settings restart).
-            path.push_back(meanOf(renderFrames(r, scene, pathLighting(16, bounces, seed), frame(kSize), 4).indirect));
-            reference.push_back(meanOf(referenceIndirect(with, without, scene, kSize, bounces, kSpp, 100 + seed)));
+            // A still camera: 4 frames of 16 paths accumulate to 64 per pixel (new settings
+            // restart).
+            path.push_back(meanOf(
+                renderFrames(r, scene, pathLighting(16, bounces, seed), frame(kSize), 4).indirect));
+            reference.push_back(
+                meanOf(referenceIndirect(with, without, scene, kSize, bounces, kSpp, 100 + seed)));
         }
         const MeanAndError p = meanOfMeans(path), ref = meanOfMeans(reference);
-        const double sigma = std::sqrt(p.standardError * p.standardError + ref.standardError * ref.standardError);
-        std::printf("%u bounce(s): path indirect mean %.5f +- %.5f, reference %.5f +- %.5f (%+.2f %%)\n", bounces, p.mean,
-                    p.standardError, ref.mean, ref.standardError, 100.0 * (p.mean / ref.mean - 1.0));
+        const double sigma =
+            std::sqrt(p.standardError * p.standardError + ref.standardError * ref.standardError);
+        std::printf(
+            "%u bounce(s): path indirect mean %.5f +- %.5f, reference %.5f +- %.5f (%+.2f %%)\n",
+            bounces, p.mean, p.standardError, ref.mean, ref.standardError,
+            100.0 * (p.mean / ref.mean - 1.0));
         EXPECT_GT(ref.mean, 0.01) << "the scene must have indirect light to compare";
         EXPECT_LT(std::abs(p.mean - ref.mean), 4.0 * sigma) << bounces << " bounce(s)";
         // And the test can tell: the standard error is small against the mean.
@@ -113,7 +124,8 @@ TEST_F(PathIndirect, StillCameraAccumulatesTheFramesPaths) {
     std::vector<glm::vec4> sum(mean.size(), glm::vec4(0.0f));
     Renderer single(gpu_testing::context());
     for (int i = 0; i < kFrames; ++i) {
-        std::vector<glm::vec4> f = renderFrames(single, scene, pathLighting(2, 1, 7, false), frame(16), 1).indirect;
+        std::vector<glm::vec4> f =
+            renderFrames(single, scene, pathLighting(2, 1, 7, false), frame(16), 1).indirect;
         for (std::size_t p = 0; p < f.size(); ++p) sum[p] += f[p];
         if (i == 0) {
             ASSERT_NE(meanOf(f), 0.0);
@@ -124,7 +136,8 @@ TEST_F(PathIndirect, StillCameraAccumulatesTheFramesPaths) {
     }
     for (std::size_t p = 0; p < mean.size(); ++p) {
         for (int c = 0; c < 3; ++c) {
-            EXPECT_NEAR(mean[p][c], sum[p][c] / kFrames, 1e-5f + 1e-5f * std::abs(mean[p][c])) << "pixel " << p;
+            EXPECT_NEAR(mean[p][c], sum[p][c] / kFrames, 1e-5f + 1e-5f * std::abs(mean[p][c]))
+                << "pixel " << p;
         }
     }
 }

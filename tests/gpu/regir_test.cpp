@@ -2,10 +2,9 @@
 // contribution weights (checked on the CPU against the light set and the support the target
 // promises), resampling from the grid converges to the same images as drawing by power and to the
 // path tracer, and an edit of the lights is in the very next frame's grid and image.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <cstring>
+#include <gtest/gtest.h>
 #include <map>
 #include <set>
 
@@ -30,7 +29,8 @@ struct GridReadback {
 
 GridReadback readGrid(const Renderer& r) {
     const engine::gpu::Buffer& grid = r.regirGrid().grid();
-    engine::gpu::Buffer readback(context(), engine::gpu::BufferKind::Readback, grid.size(), "test.regir");
+    engine::gpu::Buffer readback(context(), engine::gpu::BufferKind::Readback, grid.size(),
+                                 "test.regir");
     engine::gpu::CommandList cmd(context());
     cmd.begin();
     cmd.copyBuffer(grid, readback, {{0, 0, grid.size()}});
@@ -74,21 +74,23 @@ bool canReach(const shared::GpuEmitter& e, glm::vec3 lo, glm::vec3 hi) {
 // flush into the wall and one into the side of a block (one face exposed each): powers far apart
 // and lights turned away from parts of the world.
 Scene lampScene() {
-    Scene scene = paletteScene({48, 32, 48},
-                               {Material{"white", glm::vec3(0.75f)},
-                                Material{"lamp", glm::vec3(0.8f), glm::vec3(1.0f, 0.85f, 0.6f), 4.0f},
-                                Material{"dim", glm::vec3(0.8f), glm::vec3(0.3f, 0.5f, 1.0f), 2.0f}},
-                               true);
+    Scene scene =
+        paletteScene({48, 32, 48},
+                     {Material{"white", glm::vec3(0.75f)},
+                      Material{"lamp", glm::vec3(0.8f), glm::vec3(1.0f, 0.85f, 0.6f), 4.0f},
+                      Material{"dim", glm::vec3(0.8f), glm::vec3(0.3f, 0.5f, 1.0f), 2.0f}},
+                     true);
     fillBox(scene.grid, Box{{0, 0, 0}, {48, 2, 48}}, kWhite);
     fillBox(scene.grid, Box{{0, 2, 40}, {48, 32, 48}}, kWhite);
     fillBox(scene.grid, Box{{24, 16, 16}, {32, 24, 24}}, kLamp);
     scene.grid.set({8, 3, 8}, kDim);
     scene.grid.set({40, 6, 12}, kDim);
     scene.grid.set({12, 10, 30}, kDim);
-    scene.grid.set({6, 20, 40}, kDim);               // in the wall: lights z < 41 only
+    scene.grid.set({6, 20, 40}, kDim);  // in the wall: lights z < 41 only
     fillBox(scene.grid, Box{{20, 2, 28}, {24, 12, 36}}, kWhite);
-    scene.grid.set({23, 8, 32}, kDim);               // in a block's +x side: dark for cells left of x = 23
-    scene.cameras.push_back(CameraPreset{"front", {24.0f, 28.0f, -16.0f}, {24.0f, 4.0f, 24.0f}, 60.0f});
+    scene.grid.set({23, 8, 32}, kDim);  // in a block's +x side: dark for cells left of x = 23
+    scene.cameras.push_back(
+        CameraPreset{"front", {24.0f, 28.0f, -16.0f}, {24.0f, 4.0f, 24.0f}, 60.0f});
     scene.grid.clearDirty();
     return scene;
 }
@@ -108,7 +110,8 @@ LightingSettings regirRis(std::uint32_t candidates) {
 TEST(RegirGrid, CoversTheWorldWithinTheCellBudget) {
     shared::RegirKnobs knobs;
     knobs.cellSize = 16.0f;
-    for (glm::ivec3 world : {glm::ivec3(48, 32, 48), glm::ivec3(448, 192, 448), glm::ivec3(8192, 256, 8192)}) {
+    for (glm::ivec3 world :
+         {glm::ivec3(48, 32, 48), glm::ivec3(448, 192, 448), glm::ivec3(8192, 256, 8192)}) {
         const shared::RegirGridInfo g = engine::render::regirGridFor(world, knobs);
         EXPECT_GE(g.origin.w, 16.0f);
         EXPECT_LE(g.dims.w, shared::REGIR_MAX_CELLS);
@@ -129,7 +132,8 @@ TEST(Regir, EntryWeightsAreUnbiasedForEveryLightThatCanReachTheCell) {
     Renderer r(context());
     const LightingSettings l = regirRis(4);
     const engine::lighting::EmitterList& list = r.emitters();
-    std::map<std::uint32_t, std::vector<double>> values;  // per slot: W x (entry holds it), over reachable cells
+    std::map<std::uint32_t, std::vector<double>>
+        values;  // per slot: W x (entry holds it), over reachable cells
     int unreachable = 0;
     for (int f = 0; f < 8; ++f) {
         r.render(scene, scene.camera(), frame(32), l);
@@ -143,9 +147,11 @@ TEST(Regir, EntryWeightsAreUnbiasedForEveryLightThatCanReachTheCell) {
             const glm::vec3 hi = lo + grid.info.origin.w;
             for (std::uint32_t i = 0; i < shared::REGIR_CELL_ENTRIES; ++i) {
                 const shared::RegirEntry& e = grid.entries[cell * shared::REGIR_CELL_ENTRIES + i];
-                ASSERT_NE(e.slot, shared::RESERVOIR_EMPTY) << "every cell here is reached by some light";
+                ASSERT_NE(e.slot, shared::RESERVOIR_EMPTY)
+                    << "every cell here is reached by some light";
                 ASSERT_LT(e.slot, list.slots().size());
-                EXPECT_TRUE(canReach(list.slots()[e.slot], lo, hi)) << "slot " << e.slot << " held by cell " << cell;
+                EXPECT_TRUE(canReach(list.slots()[e.slot], lo, hi))
+                    << "slot " << e.slot << " held by cell " << cell;
                 for (std::uint32_t slot : list.aliveSlots()) {
                     if (!canReach(list.slots()[slot], lo, hi)) {
                         unreachable += i == 0;
@@ -160,8 +166,8 @@ TEST(Regir, EntryWeightsAreUnbiasedForEveryLightThatCanReachTheCell) {
     for (std::uint32_t slot : list.aliveSlots()) {
         ASSERT_GT(values[slot].size(), 1000u);
         const MeanAndError m = meanOfMeans(values[slot]);
-        std::printf("slot %u: mean W x [held] %.4f +- %.4f over %zu entries\n", slot, m.mean, m.standardError,
-                    values[slot].size());
+        std::printf("slot %u: mean W x [held] %.4f +- %.4f over %zu entries\n", slot, m.mean,
+                    m.standardError, values[slot].size());
         EXPECT_NEAR(m.mean, 1.0, 5.0 * m.standardError + 1e-3);
     }
 }
@@ -182,9 +188,10 @@ TEST(Regir, ResamplingFromTheGridMatchesPowerDraws) {
         return meanOfMeans(means);
     };
     const MeanAndError power = frameMeans(false), regir = frameMeans(true);
-    const double sigma = std::sqrt(power.standardError * power.standardError + regir.standardError * regir.standardError);
-    std::printf("mean brightness: by power %.5f +- %.5f, ReGIR %.5f +- %.5f\n", power.mean, power.standardError, regir.mean,
-                regir.standardError);
+    const double sigma = std::sqrt(power.standardError * power.standardError +
+                                   regir.standardError * regir.standardError);
+    std::printf("mean brightness: by power %.5f +- %.5f, ReGIR %.5f +- %.5f\n", power.mean,
+                power.standardError, regir.mean, regir.standardError);
     ASSERT_GT(power.mean, 1e-3);
     EXPECT_LT(std::abs(regir.mean - power.mean), 4.0 * sigma + 1e-4 * power.mean);
 }
@@ -194,14 +201,16 @@ namespace {
 // Two rooms on one floor, split by a wall higher than their lamps: a lamp in one cannot light the
 // other. The camera above sees both floors.
 Scene twoRooms() {
-    Scene scene = paletteScene({64, 24, 32},
-                               {Material{"white", glm::vec3(0.75f)},
-                                Material{"lamp", glm::vec3(0.8f), glm::vec3(1.0f, 0.85f, 0.6f), 4.0f}},
-                               true);
+    Scene scene =
+        paletteScene({64, 24, 32},
+                     {Material{"white", glm::vec3(0.75f)},
+                      Material{"lamp", glm::vec3(0.8f), glm::vec3(1.0f, 0.85f, 0.6f), 4.0f}},
+                     true);
     fillBox(scene.grid, Box{{0, 0, 0}, {64, 2, 32}}, kWhite);
     fillBox(scene.grid, Box{{30, 2, 0}, {34, 22, 32}}, kWhite);
     scene.grid.set({15, 10, 16}, kLamp);
-    scene.cameras.push_back(CameraPreset{"above", {32.0f, 70.0f, -14.0f}, {32.0f, 2.0f, 16.0f}, 60.0f});
+    scene.cameras.push_back(
+        CameraPreset{"above", {32.0f, 70.0f, -14.0f}, {32.0f, 2.0f, 16.0f}, 60.0f});
     scene.grid.clearDirty();
     return scene;
 }
@@ -214,8 +223,8 @@ FloorLight floorLight(const FrameImages& img, float xMin, float xMax) {
     FloorLight f;
     for (std::size_t i = 0; i < img.gbuffer.size(); ++i) {
         const shared::GBufferTexel& g = img.gbuffer[i];
-        if (std::uint32_t(g.voxel.w) != shared::FACE_POS_Y || g.position.y > 2.5f || g.position.x < xMin ||
-            g.position.x > xMax)
+        if (std::uint32_t(g.voxel.w) != shared::FACE_POS_Y || g.position.y > 2.5f ||
+            g.position.x < xMin || g.position.x > xMax)
             continue;
         ++f.pixels;
         f.lit += luminance(img.radiance[i]) > 0.0;
@@ -245,7 +254,8 @@ TEST(Regir, LightEditsTakeEffectInTheNextFrame) {
     l.regir.cellSize = 8.0f;
     for (int f = 0; f < 4; ++f) r.render(scene, scene.camera(), frame(48), l);
     FrameImages img = r.readback();
-    const FloorLight leftBefore = floorLight(img, 2.0f, 28.0f), rightBefore = floorLight(img, 36.0f, 62.0f);
+    const FloorLight leftBefore = floorLight(img, 2.0f, 28.0f),
+                     rightBefore = floorLight(img, 36.0f, 62.0f);
     ASSERT_GT(leftBefore.pixels, 100);
     ASSERT_GT(rightBefore.pixels, 100);
     EXPECT_GT(leftBefore.lit, leftBefore.pixels * 9 / 10);
@@ -257,8 +267,9 @@ TEST(Regir, LightEditsTakeEffectInTheNextFrame) {
     r.render(scene, scene.camera(), frame(48), l);
     img = r.readback();
     const FloorLight rightOn = floorLight(img, 36.0f, 62.0f);
-    std::printf("right room floor lit: %d of %d pixels before, %d of %d the frame after the lamp went on\n", rightBefore.lit,
-                rightBefore.pixels, rightOn.lit, rightOn.pixels);
+    std::printf(
+        "right room floor lit: %d of %d pixels before, %d of %d the frame after the lamp went on\n",
+        rightBefore.lit, rightBefore.pixels, rightOn.lit, rightOn.pixels);
     // Most, not all: a few pixels by the wall drew the hidden lamp, and this frame has no history.
     EXPECT_GT(rightOn.lit, rightOn.pixels * 3 / 4);
     ASSERT_EQ(r.emitters().aliveCount(), 2u);
@@ -268,7 +279,8 @@ TEST(Regir, LightEditsTakeEffectInTheNextFrame) {
     r.render(scene, scene.camera(), frame(48), l);
     img = r.readback();
     const FloorLight leftOff = floorLight(img, 2.0f, 28.0f);
-    std::printf("left room floor lit: %d of %d pixels the frame after its lamp was removed\n", leftOff.lit, leftOff.pixels);
+    std::printf("left room floor lit: %d of %d pixels the frame after its lamp was removed\n",
+                leftOff.lit, leftOff.pixels);
     EXPECT_EQ(leftOff.lit, 0);
     EXPECT_GT(floorLight(img, 36.0f, 62.0f).lit, rightOn.pixels * 3 / 4);
     const std::set<std::uint32_t> held = heldSlots(readGrid(r), img);
@@ -291,7 +303,8 @@ std::vector<bool> awayFromEmitters(const FrameImages& img, const Scene& scene) {
             for (int y = -2; y <= 2 && !near; ++y)
                 for (int x = -2; x <= 2 && !near; ++x) {
                     const glm::ivec3 v = front + glm::ivec3(x, y, z);
-                    if (glm::any(glm::lessThan(v, glm::ivec3(0))) || glm::any(glm::greaterThanEqual(v, scene.grid.sizeInVoxels())))
+                    if (glm::any(glm::lessThan(v, glm::ivec3(0))) ||
+                        glm::any(glm::greaterThanEqual(v, scene.grid.sizeInVoxels())))
                         continue;
                     const MaterialId m = scene.grid.get(v);
                     near = m != kEmpty && scene.palette[m].emissive();
@@ -317,18 +330,21 @@ double maskedMean(const std::vector<glm::vec4>& img, const std::vector<bool>& ma
 // floor: many lights, each turned away from the cells above the ceiling, hidden from parts of the
 // floor.
 Scene lampRoom() {
-    Scene scene = paletteScene({64, 32, 64},
-                               {Material{"white", glm::vec3(0.75f)},
-                                Material{"lamp", glm::vec3(0.8f), glm::vec3(1.0f, 0.85f, 0.6f), 8.0f},
-                                Material{"dim", glm::vec3(0.8f), glm::vec3(0.4f, 0.6f, 1.0f), 4.0f}},
-                               true);
+    Scene scene =
+        paletteScene({64, 32, 64},
+                     {Material{"white", glm::vec3(0.75f)},
+                      Material{"lamp", glm::vec3(0.8f), glm::vec3(1.0f, 0.85f, 0.6f), 8.0f},
+                      Material{"dim", glm::vec3(0.8f), glm::vec3(0.4f, 0.6f, 1.0f), 4.0f}},
+                     true);
     fillBox(scene.grid, Box{{0, 0, 0}, {64, 2, 64}}, kWhite);
     fillBox(scene.grid, Box{{0, 28, 0}, {64, 32, 64}}, kWhite);
     for (int i = 0; i < 8; ++i)
-        for (int k = 0; k < 8; ++k) scene.grid.set({4 + 8 * i, 28, 4 + 8 * k}, (i + k) % 2 ? kLamp : kDim);
+        for (int k = 0; k < 8; ++k)
+            scene.grid.set({4 + 8 * i, 28, 4 + 8 * k}, (i + k) % 2 ? kLamp : kDim);
     fillBox(scene.grid, Box{{12, 2, 20}, {20, 16, 28}}, kWhite);
     fillBox(scene.grid, Box{{36, 2, 36}, {48, 10, 44}}, kWhite);
-    scene.cameras.push_back(CameraPreset{"inside", {32.0f, 22.0f, 2.0f}, {32.0f, 2.0f, 40.0f}, 70.0f});
+    scene.cameras.push_back(
+        CameraPreset{"inside", {32.0f, 22.0f, 2.0f}, {32.0f, 2.0f, 40.0f}, 70.0f});
     scene.grid.clearDirty();
     return scene;
 }
@@ -337,7 +353,8 @@ Scene lampRoom() {
 
 // ReSTIR (temporal and spatial reuse, biased mode) with candidates from the grid against the path
 // tracer's direct light: the mean of the pixels away from emitters after 12 frames, over 3 seeds,
-// within 3 % (the tolerance RestirBias gives drawing by power) and within 4 standard errors plus 1 %.
+// within 3 % (the tolerance RestirBias gives drawing by power) and within 4 standard errors plus 1
+// %.
 TEST(Regir, RestirMatchesThePathTracer) {
     Scene scene = lampRoom();
     Renderer r(context());
@@ -369,8 +386,9 @@ TEST(Regir, RestirMatchesThePathTracer) {
         means.push_back(maskedMean(r.readback().radiance, mask));
     }
     const MeanAndError restir = meanOfMeans(means);
-    std::printf("reference %.5f +- %.5f, ReSTIR with ReGIR %.5f +- %.5f (ratio %.4f)\n", reference.mean,
-                reference.standardError, restir.mean, restir.standardError, restir.mean / reference.mean);
+    std::printf("reference %.5f +- %.5f, ReSTIR with ReGIR %.5f +- %.5f (ratio %.4f)\n",
+                reference.mean, reference.standardError, restir.mean, restir.standardError,
+                restir.mean / reference.mean);
     EXPECT_NEAR(restir.mean / reference.mean, 1.0, 0.03);
     const double sigma = std::hypot(reference.standardError, restir.standardError);
     EXPECT_LT(std::abs(restir.mean - reference.mean), 4.0 * sigma + 0.01 * reference.mean);

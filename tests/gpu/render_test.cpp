@@ -1,15 +1,14 @@
 // The frame: G-buffer against the CPU reference traversal, determinism, and image files.
-#include <gtest/gtest.h>
-
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
 
 #include "core/memory_budget.h"
-#include "gpu/texel_buffer_limit.h"
 #include "gpu/gpu_test_setup.h"
+#include "gpu/texel_buffer_limit.h"
 #include "io/image_io.h"
-#include "world/random_worlds.h"
 #include "scene/scene_file.h"
+#include "world/random_worlds.h"
 
 using namespace engine::world;
 using namespace engine::scene;
@@ -31,24 +30,30 @@ TEST_F(Render, GBufferMatchesCpuTraversalPerPixel) {
             const shared::GBufferTexel& g = img.gbuffer[x + y * settings.width];
             bool gpuHit = std::uint32_t(g.voxel.w) != shared::FACE_NONE;
             hits += cpu.hit;
-            bool same = gpuHit == cpu.hit && (!cpu.hit || (glm::ivec3(g.voxel) == cpu.voxel && g.data.x == cpu.material));
+            bool same =
+                gpuHit == cpu.hit &&
+                (!cpu.hit || (glm::ivec3(g.voxel) == cpu.voxel && g.data.x == cpu.material));
             if (same) continue;
             ++mismatches;
             // The camera direction is normalised on both sides; a last-bit difference may only
             // matter where the ray grazes an edge.
-            EXPECT_LT(testing_worlds::nearestEdgeDistance(ray, cpu.hit ? cpu.t + 1.0f : 2000.0f), 1e-3f)
+            EXPECT_LT(testing_worlds::nearestEdgeDistance(ray, cpu.hit ? cpu.t + 1.0f : 2000.0f),
+                      1e-3f)
                 << "pixel " << x << "," << y;
         }
-    std::printf("G-buffer vs CPU: %d pixels, %d hits, %d mismatches\n", settings.width * settings.height, hits, mismatches);
+    std::printf("G-buffer vs CPU: %d pixels, %d hits, %d mismatches\n",
+                settings.width * settings.height, hits, mismatches);
     EXPECT_GT(hits, int(settings.width * settings.height) / 3);
     EXPECT_LE(mismatches * 1000, int(settings.width * settings.height));
 }
 
 TEST_F(Render, SameInputsGiveTheSameImage) {
     Scene scene = loadWorld("cornell.toml");
-    FrameImages ia = renderOnce(scene, scene.camera(), frame(64)), ib = renderOnce(scene, scene.camera(), frame(64));
+    FrameImages ia = renderOnce(scene, scene.camera(), frame(64)),
+                ib = renderOnce(scene, scene.camera(), frame(64));
     EXPECT_EQ(ia.rgba8, ib.rgba8);
-    EXPECT_EQ(0, std::memcmp(ia.radiance.data(), ib.radiance.data(), ia.radiance.size() * sizeof(glm::vec4)));
+    EXPECT_EQ(0, std::memcmp(ia.radiance.data(), ib.radiance.data(),
+                             ia.radiance.size() * sizeof(glm::vec4)));
 }
 
 TEST_F(Render, EmissiveLightIsBrighterThanAlbedoAndSkyMatchesItsColour) {
@@ -57,7 +62,9 @@ TEST_F(Render, EmissiveLightIsBrighterThanAlbedoAndSkyMatchesItsColour) {
     MaterialId light = *scene.palette.find("light");
     int lightPixels = 0;
     for (std::size_t i = 0; i < img.gbuffer.size(); ++i) {
-        if (img.gbuffer[i].data.x != light || std::uint32_t(img.gbuffer[i].voxel.w) != shared::FACE_NEG_X + 2) continue;
+        if (img.gbuffer[i].data.x != light ||
+            std::uint32_t(img.gbuffer[i].voxel.w) != shared::FACE_NEG_X + 2)
+            continue;
         ++lightPixels;
         // Face -Y of the ceiling light: radiance = emission + albedo x ambient.
         glm::vec3 expected = scene.palette[light].emittedRadiance() +
@@ -77,7 +84,8 @@ TEST_F(Render, PngAndExrFilesRoundTrip) {
     auto back = engine::io::readExr(dir / "frame.exr");
     ASSERT_TRUE(back.ok()) << back.error().message;
     ASSERT_EQ(back->pixels.size(), img.radiance.size());
-    EXPECT_EQ(0, std::memcmp(back->pixels.data(), img.radiance.data(), img.radiance.size() * sizeof(glm::vec4)));
+    EXPECT_EQ(0, std::memcmp(back->pixels.data(), img.radiance.data(),
+                             img.radiance.size() * sizeof(glm::vec4)));
     ASSERT_TRUE(engine::io::writePng(dir / "frame.png", img.width, img.height, img.rgba8).ok());
     std::ifstream png(dir / "frame.png", std::ios::binary);
     char magic[8] = {};
@@ -102,7 +110,9 @@ TEST_F(Render, AWorldOverTheMemoryBudgetIsRefusedBeforeItsGpuCopy) {
             try {
                 renderer.render(scene, scene.camera(), settings, kPreview);
             } catch (const engine::MemoryBudgetExceeded& e) {
-                EXPECT_NE(std::string(e.what()).find("over the memory budget of 1 MiB"), std::string::npos) << e.what();
+                EXPECT_NE(std::string(e.what()).find("over the memory budget of 1 MiB"),
+                          std::string::npos)
+                    << e.what();
                 throw;
             }
         },
@@ -126,10 +136,12 @@ TEST_F(Render, AWorldOverTheTexelLimitIsRefusedWithItsSize) {
             try {
                 renderer.render(scene, scene.camera(), settings, kPreview);
             } catch (const engine::gpu::TexelBufferTooLarge& e) {
-                const std::string texels = std::to_string(scene.grid.cells().size() + scene.grid.superCells().size() +
-                                                          4096 * 20 * ((scene.grid.brickCapacity() + 4095) / 4096));
-                EXPECT_NE(std::string(e.what()).find("world 'sandbox' too large for the GPU's texel buffer: " + texels +
-                                                     " texels, limit 50000"),
+                const std::string texels =
+                    std::to_string(scene.grid.cells().size() + scene.grid.superCells().size() +
+                                   4096 * 20 * ((scene.grid.brickCapacity() + 4095) / 4096));
+                EXPECT_NE(std::string(e.what()).find(
+                              "world 'sandbox' too large for the GPU's texel buffer: " + texels +
+                              " texels, limit 50000"),
                           std::string::npos)
                     << e.what();
                 throw;

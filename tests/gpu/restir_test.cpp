@@ -1,7 +1,6 @@
 // Voxel ReSTIR against the reference path tracer and against analytic light, on small scenes.
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 
 #include "gpu/gpu_test_setup.h"
 #include "gpu/sample_stats.h"
@@ -18,11 +17,12 @@ constexpr MaterialId kWhite = 1, kRed = 2, kLamp = 3, kBlue = 4;
 
 // Lit by its emitters alone.
 Scene makeScene(glm::ivec3 size) {
-    return paletteScene(size,
-                        {Material{"white", glm::vec3(0.75f)}, Material{"red", glm::vec3(0.7f, 0.1f, 0.1f)},
-                         Material{"lamp", glm::vec3(0.8f), glm::vec3(1.0f, 0.85f, 0.6f), 6.0f},
-                         Material{"blue", glm::vec3(0.8f), glm::vec3(0.3f, 0.5f, 1.0f), 3.0f}},
-                        true);
+    return paletteScene(
+        size,
+        {Material{"white", glm::vec3(0.75f)}, Material{"red", glm::vec3(0.7f, 0.1f, 0.1f)},
+         Material{"lamp", glm::vec3(0.8f), glm::vec3(1.0f, 0.85f, 0.6f), 6.0f},
+         Material{"blue", glm::vec3(0.8f), glm::vec3(0.3f, 0.5f, 1.0f), 3.0f}},
+        true);
 }
 
 // A floor, a back wall, a pillar casting shadows, one 8^3 brick light and three voxel lights.
@@ -35,7 +35,8 @@ Scene roomScene() {
     scene.grid.set({10, 6, 12}, kBlue);
     scene.grid.set({50, 5, 20}, kLamp);
     scene.grid.set({45, 12, 50}, kBlue);
-    scene.cameras.push_back(CameraPreset{"front", {32.0f, 36.0f, -22.0f}, {32.0f, 6.0f, 30.0f}, 60.0f});
+    scene.cameras.push_back(
+        CameraPreset{"front", {32.0f, 36.0f, -22.0f}, {32.0f, 6.0f, 30.0f}, 60.0f});
     scene.grid.clearDirty();
     return scene;
 }
@@ -51,12 +52,14 @@ FrameImages renderOnePointLightSample(Scene& scene) {
     return renderOnce(scene, scene.camera(), frame(64), l);
 }
 
-std::vector<glm::vec4> reference(Scene& scene, std::uint32_t size, std::uint32_t spp, bool brickLights = true,
-                                 std::uint32_t seed = 1) {
+std::vector<glm::vec4> reference(Scene& scene, std::uint32_t size, std::uint32_t spp,
+                                 bool brickLights = true, std::uint32_t seed = 1) {
     Renderer r(gpu_testing::context());
     LightingSettings l;
     l.method = Method::Reference;
-    l.referenceFilter = engine::lighting::ReferenceFilter::PixelCentre;  // ReSTIR and the quadrature are at pixel centres
+    l.referenceFilter =
+        engine::lighting::ReferenceFilter::PixelCentre;  // ReSTIR and the quadrature are at pixel
+                                                         // centres
     l.samplesPerFrame = 16;
     l.brickLights = brickLights;
     l.seed = seed;
@@ -68,7 +71,8 @@ std::vector<glm::vec4> reference(Scene& scene, std::uint32_t size, std::uint32_t
 class Restir : public GpuTest {};
 
 // The unbiased mode's mean over independent seeds converges to the direct-light reference: the
-// per-image mean lies within 3 standard errors, and the error of the mean image falls like 1/sqrt(N).
+// per-image mean lies within 3 standard errors, and the error of the mean image falls like
+// 1/sqrt(N).
 TEST_F(Restir, UnbiasedModeConvergesToReference) {
     Scene scene = roomScene();
     const std::uint32_t size = 40;
@@ -107,26 +111,31 @@ TEST_F(Restir, UnbiasedModeConvergesToReference) {
     for (auto& p : sumFew) p /= float(seeds / 4);
     for (auto& p : sumAll) p /= float(seeds);
     double maeFew = mae(sumFew, ref), maeAll = mae(sumAll, ref);
-    std::printf("reference mean %.5f +- %.5f, unbiased ReSTIR mean %.5f +- %.5f: difference %.5f = %.2f sigma; MAE of "
-                "the mean of %d seeds %.5f, of %d seeds %.5f (ratio %.2f, 1/sqrt(N) predicts 2.0)\n",
-                refMean, refStats.standardError, mean, restirStats.standardError, mean - refMean,
-                std::abs(mean - refMean) / sigma, seeds / 4, maeFew, seeds, maeAll, maeFew / maeAll);
+    std::printf(
+        "reference mean %.5f +- %.5f, unbiased ReSTIR mean %.5f +- %.5f: difference %.5f = %.2f "
+        "sigma; MAE of "
+        "the mean of %d seeds %.5f, of %d seeds %.5f (ratio %.2f, 1/sqrt(N) predicts 2.0)\n",
+        refMean, refStats.standardError, mean, restirStats.standardError, mean - refMean,
+        std::abs(mean - refMean) / sigma, seeds / 4, maeFew, seeds, maeAll, maeFew / maeAll);
     EXPECT_LT(std::abs(mean - refMean), 3.0 * sigma);
     EXPECT_GT(maeFew / maeAll, 1.5) << "the error of the mean should fall roughly as 1/sqrt(N)";
 }
 
-// A floor under a grid of one-voxel bars, lit by lamps above the bars: every few voxels of floor see
-// a different set of lamps, so a pixel and the surface it reprojects to last frame disagree about
-// visibility wherever the camera moves. The camera below the bars slides sideways by a fraction of
-// a pixel per frame.
+// A floor under a grid of one-voxel bars, lit by lamps above the bars: every few voxels of floor
+// see a different set of lamps, so a pixel and the surface it reprojects to last frame disagree
+// about visibility wherever the camera moves. The camera below the bars slides sideways by a
+// fraction of a pixel per frame.
 Scene barredRoom() {
     Scene scene = makeScene({48, 32, 48});
     fillBox(scene.grid, Box{{0, 0, 0}, {48, 2, 48}}, kWhite);
     for (int x = 2; x < 48; x += 3) fillBox(scene.grid, Box{{x, 8, 0}, {x + 1, 9, 48}}, kWhite);
     for (int z = 2; z < 48; z += 4) fillBox(scene.grid, Box{{0, 9, z}, {48, 10, z + 1}}, kWhite);
-    const glm::ivec3 lamps[] = {{8, 20, 10}, {30, 21, 14}, {20, 19, 30}, {40, 20, 38}, {12, 22, 40}};
-    for (int i = 0; i < 5; ++i) fillBox(scene.grid, Box{lamps[i], lamps[i] + glm::ivec3(3, 1, 3)}, i % 2 ? kBlue : kLamp);
-    scene.cameras.push_back(CameraPreset{"below", {10.0f, 6.0f, 1.0f}, {26.0f, 2.0f, 30.0f}, 60.0f});
+    const glm::ivec3 lamps[] = {
+        {8, 20, 10}, {30, 21, 14}, {20, 19, 30}, {40, 20, 38}, {12, 22, 40}};
+    for (int i = 0; i < 5; ++i)
+        fillBox(scene.grid, Box{lamps[i], lamps[i] + glm::ivec3(3, 1, 3)}, i % 2 ? kBlue : kLamp);
+    scene.cameras.push_back(
+        CameraPreset{"below", {10.0f, 6.0f, 1.0f}, {26.0f, 2.0f, 30.0f}, 60.0f});
     scene.grid.clearDirty();
     return scene;
 }
@@ -140,9 +149,10 @@ CameraPreset slidingCamera(const Scene& scene, int frameIndex) {
 }
 
 // The unbiased mode (pairwise MIS in spatial reuse, the balance heuristic with last frame's
-// visibility in temporal reuse) on a moving camera over bar shadows: the mean of the last frame over
-// independent seeds lies within 4 standard errors of the reference's for that view. The default
-// mode, which counts last frame's reservoir as if its surface were this one's, is printed beside it.
+// visibility in temporal reuse) on a moving camera over bar shadows: the mean of the last frame
+// over independent seeds lies within 4 standard errors of the reference's for that view. The
+// default mode, which counts last frame's reservoir as if its surface were this one's, is printed
+// beside it.
 TEST_F(Restir, UnbiasedModeConvergesOnAMovingCamera) {
     Scene scene = barredRoom();
     const std::uint32_t size = 48;
@@ -169,7 +179,8 @@ TEST_F(Restir, UnbiasedModeConvergesOnAMovingCamera) {
         for (int s = 0; s < seeds; ++s) {
             l.seed = 2000 + std::uint32_t(s);
             r.resetHistory();
-            for (int f = 0; f < frames; ++f) r.render(scene, slidingCamera(scene, f), frame(size), l);
+            for (int f = 0; f < frames; ++f)
+                r.render(scene, slidingCamera(scene, f), frame(size), l);
             means.push_back(meanLuminance(r.readback().radiance));
         }
         return meanOfMeans(means);
@@ -178,11 +189,14 @@ TEST_F(Restir, UnbiasedModeConvergesOnAMovingCamera) {
     unbiased.restir.unbiased = true;
     const MeanAndError u = lastFrameMeans(unbiased, 16);
     const MeanAndError b = lastFrameMeans(LightingSettings{}, 8);
-    const double sigma = std::sqrt(u.standardError * u.standardError + refStats.standardError * refStats.standardError);
-    std::printf("moving camera: reference mean %.5f +- %.5f; unbiased %.5f +- %.5f (%.4f of the reference, %.2f "
-                "sigma); default mode %.5f +- %.5f (%.4f)\n",
-                refStats.mean, refStats.standardError, u.mean, u.standardError, u.mean / refStats.mean,
-                std::abs(u.mean - refStats.mean) / sigma, b.mean, b.standardError, b.mean / refStats.mean);
+    const double sigma = std::sqrt(u.standardError * u.standardError +
+                                   refStats.standardError * refStats.standardError);
+    std::printf(
+        "moving camera: reference mean %.5f +- %.5f; unbiased %.5f +- %.5f (%.4f of the reference, "
+        "%.2f "
+        "sigma); default mode %.5f +- %.5f (%.4f)\n",
+        refStats.mean, refStats.standardError, u.mean, u.standardError, u.mean / refStats.mean,
+        std::abs(u.mean - refStats.mean) / sigma, b.mean, b.standardError, b.mean / refStats.mean);
     EXPECT_LT(std::abs(u.mean - refStats.mean), 4.0 * sigma);
 }
 
@@ -194,7 +208,8 @@ TEST_F(Restir, PointModeMatchesAnalyticPointLight) {
     fillBox(scene.grid, Box{{14, 2, 20}, {22, 9, 24}}, kRed);  // a blocker casting a hard shadow
     const glm::ivec3 lamp{20, 12, 28};
     scene.grid.set(lamp, kLamp);
-    scene.cameras.push_back(CameraPreset{"top", {24.0f, 40.0f, -6.0f}, {24.0f, 2.0f, 26.0f}, 60.0f});
+    scene.cameras.push_back(
+        CameraPreset{"top", {24.0f, 40.0f, -6.0f}, {24.0f, 2.0f, 26.0f}, 60.0f});
     scene.grid.clearDirty();
     FrameImages img = renderOnePointLightSample(scene);
 
@@ -225,7 +240,8 @@ TEST_F(Restir, PointModeMatchesAnalyticPointLight) {
                 if (cosine > best) best = cosine, target = c;
             }
             float shadowDist = glm::length(target - p);
-            RayHit h = traceRay(scene.grid, Ray{p + n * 1e-3f, (target - p) / shadowDist, shadowDist + 1e-3f});
+            RayHit h = traceRay(scene.grid,
+                                Ray{p + n * 1e-3f, (target - p) / shadowDist, shadowDist + 1e-3f});
             bool visible = !h.hit || h.voxel == lamp;
             shadowed += !visible;
             if (visible) expected += albedo / float(M_PI) * le * projected * cosX / (dist * dist);
@@ -235,7 +251,8 @@ TEST_F(Restir, PointModeMatchesAnalyticPointLight) {
         float err = glm::length(got - expected) / std::max(glm::length(expected), 1e-3f);
         bad += err > 1e-3f;
     }
-    std::printf("point light: %d lit pixels checked, %d in shadow, %d differ by more than 0.1%%\n", checked, shadowed, bad);
+    std::printf("point light: %d lit pixels checked, %d in shadow, %d differ by more than 0.1%%\n",
+                checked, shadowed, bad);
     EXPECT_GT(checked, 2000);
     EXPECT_GT(shadowed, 20);
     EXPECT_LE(bad, checked / 500) << "only grazing shadow-boundary pixels may differ";
@@ -253,7 +270,8 @@ TEST_F(Restir, PointModeLightsWallsBesideAFlushLamp) {
     fillBox(scene.grid, Box{{0, 2, 30}, {32, 20, 32}}, kWhite);
     const glm::ivec3 lamp{16, 20, 16};
     scene.grid.set(lamp, kLamp);  // only its lower face is exposed
-    scene.cameras.push_back(CameraPreset{"inside", {16.0f, 11.0f, 1.5f}, {16.0f, 11.0f, 30.0f}, 90.0f});
+    scene.cameras.push_back(
+        CameraPreset{"inside", {16.0f, 11.0f, 1.5f}, {16.0f, 11.0f, 30.0f}, 90.0f});
     scene.grid.clearDirty();
     FrameImages img = renderOnePointLightSample(scene);
 
@@ -278,7 +296,8 @@ TEST_F(Restir, PointModeLightsWallsBesideAFlushLamp) {
                 float dist = glm::length(d);
                 glm::vec3 w = d / dist;
                 float cx = glm::dot(n, w), cy = w.y;  // the lamp's lit face looks down
-                if (cx > 0.0f && cy > 0.0f) quad += albedo / float(M_PI) * le * cx * cy / (dist * dist) / float(k * k);
+                if (cx > 0.0f && cy > 0.0f)
+                    quad += albedo / float(M_PI) * le * cx * cy / (dist * dist) / float(k * k);
             }
         }
         if (glm::length(quad) < 1e-4f) continue;
@@ -291,9 +310,11 @@ TEST_F(Restir, PointModeLightsWallsBesideAFlushLamp) {
         worst = std::max(worst, err);
         off += err > 0.05;
     }
-    std::printf("point mode beside a flush lamp: %d lit wall pixels (%d seeing the lamp more than 45 degrees off its "
-                "face), %d dark, %d off the area light by more than 5 %%, worst %.1f %%\n",
-                walls, steep, dark, off, 100.0 * worst);
+    std::printf(
+        "point mode beside a flush lamp: %d lit wall pixels (%d seeing the lamp more than 45 "
+        "degrees off its "
+        "face), %d dark, %d off the area light by more than 5 %%, worst %.1f %%\n",
+        walls, steep, dark, off, 100.0 * worst);
     EXPECT_GT(steep, 500);
     EXPECT_EQ(dark, 0);
     EXPECT_EQ(off, 0);
@@ -307,7 +328,8 @@ TEST_F(Restir, BrickLightsAndVoxelEmittersConvergeToTheSameImage) {
     std::vector<glm::vec4> voxels = reference(scene, size, 2048, false);
     double a = meanLuminance(bricks), b = meanLuminance(voxels);
     double err = mae(bricks, voxels);
-    std::printf("brick lights: mean %.5f, voxel emitters: mean %.5f, MAE between them %.5f\n", a, b, err);
+    std::printf("brick lights: mean %.5f, voxel emitters: mean %.5f, MAE between them %.5f\n", a, b,
+                err);
     EXPECT_NEAR(a, b, 0.01 * a);
     EXPECT_LT(err, 0.05 * a);
 }
@@ -322,7 +344,8 @@ TEST_F(Restir, EditedEmittersTakeEffectImmediately) {
     const glm::ivec3 lampA{12, 4, 16}, lampB{50, 4, 16};
     scene.grid.set(lampA, kLamp);
     scene.grid.set(lampB, kBlue);
-    scene.cameras.push_back(CameraPreset{"above", {32.0f, 70.0f, 16.0f}, {32.0f, 0.0f, 16.01f}, 50.0f});
+    scene.cameras.push_back(
+        CameraPreset{"above", {32.0f, 70.0f, 16.0f}, {32.0f, 0.0f, 16.01f}, 50.0f});
     scene.grid.clearDirty();
     Renderer r(gpu_testing::context());
     LightingSettings l;  // biased ReSTIR with temporal and spatial reuse
@@ -332,9 +355,11 @@ TEST_F(Restir, EditedEmittersTakeEffectImmediately) {
         maxValue = 0.0f;
         for (std::size_t i = 0; i < img.gbuffer.size(); ++i) {
             const auto& g = img.gbuffer[i];
-            if (std::uint32_t(g.voxel.w) != shared::FACE_POS_Y || g.voxel.y != 1 || g.voxel.x >= 31) continue;
+            if (std::uint32_t(g.voxel.w) != shared::FACE_POS_Y || g.voxel.y != 1 || g.voxel.x >= 31)
+                continue;
             sum += img.radiance[i].x + img.radiance[i].y + img.radiance[i].z;
-            maxValue = std::max(maxValue, img.radiance[i].x + img.radiance[i].y + img.radiance[i].z);
+            maxValue =
+                std::max(maxValue, img.radiance[i].x + img.radiance[i].y + img.radiance[i].z);
             ++n;
         }
         mean = sum / std::max(n, 1);
@@ -361,8 +386,10 @@ TEST_F(Restir, EditedEmittersTakeEffectImmediately) {
     double steady = (means[9] + means[10] + means[11]) / 3.0;
     int frames = 0;
     while (frames < 12 && means[frames] < 0.8 * steady) ++frames;
-    std::printf("an added lamp reached 80%% of its steady brightness after %d frame(s)\n", frames + 1);
-    EXPECT_LE(frames + 1, 5) << "temporal history (M capped at 20x) may delay a new light by a few frames, no more";
+    std::printf("an added lamp reached 80%% of its steady brightness after %d frame(s)\n",
+                frames + 1);
+    EXPECT_LE(frames + 1, 5)
+        << "temporal history (M capped at 20x) may delay a new light by a few frames, no more";
 }
 
 // Switching a light off: the lights that remain are not brightened while history decays. (Last
@@ -391,10 +418,12 @@ TEST_F(Restir, SwitchingALightOffDoesNotBrightenTheOthers) {
             after4.push_back(meanLuminance(renderFrames(r, s, l, frame(size), 3).radiance));
         }
         const MeanAndError a1 = meanOfMeans(after1), a4 = meanOfMeans(after4);
-        std::printf("%s: after the brick light went off, mean / converged mean 1 frame later %.3f (+- %.3f), 4 frames "
-                    "later %.3f (+- %.3f)\n",
-                    unbiased ? "unbiased" : "biased", a1.mean / refMean, a1.standardError / refMean, a4.mean / refMean,
-                    a4.standardError / refMean);
+        std::printf(
+            "%s: after the brick light went off, mean / converged mean 1 frame later %.3f (+- "
+            "%.3f), 4 frames "
+            "later %.3f (+- %.3f)\n",
+            unbiased ? "unbiased" : "biased", a1.mean / refMean, a1.standardError / refMean,
+            a4.mean / refMean, a4.standardError / refMean);
         EXPECT_NEAR(a1.mean / refMean, 1.0, 0.05 + 3.0 * a1.standardError / refMean);
         EXPECT_NEAR(a4.mean / refMean, 1.0, 0.05 + 3.0 * a4.standardError / refMean);
     }
@@ -406,15 +435,17 @@ TEST_F(Restir, SwitchingALightOffDoesNotBrightenTheOthers) {
 TEST_F(Restir, ReferenceDirectLightMatchesQuadrature) {
     Scene scene = makeScene({48, 32, 48});
     fillBox(scene.grid, Box{{0, 0, 0}, {48, 2, 48}}, kWhite);
-    fillBox(scene.grid, Box{{12, 2, 22}, {30, 10, 24}}, kRed);     // a wall casting a soft shadow
+    fillBox(scene.grid, Box{{12, 2, 22}, {30, 10, 24}}, kRed);    // a wall casting a soft shadow
     fillBox(scene.grid, Box{{16, 16, 24}, {24, 24, 32}}, kLamp);  // brick light
     scene.grid.set({34, 5, 12}, kBlue);                           // voxel light
-    scene.cameras.push_back(CameraPreset{"top", {24.0f, 44.0f, -10.0f}, {24.0f, 2.0f, 24.0f}, 55.0f});
+    scene.cameras.push_back(
+        CameraPreset{"top", {24.0f, 44.0f, -10.0f}, {24.0f, 2.0f, 24.0f}, 55.0f});
     scene.grid.clearDirty();
     const std::uint32_t size = 32;
     const int runs = 8;
     std::vector<std::vector<glm::vec4>> images;
-    for (int run = 0; run < runs; ++run) images.push_back(reference(scene, size, 512, true, 900 + std::uint32_t(run)));
+    for (int run = 0; run < runs; ++run)
+        images.push_back(reference(scene, size, 512, true, 900 + std::uint32_t(run)));
     FrameImages g = renderOnce(scene, scene.camera(), frame(size), kPreview);
 
     engine::lighting::EmitterList lights;
@@ -450,16 +481,20 @@ TEST_F(Restir, ReferenceDirectLightMatchesQuadrature) {
                         if (cx <= 0.0f || cy <= 0.0f) continue;
                         RayHit h = traceRay(scene.grid, Ray{x + n * 1e-3f, w, dist + 1e-3f});
                         glm::ivec3 lo(e.minCorner);
-                        bool visible = !h.hit || (glm::all(glm::greaterThanEqual(h.voxel, lo)) &&
-                                                  glm::all(glm::lessThan(h.voxel, lo + e.minCorner.w)));
-                        if (visible) quad += albedo / float(M_PI) * glm::vec3(e.radiance) * cx * cy / (dist * dist) * dA;
+                        bool visible =
+                            !h.hit || (glm::all(glm::greaterThanEqual(h.voxel, lo)) &&
+                                       glm::all(glm::lessThan(h.voxel, lo + e.minCorner.w)));
+                        if (visible)
+                            quad += albedo / float(M_PI) * glm::vec3(e.radiance) * cx * cy /
+                                    (dist * dist) * dA;
                     }
             }
         }
         // Reference mean and its standard error from the independent runs (luminance).
         double mean = 0.0, var = 0.0;
         for (const auto& img : images) mean += luminance(img[i]) / runs;
-        for (const auto& img : images) var += (luminance(img[i]) - mean) * (luminance(img[i]) - mean);
+        for (const auto& img : images)
+            var += (luminance(img[i]) - mean) * (luminance(img[i]) - mean);
         double stderrRef = std::sqrt(var / (runs - 1) / runs);
         double expected = luminance(glm::vec4(quad, 0.0f));
         double deviation = std::abs(mean - expected) / std::max(stderrRef + 0.005 * expected, 1e-6);
@@ -467,7 +502,8 @@ TEST_F(Restir, ReferenceDirectLightMatchesQuadrature) {
         outliers += deviation > 4.0;
         ++checked;
     }
-    std::printf("reference vs quadrature: %d pixels, %d beyond 4 sigma, worst %.2f sigma\n", checked, outliers, worst);
+    std::printf("reference vs quadrature: %d pixels, %d beyond 4 sigma, worst %.2f sigma\n",
+                checked, outliers, worst);
     EXPECT_GT(checked, 60);
     EXPECT_EQ(outliers, 0);
 }

@@ -1,9 +1,8 @@
 // GPU traversal (shaders/common/brick_traversal.glsl) against the CPU reference
 // (engine/world/ray_traversal.cpp), hit for hit, on random worlds and awkward rays.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cstring>
+#include <gtest/gtest.h>
 
 #include "gpu/gpu_test_context.h"
 #include "render/gpu_world.h"
@@ -19,8 +18,10 @@ struct Agreement {
     int rays = 0, hits = 0, mismatches = 0, exactT = 0;
 };
 
-void compare(Scene& scene, const std::vector<Ray>& rays, std::uint32_t mode, Agreement& a, const char* label) {
-    TraversalMode cpuMode = mode == shared::TRACE_MODE_HIERARCHICAL ? TraversalMode::Hierarchical : TraversalMode::PlainTwoLevel;
+void compare(Scene& scene, const std::vector<Ray>& rays, std::uint32_t mode, Agreement& a,
+             const char* label) {
+    TraversalMode cpuMode = mode == shared::TRACE_MODE_HIERARCHICAL ? TraversalMode::Hierarchical
+                                                                    : TraversalMode::PlainTwoLevel;
     std::vector<shared::TraceRayOutput> gpu = gpu_testing::traceOnGpu(scene, rays, mode);
     ASSERT_EQ(gpu.size(), rays.size());
     for (std::size_t i = 0; i < rays.size(); ++i) {
@@ -31,9 +32,9 @@ void compare(Scene& scene, const std::vector<Ray>& rays, std::uint32_t mode, Agr
         std::memcpy(&gpuT, &g.data.z, sizeof(float));
         ++a.rays;
         a.hits += cpu.hit;
-        bool same = gpuHit == cpu.hit &&
-                    (!cpu.hit || (glm::ivec3(g.voxel) == cpu.voxel && std::uint32_t(g.voxel.w) == cpu.face &&
-                                  g.data.y == cpu.material));
+        bool same = gpuHit == cpu.hit && (!cpu.hit || (glm::ivec3(g.voxel) == cpu.voxel &&
+                                                       std::uint32_t(g.voxel.w) == cpu.face &&
+                                                       g.data.y == cpu.material));
         if (same) {
             a.exactT += !cpu.hit || gpuT == cpu.t;
             continue;
@@ -41,9 +42,10 @@ void compare(Scene& scene, const std::vector<Ray>& rays, std::uint32_t mode, Agr
         ++a.mismatches;
         float tEnd = std::max(cpu.hit ? cpu.t : 0.0f, gpuHit ? gpuT : 0.0f) + 1.0f;
         EXPECT_LT(nearestEdgeDistance(rays[i], tEnd), 1e-4f)
-            << label << " ray " << i << ": a mismatch that is not a grazing case; cpu hit " << cpu.hit << " voxel "
-            << cpu.voxel.x << "," << cpu.voxel.y << "," << cpu.voxel.z << " gpu hit " << gpuHit << " voxel "
-            << g.voxel.x << "," << g.voxel.y << "," << g.voxel.z;
+            << label << " ray " << i << ": a mismatch that is not a grazing case; cpu hit "
+            << cpu.hit << " voxel " << cpu.voxel.x << "," << cpu.voxel.y << "," << cpu.voxel.z
+            << " gpu hit " << gpuHit << " voxel " << g.voxel.x << "," << g.voxel.y << ","
+            << g.voxel.z;
     }
 }
 
@@ -67,7 +69,8 @@ std::vector<Ray> raysAt(const std::vector<glm::ivec3>& targets, std::uint64_t se
 
 // GPU against CPU with nothing tolerated: same hit, voxel, face, material, bit-identical t and
 // the same number of steps.
-int exactMismatches(Scene& scene, engine::render::GpuWorld& world, const std::vector<Ray>& rays, int& hits) {
+int exactMismatches(Scene& scene, engine::render::GpuWorld& world, const std::vector<Ray>& rays,
+                    int& hits) {
     std::vector<shared::TraceRayOutput> gpu = gpu_testing::traceOnGpu(world, scene, rays);
     int mismatches = 0;
     for (std::size_t i = 0; i < rays.size(); ++i) {
@@ -77,8 +80,9 @@ int exactMismatches(Scene& scene, engine::render::GpuWorld& world, const std::ve
         std::memcpy(&gpuT, &g.data.z, sizeof(float));
         hits += cpu.hit;
         bool same = (g.data.x != 0) == cpu.hit && g.data.w == cpu.steps &&
-                    (!cpu.hit || (glm::ivec3(g.voxel) == cpu.voxel && std::uint32_t(g.voxel.w) == cpu.face &&
-                                  g.data.y == cpu.material && gpuT == cpu.t));
+                    (!cpu.hit ||
+                     (glm::ivec3(g.voxel) == cpu.voxel && std::uint32_t(g.voxel.w) == cpu.face &&
+                      g.data.y == cpu.material && gpuT == cpu.t));
         mismatches += !same;
     }
     return mismatches;
@@ -93,11 +97,12 @@ TEST_F(TraversalAgreement, GpuMatchesCpuOnRandomWorlds) {
     for (Kind kind : {Kind::Sparse, Kind::Dense, Kind::Homogeneous, Kind::Mixed}) {
         for (std::uint64_t seed = 1; seed <= 3; ++seed) {
             Scene scene = gpu_testing::sceneWith(makeWorld(kind, seed * 7));
-            compare(scene, makeRays(scene.grid, seed * 1000 + 17, 10000), shared::TRACE_MODE_HIERARCHICAL, a, kindName(kind));
+            compare(scene, makeRays(scene.grid, seed * 1000 + 17, 10000),
+                    shared::TRACE_MODE_HIERARCHICAL, a, kindName(kind));
         }
     }
-    std::printf("GPU vs CPU: %d rays, %d hits, %d mismatches (%.4f%%), %d with bit-identical t\n", a.rays, a.hits,
-                a.mismatches, 100.0 * a.mismatches / a.rays, a.exactT);
+    std::printf("GPU vs CPU: %d rays, %d hits, %d mismatches (%.4f%%), %d with bit-identical t\n",
+                a.rays, a.hits, a.mismatches, 100.0 * a.mismatches / a.rays, a.exactT);
     EXPECT_GE(a.rays, 100000);
     EXPECT_GT(a.hits, a.rays / 4);
     EXPECT_LE(a.mismatches * 10000, a.rays) << "more than 0.01% of rays disagree";
@@ -116,14 +121,16 @@ TEST_F(TraversalAgreement, BrickPagesBeyondTheFirstAreReached) {
     BrickGrid grid({256, 96, 256});
     for (int z = 0; z < 32; ++z)
         for (int y = 0; y < 12; ++y)
-            for (int x = 0; x < 32; ++x) grid.set({x * 8 + 3, y * 8 + 3, z * 8 + 3}, MaterialId(1 + (x + y + z) % 7));
+            for (int x = 0; x < 32; ++x)
+                grid.set({x * 8 + 3, y * 8 + 3, z * 8 + 3}, MaterialId(1 + (x + y + z) % 7));
     ASSERT_GT(grid.liveBricks(), 2 * shared::BRICK_PAGE_BRICKS);
     Scene scene = gpu_testing::sceneWith(std::move(grid));
     std::vector<Ray> rays;
     for (int z = 0; z < 32; ++z)
         for (int y = 0; y < 12; ++y)
             for (int x = 0; x < 32; ++x)
-                rays.push_back(Ray{{x * 8 + 3.5f, y * 8 + 3.5f, z * 8 + 0.25f}, {0.0f, 0.0f, 1.0f}});
+                rays.push_back(
+                    Ray{{x * 8 + 3.5f, y * 8 + 3.5f, z * 8 + 0.25f}, {0.0f, 0.0f, 1.0f}});
     auto gpu = gpu_testing::traceOnGpu(scene, rays);
     for (std::size_t i = 0; i < rays.size(); ++i) {
         RayHit cpu = traceRay(scene.grid, rays[i]);
@@ -145,7 +152,8 @@ TEST_F(TraversalAgreement, ExactAfterEditsUploadedIncrementally) {
     grid.set({300, 100, 310}, 3);
     grid.clearDirty();
     Scene scene = gpu_testing::sceneWith(std::move(grid));
-    ASSERT_EQ(*std::max_element(scene.grid.superCells().begin(), scene.grid.superCells().end()), shared::SUPER_SKIP_MAX);
+    ASSERT_EQ(*std::max_element(scene.grid.superCells().begin(), scene.grid.superCells().end()),
+              shared::SUPER_SKIP_MAX);
     engine::render::GpuWorld world(gpu_testing::context());
     const glm::ivec3 added{200, 140, 200}, removed{300, 100, 310};
     const std::vector<glm::ivec3> targets{added, removed, {50, 30, 45}, {10, 7, 370}};
@@ -161,7 +169,8 @@ TEST_F(TraversalAgreement, ExactAfterEditsUploadedIncrementally) {
     scene.grid.set(removed, kEmpty);
     const std::size_t dirtySupers = scene.grid.dirtySuperCells().size();
     EXPECT_GT(dirtySupers, 0u);
-    EXPECT_LT(dirtySupers, scene.grid.superCells().size() / 2) << "edits rewrite super cells near them only";
+    EXPECT_LT(dirtySupers, scene.grid.superCells().size() / 2)
+        << "edits rewrite super cells near them only";
     EXPECT_EQ(exactMismatches(scene, world, rays, hits), 0) << "after the edits";
 
     int seen = 0;  // the new voxel is hit, the removed one is not

@@ -1,8 +1,7 @@
 // After an edit only dirty bricks and cells travel to the GPU, and the result is the same image
 // a full re-upload gives.
-#include <gtest/gtest.h>
-
 #include <cstring>
+#include <gtest/gtest.h>
 
 #include "gpu/command_list.h"
 #include "gpu/gpu_test_setup.h"
@@ -42,7 +41,7 @@ class Upload : public GpuTest {};
 
 TEST_F(Upload, OnlyDirtyBricksAfterAnEditAndSameImageAsFullUpload) {
     BrickGrid grid({64, 48, 64});
-    fillBox(grid, Box{{0, 0, 0}, {64, 16, 64}}, 1);   // homogeneous ground
+    fillBox(grid, Box{{0, 0, 0}, {64, 16, 64}}, 1);     // homogeneous ground
     fillBox(grid, Box{{20, 16, 20}, {37, 30, 41}}, 2);  // a block that needs bricks at its edges
     grid.set({50, 16, 50}, 3);
     Scene scene = gpu_testing::sceneWith(std::move(grid));
@@ -79,7 +78,8 @@ TEST_F(Upload, OnlyDirtyBricksAfterAnEditAndSameImageAsFullUpload) {
 
     // The edit did change what the camera sees (the test would be vacuous otherwise).
     int changed = 0;
-    for (std::size_t i = 0; i < before.rgba8.size(); ++i) changed += before.rgba8[i] != incremental.rgba8[i];
+    for (std::size_t i = 0; i < before.rgba8.size(); ++i)
+        changed += before.rgba8[i] != incremental.rgba8[i];
     EXPECT_GT(changed, 0);
 
     // With nothing edited, nothing but the frame constants is uploaded.
@@ -100,7 +100,8 @@ TEST_F(Upload, CollapsingAndReusingBricksStaysConsistent) {
         // Carve and refill voxels so bricks split, collapse and get reused from the free list.
         for (int i = 0; i < 40; ++i) {
             glm::ivec3 p{rng.uniformInt(0, 31), rng.uniformInt(0, 12), rng.uniformInt(0, 31)};
-            scene.grid.set(p, scene.grid.get(p) == kEmpty ? MaterialId(rng.uniformInt(1, 4)) : kEmpty);
+            scene.grid.set(p,
+                           scene.grid.get(p) == kEmpty ? MaterialId(rng.uniformInt(1, 4)) : kEmpty);
         }
         fillBox(scene.grid, Box{{0, 0, 0}, {16, 8, 16}}, 1);
         renderer.render(scene, camera, smallFrame(), kPreview);
@@ -126,7 +127,8 @@ TEST_F(Upload, MoreBrickPagesUploadTheGridTexelsAgain) {
     // One voxel in each of 32 x 5 x 32 cells: more bricks than one page holds.
     for (int z = 0; z < 256; z += 8) {
         for (int y = 16; y < 56; y += 8) {
-            for (int x = 0; x < 256; x += 8) scene.grid.set({x + 2, y, z + 3}, MaterialId(1 + (x + z) % 4));
+            for (int x = 0; x < 256; x += 8)
+                scene.grid.set({x + 2, y, z + 3}, MaterialId(1 + (x + z) % 4));
         }
     }
     ASSERT_GT(scene.grid.liveBricks(), shared::BRICK_PAGE_BRICKS);
@@ -154,9 +156,11 @@ TEST_F(Upload, ALargeBurstIsSentInBoundedChunksAndArrivesWhole) {
     // In pieces of 3 KiB (not a divisor of the chunk), written out of order.
     constexpr std::uint64_t kPiece = 3 << 10;
     for (std::uint64_t at = 0; at < kBytes; at += 2 * kPiece)
-        uploader.write(target, at, reinterpret_cast<const std::uint8_t*>(data.data()) + at, std::min(kPiece, kBytes - at));
+        uploader.write(target, at, reinterpret_cast<const std::uint8_t*>(data.data()) + at,
+                       std::min(kPiece, kBytes - at));
     for (std::uint64_t at = kPiece; at < kBytes; at += 2 * kPiece)
-        uploader.write(target, at, reinterpret_cast<const std::uint8_t*>(data.data()) + at, std::min(kPiece, kBytes - at));
+        uploader.write(target, at, reinterpret_cast<const std::uint8_t*>(data.data()) + at,
+                       std::min(kPiece, kBytes - at));
     engine::gpu::CommandList cmd(ctx);
     cmd.begin();
     uploader.record(cmd);

@@ -2,10 +2,9 @@
 // against the path tracer's indirect light on an open scene (loose: the cones are a coarse,
 // biased estimate), its leak through a one-voxel wall with the leak mitigation on (bounded) and
 // off (large), and its determinism.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cstdio>
+#include <gtest/gtest.h>
 
 #include "gpu/gpu_test_setup.h"
 #include "world/world_edits.h"
@@ -19,11 +18,12 @@ namespace {
 constexpr MaterialId kWhite = 1, kRed = 2, kLamp = 3, kGreen = 4;
 
 Scene makeScene(glm::ivec3 size) {
-    return paletteScene(size,
-                        {Material{"white", glm::vec3(0.75f)}, Material{"red", glm::vec3(0.8f, 0.15f, 0.1f)},
-                         Material{"lamp", glm::vec3(0.8f), glm::vec3(1.0f, 0.85f, 0.6f), 8.0f},
-                         Material{"green", glm::vec3(0.1f, 0.7f, 0.2f)}},
-                        false);
+    return paletteScene(
+        size,
+        {Material{"white", glm::vec3(0.75f)}, Material{"red", glm::vec3(0.8f, 0.15f, 0.1f)},
+         Material{"lamp", glm::vec3(0.8f), glm::vec3(1.0f, 0.85f, 0.6f), 8.0f},
+         Material{"green", glm::vec3(0.1f, 0.7f, 0.2f)}},
+        false);
 }
 
 // The path-indirect test's open courtyard: a floor, a red and a green wall, a pillar, a lamp,
@@ -36,7 +36,8 @@ Scene courtyard() {
     fillBox(scene.grid, Box{{12, 2, 12}, {15, 10, 15}}, kWhite);
     fillBox(scene.grid, Box{{5, 6, 20}, {7, 8, 22}}, kLamp);
     scene.sky.sunDirection = glm::normalize(glm::vec3(-0.5f, 1.0f, -0.6f));
-    scene.cameras.push_back(CameraPreset{"corner", {4.0f, 14.0f, 3.0f}, {23.0f, 3.0f, 22.0f}, 70.0f});
+    scene.cameras.push_back(
+        CameraPreset{"corner", {4.0f, 14.0f, 3.0f}, {23.0f, 3.0f, 22.0f}, 70.0f});
     scene.grid.clearDirty();
     return scene;
 }
@@ -49,8 +50,10 @@ Scene thinWallRoom() {
     fillBox(scene.grid, Box{{23, 4, 7}, {41, 20, 41}}, kWhite);
     fillBox(scene.grid, Box{{24, 4, 8}, {40, 19, 40}}, 0);
     fillBox(scene.grid, Box{{12, 10, 20}, {14, 12, 22}}, kLamp);
-    scene.cameras.push_back(CameraPreset{"inside", {38.0f, 16.0f, 24.0f}, {24.0f, 6.0f, 24.0f}, 80.0f});
-    scene.cameras.push_back(CameraPreset{"outside", {4.0f, 16.0f, 24.0f}, {23.0f, 6.0f, 24.0f}, 80.0f});
+    scene.cameras.push_back(
+        CameraPreset{"inside", {38.0f, 16.0f, 24.0f}, {24.0f, 6.0f, 24.0f}, 80.0f});
+    scene.cameras.push_back(
+        CameraPreset{"outside", {4.0f, 16.0f, 24.0f}, {23.0f, 6.0f, 24.0f}, 80.0f});
     scene.grid.clearDirty();
     return scene;
 }
@@ -70,7 +73,8 @@ double meanOf(const std::vector<glm::vec4>& img) {
 }
 
 // The path tracer's one-bounce indirect light through the pixel centres: (1 bounce) - (direct).
-std::vector<glm::vec4> referenceIndirect(Scene& scene, const CameraPreset& camera, std::uint32_t size, std::uint32_t spp) {
+std::vector<glm::vec4> referenceIndirect(Scene& scene, const CameraPreset& camera,
+                                         std::uint32_t size, std::uint32_t spp) {
     auto run = [&](std::uint32_t bounces) {
         Renderer r(gpu_testing::context());
         LightingSettings l;
@@ -100,10 +104,11 @@ TEST_F(Vct, MeanNearPathTracerOnAnOpenScene) {
     const std::uint32_t size = 24;  // small and 128 spp: the test stays within seconds
     const std::vector<glm::vec4> ref = referenceIndirect(scene, scene.camera(), size, 128);
     Renderer r(gpu_testing::context());
-    const std::vector<glm::vec4> vct = renderFrames(r, scene, vctLighting(), frame(size), 1).indirect;
+    const std::vector<glm::vec4> vct =
+        renderFrames(r, scene, vctLighting(), frame(size), 1).indirect;
     const double ratio = meanOf(vct) / meanOf(ref);
-    std::printf("courtyard: vct indirect mean %.5f, path tracer %.5f (ratio %.3f), MAE %.5f\n", meanOf(vct), meanOf(ref),
-                ratio, mae(vct, ref));
+    std::printf("courtyard: vct indirect mean %.5f, path tracer %.5f (ratio %.3f), MAE %.5f\n",
+                meanOf(vct), meanOf(ref), ratio, mae(vct, ref));
     EXPECT_GT(meanOf(ref), 0.01);
     EXPECT_GT(ratio, 0.5);
     EXPECT_LT(ratio, 1.5);
@@ -125,8 +130,10 @@ TEST_F(Vct, ThinWallLeakIsBoundedWithMitigationOnly) {
     const double outside = meanOf(indirectFrom("outside", true));
     const double leak = meanOf(indirectFrom("inside", true));
     const double leakWithout = meanOf(indirectFrom("inside", false));
-    std::printf("thin wall: indirect outside mean %.4f; inside mean %.5f with leak mitigation (%.2f %%), %.5f without (%.2f %%)\n",
-                outside, leak, 100.0 * leak / outside, leakWithout, 100.0 * leakWithout / outside);
+    std::printf(
+        "thin wall: indirect outside mean %.4f; inside mean %.5f with leak mitigation (%.2f %%), "
+        "%.5f without (%.2f %%)\n",
+        outside, leak, 100.0 * leak / outside, leakWithout, 100.0 * leakWithout / outside);
     EXPECT_GT(outside, 0.02);
     EXPECT_LT(leak, 0.45 * outside);
     EXPECT_GT(leakWithout, 2.5 * leak);

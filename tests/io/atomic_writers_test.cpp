@@ -1,10 +1,9 @@
 // Every file writer goes through core/atomic_file.h: a full disk (ENOSPC injected at each write
 // and at the fsync in turn) gives one line naming the file and the reason, and the previous file
 // stays byte-identical. PNG, EXR, VDB and the scene file + payload pair of scene/world_pair.h.
-#include <gtest/gtest.h>
-
 #include <fstream>
 #include <functional>
+#include <gtest/gtest.h>
 #include <map>
 #include <set>
 
@@ -36,7 +35,8 @@ std::set<std::string> namesIn(const fs::path& dir) {
 
 // Runs `write` with the 1st, 2nd, ... write/fsync failing until it succeeds; after each failure
 // the folder holds exactly what it held before, byte for byte. Returns how many failed.
-int failEveryOperationInTurn(const fs::path& dir, const fs::path& named, const std::function<Status()>& write) {
+int failEveryOperationInTurn(const fs::path& dir, const fs::path& named,
+                             const std::function<Status()>& write) {
     std::map<std::string, std::string> before;
     for (const std::string& n : namesIn(dir)) before[n] = bytesOf(dir / n);
     int failures = 0;
@@ -47,7 +47,8 @@ int failEveryOperationInTurn(const fs::path& dir, const fs::path& named, const s
         if (s.ok()) return failures;
         ++failures;
         EXPECT_TRUE(vox_test::isOneLineNamingFile(s.error().message, named)) << "operation " << n;
-        EXPECT_NE(s.error().message.find("No space left on device"), std::string::npos) << s.error().message;
+        EXPECT_NE(s.error().message.find("No space left on device"), std::string::npos)
+            << s.error().message;
         std::map<std::string, std::string> after;
         for (const std::string& name : namesIn(dir)) after[name] = bytesOf(dir / name);
         EXPECT_TRUE(after == before) << "the folder changed after failing operation " << n;
@@ -59,7 +60,8 @@ int failEveryOperationInTurn(const fs::path& dir, const fs::path& named, const s
 
 std::vector<std::uint32_t> gradient(std::uint32_t w, std::uint32_t h) {
     std::vector<std::uint32_t> rgba(std::size_t(w) * h);
-    for (std::size_t i = 0; i < rgba.size(); ++i) rgba[i] = 0xff000000u | std::uint32_t(i * 2654435761u >> 8);
+    for (std::size_t i = 0; i < rgba.size(); ++i)
+        rgba[i] = 0xff000000u | std::uint32_t(i * 2654435761u >> 8);
     return rgba;
 }
 
@@ -69,7 +71,8 @@ TEST(AtomicWriters, PngOnAFullDiskKeepsThePreviousFile) {
     ScratchDir dir("png");
     const fs::path file = dir / "r.png";
     ASSERT_TRUE(io::writePng(file, 8, 8, gradient(8, 8)).ok());
-    const int failures = failEveryOperationInTurn(dir.path(), file, [&] { return io::writePng(file, 64, 64, gradient(64, 64)); });
+    const int failures = failEveryOperationInTurn(
+        dir.path(), file, [&] { return io::writePng(file, 64, 64, gradient(64, 64)); });
     EXPECT_GE(failures, 2);  // the write and the fsync
     auto back = io::readPng(file);
     ASSERT_TRUE(back.ok()) << back.error().message;
@@ -80,9 +83,11 @@ TEST(AtomicWriters, ExrOnAFullDiskKeepsThePreviousFile) {
     ScratchDir dir("exr");
     const fs::path file = dir / "r.exr";
     std::vector<glm::vec4> small(4 * 4, glm::vec4(0.5f)), large(96 * 96);
-    for (std::size_t i = 0; i < large.size(); ++i) large[i] = glm::vec4(float(i), 1.0f / float(i + 1), 2.0f, 1.0f);
+    for (std::size_t i = 0; i < large.size(); ++i)
+        large[i] = glm::vec4(float(i), 1.0f / float(i + 1), 2.0f, 1.0f);
     ASSERT_TRUE(io::writeExr(file, 4, 4, small).ok());
-    const int failures = failEveryOperationInTurn(dir.path(), file, [&] { return io::writeExr(file, 96, 96, large); });
+    const int failures = failEveryOperationInTurn(
+        dir.path(), file, [&] { return io::writeExr(file, 96, 96, large); });
     EXPECT_GE(failures, 3);  // header, lines, offset table, fsync
     auto back = io::readExr(file);
     ASSERT_TRUE(back.ok()) << back.error().message;
@@ -95,7 +100,8 @@ TEST(AtomicWriters, VdbOnAFullDiskKeepsThePreviousFile) {
     ASSERT_TRUE(scene.ok());
     const fs::path file = dir / "w.vdb";
     std::ofstream(file) << "previous contents";
-    const int failures = failEveryOperationInTurn(dir.path(), file, [&] { return io::exportVdb(*scene, file); });
+    const int failures =
+        failEveryOperationInTurn(dir.path(), file, [&] { return io::exportVdb(*scene, file); });
     EXPECT_GE(failures, 2);
     EXPECT_NE(bytesOf(file), "previous contents");
 }
@@ -106,7 +112,8 @@ TEST(AtomicWriters, VoxOnAFullDiskKeepsThePreviousFile) {
     ASSERT_TRUE(scene.ok());
     const fs::path file = dir / "w.vox";
     std::ofstream(file) << "previous contents";
-    const int failures = failEveryOperationInTurn(dir.path(), file, [&] { return io::exportVox(*scene, file); });
+    const int failures =
+        failEveryOperationInTurn(dir.path(), file, [&] { return io::exportVox(*scene, file); });
     EXPECT_GE(failures, 2);
     EXPECT_NE(bytesOf(file), "previous contents");
 }
@@ -116,7 +123,8 @@ TEST(AtomicWriters, AnOutputThatIsAFolderSaysSo) {
     fs::create_directory(dir / "r.png");
     Status s = io::writePng(dir / "r.png", 1, 1, gradient(1, 1));
     ASSERT_FALSE(s.ok());
-    EXPECT_EQ(s.error().message, (dir / "r.png").string() + " is a folder; give a file name to write");
+    EXPECT_EQ(s.error().message,
+              (dir / "r.png").string() + " is a folder; give a file name to write");
 }
 
 // The pair: neither the scene file nor the payload changes, and no new payload is left, whichever
@@ -152,7 +160,8 @@ TEST(WorldPair, AFullDiskAtAnyStepLeavesThePreviousPairUnchanged) {
             << m;
         std::map<std::string, std::string> after;
         for (const std::string& name : namesIn(dir.path())) after[name] = bytesOf(dir / name);
-        ASSERT_TRUE(after == before) << "the folder changed after failing operation " << n << ": " << m;
+        ASSERT_TRUE(after == before)
+            << "the folder changed after failing operation " << n << ": " << m;
         auto loaded = scene::loadSceneFile(file);
         ASSERT_TRUE(loaded.ok()) << loaded.error().message;
         EXPECT_TRUE(loaded->grid == cornell->grid);
@@ -182,8 +191,10 @@ TEST(WorldPair, ASceneFileThatIsAFolderLeavesNoPayload) {
     auto cornell = scene::loadSceneFile(fs::path(VOX_SOURCE_DIR) / "worlds" / "cornell.toml");
     ASSERT_TRUE(cornell.ok());
     fs::create_directory(dir / "world.toml");
-    Status s = scene::writeWorldPair(*cornell, dir / "world.toml", [](const std::string&) { return std::string(); });
+    Status s = scene::writeWorldPair(*cornell, dir / "world.toml",
+                                     [](const std::string&) { return std::string(); });
     ASSERT_FALSE(s.ok());
-    EXPECT_EQ(s.error().message.rfind((dir / "world.toml").string() + " is a folder", 0), 0u) << s.error().message;
+    EXPECT_EQ(s.error().message.rfind((dir / "world.toml").string() + " is a folder", 0), 0u)
+        << s.error().message;
     EXPECT_EQ(namesIn(dir.path()), (std::set<std::string>{"world.toml"}));
 }

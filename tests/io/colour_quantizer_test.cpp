@@ -1,6 +1,6 @@
-#include <gtest/gtest.h>
-
 #include "io/colour_quantizer.h"
+
+#include <gtest/gtest.h>
 
 using namespace engine::io;
 

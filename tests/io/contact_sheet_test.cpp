@@ -1,8 +1,7 @@
 #include "io/contact_sheet.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 #include <vector>
 
 using namespace engine::io;

@@ -1,13 +1,11 @@
 // Hostile and broken input: every case returns an error that is one line naming the file, in
 // bounded time and memory, and never crashes. (The fuzz target, tools/fuzz, pushes further.)
-#include <gtest/gtest.h>
-
 #include <chrono>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <limits>
-#include <random>
-
 #include <openvdb/openvdb.h>
+#include <random>
 
 #include "io/vdb_export.h"
 #include "io/vdb_import.h"
@@ -28,7 +26,9 @@ std::string bytesOf(const fs::path& p) {
     std::ifstream in(p, std::ios::binary);
     return {std::istreambuf_iterator<char>(in), {}};
 }
-void writeBytes(const fs::path& p, const std::string& bytes) { std::ofstream(p, std::ios::binary) << bytes; }
+void writeBytes(const fs::path& p, const std::string& bytes) {
+    std::ofstream(p, std::ios::binary) << bytes;
+}
 
 std::string importError(const fs::path& file, io::VdbImportOptions o = {}) {
     auto scene = io::importVdb(file, o);
@@ -48,7 +48,8 @@ fs::path richFile(const ScratchDir& dir) {
 
 TEST(VdbBadInput, MissingEmptyAndNonVdbFiles) {
     ScratchDir dir("files");
-    EXPECT_NE(importError(dir / "missing.vdb").find("cannot open: no such file"), std::string::npos);
+    EXPECT_NE(importError(dir / "missing.vdb").find("cannot open: no such file"),
+              std::string::npos);
     writeBytes(dir / "empty.vdb", "");
     EXPECT_NE(importError(dir / "empty.vdb").find("empty file"), std::string::npos);
     writeBytes(dir / "text.vdb", "[world]\nsize = [8, 8, 8]\n");
@@ -69,8 +70,10 @@ TEST(VdbBadInput, TruncatedFilesFailCleanlyAndQuickly) {
         writeBytes(cut, full.substr(0, n));
         const auto start = std::chrono::steady_clock::now();
         auto scene = io::importVdb(cut);
-        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        ASSERT_FALSE(scene.ok()) << "a file cut at " << n << " of " << full.size() << " bytes imported";
+        const double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        ASSERT_FALSE(scene.ok()) << "a file cut at " << n << " of " << full.size()
+                                 << " bytes imported";
         ASSERT_TRUE(vox_test::isOneLineNamingFile(scene.error().message, cut)) << "cut at " << n;
         ASSERT_LT(seconds, 2.0) << "cut at " << n << ": " << scene.error().message;
         auto info = io::describeVdbFile(cut);  // must not crash or hang either
@@ -84,7 +87,8 @@ TEST(VdbBadInput, TruncatedFilesFailCleanlyAndQuickly) {
     io::VdbImportOptions tiny;
     tiny.memoryBudgetBytes = 64 << 10;
     writeBytes(cut, full);
-    EXPECT_NE(importError(cut, tiny).find("more memory than the budget of 0.1 MiB"), std::string::npos);
+    EXPECT_NE(importError(cut, tiny).find("more memory than the budget of 0.1 MiB"),
+              std::string::npos);
 }
 
 TEST(VdbBadInput, RandomBytesAfterAValidHeaderFailCleanly) {
@@ -137,7 +141,8 @@ TEST(VdbBadInput, WrongGridTypesAndEmptyGrids) {
     io::VdbImportOptions o;
     o.grid = "flow";
     e = importError(dir / "wrong.vdb", o);
-    EXPECT_NE(e.find("grid 'flow' has type vec3i, which cannot be imported"), std::string::npos) << e;
+    EXPECT_NE(e.find("grid 'flow' has type vec3i, which cannot be imported"), std::string::npos)
+        << e;
     o.grid = "nope";
     e = importError(dir / "wrong.vdb", o);
     EXPECT_NE(e.find("no grid named 'nope' (grids: flow, density)"), std::string::npos) << e;
@@ -150,7 +155,8 @@ TEST(VdbBadInput, WrongGridTypesAndEmptyGrids) {
 TEST(VdbBadInput, TransformsWeCannotHonour) {
     ScratchDir dir("xforms");
     samples::writeRotatedGrid(dir / "rotated.vdb");
-    EXPECT_NE(importError(dir / "rotated.vdb").find("rotated or sheared transform"), std::string::npos);
+    EXPECT_NE(importError(dir / "rotated.vdb").find("rotated or sheared transform"),
+              std::string::npos);
     samples::writeFrustumGrid(dir / "frustum.vdb");
     EXPECT_NE(importError(dir / "frustum.vdb").find("non-linear"), std::string::npos);
 }
@@ -203,7 +209,8 @@ TEST(VdbBadInput, DamagedDelayedLoadTablesAreIgnored) {
     std::string bytes = bytesOf(dir / "f.vdb");
     const std::size_t at = bytes.find("__delayedload");
     ASSERT_NE(at, std::string::npos) << "OpenVDB 10 writes delayed-load tables";
-    for (std::size_t i = at + 13 + 4; i < std::min(bytes.size(), at + 13 + 200); ++i) bytes[i] = char(0x5A ^ i);
+    for (std::size_t i = at + 13 + 4; i < std::min(bytes.size(), at + 13 + 200); ++i)
+        bytes[i] = char(0x5A ^ i);
     writeBytes(dir / "f.vdb", bytes);
     auto scene = io::importVdb(dir / "f.vdb");
     if (!scene.ok()) {
@@ -214,11 +221,13 @@ TEST(VdbBadInput, DamagedDelayedLoadTablesAreIgnored) {
 TEST(VdbBadInput, RootChildrenSharingAnOriginAreRefused) {
     // OpenVDB 10 would overwrite the first child with the second and leak it.
     ScratchDir dir("dup");
-    samples::writeFogBox(dir / "two.vdb", glm::ivec3(4090, 1, 1), glm::ivec3(4100, 7, 7));  // two root children along x
+    samples::writeFogBox(dir / "two.vdb", glm::ivec3(4090, 1, 1),
+                         glm::ivec3(4100, 7, 7));  // two root children along x
     std::string bytes = bytesOf(dir / "two.vdb");
     // The root: one buffer, background 0, no tiles, two children, the first at (0, 0, 0).
     const std::int32_t root[8] = {1, 0, 0, 2, 0, 0, 0};
-    const std::size_t start = bytes.find(std::string(reinterpret_cast<const char*>(root), 7 * sizeof(std::int32_t)));
+    const std::size_t start =
+        bytes.find(std::string(reinterpret_cast<const char*>(root), 7 * sizeof(std::int32_t)));
     ASSERT_NE(start, std::string::npos);
     // The second child's origin (4096, 0, 0) follows the first child's subtree; the same bytes
     // may also occur inside it, so patch each occurrence: every variant must fail cleanly, and
@@ -226,11 +235,13 @@ TEST(VdbBadInput, RootChildrenSharingAnOriginAreRefused) {
     const std::int32_t second[3] = {4096, 0, 0}, first[3] = {0, 0, 0};
     const std::string key(reinterpret_cast<const char*>(second), sizeof(second));
     bool duplicate = false;
-    for (std::size_t at = bytes.find(key, start + 28); at != std::string::npos; at = bytes.find(key, at + 1)) {
+    for (std::size_t at = bytes.find(key, start + 28); at != std::string::npos;
+         at = bytes.find(key, at + 1)) {
         std::string patched = bytes;
         patched.replace(at, sizeof(first), reinterpret_cast<const char*>(first), sizeof(first));
         writeBytes(dir / "dup.vdb", patched);
-        duplicate |= importError(dir / "dup.vdb").find("two root children share an origin") != std::string::npos;
+        duplicate |= importError(dir / "dup.vdb").find("two root children share an origin") !=
+                     std::string::npos;
     }
     EXPECT_TRUE(duplicate);
 }
@@ -248,7 +259,8 @@ world::Scene smallWorld() {
     for (int z = 0; z < 16; ++z)
         for (int x = 0; x < 16; ++x) scene.grid.set({x, 0, z}, s);
     scene.grid.set({8, 1, 8}, l);
-    scene.cameras.push_back({"main", glm::vec3(8.0f, 8.0f, -10.0f), glm::vec3(8.0f, 1.0f, 8.0f), 60.0f});
+    scene.cameras.push_back(
+        {"main", glm::vec3(8.0f, 8.0f, -10.0f), glm::vec3(8.0f, 1.0f, 8.0f), 60.0f});
     return scene;
 }
 
@@ -269,14 +281,17 @@ TEST(VdbBadInput, MetadataNumbersAreCheckedAsTheSceneKeysAre) {
     openvdb::MetaMap::Ptr meta = good.getMetadata();
     good.close();
 
-    const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+    const float inf = std::numeric_limits<float>::infinity(),
+                nan = std::numeric_limits<float>::quiet_NaN();
     const float hostile[] = {nan, inf, -inf, 1e30f};
     std::vector<std::pair<std::string, openvdb::Metadata::Ptr>> cases;
-    for (const char* key : {"vox:world.voxel_size", "vox:material.00001.strength", "vox:camera.000.fov"})
+    for (const char* key :
+         {"vox:world.voxel_size", "vox:material.00001.strength", "vox:camera.000.fov"})
         for (float v : hostile) cases.emplace_back(key, openvdb::FloatMetadata(v).copy());
-    for (const char* key : {"vox:material.00001.albedo", "vox:material.00002.emission", "vox:camera.000.position",
-                            "vox:camera.000.target", "vox:sky.sun_direction", "vox:sky.sun_radiance",
-                            "vox:sky.sky_radiance"})
+    for (const char* key :
+         {"vox:material.00001.albedo", "vox:material.00002.emission", "vox:camera.000.position",
+          "vox:camera.000.target", "vox:sky.sun_direction", "vox:sky.sun_radiance",
+          "vox:sky.sky_radiance"})
         for (int axis = 0; axis < 3; ++axis)
             for (float v : hostile) {
                 openvdb::Vec3s value(0.5f);
@@ -311,20 +326,23 @@ TEST(VdbBadInput, AGridsVoxelSizeIsCheckedAsTheSceneKeyIs) {
         try {
             samples::writeFogBox(file, {0, 0, 0}, {4, 4, 4}, size);
         } catch (const openvdb::Exception&) {
-            continue;  // OpenVDB itself refuses to make such a transform ("Non-zero scale values required")
+            continue;  // OpenVDB itself refuses to make such a transform ("Non-zero scale values
+                       // required")
         }
         ++tried;
         auto scene = io::importVdb(file);
         if (!scene.ok()) {
             EXPECT_TRUE(vox_test::isOneLineNamingFile(scene.error().message, file));
-            EXPECT_NE(scene.error().message.find("'density'"), std::string::npos) << scene.error().message;
+            EXPECT_NE(scene.error().message.find("'density'"), std::string::npos)
+                << scene.error().message;
             EXPECT_NE(size, 0.01) << scene.error().message;
             continue;
         }
         std::vector<world::GeneratorRecord> payload{scene::vdbPayloadGenerator("fog.vdb", false)};
         std::ofstream(dir / "fog.toml") << scene::sceneText(*scene, {.generators = &payload});
         auto loaded = scene::loadSceneFile(dir / "fog.toml");
-        EXPECT_TRUE(loaded.ok()) << "imported, but the world it makes does not load: " << loaded.error().message;
+        EXPECT_TRUE(loaded.ok()) << "imported, but the world it makes does not load: "
+                                 << loaded.error().message;
     }
     EXPECT_GE(tried, 3);
 }
@@ -335,7 +353,8 @@ namespace {
     for (std::size_t i = 0; i < text.size(); ++i) {
         const auto c = static_cast<unsigned char>(text[i]);
         if ((c < 0x20 || c == 0x7f) && text[i] != allowed)
-            return ::testing::AssertionFailure() << "byte " << int(c) << " at " << i << " of: " << text;
+            return ::testing::AssertionFailure()
+                   << "byte " << int(c) << " at " << i << " of: " << text;
     }
     return ::testing::AssertionSuccess();
 }

@@ -1,18 +1,17 @@
 // Files nobody here wrote: made with OpenVDB's own API (tools/vdb_samples), and the two real files
 // in ../shared/data/vdb. Each test compares with the analytic answer.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <limits>
 #include <map>
 #include <numbers>
 
 #include "io/vdb_import.h"
 #include "io/vdb_info.h"
+#include "scene/scene_file.h"
 #include "vdb_samples.h"
 #include "vdb_test_util.h"
-#include "scene/scene_file.h"
 
 using namespace engine;
 using vox_test::ScratchDir;
@@ -62,7 +61,8 @@ TEST(VdbForeign, LevelSetSphereVolumeWithinOnePercent) {
     // The interior arrives as homogeneous cells, not bricks.
     EXPECT_GT(scene->grid.homogeneousCells(), 100u);
     const world::Box b = solidBounds(*scene);
-    EXPECT_EQ(b.size(), glm::ivec3(79)) << "voxel centres strictly inside radius 40: 2 * 39 + 1 per axis";
+    EXPECT_EQ(b.size(), glm::ivec3(79))
+        << "voxel centres strictly inside radius 40: 2 * 39 + 1 per axis";
     EXPECT_LE(report.peakTrackedBytes, report.plan.estimateBytes);
 }
 
@@ -84,7 +84,9 @@ TEST(VdbForeign, LevelSetResampledCoarserIsConservative) {
     o.voxelSize = 0.5f;  // finer: trilinear distance
     auto fine = io::importVdb(dir / "sphere.vdb", o);
     ASSERT_TRUE(fine.ok()) << fine.error().message;
-    EXPECT_NEAR(double(fine->grid.solidVoxels()) / (4.0 / 3.0 * std::numbers::pi * 40.0 * 40.0 * 40.0), 1.0, 0.01);
+    EXPECT_NEAR(
+        double(fine->grid.solidVoxels()) / (4.0 / 3.0 * std::numbers::pi * 40.0 * 40.0 * 40.0), 1.0,
+        0.01);
 }
 
 TEST(VdbForeign, FogBoxAtThresholdGivesExactlyItsBox) {
@@ -97,7 +99,8 @@ TEST(VdbForeign, FogBoxAtThresholdGivesExactlyItsBox) {
     EXPECT_EQ(report.plan.kind, "fog volume");
     EXPECT_EQ(scene->grid.solidVoxels(), 16u * 6u * 17u);
     const glm::ivec3 offset(report.plan.offset);
-    ASSERT_EQ(glm::dvec3(offset), report.plan.offset) << "a unit-scale import moves by whole voxels";
+    ASSERT_EQ(glm::dvec3(offset), report.plan.offset)
+        << "a unit-scale import moves by whole voxels";
     EXPECT_EQ(solidBounds(*scene).min, lo + offset);
     EXPECT_EQ(solidBounds(*scene).max, hi + offset);
 
@@ -198,7 +201,8 @@ TEST(VdbForeign, ZUpFilesLandUpright) {
     samples::writeZUpTower(dir / "blender.vdb", "Blender/Smoke");
     io::VdbImportOptions zUp;
     zUp.up = io::UpAxis::Z;
-    for (auto [file, options] : {std::pair{dir / "tower.vdb", zUp}, std::pair{dir / "blender.vdb", io::VdbImportOptions{}}}) {
+    for (auto [file, options] : {std::pair{dir / "tower.vdb", zUp},
+                                 std::pair{dir / "blender.vdb", io::VdbImportOptions{}}}) {
         io::VdbImportReport report;
         auto scene = io::importVdb(file, options, &report);
         ASSERT_TRUE(scene.ok()) << scene.error().message;
@@ -294,18 +298,23 @@ target = [16, 16, 16]
     ASSERT_TRUE(scene.ok()) << scene.error().message;
     EXPECT_EQ(scene->palette.size(), 2u) << "the scene's stone is reused, not duplicated";
     EXPECT_EQ(scene->grid.get({16, 16, 16}), *scene->palette.find("stone"));
-    EXPECT_NEAR(double(scene->grid.solidVoxels()) / (4.0 / 3.0 * std::numbers::pi * 216.0), 1.0, 0.05);
+    EXPECT_NEAR(double(scene->grid.solidVoxels()) / (4.0 / 3.0 * std::numbers::pi * 216.0), 1.0,
+                0.05);
 
-    std::ofstream(dir / "bad.toml") << "[world]\nsize = [8, 8, 8]\n[[generator]]\ntype = \"vdb\"\nsource = \"nope.vdb\"\n";
+    std::ofstream(dir / "bad.toml")
+        << "[world]\nsize = [8, 8, 8]\n[[generator]]\ntype = \"vdb\"\nsource = \"nope.vdb\"\n";
     auto bad = engine::scene::loadSceneFile(dir / "bad.toml");
     ASSERT_FALSE(bad.ok());
     EXPECT_NE(bad.error().message.find("bad.toml:3: "), std::string::npos) << bad.error().message;
-    EXPECT_NE(bad.error().message.find("nope.vdb: cannot open"), std::string::npos) << bad.error().message;
+    EXPECT_NE(bad.error().message.find("nope.vdb: cannot open"), std::string::npos)
+        << bad.error().message;
 }
 
 TEST(VdbRealFiles, DensityAndHeatImportsAsFog) {
     const fs::path file = vox_test::sharedVdbDir() / "usd_densityAndHeat.vdb";
-    if (!fs::exists(file)) GTEST_SKIP() << "real VDB files not found at " << file.parent_path() << " (../shared/data/vdb beside the checkout)";
+    if (!fs::exists(file))
+        GTEST_SKIP() << "real VDB files not found at " << file.parent_path()
+                     << " (../shared/data/vdb beside the checkout)";
     auto info = io::describeVdbFile(file);
     ASSERT_TRUE(info.ok()) << info.error().message;
     ASSERT_EQ(info->grids.size(), 2u);
@@ -337,7 +346,9 @@ TEST(VdbRealFiles, DensityAndHeatImportsAsFog) {
 
 TEST(VdbRealFiles, BlenderSmokeCacheWithEmptyGridsFailsClearly) {
     const fs::path file = vox_test::sharedVdbDir() / "usd_smoke_000001.vdb";
-    if (!fs::exists(file)) GTEST_SKIP() << "real VDB files not found at " << file.parent_path() << " (../shared/data/vdb beside the checkout)";
+    if (!fs::exists(file))
+        GTEST_SKIP() << "real VDB files not found at " << file.parent_path()
+                     << " (../shared/data/vdb beside the checkout)";
     auto info = io::describeVdbFile(file);
     ASSERT_TRUE(info.ok()) << info.error().message;
     EXPECT_EQ(info->grids.size(), 4u);
@@ -346,12 +357,14 @@ TEST(VdbRealFiles, BlenderSmokeCacheWithEmptyGridsFailsClearly) {
     auto scene = io::importVdb(file);
     ASSERT_FALSE(scene.ok());
     EXPECT_TRUE(vox_test::isOneLineNamingFile(scene.error().message, file));
-    EXPECT_NE(scene.error().message.find("nothing to import"), std::string::npos) << scene.error().message;
+    EXPECT_NE(scene.error().message.find("nothing to import"), std::string::npos)
+        << scene.error().message;
     io::VdbImportOptions o;
     o.grid = "density";
     scene = io::importVdb(file, o);
     ASSERT_FALSE(scene.ok());
-    EXPECT_NE(scene.error().message.find("grid 'density' is empty"), std::string::npos) << scene.error().message;
+    EXPECT_NE(scene.error().message.find("grid 'density' is empty"), std::string::npos)
+        << scene.error().message;
 }
 
 // Grid instances (a second grid sharing the first one's tree) are valid OpenVDB; OpenVDB writes
@@ -401,14 +414,17 @@ TEST(VdbForeign, BlenderFluidCachesWithoutCreatorAreZUp) {
 
 TEST(VdbForeign, FogThresholdAboveTheDataIsAnError) {
     ScratchDir dir("threshold");
-    samples::writeFogBox(dir / "fog.vdb", glm::ivec3(0), glm::ivec3(8, 4, 4));  // 1.0 inside, 0.25 shell
+    samples::writeFogBox(dir / "fog.vdb", glm::ivec3(0),
+                         glm::ivec3(8, 4, 4));  // 1.0 inside, 0.25 shell
     io::VdbImportOptions o;
     o.fogThreshold = 1.5f;
     auto scene = io::importVdb(dir / "fog.vdb", o);
     ASSERT_FALSE(scene.ok()) << "an empty world is not an import";
     EXPECT_TRUE(vox_test::isOneLineNamingFile(scene.error().message, dir / "fog.vdb"));
-    EXPECT_NE(scene.error().message.find("fog threshold 1.5"), std::string::npos) << scene.error().message;
-    EXPECT_NE(scene.error().message.find("largest density in it is 1 "), std::string::npos) << scene.error().message;
+    EXPECT_NE(scene.error().message.find("fog threshold 1.5"), std::string::npos)
+        << scene.error().message;
+    EXPECT_NE(scene.error().message.find("largest density in it is 1 "), std::string::npos)
+        << scene.error().message;
     o.fogThreshold = 1.0f;  // at the maximum: the box
     scene = io::importVdb(dir / "fog.vdb", o);
     ASSERT_TRUE(scene.ok()) << scene.error().message;
@@ -418,15 +434,18 @@ TEST(VdbForeign, FogThresholdAboveTheDataIsAnError) {
 TEST(VdbForeign, VoxelSizeMustBePositive) {
     ScratchDir dir("voxelsize");
     samples::writeFogBox(dir / "fog.vdb", glm::ivec3(0), glm::ivec3(4));
-    for (float bad : {-1.0f, std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity()}) {
+    for (float bad :
+         {-1.0f, std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity()}) {
         io::VdbImportOptions o;
         o.voxelSize = bad;
         auto scene = io::importVdb(dir / "fog.vdb", o);
         ASSERT_FALSE(scene.ok()) << bad;
-        EXPECT_NE(scene.error().message.find("voxel size must be positive"), std::string::npos) << scene.error().message;
+        EXPECT_NE(scene.error().message.find("voxel size must be positive"), std::string::npos)
+            << scene.error().message;
     }
     for (const char* value : {"0", "-2", "nan"}) {
-        std::ofstream(dir / "scene.toml") << "[world]\nsize = [8, 8, 8]\n[[generator]]\ntype = \"vdb\"\nsource = \"fog.vdb\"\nvoxel_size = "
+        std::ofstream(dir / "scene.toml") << "[world]\nsize = [8, 8, 8]\n[[generator]]\ntype = "
+                                             "\"vdb\"\nsource = \"fog.vdb\"\nvoxel_size = "
                                           << value << "\n";
         auto scene = engine::scene::loadSceneFile(dir / "scene.toml");
         ASSERT_FALSE(scene.ok()) << value;
@@ -444,20 +463,23 @@ TEST(VdbForeign, DuplicateGridNamesAreSelectableByIndex) {
     // OpenVDB 10 numbers every grid of a repeated name: stored "density\x1e0", "density\x1e1".
     EXPECT_EQ(info->grids[0].name, "density[0]");
     EXPECT_EQ(info->grids[1].name, "density[1]");
-    for (auto [name, voxels] : {std::pair{"density", 8u}, std::pair{"density[0]", 8u}, std::pair{"density[1]", 27u}}) {
+    for (auto [name, voxels] :
+         {std::pair{"density", 8u}, std::pair{"density[0]", 8u}, std::pair{"density[1]", 27u}}) {
         io::VdbImportOptions o;
         o.grid = name;
         io::VdbImportReport report;
         auto scene = io::importVdb(dir / "dup.vdb", o, &report);
         ASSERT_TRUE(scene.ok()) << name << ": " << scene.error().message;
         EXPECT_EQ(scene->grid.solidVoxels(), voxels) << name;
-        EXPECT_EQ(report.plan.grid, std::string(name) == "density[1]" ? "density[1]" : "density[0]");
+        EXPECT_EQ(report.plan.grid,
+                  std::string(name) == "density[1]" ? "density[1]" : "density[0]");
     }
     io::VdbImportOptions o;
     o.grid = "density[2]";
     auto missing = io::importVdb(dir / "dup.vdb", o);
     ASSERT_FALSE(missing.ok());
-    EXPECT_NE(missing.error().message.find("grids: density[0], density[1]"), std::string::npos) << missing.error().message;
+    EXPECT_NE(missing.error().message.find("grids: density[0], density[1]"), std::string::npos)
+        << missing.error().message;
 }
 
 // A tile-filled source read through the slab path writes millions of uniform cells. The world's

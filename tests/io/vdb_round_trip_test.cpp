@@ -1,18 +1,16 @@
 // Our own files come back exactly: every shipped world, voxel for voxel and palette for palette,
 // with its name, size, voxel size, cameras and sky; homogeneous bricks travel as tiles.
-#include <gtest/gtest.h>
-
-#include <openvdb/openvdb.h>
-
 #include <algorithm>
 #include <fstream>
+#include <gtest/gtest.h>
+#include <openvdb/openvdb.h>
 
 #include "core/atomic_file.h"
 #include "io/vdb_export.h"
 #include "io/vdb_import.h"
-#include "vdb_test_util.h"
 #include "scene/generators/vdb_keys.h"
 #include "scene/scene_file.h"
+#include "vdb_test_util.h"
 #include "world/world_edits.h"
 #include "world/world_info.h"
 
@@ -74,15 +72,18 @@ TEST(VdbRoundTrip, ImportedSceneFileLoadsTheSameWorld) {
     auto scene = engine::scene::loadSceneFile(fs::path(VOX_SOURCE_DIR) / "worlds" / "sandbox.toml");
     ASSERT_TRUE(scene.ok());
     ASSERT_TRUE(io::exportVdb(*scene, dir / "sandbox.vdb").ok());
-    std::vector<world::GeneratorRecord> payload{engine::scene::vdbPayloadGenerator("sandbox.vdb", false)};
-    std::string text = engine::scene::sceneText(*scene, {.headerComment = "test", .generators = &payload});
+    std::vector<world::GeneratorRecord> payload{
+        engine::scene::vdbPayloadGenerator("sandbox.vdb", false)};
+    std::string text =
+        engine::scene::sceneText(*scene, {.headerComment = "test", .generators = &payload});
     std::ofstream(dir / "sandbox.toml") << text;
     auto loaded = engine::scene::loadSceneFile(dir / "sandbox.toml");
     ASSERT_TRUE(loaded.ok()) << loaded.error().message;
     EXPECT_TRUE(loaded->grid == scene->grid);
     EXPECT_TRUE(loaded->palette == scene->palette);
     EXPECT_EQ(loaded->cameras.size(), scene->cameras.size());
-    EXPECT_EQ(loaded->sourcePath, (dir / "sandbox.toml").string());  // the scene file, not the payload
+    EXPECT_EQ(loaded->sourcePath,
+              (dir / "sandbox.toml").string());  // the scene file, not the payload
     EXPECT_TRUE(loaded->grid.dirtyBricks().empty());
 }
 
@@ -180,7 +181,8 @@ TEST(VdbRoundTrip, ExportForBlenderIsZUpWithADensityGridAndComesBackExactly) {
     EXPECT_EQ(density->getGridClass(), openvdb::GRID_FOG_VOLUME);
     EXPECT_EQ(density->activeVoxelCount(), scene->grid.solidVoxels());
     float lo = 2.0f, hi = -1.0f;
-    for (auto it = density->cbeginValueOn(); it; ++it) lo = std::min(lo, *it), hi = std::max(hi, *it);
+    for (auto it = density->cbeginValueOn(); it; ++it)
+        lo = std::min(lo, *it), hi = std::max(hi, *it);
     EXPECT_EQ(lo, 1.0f);
     EXPECT_EQ(hi, 1.0f);
     // The engine's +y (index j) is the file's world +z, its +z the file's -y.

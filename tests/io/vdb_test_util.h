@@ -2,11 +2,10 @@
 // must pass (one line that starts with the file's path).
 #pragma once
 
-#include <gtest/gtest.h>
-#include <unistd.h>
-
 #include <filesystem>
+#include <gtest/gtest.h>
 #include <string>
+#include <unistd.h>
 
 namespace vox_test {
 
@@ -17,7 +16,8 @@ public:
     explicit ScratchDir(const std::string& name) {
         const auto* info = testing::UnitTest::GetInstance()->current_test_info();
         std::string test = info ? std::string(info->test_suite_name()) + "." + info->name() : name;
-        mPath = fs::path(testing::TempDir()) / ("vox_io_" + test + "_" + std::to_string(::getpid()));
+        mPath =
+            fs::path(testing::TempDir()) / ("vox_io_" + test + "_" + std::to_string(::getpid()));
         fs::remove_all(mPath);
         fs::create_directories(mPath);
     }
@@ -35,10 +35,13 @@ private:
 // The folder with the real files nobody here wrote (../shared/data/vdb beside the checkout).
 inline fs::path sharedVdbDir() { return fs::path(VOX_SHARED_VDB_DIR); }
 
-inline ::testing::AssertionResult isOneLineNamingFile(const std::string& message, const fs::path& file) {
-    if (message.find('\n') != std::string::npos) return ::testing::AssertionFailure() << "more than one line: " << message;
+inline ::testing::AssertionResult isOneLineNamingFile(const std::string& message,
+                                                      const fs::path& file) {
+    if (message.find('\n') != std::string::npos)
+        return ::testing::AssertionFailure() << "more than one line: " << message;
     if (message.rfind(file.string(), 0) != 0)
-        return ::testing::AssertionFailure() << "does not start with " << file.string() << ": " << message;
+        return ::testing::AssertionFailure()
+               << "does not start with " << file.string() << ": " << message;
     return ::testing::AssertionSuccess();
 }
 

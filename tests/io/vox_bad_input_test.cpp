@@ -50,15 +50,19 @@ TEST(VoxBadInput, EveryTruncationIsRefused) {
     for (std::size_t n = 0; n < whole.size(); ++n) {
         auto r = io::parseVox(std::span(whole.data(), n), "cut.vox");
         ASSERT_FALSE(r.ok()) << "cut at " << n;
-        EXPECT_TRUE(vox_test::isOneLineNamingFile(r.error().message, "cut.vox")) << r.error().message;
+        EXPECT_TRUE(vox_test::isOneLineNamingFile(r.error().message, "cut.vox"))
+            << r.error().message;
     }
     ScratchDir dir("cut");
-    EXPECT_NE(importError(dir, Bytes(whole.begin(), whole.begin() + 100)).find("offset"), std::string::npos);
+    EXPECT_NE(importError(dir, Bytes(whole.begin(), whole.begin() + 100)).find("offset"),
+              std::string::npos);
 }
 
 TEST(VoxBadInput, NotAVoxFile) {
     ScratchDir dir("notvox");
-    EXPECT_NE(importError(dir, Bytes{'P', 'K', 3, 4, 0, 0, 0, 0, 0, 0}).find("not a MagicaVoxel .vox file"), std::string::npos);
+    EXPECT_NE(importError(dir, Bytes{'P', 'K', 3, 4, 0, 0, 0, 0, 0, 0})
+                  .find("not a MagicaVoxel .vox file"),
+              std::string::npos);
     EXPECT_NE(importError(dir, Bytes{}).find("header"), std::string::npos);
     EXPECT_NE(importError(dir / "missing.vox").find("cannot open"), std::string::npos);
 }
@@ -107,7 +111,8 @@ TEST(VoxBadInput, HugeSizesAndCounts) {
         EXPECT_NE(importError(dir, b.bytes()).find("outside its model"), std::string::npos);
     }
     {
-        VoxBuilder b;  // two instances 2^20 apart: a world past the engine's limit, refused before building
+        VoxBuilder b;  // two instances 2^20 apart: a world past the engine's limit, refused before
+                       // building
         b.model(1, 1, 1, {{0, 0, 0, 1}});
         b.transform(0, 1, -1, {});
         b.group(1, {2, 4});
@@ -211,7 +216,9 @@ namespace {
 ::testing::AssertionResult noControlCharacters(const std::string& text) {
     for (std::size_t i = 0; i < text.size(); ++i) {
         const auto c = static_cast<unsigned char>(text[i]);
-        if (c < 0x20 || c == 0x7f) return ::testing::AssertionFailure() << "byte " << int(c) << " at " << i << " of: " << text;
+        if (c < 0x20 || c == 0x7f)
+            return ::testing::AssertionFailure()
+                   << "byte " << int(c) << " at " << i << " of: " << text;
     }
     return ::testing::AssertionSuccess();
 }
@@ -235,7 +242,8 @@ TEST(VoxBadInput, TextFromTheFileIsEscapedInMessages) {
     ScratchDir dir("hostile_text");
     static const char kHostile[] = "1 2\x1b]2;pwned\x07\x1b[31m\n3\0";
     const std::string hostile(kHostile, sizeof(kHostile) - 1);
-    const std::string message = importError(dir, sceneWith(hostile, {{"_type", "_diffuse"}}).bytes());
+    const std::string message =
+        importError(dir, sceneWith(hostile, {{"_type", "_diffuse"}}).bytes());
     EXPECT_NE(message.find("'_t'"), std::string::npos) << message;
     EXPECT_TRUE(noControlCharacters(message));
     EXPECT_NE(message.find("\\u001B[31m\\n3\\u0000"), std::string::npos) << message;
@@ -253,7 +261,8 @@ TEST(VoxBadInput, EmissionBeyondWhatAWorldHoldsIsRefused) {
     // than imported into a world whose scene file the loader refuses.
     ScratchDir dir("emission");
     for (const char* emit : {"1e30", "3e38"}) {
-        const std::string message = importError(dir, sceneWith("1 2 3", {{"_type", "_emit"}, {"_emit", emit}, {"_flux", "8"}}).bytes());
+        const std::string message = importError(
+            dir, sceneWith("1 2 3", {{"_type", "_emit"}, {"_emit", emit}, {"_flux", "8"}}).bytes());
         EXPECT_NE(message.find("emission"), std::string::npos) << message;
     }
     auto ok = io::importVox([&] {

@@ -1,11 +1,11 @@
 // MagicaVoxel .vox export: worlds exported and imported again come back voxel for voxel and
 // colour for colour when they have at most 255 colours; larger worlds split into <= 256^3
 // models; more colours are quantised with the error reported; emitters keep their strength.
-#include <gtest/gtest.h>
+#include "io/vox_export.h"
 
+#include <gtest/gtest.h>
 #include <random>
 
-#include "io/vox_export.h"
 #include "io/vox_import.h"
 #include "io/vox_reader.h"
 #include "vdb_test_util.h"
@@ -27,12 +27,14 @@ namespace {
             for (int x = 0; x < n.x; ++x) {
                 const world::MaterialId ma = a.grid.get({x, y, z}), mb = b.grid.get({x, y, z});
                 if ((ma == world::kEmpty) != (mb == world::kEmpty))
-                    return ::testing::AssertionFailure() << "voxel " << x << "," << y << "," << z << " solid in one only";
+                    return ::testing::AssertionFailure()
+                           << "voxel " << x << "," << y << "," << z << " solid in one only";
                 if (ma == world::kEmpty) continue;
                 const world::Material &pa = a.palette[ma], &pb = b.palette[mb];
                 if (pa.albedo != pb.albedo || pa.emittedRadiance() != pb.emittedRadiance())
-                    return ::testing::AssertionFailure() << "voxel " << x << "," << y << "," << z << ": " << pa.name
-                                                         << " became " << pb.name;
+                    return ::testing::AssertionFailure()
+                           << "voxel " << x << "," << y << "," << z << ": " << pa.name << " became "
+                           << pb.name;
                 ++checked;
             }
     if (checked != a.grid.solidVoxels()) return ::testing::AssertionFailure() << "count mismatch";
@@ -49,16 +51,20 @@ world::Scene randomScene(glm::ivec3 size, int materials, std::uint64_t voxels, u
     std::mt19937 rng(seed);
     world::Scene s;
     s.grid = world::BrickGrid(size);
-    for (int i = 0; i < materials; ++i) s.palette.add({"m" + std::to_string(i), paletteColour(rng), glm::vec3(0.0f), 0.0f});
-    std::uniform_int_distribution<int> x(0, size.x - 1), y(0, size.y - 1), z(0, size.z - 1), m(1, materials);
-    for (std::uint64_t i = 0; i < voxels; ++i) s.grid.set({x(rng), y(rng), z(rng)}, world::MaterialId(m(rng)));
+    for (int i = 0; i < materials; ++i)
+        s.palette.add({"m" + std::to_string(i), paletteColour(rng), glm::vec3(0.0f), 0.0f});
+    std::uniform_int_distribution<int> x(0, size.x - 1), y(0, size.y - 1), z(0, size.z - 1),
+        m(1, materials);
+    for (std::uint64_t i = 0; i < voxels; ++i)
+        s.grid.set({x(rng), y(rng), z(rng)}, world::MaterialId(m(rng)));
     // Corners set, so the content box is the whole world and positions survive as they are.
     s.grid.set({0, 0, 0}, 1);
     s.grid.set(size - 1, 1);
     return s;
 }
 
-world::Scene roundTrip(const world::Scene& s, const fs::path& file, io::VoxExportReport* report = nullptr) {
+world::Scene roundTrip(const world::Scene& s, const fs::path& file,
+                       io::VoxExportReport* report = nullptr) {
     Status written = io::exportVox(s, file, report);
     EXPECT_TRUE(written.ok()) << written.error().message;
     auto back = io::importVox(file);
@@ -107,7 +113,8 @@ TEST(VoxExport, WorldsOver256SplitIntoModelsAndComeBack) {
     EXPECT_EQ(report.models, 4u);
     auto file = io::readVoxFile(dir / "big.vox");
     ASSERT_TRUE(file.ok()) << file.error().message;
-    for (const io::VoxModel& m : file->models) EXPECT_TRUE(glm::all(glm::lessThanEqual(m.size, glm::ivec3(256))));
+    for (const io::VoxModel& m : file->models)
+        EXPECT_TRUE(glm::all(glm::lessThanEqual(m.size, glm::ivec3(256))));
 }
 
 TEST(VoxExport, MoreThan255ColoursAreQuantisedWithTheErrorReported) {
@@ -128,7 +135,9 @@ TEST(VoxExport, MoreThan255ColoursAreQuantisedWithTheErrorReported) {
 
 TEST(VoxExport, RealFilesComeBackVoxelForVoxel) {
     const fs::path dir(VOX_SHARED_VOX_DIR);
-    if (!fs::is_directory(dir)) GTEST_SKIP() << "real .vox files not found at " << dir << " (../shared/data/vox beside the checkout)";
+    if (!fs::is_directory(dir))
+        GTEST_SKIP() << "real .vox files not found at " << dir
+                     << " (../shared/data/vox beside the checkout)";
     ScratchDir scratch("real");
     for (const char* name : {"menger.vox", "teapot.vox", "ogt_test_multiple_model_scene.vox"}) {
         SCOPED_TRACE(name);

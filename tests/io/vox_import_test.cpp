@@ -1,11 +1,11 @@
 // MagicaVoxel .vox import: the real files in ../shared/data/vox against an independent count,
 // and small synthetic files for what those do not hold (rotations, hidden layers and nodes,
 // emission, the default palette, the scene-file generator).
-#include <gtest/gtest.h>
+#include "io/vox_import.h"
 
 #include <fstream>
+#include <gtest/gtest.h>
 
-#include "io/vox_import.h"
 #include "scene/scene_file.h"
 #include "vdb_test_util.h"
 #include "vox_test_file.h"
@@ -34,12 +34,18 @@ std::map<std::tuple<int, int, int>, std::string> voxelsOf(const world::Scene& s)
 
 TEST(VoxImport, EveryRealFileMatchesAnIndependentCount) {
     const fs::path dir = sharedVoxDir();
-    if (!fs::is_directory(dir)) GTEST_SKIP() << "real .vox files not found at " << dir << " (../shared/data/vox beside the checkout)";
+    if (!fs::is_directory(dir))
+        GTEST_SKIP() << "real .vox files not found at " << dir
+                     << " (../shared/data/vox beside the checkout)";
     // Also counted by a Python script using only `struct` (chunks and scene graph walked by hand).
     const std::map<std::string, std::uint64_t> known = {
-        {"chr_knight.vox", 398},         {"menger.vox", 160000},       {"monu1.vox", 156942},
-        {"ogt_test_groups.vox", 1754},   {"ogt_test_meta_chunk.vox", 64000},
-        {"ogt_test_multiple_model_scene.vox", 12926}, {"teapot.vox", 28411}};
+        {"chr_knight.vox", 398},
+        {"menger.vox", 160000},
+        {"monu1.vox", 156942},
+        {"ogt_test_groups.vox", 1754},
+        {"ogt_test_meta_chunk.vox", 64000},
+        {"ogt_test_multiple_model_scene.vox", 12926},
+        {"teapot.vox", 28411}};
     int files = 0;
     for (const auto& entry : fs::directory_iterator(dir)) {
         if (entry.path().extension() != ".vox") continue;
@@ -99,22 +105,23 @@ TEST(VoxImport, RotationsOfAnAsymmetricModel) {
     b.group(1, {2, 4});
     b.transform(2, 3, 0, {{"_t", "0 0 0"}});
     b.shape(3, 0);
-    // R rows (0 -1 0), (1 0 0), (0 0 1): 90 degrees about z. Row 0's entry in column 1 (bits 0-1 = 1),
-    // row 1's in column 0 (bits 2-3 = 0), row 0 negative (bit 4): 1 | 16 = 17.
+    // R rows (0 -1 0), (1 0 0), (0 0 1): 90 degrees about z. Row 0's entry in column 1 (bits 0-1 =
+    // 1), row 1's in column 0 (bits 2-3 = 0), row 0 negative (bit 4): 1 | 16 = 17.
     b.transform(4, 5, 0, {{"_r", "17"}, {"_t", "10 0 0"}});
     b.shape(5, 0);
     b.write(dir / "rot.vox");
     auto scene = io::importVox(dir / "rot.vox");
     ASSERT_TRUE(scene.ok()) << scene.error().message;
     // MagicaVoxel positions, worked by hand:
-    //  unrotated, floor(v + (-1, -0.5, 0)): (0,0,0)->(-1,-1,0) c1, (2,0,0)->(1,-1,0) c2, (0,1,0)->(-1,0,0) c3
-    //  rotated, c = v + 0.5 - size/2, R c = (-c.y, c.x, c.z), + (10,0,0), floor:
+    //  unrotated, floor(v + (-1, -0.5, 0)): (0,0,0)->(-1,-1,0) c1, (2,0,0)->(1,-1,0) c2,
+    //  (0,1,0)->(-1,0,0) c3 rotated, c = v + 0.5 - size/2, R c = (-c.y, c.x, c.z), + (10,0,0),
+    //  floor:
     //   (0,0,0): c (-1,-0.5,0) -> (0.5,-1,0) -> (10,-1,0) c1
     //   (2,0,0): c ( 1,-0.5,0) -> (0.5, 1,0) -> (10, 1,0) c2
     //   (0,1,0): c (-1, 0.5,0) -> (-0.5,-1,0) -> (9,-1,0) c3
     // Engine (x, z, -y), shifted by the lowest corner (-1, 0, -1): (x + 1, z, -y + 1).
     std::map<std::tuple<int, int, int>, std::string> expected = {
-        {{0, 0, 2}, "rot_1"}, {{2, 0, 2}, "rot_2"}, {{0, 0, 1}, "rot_3"},
+        {{0, 0, 2}, "rot_1"},  {{2, 0, 2}, "rot_2"},  {{0, 0, 1}, "rot_3"},
         {{11, 0, 2}, "rot_1"}, {{11, 0, 0}, "rot_2"}, {{10, 0, 2}, "rot_3"}};
     EXPECT_EQ(voxelsOf(*scene), expected);
 }
@@ -178,12 +185,14 @@ TEST(VoxImport, RotationBytesDecodeAndComposeExactly) {
         ++valid;
         EXPECT_EQ(io::encodeVoxRotation(r), bits);
         const glm::ivec3 a = r.apply({1, 0, 0}), b = r.apply({0, 1, 0}), c = r.apply({0, 0, 1});
-        EXPECT_EQ(std::abs(glm::dot(glm::vec3(glm::cross(glm::vec3(a), glm::vec3(b))), glm::vec3(c))), 1.0f);
+        EXPECT_EQ(
+            std::abs(glm::dot(glm::vec3(glm::cross(glm::vec3(a), glm::vec3(b))), glm::vec3(c))),
+            1.0f);
     }
     EXPECT_EQ(valid, 48);  // 6 permutations x 8 sign choices
     io::VoxRotation r;
-    EXPECT_FALSE(io::decodeVoxRotation(3, r));   // column 3 does not exist
-    EXPECT_FALSE(io::decodeVoxRotation(0, r));   // rows 0 and 1 in the same column
+    EXPECT_FALSE(io::decodeVoxRotation(3, r));  // column 3 does not exist
+    EXPECT_FALSE(io::decodeVoxRotation(0, r));  // rows 0 and 1 in the same column
 }
 
 TEST(VoxImport, NestedGroupsComposeTransforms) {
@@ -204,8 +213,10 @@ TEST(VoxImport, NestedGroupsComposeTransforms) {
     b.write(dir / "nested.vox");
     auto scene = io::importVox(dir / "nested.vox");
     ASSERT_TRUE(scene.ok()) << scene.error().message;
-    // MagicaVoxel: model 1 at (0,0,0), model 0 at (0,5,0). Engine: (0,0,0) and (0,0,-5); shift +5 in z.
-    std::map<std::tuple<int, int, int>, std::string> expected = {{{0, 0, 5}, "nested_2"}, {{0, 0, 0}, "nested_1"}};
+    // MagicaVoxel: model 1 at (0,0,0), model 0 at (0,5,0). Engine: (0,0,0) and (0,0,-5); shift +5
+    // in z.
+    std::map<std::tuple<int, int, int>, std::string> expected = {{{0, 0, 5}, "nested_2"},
+                                                                 {{0, 0, 0}, "nested_1"}};
     EXPECT_EQ(voxelsOf(*scene), expected);
 }
 
@@ -233,7 +244,8 @@ TEST(VoxImport, HiddenLayersAndNodesAreLeftOut) {
     EXPECT_EQ(report.instances, 1u);
     EXPECT_EQ(report.hiddenLayers, 1u);
     EXPECT_EQ(vox_test::countVisibleVoxels(dir / "hidden.vox"), 2u);
-    EXPECT_FALSE(scene->palette.find("hidden_2"));  // colours only hidden models use make no material
+    EXPECT_FALSE(
+        scene->palette.find("hidden_2"));  // colours only hidden models use make no material
 }
 
 TEST(VoxImport, PaletteColoursAreSrgbAndDefaultPaletteWhenAbsent) {

@@ -54,7 +54,8 @@ struct VoxBuilder {
     }
     void transform(int id, int child, int layer, const Dict& frame, const Dict& attributes = {}) {
         Bytes b;
-        putI32(b, id), putDict(b, attributes), putI32(b, child), putI32(b, -1), putI32(b, layer), putI32(b, 1);
+        putI32(b, id), putDict(b, attributes), putI32(b, child), putI32(b, -1), putI32(b, layer),
+            putI32(b, 1);
         putDict(b, frame);
         chunk("nTRN", b);
     }
@@ -77,7 +78,9 @@ struct VoxBuilder {
     // colours[i]: colour index i + 1, 0xAABBGGRR.
     void palette(const std::vector<std::uint32_t>& colours) {
         Bytes b;
-        for (int i = 0; i < 256; ++i) putI32(b, std::int32_t(i < int(colours.size()) ? colours[std::size_t(i)] : 0xFF000000u));
+        for (int i = 0; i < 256; ++i)
+            putI32(b,
+                   std::int32_t(i < int(colours.size()) ? colours[std::size_t(i)] : 0xFF000000u));
         chunk("RGBA", b);
     }
     void material(int index, const Dict& properties) {
@@ -96,7 +99,8 @@ struct VoxBuilder {
     }
     void write(const std::filesystem::path& path) const { writeBytes(path, bytes()); }
     static void writeBytes(const std::filesystem::path& path, const Bytes& b) {
-        std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(b.data()), std::streamsize(b.size()));
+        std::ofstream(path, std::ios::binary)
+            .write(reinterpret_cast<const char*>(b.data()), std::streamsize(b.size()));
     }
 };
 
@@ -175,8 +179,10 @@ inline std::uint64_t countVisibleVoxels(const std::filesystem::path& path) {
         const Node& node = nodes.at(stack.back());
         stack.pop_back();
         if (node.hidden || hiddenLayers.count(node.layer)) continue;
-        if (node.kind == 'S') total += modelVoxels.at(std::size_t(node.next[0]));
-        else stack.insert(stack.end(), node.next.begin(), node.next.end());
+        if (node.kind == 'S')
+            total += modelVoxels.at(std::size_t(node.next[0]));
+        else
+            stack.insert(stack.end(), node.next.begin(), node.next.end());
     }
     return total;
 }

@@ -1,12 +1,12 @@
-#include <gtest/gtest.h>
+#include "lighting/emitter_list.h"
 
 #include <algorithm>
+#include <gtest/gtest.h>
 #include <map>
 #include <tuple>
 
 #include "core/hash.h"
 #include "lighting/alias_table.h"
-#include "lighting/emitter_list.h"
 #include "world/world_edits.h"
 
 using namespace engine::world;
@@ -24,13 +24,15 @@ Scene sceneWithLight(glm::ivec3 size) {
     return scene;
 }
 
-using Key = std::tuple<int, int, int, int, std::uint32_t, std::uint32_t>;  // corner, size, faces, material
+using Key =
+    std::tuple<int, int, int, int, std::uint32_t, std::uint32_t>;  // corner, size, faces, material
 
 std::map<Key, std::uint32_t> emitterSet(const EmitterList& list) {
     std::map<Key, std::uint32_t> out;
     for (std::uint32_t slot : list.aliveSlots()) {
         const shared::GpuEmitter& e = list.slots()[slot];
-        out[{e.minCorner.x, e.minCorner.y, e.minCorner.z, e.minCorner.w, e.info.x, e.info.z}] = slot;
+        out[{e.minCorner.x, e.minCorner.y, e.minCorner.z, e.minCorner.w, e.info.x, e.info.z}] =
+            slot;
     }
     return out;
 }
@@ -40,9 +42,9 @@ std::map<Key, std::uint32_t> emitterSet(const EmitterList& list) {
 TEST(EmitterList, EnclosedEmissiveVoxelsAreNotEmitters) {
     Scene scene = sceneWithLight({32, 32, 32});
     fillBox(scene.grid, Box{{10, 10, 10}, {13, 13, 13}}, 1);  // stone shell
-    scene.grid.set({11, 11, 11}, 2);                         // lamp inside it
-    scene.grid.set({20, 20, 20}, 2);                         // a free lamp
-    scene.grid.set({20, 21, 20}, 1);                         // stone on top of it
+    scene.grid.set({11, 11, 11}, 2);                          // lamp inside it
+    scene.grid.set({20, 20, 20}, 2);                          // a free lamp
+    scene.grid.set({20, 21, 20}, 1);                          // stone on top of it
     EmitterList list;
     list.rebuild(scene);
     ASSERT_EQ(list.aliveCount(), 1u);
@@ -78,7 +80,8 @@ TEST(EmitterList, IncrementalUpdateMatchesFullRebuild) {
         fillBox(scene.grid, Box{{16, 8, 16}, {32, 16, 32}}, 2);
         engine::Rng rng(5);
         for (int i = 0; i < 300; ++i)
-            scene.grid.set({rng.uniformInt(0, 63), rng.uniformInt(8, 30), rng.uniformInt(0, 63)}, MaterialId(rng.uniformInt(1, 3)));
+            scene.grid.set({rng.uniformInt(0, 63), rng.uniformInt(8, 30), rng.uniformInt(0, 63)},
+                           MaterialId(rng.uniformInt(1, 3)));
         EmitterList incremental(EmitterSettings{brickLights});
         incremental.rebuild(scene);
         scene.grid.clearDirty();
@@ -88,7 +91,8 @@ TEST(EmitterList, IncrementalUpdateMatchesFullRebuild) {
                 glm::ivec3 p{rng.uniformInt(0, 63), rng.uniformInt(0, 30), rng.uniformInt(0, 63)};
                 scene.grid.set(p, MaterialId(rng.uniformInt(0, 3)));
             }
-            if (round % 5 == 0) fillBox(scene.grid, Box{{40, 8, 40}, {48, 16, 48}}, MaterialId(round % 2 ? 2 : 0));
+            if (round % 5 == 0)
+                fillBox(scene.grid, Box{{40, 8, 40}, {48, 16, 48}}, MaterialId(round % 2 ? 2 : 0));
             auto stats = incremental.update(scene);
             EXPECT_FALSE(stats.full);
             EXPECT_LE(stats.cellsScanned, 7u * 30u);
@@ -97,7 +101,8 @@ TEST(EmitterList, IncrementalUpdateMatchesFullRebuild) {
             full.rebuild(scene);
             auto now = emitterSet(incremental);
             ASSERT_EQ(now.size(), emitterSet(full).size()) << "round " << round;
-            for (const auto& [key, slot] : emitterSet(full)) ASSERT_TRUE(now.count(key)) << "round " << round;
+            for (const auto& [key, slot] : emitterSet(full))
+                ASSERT_TRUE(now.count(key)) << "round " << round;
             // Emitters untouched by the edits kept their slots.
             int kept = 0;
             for (const auto& [key, slot] : before) kept += now.count(key) && now.at(key) == slot;

@@ -1,10 +1,9 @@
 #include "metrics/heat_map.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <limits>
 #include <vector>
 

@@ -1,8 +1,7 @@
 #include "metrics/image_metrics.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 #include <limits>
 #include <vector>
 

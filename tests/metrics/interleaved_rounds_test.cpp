@@ -1,8 +1,7 @@
 #include "metrics/interleaved_rounds.h"
 
-#include <gtest/gtest.h>
-
 #include <cstdint>
+#include <gtest/gtest.h>
 #include <random>
 #include <vector>
 

@@ -1,8 +1,7 @@
 #include "metrics/seed_statistics.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 #include <limits>
 #include <vector>
 
@@ -41,7 +40,8 @@ TEST(SeedStatistics, EmptyAndNanValues) {
 
 TEST(SeedStatistics, RatiosPairSeedsAndSkipZeroDenominators) {
     const std::vector<double> uniform{8.0, 6.0, 30.0, 1.0};
-    const std::vector<double> restir{2.0, 3.0, 0.0, 0.5, 7.0};  // seed 3 of ReSTIR is exact; one extra seed
+    const std::vector<double> restir{2.0, 3.0, 0.0, 0.5,
+                                     7.0};  // seed 3 of ReSTIR is exact; one extra seed
     std::vector<double> r = perSeedRatios(uniform, restir);
     ASSERT_EQ(r.size(), 3u);
     EXPECT_DOUBLE_EQ(r[0], 4.0);

@@ -1,16 +1,17 @@
 // The irradiance cache's level of detail on the host: which faces share a coarse entry (one face
 // of an open, coplanar 2x2 patch), and what a coarse entry costs the ray budget.
+#include "render/irradiance_cache/cache_lod.h"
+
 #include <gtest/gtest.h>
 
-#include "render/irradiance_cache/cache_lod.h"
 #include "world/world_edits.h"
 
 using engine::render::CacheKey;
 using engine::render::coarsePatchKey;
 using engine::render::packCacheKey;
 using engine::render::staticKeyFor;
-using engine::world::BrickGrid;
 using engine::world::Box;
+using engine::world::BrickGrid;
 
 namespace {
 
@@ -27,15 +28,20 @@ BrickGrid floorGrid() {
 TEST(CacheLod, AnOpenCoplanarPatchSharesOneKeyPerFace) {
     const BrickGrid grid = floorGrid();
     const CacheKey expected{{2, 1, 4}, shared::CACHE_SET_STATIC, 1 + kUp};
-    for (glm::ivec3 v : {glm::ivec3(2, 1, 4), glm::ivec3(3, 1, 4), glm::ivec3(2, 1, 5), glm::ivec3(3, 1, 5)}) {
+    for (glm::ivec3 v :
+         {glm::ivec3(2, 1, 4), glm::ivec3(3, 1, 4), glm::ivec3(2, 1, 5), glm::ivec3(3, 1, 5)}) {
         EXPECT_EQ(staticKeyFor(grid, v, kUp, 50.0f, 10.0f), expected);
     }
-    EXPECT_EQ(staticKeyFor(grid, {4, 1, 4}, kUp, 50.0f, 10.0f), (CacheKey{{4, 1, 4}, shared::CACHE_SET_STATIC, 1 + kUp}));
+    EXPECT_EQ(staticKeyFor(grid, {4, 1, 4}, kUp, 50.0f, 10.0f),
+              (CacheKey{{4, 1, 4}, shared::CACHE_SET_STATIC, 1 + kUp}));
     // Near the camera, or with LOD off, each voxel keeps its own entry.
-    EXPECT_EQ(staticKeyFor(grid, {3, 1, 5}, kUp, 5.0f, 10.0f), (CacheKey{{3, 1, 5}, shared::CACHE_SET_STATIC}));
-    EXPECT_EQ(staticKeyFor(grid, {3, 1, 5}, kUp, 50.0f, 0.0f), (CacheKey{{3, 1, 5}, shared::CACHE_SET_STATIC}));
+    EXPECT_EQ(staticKeyFor(grid, {3, 1, 5}, kUp, 5.0f, 10.0f),
+              (CacheKey{{3, 1, 5}, shared::CACHE_SET_STATIC}));
+    EXPECT_EQ(staticKeyFor(grid, {3, 1, 5}, kUp, 50.0f, 0.0f),
+              (CacheKey{{3, 1, 5}, shared::CACHE_SET_STATIC}));
     // Coarse, fine and other faces' keys never collide in the table.
-    const CacheKey side = *coarsePatchKey(grid, {0, 0, 4}, 0);  // face -x on the world's edge: open outside
+    const CacheKey side =
+        *coarsePatchKey(grid, {0, 0, 4}, 0);  // face -x on the world's edge: open outside
     EXPECT_NE(packCacheKey(expected), packCacheKey(CacheKey{{2, 1, 4}, shared::CACHE_SET_STATIC}));
     EXPECT_NE(packCacheKey(expected), packCacheKey(side));
 }
@@ -46,7 +52,8 @@ TEST(CacheLod, AWallOnThePatchKeepsItsFacesFine) {
     BrickGrid grid = floorGrid();
     engine::world::fillBox(grid, Box{{3, 2, 0}, {4, 8, 16}}, 1);  // a wall at x = 3
     EXPECT_FALSE(coarsePatchKey(grid, {2, 1, 4}, kUp).has_value());
-    EXPECT_EQ(staticKeyFor(grid, {2, 1, 4}, kUp, 50.0f, 10.0f), (CacheKey{{2, 1, 4}, shared::CACHE_SET_STATIC}));
+    EXPECT_EQ(staticKeyFor(grid, {2, 1, 4}, kUp, 50.0f, 10.0f),
+              (CacheKey{{2, 1, 4}, shared::CACHE_SET_STATIC}));
     EXPECT_TRUE(coarsePatchKey(grid, {4, 1, 4}, kUp).has_value());
     EXPECT_TRUE(coarsePatchKey(grid, {1, 1, 4}, kUp).has_value());
     // An unexposed patch (buried faces) is never coarse.

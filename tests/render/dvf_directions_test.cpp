@@ -1,10 +1,9 @@
 // The DVF sky's direction map and weights on the host (render/dvf_sky/dvf_directions.h).
-#include <gtest/gtest.h>
+#include "render/dvf_sky/dvf_directions.h"
 
 #include <algorithm>
 #include <cmath>
-
-#include "render/dvf_sky/dvf_directions.h"
+#include <gtest/gtest.h>
 
 using namespace engine::render;
 
@@ -44,11 +43,15 @@ TEST(DvfDirections, TexelOfDirectionInvertsTheMap) {
 TEST(DvfDirections, TexelsSpanLessThanTheInvalidationMargin) {
     for (std::uint32_t face = 0; face < 6; ++face) {
         for (std::uint32_t d = 0; d < 64; ++d) {
-            const glm::vec3 centre = dvfDirection(face, glm::vec2((float(d % 8u) + 0.5f) / 8.0f, (float(d / 8u) + 0.5f) / 8.0f));
+            const glm::vec3 centre = dvfDirection(
+                face, glm::vec2((float(d % 8u) + 0.5f) / 8.0f, (float(d / 8u) + 0.5f) / 8.0f));
             for (int j = 0; j <= 16; ++j) {
                 for (int i = 0; i <= 16; ++i) {
-                    const glm::vec3 p = dvfDirection(face, glm::vec2((float(d % 8u) + i / 16.0f) / 8.0f, (float(d / 8u) + j / 16.0f) / 8.0f));
-                    EXPECT_LE(std::acos(std::clamp(glm::dot(p, centre), -1.0f, 1.0f)), 0.32f) << "face " << face << " texel " << d;
+                    const glm::vec3 p =
+                        dvfDirection(face, glm::vec2((float(d % 8u) + i / 16.0f) / 8.0f,
+                                                     (float(d / 8u) + j / 16.0f) / 8.0f));
+                    EXPECT_LE(std::acos(std::clamp(glm::dot(p, centre), -1.0f, 1.0f)), 0.32f)
+                        << "face " << face << " texel " << d;
                 }
             }
         }

@@ -1,10 +1,9 @@
 // The irradiance cache's host-side directory: stable slots, LRU eviction within a budget, fading
 // dynamic entries, invalidation by distance, and a hash table the shaders can probe.
-#include <gtest/gtest.h>
-
-#include <set>
-
 #include "render/irradiance_cache/irradiance_cache_directory.h"
+
+#include <gtest/gtest.h>
+#include <set>
 
 using engine::render::CacheKey;
 using engine::render::CacheWork;
@@ -25,7 +24,8 @@ std::uint32_t probe(const std::vector<shared::CacheBucket>& table, const CacheKe
     std::uint32_t b = engine::render::cacheKeyHash(key) & mask;
     for (std::uint32_t i = 0; i <= mask; ++i, b = (b + 1) & mask) {
         if (table[b].keySlot.x == shared::CACHE_TABLE_EMPTY) return ~0u;
-        if ((std::uint64_t(table[b].keySlot.y) << 32 | table[b].keySlot.x) == packed) return table[b].keySlot.z;
+        if ((std::uint64_t(table[b].keySlot.y) << 32 | table[b].keySlot.x) == packed)
+            return table[b].keySlot.z;
     }
     return ~0u;
 }
@@ -64,7 +64,8 @@ TEST(IrradianceCacheDirectory, EvictsLeastRecentlySeenWithinBudget) {
     EXPECT_EQ(lists.dropped, 0u);
     EXPECT_LE(dir.usedSlots(), 40u);
     for (const CacheKey& k : row(40, 50)) EXPECT_NE(dir.slotOf(k), ~0u);
-    for (const CacheKey& k : row(20, 40)) EXPECT_NE(dir.slotOf(k), ~0u) << "seen more recently than the evicted ones";
+    for (const CacheKey& k : row(20, 40))
+        EXPECT_NE(dir.slotOf(k), ~0u) << "seen more recently than the evicted ones";
     EXPECT_EQ(dir.slotOf({{0, 1, 2}, 0}), ~0u);
     // More visible keys than the budget: the rest are dropped, nothing visible is evicted.
     auto over = dir.beginFrame(row(100, 150), 0.3, 0.3f);
@@ -105,7 +106,8 @@ TEST(IrradianceCacheDirectory, DynamicEntriesOfObjectsAtRestConvergeLikeStaticOn
         t = frame / 30.0;
         updated.push_back(dir.beginFrame(keys, t, 0.3f, resting).update.size());
     }
-    EXPECT_EQ(updated, (std::vector<std::size_t>{5, 5, 5, 0, 0, 0, 0, 0, 0, 0, 0, 0})) << "12 frames = 0.4 s, past the fade";
+    EXPECT_EQ(updated, (std::vector<std::size_t>{5, 5, 5, 0, 0, 0, 0, 0, 0, 0, 0, 0}))
+        << "12 frames = 0.4 s, past the fade";
     EXPECT_EQ(dir.liveEntries(), 5u) << "entries of objects at rest must not fade";
     // The lights changed: every one restarts at once (class 2), at rest or not.
     dir.relightAll();
@@ -150,10 +152,12 @@ TEST(IrradianceCacheDirectory, RayBudgetIsSpentByPriorityAndNeverExceeded) {
     keys.insert(keys.end(), dynamic.begin(), dynamic.end());
     auto second = dir.beginFrame(keys, 0.1, 0.3f, work);
     EXPECT_LE(second.rays, work.rayBudget);
-    EXPECT_EQ(second.update.size() - second.staticUpdates, 20u) << "dynamic entries: half the budget";
+    EXPECT_EQ(second.update.size() - second.staticUpdates, 20u)
+        << "dynamic entries: half the budget";
     EXPECT_EQ(second.staticUpdates, 10u);
     for (std::uint32_t i = 0; i < second.staticUpdates; ++i)
-        EXPECT_GE(dir.entry(second.update[i]).voxel.x, 20) << "new keys before entries already traced once";
+        EXPECT_GE(dir.entry(second.update[i]).voxel.x, 20)
+            << "new keys before entries already traced once";
     EXPECT_EQ(second.trace.size(), second.staticUpdates);
 
     // Run until nothing waits: every entry is then traced (2 phases) and converged (3 updates).
@@ -166,7 +170,8 @@ TEST(IrradianceCacheDirectory, RayBudgetIsSpentByPriorityAndNeverExceeded) {
     EXPECT_LT(frames, 100u);
     // Converged and nothing changed: 100 entries each refresh every 10 frames at most.
     std::uint64_t updates = 0;
-    for (std::uint32_t i = 0; i < 20; ++i) updates += dir.beginFrame(row(0, 100), 2.0 + 0.01 * i, 100.0f, work).update.size();
+    for (std::uint32_t i = 0; i < 20; ++i)
+        updates += dir.beginFrame(row(0, 100), 2.0 + 0.01 * i, 100.0f, work).update.size();
     EXPECT_LE(updates, 200u);
     EXPECT_GT(updates, 0u);
 
@@ -176,7 +181,8 @@ TEST(IrradianceCacheDirectory, RayBudgetIsSpentByPriorityAndNeverExceeded) {
     for (std::uint32_t i = 0; i < 3; ++i) {
         auto lists = dir.beginFrame(row(0, 100), 3.0 + 0.01 * i, 100.0f, work);
         EXPECT_LE(lists.rays, work.rayBudget);
-        for (std::uint32_t slot : lists.update) restarted += (dir.entry(slot).flags & shared::CACHE_ENTRY_RESET) != 0u;
+        for (std::uint32_t slot : lists.update)
+            restarted += (dir.entry(slot).flags & shared::CACHE_ENTRY_RESET) != 0u;
     }
     EXPECT_EQ(restarted, 100u) << "40 per frame: all within ceil(100 / 40) = 3 frames";
 }
@@ -195,12 +201,14 @@ TEST(IrradianceCacheDirectory, RayBudgetChargesOnlyOpenFaces) {
     EXPECT_EQ(lists.rays, work.rayBudget);
     // Dynamic keys are charged six faces whatever is around them (objects move in front of them).
     auto dynamic = floor.beginFrame(row(0, 50, shared::CACHE_SET_DYNAMIC), 0.1, 0.3f, work);
-    EXPECT_EQ(dynamic.update.size(), 40u) << "the whole budget (nothing else waits) at 96 rays each";
+    EXPECT_EQ(dynamic.update.size(), 40u)
+        << "the whole budget (nothing else waits) at 96 rays each";
 }
 
 TEST(IrradianceCacheDirectory, WithoutABudgetEveryVisibleEntryUpdatesEveryFrame) {
     IrradianceCacheDirectory dir(1000);
     CacheWork work;
     work.convergedAfter = 1;
-    for (int i = 0; i < 20; ++i) EXPECT_EQ(dir.beginFrame(row(0, 50), 0.01 * i, 100.0f, work).update.size(), 50u);
+    for (int i = 0; i < 20; ++i)
+        EXPECT_EQ(dir.beginFrame(row(0, 50), 0.01 * i, 100.0f, work).update.size(), 50u);
 }

@@ -1,11 +1,11 @@
 // Generators run within the process's memory budget: a world too large for it fails to load with
 // one line naming the file and generator, instead of aborting in an allocation (a valid
 // 8192 x 256 x 8192 terrain used to die with an uncaught std::bad_alloc under ulimit -v).
-#include <gtest/gtest.h>
+#include "core/memory_budget.h"
 
+#include <gtest/gtest.h>
 #include <string>
 
-#include "core/memory_budget.h"
 #include "scene/scene_file.h"
 
 namespace {
@@ -35,7 +35,8 @@ TEST(SceneMemoryBudget, AGeneratorOverTheBudgetFailsWithOneLine) {
     auto scene = engine::scene::loadSceneText(kWideTerrain, "wide.toml");
     ASSERT_FALSE(scene.ok());
     const std::string& message = scene.error().message;
-    EXPECT_NE(message.find("wide.toml:5: generator 'terrain' needs more memory than the budget of 64 MiB"),
+    EXPECT_NE(message.find(
+                  "wide.toml:5: generator 'terrain' needs more memory than the budget of 64 MiB"),
               std::string::npos)
         << message;
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;

@@ -6,17 +6,16 @@
 // writes every key of every table it knows, defaults included), and every number in that text
 // is replaced in turn. A new key is covered as soon as the writer writes it, and a new generator
 // type fails GeneratorTablesCoverEveryType until it has a table here.
-#include <gtest/gtest.h>
-#include <toml++/toml.h>
-
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <regex>
 #include <set>
 #include <sstream>
 #include <string>
+#include <toml++/toml.h>
 #include <variant>
 #include <vector>
 
@@ -133,22 +132,27 @@ struct GeneratorTable {
     const char* keys;
 };
 const GeneratorTable kGenerators[] = {
-    {"terrain", "top = \"stone\"\nsoil = \"stone\"\nrock = \"stone\"\nbase_height = 4.0\namplitude = 3.0\n"},
+    {"terrain",
+     "top = \"stone\"\nsoil = \"stone\"\nrock = \"stone\"\nbase_height = 4.0\namplitude = 3.0\n"},
     {"box", "min = [2, 2, 2]\nmax = [6, 6, 6]\nmaterial = \"stone\"\nhollow_wall = 1\n"},
     {"sphere", "center = [16.0, 16.0, 16.0]\nradius = 4.0\nmaterial = \"stone\"\n"},
-    {"cornell", "white = \"stone\"\nred = \"stone\"\ngreen = \"stone\"\nlight = \"lamp\"\ninterior = 16\n"
-                "origin = [4, 4, 4]\nwall = 2\nlight_bricks = 1\n"},
+    {"cornell",
+     "white = \"stone\"\nred = \"stone\"\ngreen = \"stone\"\nlight = \"lamp\"\ninterior = 16\n"
+     "origin = [4, 4, 4]\nwall = 2\nlight_bricks = 1\n"},
     {"buildings", "wall = \"stone\"\nroof = \"stone\"\nwindow = \"lamp\"\ncount = 2\n"},
     {"lamps", "post = \"stone\"\nlight = \"lamp\"\ncount = 3\n"},
-    {"mountain", "top = \"stone\"\nsoil = \"stone\"\nrock = \"stone\"\npeak_height = 12.0\nradius = 10.0\n"},
+    {"mountain",
+     "top = \"stone\"\nsoil = \"stone\"\nrock = \"stone\"\npeak_height = 12.0\nradius = 10.0\n"},
     {"scattered_lights", "light = \"lamp\"\nspacing = 8\nsize = [2, 2, 2]\nmargin = 1\n"},
     {"text", "text = \"A\"\norigin = [2, 2, 2]\nmaterial = \"stone\"\n"},
     {"menger", "origin = [0, 0, 0]\nlevel = 1\nscale = 2\nmaterial = \"stone\"\n"},
-    {"apartment", "min = [2, 0, 2]\nsize = [16, 12, 16]\nwall = \"stone\"\nslab = \"stone\"\nwindows = [\"lamp\"]\n"},
+    {"apartment",
+     "min = [2, 0, 2]\nsize = [16, 12, 16]\nwall = \"stone\"\nslab = \"stone\"\nwindows = "
+     "[\"lamp\"]\n"},
     {"bridge", "min = [2, 2, 2]\nmax = [20, 4, 8]\ndeck = \"stone\"\n"},
 };
-// Types this test cannot run: vdb and vox need a payload file (their keys: tests/io/vdb_bad_input_test.cpp,
-// tests/io/vox_import_test.cpp).
+// Types this test cannot run: vdb and vox need a payload file (their keys:
+// tests/io/vdb_bad_input_test.cpp, tests/io/vox_import_test.cpp).
 const std::set<std::string> kNotHere = {"vdb", "vox"};
 
 // A step into the TOML tree: a key of a table or an index of an array.
@@ -158,8 +162,10 @@ using Path = std::vector<Step>;
 std::string pathName(const Path& path) {
     std::string out;
     for (const Step& s : path) {
-        if (auto* k = std::get_if<std::string>(&s)) out += (out.empty() ? "" : ".") + *k;
-        else out += "[" + std::to_string(std::get<std::size_t>(s)) + "]";
+        if (auto* k = std::get_if<std::string>(&s))
+            out += (out.empty() ? "" : ".") + *k;
+        else
+            out += "[" + std::to_string(std::get<std::size_t>(s)) + "]";
     }
     return out;
 }
@@ -186,8 +192,10 @@ toml::node* find(toml::node& root, const Path& path) {
     toml::node* n = &root;
     for (const Step& s : path) {
         if (!n) return nullptr;
-        if (auto* k = std::get_if<std::string>(&s)) n = n->is_table() ? n->as_table()->get(*k) : nullptr;
-        else n = n->is_array() ? n->as_array()->get(std::get<std::size_t>(s)) : nullptr;
+        if (auto* k = std::get_if<std::string>(&s))
+            n = n->is_table() ? n->as_table()->get(*k) : nullptr;
+        else
+            n = n->is_array() ? n->as_array()->get(std::get<std::size_t>(s)) : nullptr;
     }
     return n;
 }
@@ -251,15 +259,17 @@ void mutateEveryNumber(const std::string& text, Counts& counts) {
             toml::node* parent = find(reread, parentPath);
             auto line = [](const toml::node* n) { return n ? n->source().begin.line : 0u; };
             // An array's element reports the array's line; a number's own line otherwise.
-            unsigned keyLine = std::holds_alternative<std::size_t>(path.back()) ? line(parent) : line(leaf);
+            unsigned keyLine =
+                std::holds_alternative<std::size_t>(path.back()) ? line(parent) : line(leaf);
 
             std::string what = pathName(path) + " = " + bad.name;
             // VOX_NUMBER_KEYS_DUMP=DIR writes each case as a file, to try on another build
             // (`vox info FILE`): how the figures "before the fix" in the report were made.
             if (const char* dump = std::getenv("VOX_NUMBER_KEYS_DUMP")) {
-                std::ofstream(std::string(dump) + "/" + std::to_string(counts.cases) + (bad.mustFail ? "_bad" : "_edge") +
-                              ".toml")
-                    << "# " << what << "\n" << mutatedText;
+                std::ofstream(std::string(dump) + "/" + std::to_string(counts.cases) +
+                              (bad.mustFail ? "_bad" : "_edge") + ".toml")
+                    << "# " << what << "\n"
+                    << mutatedText;
             }
             auto scene = loadSceneText(mutatedText, "keys.toml");
             if (!scene.ok()) {
@@ -269,8 +279,9 @@ void mutateEveryNumber(const std::string& text, Counts& counts) {
                 if (!std::regex_match(m, match, oneLineAtKey))
                     counts.failures.push_back(what + ": not one line naming keys.toml:LINE: " + m);
                 else if (bad.mustFail && std::stoul(match[1].str()) != keyLine)
-                    counts.failures.push_back(what + ": names line " + match[1].str() + ", the key is on line " +
-                                              std::to_string(keyLine) + ": " + m);
+                    counts.failures.push_back(what + ": names line " + match[1].str() +
+                                              ", the key is on line " + std::to_string(keyLine) +
+                                              ": " + m);
                 continue;
             }
             ++counts.accepted;
@@ -281,7 +292,9 @@ void mutateEveryNumber(const std::string& text, Counts& counts) {
             // Accepted: the value stands as given; written back, the key holds it (not a default).
             // Exceptions: the sun direction is normalised (worlds/README.md); path events are kept
             // in time order, so a new time can move the event to another index.
-            if (pathName(path).rfind("sky.sun_direction", 0) == 0 || pathName(path).rfind("path.event[", 0) == 0) continue;
+            if (pathName(path).rfind("sky.sun_direction", 0) == 0 ||
+                pathName(path).rfind("path.event[", 0) == 0)
+                continue;
             toml::table written = toml::parse(sceneText(*scene), std::string_view("written.toml"));
             if (toml::node* back = find(written, path); back && back->is_number()) {
                 double given = std::visit([](auto v) { return double(v); }, bad.value);
@@ -335,8 +348,8 @@ TEST(NumberKeys, EveryNumericKeyRefusesNanInfinityAndHugeWithFileAndLine) {
             mutateEveryNumber(out.str(), counts);
         }
     }
-    std::printf("number keys: %d numbers, %d cases: %d refused, %d accepted, %zu wrong\n", counts.keys,
-                counts.cases, counts.refused, counts.accepted, counts.failures.size());
+    std::printf("number keys: %d numbers, %d cases: %d refused, %d accepted, %zu wrong\n",
+                counts.keys, counts.cases, counts.refused, counts.accepted, counts.failures.size());
     for (const std::string& f : counts.failures) ADD_FAILURE() << f;
     EXPECT_GT(counts.keys, 100);
 }

@@ -1,8 +1,7 @@
 #include "scene/path_file.h"
 
-#include <gtest/gtest.h>
-
 #include <filesystem>
+#include <gtest/gtest.h>
 #include <string>
 
 #include "scene/scene_file.h"
@@ -304,9 +303,10 @@ TEST(Flythrough, CheckFramesCatchesSplineOvershoot) {
 // was returned, and the returned path leaked (LeakSanitizer, clang 14). The readers now check
 // their keys before returning; under the asan preset a leak fails this test.
 TEST(PathFile, UnknownKeyBesideThePathLeaksNothing) {
-    EXPECT_EQ(pathError("# a comment that ate the header [path]\nfov = 60\n[[path.key]]\ntime = 1.0\n"
-                        "position = [0, 0, 0]\ntarget = [1, 0, 0]\n"),
-              "p.toml:2: unknown key 'fov'");
+    EXPECT_EQ(
+        pathError("# a comment that ate the header [path]\nfov = 60\n[[path.key]]\ntime = 1.0\n"
+                  "position = [0, 0, 0]\ntarget = [1, 0, 0]\n"),
+        "p.toml:2: unknown key 'fov'");
     auto scene = engine::scene::loadSceneText("fov = 60\n[world]\nsize = [8, 8, 8]\n", "s.toml");
     ASSERT_FALSE(scene.ok());
     EXPECT_EQ(scene.error().message, "s.toml:1: unknown key 'fov'");

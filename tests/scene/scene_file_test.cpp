@@ -1,12 +1,11 @@
-#include <gtest/gtest.h>
+#include "scene/scene_file.h"
 
 #include <filesystem>
+#include <fmt/format.h>
+#include <gtest/gtest.h>
 #include <string>
 
-#include <fmt/format.h>
-
 #include "world/generators.h"
-#include "scene/scene_file.h"
 #include "world/world_info.h"
 
 using namespace engine::world;
@@ -30,13 +29,15 @@ name = "stone"
 
 TEST(SceneFile, EveryShippedWorldLoads) {
     int count = 0;
-    for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(VOX_SOURCE_DIR) / "worlds")) {
+    for (const auto& entry :
+         std::filesystem::directory_iterator(std::filesystem::path(VOX_SOURCE_DIR) / "worlds")) {
         if (entry.path().extension() != ".toml") continue;
         auto scene = loadSceneFile(entry.path());
         ASSERT_TRUE(scene.ok()) << scene.error().message;
         EXPECT_GT(scene->grid.solidVoxels(), 0u) << entry.path();
         EXPECT_FALSE(scene->cameras.empty()) << entry.path();
-        EXPECT_TRUE(scene->grid.dirtyBricks().empty()) << "a freshly loaded world has nothing pending";
+        EXPECT_TRUE(scene->grid.dirtyBricks().empty())
+            << "a freshly loaded world has nothing pending";
         ++count;
     }
     EXPECT_GE(count, 3);
@@ -44,15 +45,22 @@ TEST(SceneFile, EveryShippedWorldLoads) {
 
 TEST(SceneFile, ErrorsNameTheFileAndLine) {
     std::string e = errorOf(std::string(kMinimal) + "\n[[generator]]\ntype = \"terain\"\n");
-    EXPECT_EQ(e, "test.toml:7: unknown generator 'terain' (known: terrain, box, sphere, cornell, buildings, lamps, "
-                 "mountain, scattered_lights, text, menger, apartment, bridge, vdb, vox)");
+    EXPECT_EQ(e,
+              "test.toml:7: unknown generator 'terain' (known: terrain, box, sphere, cornell, "
+              "buildings, lamps, "
+              "mountain, scattered_lights, text, menger, apartment, bridge, vdb, vox)");
     // Saves from before .vdb payloads are refused by name, not as a typo.
-    e = errorOf(std::string(kMinimal) + "\n[[generator]]\ntype = \"bricks\"\nfile = \"old.1.bricks\"\n");
-    EXPECT_EQ(e, "test.toml:7: generator 'bricks' (the .bricks payload of older vox play saves) is no longer "
-                 "supported; saves are .vdb now (docs/SANDBOX.md, Saves)");
+    e = errorOf(std::string(kMinimal) +
+                "\n[[generator]]\ntype = \"bricks\"\nfile = \"old.1.bricks\"\n");
+    EXPECT_EQ(e,
+              "test.toml:7: generator 'bricks' (the .bricks payload of older vox play saves) is no "
+              "longer "
+              "supported; saves are .vdb now (docs/SANDBOX.md, Saves)");
     e = errorOf(std::string(kMinimal) + "albdo = [1, 1, 1]\n");
     EXPECT_EQ(e, "test.toml:5: unknown key 'albdo'");
-    e = errorOf(std::string(kMinimal) + "[[generator]]\ntype = \"box\"\nmin = [0,0,0]\nmax = [4,4,4]\nmaterial = \"gold\"\n");
+    e = errorOf(
+        std::string(kMinimal) +
+        "[[generator]]\ntype = \"box\"\nmin = [0,0,0]\nmax = [4,4,4]\nmaterial = \"gold\"\n");
     EXPECT_EQ(e, "test.toml:9: unknown material 'gold'");
     e = errorOf("[world]\nsize = [16, 16\n");
     EXPECT_NE(e.find("test.toml:2:"), std::string::npos) << e;
@@ -68,11 +76,13 @@ TEST(SceneFile, AbsurdSizesAreRefused) {
               std::string::npos)
         << e;
     e = errorOf("[world]\nsize = [1.5, 16, 16]\n");
-    EXPECT_NE(e.find("'size' x must be a whole number in 1..32768 voxels, not 1.5"), std::string::npos)
+    EXPECT_NE(e.find("'size' x must be a whole number in 1..32768 voxels, not 1.5"),
+              std::string::npos)
         << e;
     // A whole number that is too large says so (it is not "not whole").
     e = errorOf("[world]\nsize = [16, 4294967291, 16]\n");
-    EXPECT_NE(e.find("test.toml:2: 'size' y is too large (max 32768), not 4294967291"), std::string::npos)
+    EXPECT_NE(e.find("test.toml:2: 'size' y is too large (max 32768), not 4294967291"),
+              std::string::npos)
         << e;
     e = errorOf("[world]\nsize = [16, -5, 16]\n");
     EXPECT_NE(e.find("test.toml:2: 'size' y must be positive, not -5"), std::string::npos) << e;
@@ -84,7 +94,8 @@ TEST(SceneFile, CornellBoxHasTheThesisLight) {
     EXPECT_EQ(scene->emissiveVoxels(), 131072u);  // 256 bricks of 8^3
     MaterialId light = *scene->palette.find("light");
     int lightCells = 0;
-    for (std::uint32_t c : scene->grid.cells()) lightCells += c == (shared::CELL_HOMOGENEOUS | light);
+    for (std::uint32_t c : scene->grid.cells())
+        lightCells += c == (shared::CELL_HOMOGENEOUS | light);
     EXPECT_EQ(lightCells, 256) << "each emissive brick is a homogeneous cell (a brick light)";
 }
 
@@ -105,7 +116,8 @@ TEST(SceneFile, EmptyAirCostsOnlyTopGridCells) {
     EXPECT_EQ(low.memory().brickPoolBytes, high.memory().brickPoolBytes);
     std::size_t extraCells = high.cells().size() - low.cells().size();
     EXPECT_EQ(extraCells, 128u * 32u * 128u);
-    EXPECT_EQ(high.memory().topGridBytes - low.memory().topGridBytes, extraCells * sizeof(std::uint32_t));
+    EXPECT_EQ(high.memory().topGridBytes - low.memory().topGridBytes,
+              extraCells * sizeof(std::uint32_t));
     // The pool holds only non-uniform bricks: far fewer than the cells the terrain touches.
     EXPECT_LT(low.liveBricks(), low.cells().size() / 10);
     for (std::uint32_t c : low.cells()) {
@@ -170,16 +182,22 @@ TEST(SceneFile, ObjectErrorsNameTheLine) {
         s.replace(s.find(from), from.size(), to);
         return errorOf(s);
     };
-    EXPECT_EQ(with("time = 2.0", "time = 0.0"), "test.toml:17: key times must increase (0 follows 0)");
+    EXPECT_EQ(with("time = 2.0", "time = 0.0"),
+              "test.toml:17: key times must increase (0 follows 0)");
     EXPECT_EQ(with("type = \"box\"", "type = \"cube\""),
-              "test.toml:9: unknown generator 'cube' (known: terrain, box, sphere, cornell, buildings, lamps, "
+              "test.toml:9: unknown generator 'cube' (known: terrain, box, sphere, cornell, "
+              "buildings, lamps, "
               "mountain, scattered_lights, text, menger, apartment, bridge, vdb, vox)");
-    EXPECT_EQ(with("size = [4, 4, 4]", "size = [4, 0, 4]"), "test.toml:7: 'size' y must be positive, not 0; allowed: 1..256 voxels");
+    EXPECT_EQ(with("size = [4, 4, 4]", "size = [4, 0, 4]"),
+              "test.toml:7: 'size' y must be positive, not 0; allowed: 1..256 voxels");
     EXPECT_EQ(with("rotation = [90, 0, 0]", "rotation = [90, 0, 0]\nangle = 4"),
               "test.toml:16: key: give 'rotation' or 'axis' and 'angle', not both");
-    EXPECT_EQ(with("position = [20, 10, 10]", "positon = [20, 10, 10]"), "test.toml:16: missing 'position'");
-    EXPECT_EQ(with("name = \"cube\"", "name = \"cube\"\nspeed = 3"), "test.toml:7: unknown key 'speed'");
-    EXPECT_EQ(with("max = [4, 2, 4]", "max = [0, 0, 0]"), "test.toml:8: object 'cube': its generators leave the model empty");
+    EXPECT_EQ(with("position = [20, 10, 10]", "positon = [20, 10, 10]"),
+              "test.toml:16: missing 'position'");
+    EXPECT_EQ(with("name = \"cube\"", "name = \"cube\"\nspeed = 3"),
+              "test.toml:7: unknown key 'speed'");
+    EXPECT_EQ(with("max = [4, 2, 4]", "max = [0, 0, 0]"),
+              "test.toml:8: object 'cube': its generators leave the model empty");
     std::string e = errorOf(base.substr(0, base.find("[[object.key]]")));
     EXPECT_EQ(e, "test.toml:5: object 'cube' needs at least one [[object.key]]");
     e = errorOf(base.substr(0, base.find("[[object.key]]\ntime = 2.0")));
@@ -207,19 +225,25 @@ TEST(SceneFile, TextFromTheFileIsEscapedInMessagesAndNamesArePrintable) {
     // camera, object) is printable text, so whatever shows it later shows what the file says.
     auto clean = [](const std::string& m) {
         for (char c : m)
-            if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) return ::testing::AssertionFailure() << "control byte " << int(c) << " in: " << m;
+            if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
+                return ::testing::AssertionFailure() << "control byte " << int(c) << " in: " << m;
         return ::testing::AssertionSuccess();
     };
-    const std::string unknownKey = errorOf("[world]\nsize = [16, 16, 16]\n\"\\u001B]2;pwned\\u0007\\u001B[31m\" = 1\n");
+    const std::string unknownKey =
+        errorOf("[world]\nsize = [16, 16, 16]\n\"\\u001B]2;pwned\\u0007\\u001B[31m\" = 1\n");
     EXPECT_TRUE(clean(unknownKey));
-    EXPECT_NE(unknownKey.find("unknown key '\\u001B]2;pwned\\u0007\\u001B[31m'"), std::string::npos) << unknownKey;
-    const std::string unknownType = errorOf(std::string(kMinimal) + "[[generator]]\ntype = \"ter\\nrain\\u0000\"\n");
+    EXPECT_NE(unknownKey.find("unknown key '\\u001B]2;pwned\\u0007\\u001B[31m'"), std::string::npos)
+        << unknownKey;
+    const std::string unknownType =
+        errorOf(std::string(kMinimal) + "[[generator]]\ntype = \"ter\\nrain\\u0000\"\n");
     EXPECT_TRUE(clean(unknownType));
     EXPECT_NE(unknownType.find("ter\\nrain\\u0000"), std::string::npos) << unknownType;
     for (const char* name : {"two\\nlines", "nul\\u0000cut", "\\u001B[2J", "c1 \\u009B31m"}) {
-        const std::string world = errorOf(fmt::format("[world]\nname = \"{}\"\nsize = [16, 16, 16]\n", name));
+        const std::string world =
+            errorOf(fmt::format("[world]\nname = \"{}\"\nsize = [16, 16, 16]\n", name));
         EXPECT_TRUE(clean(world));
-        EXPECT_NE(world.find("test.toml:2: 'name' must be printable text"), std::string::npos) << world;
+        EXPECT_NE(world.find("test.toml:2: 'name' must be printable text"), std::string::npos)
+            << world;
         EXPECT_NE(world.find(name), std::string::npos) << world;
     }
     // A TOML syntax error quoting a raw control character.

@@ -2,9 +2,8 @@
 // (scene/scene_equality.h), writing is a fixed point (the text of a written-back scene is the
 // text written), and every table — [indirect], [[object]] with both rotation forms, [path] with
 // every event type — survives, with names quoted and floats exact.
-#include <gtest/gtest.h>
-
 #include <filesystem>
+#include <gtest/gtest.h>
 #include <vector>
 
 #include "scene/scene_equality.h"

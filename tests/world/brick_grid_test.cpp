@@ -1,10 +1,10 @@
-#include <gtest/gtest.h>
+#include "world/brick_grid.h"
 
 #include <algorithm>
+#include <gtest/gtest.h>
 #include <vector>
 
 #include "core/hash.h"
-#include "world/brick_grid.h"
 
 using namespace engine::world;
 
@@ -15,7 +15,9 @@ struct DenseWorld {
     glm::ivec3 size;
     std::vector<MaterialId> voxels;
     explicit DenseWorld(glm::ivec3 s) : size(s), voxels(std::size_t(s.x) * s.y * s.z, kEmpty) {}
-    MaterialId& at(glm::ivec3 p) { return voxels[p.x + size.x * (p.y + size.y * std::size_t(p.z))]; }
+    MaterialId& at(glm::ivec3 p) {
+        return voxels[p.x + size.x * (p.y + size.y * std::size_t(p.z))];
+    }
 };
 
 // Skip distance of every super cell computed from the top grid alone: 0 if any cell under it is
@@ -26,7 +28,8 @@ std::vector<std::uint32_t> bruteForceSkipDistances(const BrickGrid& grid) {
     for (int z = 0; z < grid.sizeInCells().z; ++z)
         for (int y = 0; y < grid.sizeInCells().y; ++y)
             for (int x = 0; x < grid.sizeInCells().x; ++x)
-                if (grid.cell({x, y, z}) != shared::CELL_EMPTY) occupied[grid.superCellIndex(glm::ivec3(x, y, z) >> 2)] = 1;
+                if (grid.cell({x, y, z}) != shared::CELL_EMPTY)
+                    occupied[grid.superCellIndex(glm::ivec3(x, y, z) >> 2)] = 1;
     std::vector<std::uint32_t> out(occupied.size(), shared::SUPER_SKIP_MAX);
     for (int z = 0; z < n.z; ++z)
         for (int y = 0; y < n.y; ++y)
@@ -69,13 +72,15 @@ TEST(BrickGrid, RandomSetGetMatchesDenseModel) {
     }
     for (int z = 0; z < size.z; ++z)
         for (int y = 0; y < size.y; ++y)
-            for (int x = 0; x < size.x; ++x) ASSERT_EQ(grid.get({x, y, z}), dense.at({x, y, z})) << x << "," << y << "," << z;
+            for (int x = 0; x < size.x; ++x)
+                ASSERT_EQ(grid.get({x, y, z}), dense.at({x, y, z})) << x << "," << y << "," << z;
     // Each super cell counts exactly the non-empty cells under it.
     std::vector<std::uint32_t> counts(grid.superCellCounts().size(), 0);
     for (int z = 0; z < grid.sizeInCells().z; ++z)
         for (int y = 0; y < grid.sizeInCells().y; ++y)
             for (int x = 0; x < grid.sizeInCells().x; ++x)
-                counts[grid.superCellIndex(glm::ivec3(x, y, z) >> 2)] += grid.cell({x, y, z}) != shared::CELL_EMPTY;
+                counts[grid.superCellIndex(glm::ivec3(x, y, z) >> 2)] +=
+                    grid.cell({x, y, z}) != shared::CELL_EMPTY;
     EXPECT_TRUE(std::equal(counts.begin(), counts.end(), grid.superCellCounts().begin()));
     EXPECT_EQ(skipDistances(grid), bruteForceSkipDistances(grid));
     // Every live brick's masks agree with its voxels.
@@ -135,13 +140,15 @@ TEST(BrickGrid, SkipDistancesFollowEditsAndChangeOnlyNearThem) {
     for (int round = 0; round < 60; ++round) {
         grid.clearDirty();
         // Edits stay in the first 128 voxels along x, so the far side keeps wide open air.
-        glm::ivec3 p(rng.uniformInt(0, 127), rng.uniformInt(0, size.y - 1), rng.uniformInt(0, size.z - 1));
+        glm::ivec3 p(rng.uniformInt(0, 127), rng.uniformInt(0, size.y - 1),
+                     rng.uniformInt(0, size.z - 1));
         // Fill a voxel, or (every third round) empty a whole occupied 8^3 cell.
         bool carve = round % 3 == 2;
         if (carve) {
             glm::ivec3 c = p >> 3;
             for (int tries = 0; tries < 2000 && grid.cell(c) == shared::CELL_EMPTY; ++tries)
-                c = glm::ivec3(rng.uniformInt(0, 127 / 8), rng.uniformInt(0, size.y / 8 - 1), rng.uniformInt(0, size.z / 8 - 1));
+                c = glm::ivec3(rng.uniformInt(0, 127 / 8), rng.uniformInt(0, size.y / 8 - 1),
+                               rng.uniformInt(0, size.z / 8 - 1));
             p = c * 8;
             grid.writeCellUniform(c, kEmpty);
         } else {
@@ -150,7 +157,8 @@ TEST(BrickGrid, SkipDistancesFollowEditsAndChangeOnlyNearThem) {
         ASSERT_EQ(skipDistances(grid), bruteForceSkipDistances(grid)) << "round " << round;
         const glm::ivec3 edited = p >> int(shared::SUPER_SHIFT);
         for (std::uint32_t s : grid.dirtySuperCells()) {
-            glm::ivec3 c(int(s) % grid.sizeInSuperCells().x, int(s) / grid.sizeInSuperCells().x % grid.sizeInSuperCells().y,
+            glm::ivec3 c(int(s) % grid.sizeInSuperCells().x,
+                         int(s) / grid.sizeInSuperCells().x % grid.sizeInSuperCells().y,
                          int(s) / (grid.sizeInSuperCells().x * grid.sizeInSuperCells().y));
             glm::ivec3 d = glm::abs(c - edited);
             EXPECT_LE(std::max(d.x, std::max(d.y, d.z)), reach) << "round " << round;

@@ -1,7 +1,6 @@
 #include "world/camera_path.h"
 
 #include <gtest/gtest.h>
-
 #include <vector>
 
 using namespace engine::world;

@@ -1,7 +1,7 @@
 // Re-voxelisation of dynamic objects into the world-aligned dynamic grid.
-#include <gtest/gtest.h>
-
 #include "world/dynamic_grid.h"
+
+#include <gtest/gtest.h>
 
 using namespace engine::world;
 
@@ -39,7 +39,8 @@ TEST(DynamicGrid, EmptyWithoutObjects) {
 
 TEST(DynamicGrid, WholeVoxelTranslationIsExact) {
     DynamicObject o = asymmetricObject();
-    // The pivot is (3, 2, 1): a centre at (103, -18, 41) puts model voxel (0,0,0) at (100, -20, 40).
+    // The pivot is (3, 2, 1): a centre at (103, -18, 41) puts model voxel (0,0,0) at (100, -20,
+    // 40).
     o.current = {{103, -18, 41}, {}};
     DynamicGrid g = voxelizeObjects(std::span(&o, 1));
     ASSERT_TRUE(g.present());
@@ -47,7 +48,9 @@ TEST(DynamicGrid, WholeVoxelTranslationIsExact) {
     for (int z = -1; z < 3; ++z)
         for (int y = -1; y < 5; ++y)
             for (int x = -1; x < 7; ++x)
-                EXPECT_EQ(g.get(glm::ivec3(100, -20, 40) + glm::ivec3(x, y, z)), o.model->get({x, y, z})) << x << y << z;
+                EXPECT_EQ(g.get(glm::ivec3(100, -20, 40) + glm::ivec3(x, y, z)),
+                          o.model->get({x, y, z}))
+                    << x << y << z;
     EXPECT_EQ(countSolid(g), o.model->solidVoxels());
     ASSERT_EQ(g.instances.size(), 1u);
     EXPECT_EQ(g.instances[0].bounds.min, glm::ivec3(100, -20, 40));
@@ -57,7 +60,8 @@ TEST(DynamicGrid, WholeVoxelTranslationIsExact) {
 TEST(DynamicGrid, QuarterTurnGivesExactlyTheRotatedVoxels) {
     DynamicObject o = asymmetricObject();
     const glm::dvec3 centre(50, 20, 30);
-    for (glm::dvec3 ypr : {glm::dvec3(90, 0, 0), glm::dvec3(0, 90, 0), glm::dvec3(0, 0, -90), glm::dvec3(180, 90, 0)}) {
+    for (glm::dvec3 ypr : {glm::dvec3(90, 0, 0), glm::dvec3(0, 90, 0), glm::dvec3(0, 0, -90),
+                           glm::dvec3(180, 90, 0)}) {
         o.current = {centre, rotationFromYawPitchRoll(ypr)};
         DynamicGrid g = voxelizeObjects(std::span(&o, 1));
         // Exact integer rotation of each model voxel centre about the pivot.
@@ -70,10 +74,12 @@ TEST(DynamicGrid, QuarterTurnGivesExactlyTheRotatedVoxels) {
             for (int y = 0; y < 4; ++y)
                 for (int x = 0; x < 6; ++x) {
                     // centre-relative doubled coordinates stay integral: 2(v + 0.5) - 2 pivot.
-                    glm::ivec3 rel2 = glm::ivec3(2 * x + 1, 2 * y + 1, 2 * z + 1) - glm::ivec3(6, 4, 2);
+                    glm::ivec3 rel2 =
+                        glm::ivec3(2 * x + 1, 2 * y + 1, 2 * z + 1) - glm::ivec3(6, 4, 2);
                     glm::ivec3 w2 = ri * rel2 + glm::ivec3(2.0 * centre);
                     glm::ivec3 world = (w2 - 1) / 2;
-                    EXPECT_EQ(g.get(world), o.model->get({x, y, z})) << "ypr " << ypr.x << "," << ypr.y << "," << ypr.z;
+                    EXPECT_EQ(g.get(world), o.model->get({x, y, z}))
+                        << "ypr " << ypr.x << "," << ypr.y << "," << ypr.z;
                     expected += o.model->get({x, y, z}) != kEmpty;
                 }
         EXPECT_EQ(countSolid(g), expected) << "nothing else was written";
@@ -98,8 +104,10 @@ TEST(DynamicGrid, ArbitraryRotationKeepsTheVolume) {
     for (int z = 0; z < s.z; ++z)
         for (int y = 0; y < s.y; ++y)
             for (int x = 0; x < s.x; ++x) {
-                glm::dvec3 m(inv * glm::dvec4(glm::dvec3(glm::ivec3(x, y, z) + g.origin) + 0.5, 1.0));
-                bool inside = glm::all(glm::greaterThanEqual(m, glm::dvec3(0))) && glm::all(glm::lessThan(m, glm::dvec3(o.modelSize)));
+                glm::dvec3 m(inv *
+                             glm::dvec4(glm::dvec3(glm::ivec3(x, y, z) + g.origin) + 0.5, 1.0));
+                bool inside = glm::all(glm::greaterThanEqual(m, glm::dvec3(0))) &&
+                              glm::all(glm::lessThan(m, glm::dvec3(o.modelSize)));
                 EXPECT_EQ(g.grid.get({x, y, z}) != kEmpty, inside);
             }
 }

@@ -1,7 +1,7 @@
 // Object paths: exact at keys, smooth between, periodic when looping, held when not.
-#include <gtest/gtest.h>
-
 #include "world/dynamic_object.h"
+
+#include <gtest/gtest.h>
 
 using namespace engine::world;
 
@@ -15,7 +15,9 @@ ObjectPath squarePath(bool loop) {
     return ObjectPath(keys, loop);
 }
 
-double angleBetween(glm::dquat a, glm::dquat b) { return 2.0 * std::acos(std::min(1.0, std::abs(glm::dot(a, b)))); }
+double angleBetween(glm::dquat a, glm::dquat b) {
+    return 2.0 * std::acos(std::min(1.0, std::abs(glm::dot(a, b))));
+}
 
 }  // namespace
 
@@ -38,7 +40,8 @@ TEST(ObjectPath, LoopsWithItsPeriod) {
         EXPECT_NEAR(angleBetween(a.rotation, b.rotation), 0.0, 1e-6) << t;
     }
     // Keys repeat every period.
-    EXPECT_NEAR(glm::length(path.at(1.0 + 3 * 8.0 + 2.0).position - glm::dvec3(10, 0, 0)), 0.0, 1e-9);
+    EXPECT_NEAR(glm::length(path.at(1.0 + 3 * 8.0 + 2.0).position - glm::dvec3(10, 0, 0)), 0.0,
+                1e-9);
 }
 
 TEST(ObjectPath, OpenPathHoldsAtItsEnds) {
@@ -62,8 +65,10 @@ TEST(ObjectPath, MotionIsSmoothAcrossKeysAndTheWrap) {
 TEST(ObjectPath, RotationTakesTheShortArcAtConstantSpeed) {
     ObjectPath path = squarePath(false);
     // Halfway between yaw 0 and yaw 90: yaw 45.
-    EXPECT_NEAR(angleBetween(path.at(2.0).rotation, rotationFromYawPitchRoll({45, 0, 0})), 0.0, 1e-9);
-    EXPECT_NEAR(angleBetween(path.at(1.5).rotation, rotationFromYawPitchRoll({22.5, 0, 0})), 0.0, 1e-9);
+    EXPECT_NEAR(angleBetween(path.at(2.0).rotation, rotationFromYawPitchRoll({45, 0, 0})), 0.0,
+                1e-9);
+    EXPECT_NEAR(angleBetween(path.at(1.5).rotation, rotationFromYawPitchRoll({22.5, 0, 0})), 0.0,
+                1e-9);
 }
 
 TEST(ObjectPath, IsAFunctionOfTimeAlone) {

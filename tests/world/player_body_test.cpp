@@ -3,9 +3,8 @@
 // two-voxel ones not, carried by a moving platform, crouching, replayed exactly.
 #include "world/player_body.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 #include <limits>
 #include <optional>
 #include <tuple>
@@ -334,12 +333,13 @@ TEST(PlayerBody, NeverSpinsWhereverItStarts) {
     const std::uint64_t bound = (32 + 4096 + 2) * 12 + 12 * 8 * 3 * 12;
     const double inf = std::numeric_limits<double>::infinity();
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    const glm::dvec3 starts[] = {{32, 1e7, 32},     {32, -1e7, 32},    {1e7, 10, 1e7},      {-1e7, 10, -1e7},
-                                 {32, 2.5e9, 32},   {32, -2.5e9, 32},  {32, 1e30, 32},      {1e30, -1e30, 1e30},
-                                 {32, inf, 32},     {32, -inf, 32},    {inf, inf, -inf},    {32, nan, 32},
-                                 {nan, nan, nan},   {32, 4.0, 32}};
+    const glm::dvec3 starts[] = {
+        {32, 1e7, 32},    {32, -1e7, 32}, {1e7, 10, 1e7},      {-1e7, 10, -1e7}, {32, 2.5e9, 32},
+        {32, -2.5e9, 32}, {32, 1e30, 32}, {1e30, -1e30, 1e30}, {32, inf, 32},    {32, -inf, 32},
+        {inf, inf, -inf}, {32, nan, 32},  {nan, nan, nan},     {32, 4.0, 32}};
     for (const glm::dvec3& start : starts) {
-        SCOPED_TRACE(testing::Message() << "starting at " << start.x << ", " << start.y << ", " << start.z);
+        SCOPED_TRACE(testing::Message()
+                     << "starting at " << start.x << ", " << start.y << ", " << start.z);
         PlayerBody body;
         CollisionWorld world{grid};
         body.place(world, start);

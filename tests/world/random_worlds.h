@@ -18,10 +18,14 @@ enum class Kind { Sparse, Dense, Homogeneous, Mixed };
 
 inline const char* kindName(Kind k) {
     switch (k) {
-        case Kind::Sparse: return "sparse";
-        case Kind::Dense: return "dense";
-        case Kind::Homogeneous: return "homogeneous";
-        default: return "mixed";
+        case Kind::Sparse:
+            return "sparse";
+        case Kind::Dense:
+            return "dense";
+        case Kind::Homogeneous:
+            return "homogeneous";
+        default:
+            return "mixed";
     }
 }
 
@@ -29,31 +33,41 @@ inline BrickGrid makeWorld(Kind kind, std::uint64_t seed, glm::ivec3 size = {48,
     BrickGrid grid(size);
     engine::Rng rng(seed);
     glm::ivec3 s = grid.sizeInVoxels();
-    auto randomVoxel = [&] { return glm::ivec3(rng.uniformInt(0, s.x - 1), rng.uniformInt(0, s.y - 1), rng.uniformInt(0, s.z - 1)); };
+    auto randomVoxel = [&] {
+        return glm::ivec3(rng.uniformInt(0, s.x - 1), rng.uniformInt(0, s.y - 1),
+                          rng.uniformInt(0, s.z - 1));
+    };
     int voxels = s.x * s.y * s.z;
     switch (kind) {
         case Kind::Sparse:
-            for (int i = 0; i < voxels / 100; ++i) grid.set(randomVoxel(), MaterialId(rng.uniformInt(1, 5)));
+            for (int i = 0; i < voxels / 100; ++i)
+                grid.set(randomVoxel(), MaterialId(rng.uniformInt(1, 5)));
             break;
         case Kind::Dense:
-            for (int i = 0; i < voxels; ++i) grid.set(randomVoxel(), MaterialId(rng.uniformInt(1, 5)));
+            for (int i = 0; i < voxels; ++i)
+                grid.set(randomVoxel(), MaterialId(rng.uniformInt(1, 5)));
             for (int i = 0; i < voxels / 3; ++i) grid.set(randomVoxel(), kEmpty);
             break;
         case Kind::Homogeneous:
             for (int i = 0; i < 12; ++i) {
-                glm::ivec3 c = glm::ivec3(rng.uniformInt(0, grid.sizeInCells().x - 1), rng.uniformInt(0, grid.sizeInCells().y - 1),
+                glm::ivec3 c = glm::ivec3(rng.uniformInt(0, grid.sizeInCells().x - 1),
+                                          rng.uniformInt(0, grid.sizeInCells().y - 1),
                                           rng.uniformInt(0, grid.sizeInCells().z - 1));
                 grid.writeCellUniform(c, MaterialId(rng.uniformInt(1, 5)));
             }
-            for (int i = 0; i < voxels / 400; ++i) grid.set(randomVoxel(), MaterialId(rng.uniformInt(1, 5)));
+            for (int i = 0; i < voxels / 400; ++i)
+                grid.set(randomVoxel(), MaterialId(rng.uniformInt(1, 5)));
             break;
         case Kind::Mixed:
             for (int i = 0; i < 6; ++i) {
                 glm::ivec3 a = randomVoxel(), b = randomVoxel();
-                fillBox(grid, Box{glm::min(a, b), glm::max(a, b) + 1}, MaterialId(rng.uniformInt(1, 5)));
+                fillBox(grid, Box{glm::min(a, b), glm::max(a, b) + 1},
+                        MaterialId(rng.uniformInt(1, 5)));
             }
-            for (int i = 0; i < 4; ++i) fillSphere(grid, glm::vec3(randomVoxel()), rng.uniform(2.0f, 12.0f), kEmpty);
-            for (int i = 0; i < voxels / 200; ++i) grid.set(randomVoxel(), MaterialId(rng.uniformInt(0, 5)));
+            for (int i = 0; i < 4; ++i)
+                fillSphere(grid, glm::vec3(randomVoxel()), rng.uniform(2.0f, 12.0f), kEmpty);
+            for (int i = 0; i < voxels / 200; ++i)
+                grid.set(randomVoxel(), MaterialId(rng.uniformInt(0, 5)));
             break;
     }
     grid.clearDirty();

@@ -1,6 +1,5 @@
-#include <gtest/gtest.h>
-
 #include <cmath>
+#include <gtest/gtest.h>
 
 #include "random_worlds.h"
 
@@ -65,7 +64,8 @@ RayHit naiveTrace(const BrickGrid& grid, const Ray& ray) {
 constexpr int kAllowedMismatchesPer10000 = 5;
 
 bool sameHit(const RayHit& a, const RayHit& b) {
-    return a.hit == b.hit && (!a.hit || (a.voxel == b.voxel && a.face == b.face && a.material == b.material));
+    return a.hit == b.hit &&
+           (!a.hit || (a.voxel == b.voxel && a.face == b.face && a.material == b.material));
 }
 
 }  // namespace
@@ -89,11 +89,13 @@ TEST(RayTraversal, AgreesWithNaiveVoxelWalkOnRandomWorlds) {
                 ++mismatches;
                 // A disagreement is only allowed where the ray grazes an edge between voxels.
                 float tEnd = std::max(fast.hit ? fast.t : 0.0f, naive.hit ? naive.t : 0.0f) + 1.0f;
-                EXPECT_LT(nearestEdgeDistance(ray, tEnd), 1e-4f) << kindName(kind) << " seed " << seed;
+                EXPECT_LT(nearestEdgeDistance(ray, tEnd), 1e-4f)
+                    << kindName(kind) << " seed " << seed;
             }
         }
     }
-    std::printf("CPU hierarchical vs naive walk: %d of %d rays differ (%d hits)\n", mismatches, total, hits);
+    std::printf("CPU hierarchical vs naive walk: %d of %d rays differ (%d hits)\n", mismatches,
+                total, hits);
     EXPECT_GT(hits, total / 4);
     EXPECT_LE(mismatches * 10000, total * kAllowedMismatchesPer10000);
 }
@@ -115,7 +117,8 @@ TEST(RayTraversal, HierarchicalTakesFewerStepsThanPlainWithSameHits) {
             EXPECT_LT(nearestEdgeDistance(ray, tEnd), 1e-4f);
         }
     }
-    std::printf("steps per ray: hierarchical %.2f, plain %.2f\n", double(stepsH) / total, double(stepsP) / total);
+    std::printf("steps per ray: hierarchical %.2f, plain %.2f\n", double(stepsH) / total,
+                double(stepsP) / total);
     EXPECT_LT(stepsH, stepsP);
     EXPECT_LE(mismatches * 10000, total * kAllowedMismatchesPer10000);
 }
@@ -162,9 +165,11 @@ TEST(RayTraversal, RaysLeavingThroughAnOverhangingSuperCellMiss) {
     int misses = 0;
     for (int i = 0; i < 2000; ++i) {
         Ray r{{rng.uniform(1, 31), rng.uniform(70, 79.5f), rng.uniform(1, 31)}, {}};
-        r.direction = glm::normalize(glm::vec3(rng.uniform(0.3f, 1), rng.uniform(0.02f, 0.4f), rng.uniform(-0.3f, 0.3f)));
+        r.direction = glm::normalize(
+            glm::vec3(rng.uniform(0.3f, 1), rng.uniform(0.02f, 0.4f), rng.uniform(-0.3f, 0.3f)));
         RayHit h = traceRay(grid, r);
-        ASSERT_FALSE(h.hit) << "ray " << i << " hit voxel " << h.voxel.x << "," << h.voxel.y << "," << h.voxel.z;
+        ASSERT_FALSE(h.hit) << "ray " << i << " hit voxel " << h.voxel.x << "," << h.voxel.y << ","
+                            << h.voxel.z;
         misses += !h.hit;
     }
     EXPECT_EQ(misses, 2000);

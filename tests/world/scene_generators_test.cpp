@@ -1,16 +1,15 @@
 // The generators behind the thesis scenes: text, Menger sponge, scattered lights, mountain,
 // apartment blocks and bridges, each on a tiny grid with counts worked out by hand.
 #include <gtest/gtest.h>
-
 #include <string>
 
+#include "scene/scene_file.h"
 #include "world/apartment_generator.h"
 #include "world/bridge_generator.h"
 #include "world/generators.h"
 #include "world/menger_generator.h"
 #include "world/mountain_generator.h"
 #include "world/scattered_lights_generator.h"
-#include "scene/scene_file.h"
 #include "world/text_generator.h"
 #include "world/world_edits.h"
 

@@ -1,10 +1,11 @@
 // traceScene against one merged grid: the nearer of the static and dynamic hits is the first
 // solid voxel along the ray in the union of both sets (static wins where they overlap).
+#include "world/scene_trace.h"
+
 #include <gtest/gtest.h>
 
 #include "random_worlds.h"
 #include "world/ray_traversal.h"
-#include "world/scene_trace.h"
 
 using namespace engine::world;
 using namespace testing_worlds;
@@ -18,7 +19,8 @@ std::vector<DynamicObject> rotatedObjects() {
     for (int z = 0; z < 13; ++z)
         for (int y = 0; y < 9; ++y)
             for (int x = 0; x < 20; ++x)
-                if ((x * 7 + y * 3 + z * 5) % 4 != 0) first.set({x, y, z}, MaterialId(40 + (x + y) % 3));
+                if ((x * 7 + y * 3 + z * 5) % 4 != 0)
+                    first.set({x, y, z}, MaterialId(40 + (x + y) % 3));
     objects[0].model = std::make_shared<const BrickGrid>(std::move(first));
     objects[0].current = {{22.3, 17.9, 25.2}, rotationFromYawPitchRoll({31, -17, 52})};
     objects[1].modelSize = {8, 8, 8};
@@ -34,7 +36,7 @@ std::vector<DynamicObject> rotatedObjects() {
 
 TEST(SceneTrace, FaceHitTIsTheEntryPlaneDistance) {
     glm::vec3 o(0.5f, 0.5f, 0.5f), d(1.0f, 0.0f, 0.0f);
-    EXPECT_EQ(faceHitT(o, d, {4, 0, 0}, 0u), 3.5f);  // -X face of voxel 4: plane x = 4
+    EXPECT_EQ(faceHitT(o, d, {4, 0, 0}, 0u), 3.5f);    // -X face of voxel 4: plane x = 4
     EXPECT_EQ(faceHitT(o, -d, {-3, 0, 0}, 1u), 2.5f);  // +X face of voxel -3: plane x = -2
     EXPECT_EQ(faceHitT(o, d, {0, 0, 0}, shared::FACE_INSIDE), 0.0f);
 }
@@ -94,7 +96,8 @@ TEST(SceneTrace, AgreesWithTheMergedGridOnRandomRays) {
             for (int x = 0; x < s.x; ++x) {
                 glm::ivec3 w = glm::ivec3(x, y, z) + dyn.origin;
                 MaterialId m = dyn.grid.get({x, y, z});
-                ASSERT_TRUE(m == kEmpty || world.contains(w)) << "objects stay inside the test world";
+                ASSERT_TRUE(m == kEmpty || world.contains(w))
+                    << "objects stay inside the test world";
                 if (m != kEmpty && world.get(w) == kEmpty) merged.set(w, m);
             }
     int rays = 0, dynamicHits = 0, mismatches = 0;

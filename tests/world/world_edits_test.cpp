@@ -1,9 +1,9 @@
-#include <gtest/gtest.h>
+#include "world/world_edits.h"
 
 #include <algorithm>
+#include <gtest/gtest.h>
 
 #include "core/hash.h"
-#include "world/world_edits.h"
 
 using namespace engine::world;
 
@@ -85,7 +85,9 @@ TEST(WorldEdits, ReplaceMaterialOnlyTouchesThatMaterialInTheRegion) {
 TEST(WorldEdits, CopyPasteRoundTripsARegion) {
     BrickGrid grid({64, 32, 64});
     engine::Rng rng(9);
-    for (int i = 0; i < 3000; ++i) grid.set({rng.uniformInt(0, 20), rng.uniformInt(0, 20), rng.uniformInt(0, 20)}, MaterialId(rng.uniformInt(1, 4)));
+    for (int i = 0; i < 3000; ++i)
+        grid.set({rng.uniformInt(0, 20), rng.uniformInt(0, 20), rng.uniformInt(0, 20)},
+                 MaterialId(rng.uniformInt(1, 4)));
     fillBox(grid, Box{{0, 0, 0}, {8, 8, 8}}, 6);
     Box region{{0, 0, 0}, {21, 21, 21}};
     BrickGrid clip = copyRegion(grid, region);

@@ -6,10 +6,9 @@
 // readers' size limits are tested elsewhere (tests/scene/number_keys_test.cpp) — while every
 // key reader, range check, generator and the [indirect] and [path] tables are reached. Any
 // crash, sanitizer report, leak or timeout is a finding; errors returned as values are not.
-#include <toml++/toml.h>
-
 #include <cstdint>
 #include <string_view>
+#include <toml++/toml.h>
 
 #include "scene/path_file.h"
 #include "scene/scene_file.h"
@@ -45,7 +44,9 @@ bool cheapToLoad(std::string_view text) {
     } catch (const toml::parse_error&) {
         return true;  // a syntax error: refused at once
     }
-    if (const toml::table* world = root["world"].as_table(); world && !smallSize(world->get("size"))) return false;
+    if (const toml::table* world = root["world"].as_table();
+        world && !smallSize(world->get("size")))
+        return false;
     if (usesVdb(root.get("generator"))) return false;
     if (const toml::array* objects = root["object"].as_array()) {
         for (const toml::node& o : *objects) {
@@ -66,7 +67,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         auto scene = engine::scene::loadSceneText(text, "fuzz.toml");
         if (scene.ok()) {
             // What a save writes must load back: the writer and the reader agree on every value.
-            auto again = engine::scene::loadSceneText(engine::scene::sceneText(*scene), "fuzz-written.toml");
+            auto again =
+                engine::scene::loadSceneText(engine::scene::sceneText(*scene), "fuzz-written.toml");
             if (!again.ok()) __builtin_trap();
         }
     }

@@ -3,12 +3,11 @@
 // (every grid's topology and the import plan) and an import, with options picked from the input's
 // hash so the resampling, axis, crop and colour paths are exercised too. Any crash, sanitizer
 // report, leak, timeout or out-of-memory is a finding; errors returned as values are not.
-#include <unistd.h>
-
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <unistd.h>
 
 #include "io/vdb_import.h"
 #include "io/vdb_info.h"
@@ -18,7 +17,8 @@ std::filesystem::path gFile;
 }
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
-    gFile = std::filesystem::temp_directory_path() / ("vox_vdb_fuzz_" + std::to_string(::getpid()) + ".vdb");
+    gFile = std::filesystem::temp_directory_path() /
+            ("vox_vdb_fuzz_" + std::to_string(::getpid()) + ".vdb");
     return 0;
 }
 
@@ -37,12 +37,27 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     auto info = engine::io::describeVdbFile(gFile, options);
     (void)info;
     switch (hash % 6) {
-        case 0: break;
-        case 1: options.voxelSize = 0.5f; options.up = engine::io::UpAxis::Z; break;
-        case 2: options.voxelSize = 3.0f; break;
-        case 3: options.rule = engine::io::MaterialRule::Colour; options.maxColours = 3; break;
-        case 4: options.crop = engine::world::Box{glm::ivec3(-8), glm::ivec3(9)}; options.rule = engine::io::MaterialRule::Height; break;
-        case 5: options.offset = glm::ivec3(3, -2, 5); options.fogThreshold = 0.01f; break;
+        case 0:
+            break;
+        case 1:
+            options.voxelSize = 0.5f;
+            options.up = engine::io::UpAxis::Z;
+            break;
+        case 2:
+            options.voxelSize = 3.0f;
+            break;
+        case 3:
+            options.rule = engine::io::MaterialRule::Colour;
+            options.maxColours = 3;
+            break;
+        case 4:
+            options.crop = engine::world::Box{glm::ivec3(-8), glm::ivec3(9)};
+            options.rule = engine::io::MaterialRule::Height;
+            break;
+        case 5:
+            options.offset = glm::ivec3(3, -2, 5);
+            options.fogThreshold = 0.01f;
+            break;
     }
     auto scene = engine::io::importVdb(gFile, options);
     (void)scene;

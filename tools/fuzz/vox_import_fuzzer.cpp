@@ -3,14 +3,13 @@
 // (the import plan), an import under a small memory budget, and an export of whatever imported
 // (which must then import again). Any crash, sanitizer report, leak, timeout or out-of-memory is
 // a finding; errors returned as values are not.
-#include <unistd.h>
-
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <span>
 #include <string>
+#include <unistd.h>
 
 #include "io/vox_export.h"
 #include "io/vox_import.h"

@@ -1,10 +1,9 @@
 #include "vdb_samples.h"
 
-#include <openvdb/openvdb.h>
-#include <openvdb/tools/LevelSetSphere.h>
-
 #include <cmath>
 #include <numbers>
+#include <openvdb/openvdb.h>
+#include <openvdb/tools/LevelSetSphere.h>
 
 #include "io/vdb_export.h"
 #include "world/generators.h"
@@ -17,7 +16,8 @@ namespace vdb = openvdb;
 
 namespace {
 
-void write(const fs::path& path, const vdb::GridPtrVec& grids, const vdb::MetaMap& meta = vdb::MetaMap(),
+void write(const fs::path& path, const vdb::GridPtrVec& grids,
+           const vdb::MetaMap& meta = vdb::MetaMap(),
            std::uint32_t compression = vdb::io::COMPRESS_ACTIVE_MASK | vdb::io::COMPRESS_BLOSC) {
     vdb::initialize();
     vdb::io::File file(path.string());
@@ -30,7 +30,9 @@ vdb::FloatGrid::Ptr fogBox(glm::ivec3 min, glm::ivec3 max) {
     auto grid = vdb::FloatGrid::create(0.0f);
     grid->setName("density");
     grid->setGridClass(vdb::GRID_FOG_VOLUME);
-    auto box = [](glm::ivec3 a, glm::ivec3 b) { return vdb::CoordBBox(vdb::Coord(a.x, a.y, a.z), vdb::Coord(b.x - 1, b.y - 1, b.z - 1)); };
+    auto box = [](glm::ivec3 a, glm::ivec3 b) {
+        return vdb::CoordBBox(vdb::Coord(a.x, a.y, a.z), vdb::Coord(b.x - 1, b.y - 1, b.z - 1));
+    };
     grid->tree().fill(box(min - 1, max + 1), 0.25f, true);
     grid->tree().fill(box(min, max), 1.0f, true);
     return grid;
@@ -38,11 +40,12 @@ vdb::FloatGrid::Ptr fogBox(glm::ivec3 min, glm::ivec3 max) {
 
 }  // namespace
 
-void writeLevelSetSphere(const fs::path& path, float radiusVoxels, glm::vec3 centre, double voxelSize) {
+void writeLevelSetSphere(const fs::path& path, float radiusVoxels, glm::vec3 centre,
+                         double voxelSize) {
     vdb::initialize();
     const float vs = float(voxelSize);
-    auto grid = vdb::tools::createLevelSetSphere<vdb::FloatGrid>(radiusVoxels * vs, vdb::Vec3f(centre.x, centre.y, centre.z) * vs,
-                                                                 vs, 3.0f);
+    auto grid = vdb::tools::createLevelSetSphere<vdb::FloatGrid>(
+        radiusVoxels * vs, vdb::Vec3f(centre.x, centre.y, centre.z) * vs, vs, 3.0f);
     grid->setName("surface");
     write(path, {grid});
 }
@@ -60,13 +63,15 @@ void writeColourGradient(const fs::path& path, int n) {
     for (int z = 0; z < n; ++z)
         for (int y = 0; y < n; ++y)
             for (int x = 0; x < n; ++x)
-                acc.setValueOn(vdb::Coord(x, y, z), vdb::Vec3s(float(x), float(y), float(z)) / float(n - 1));
+                acc.setValueOn(vdb::Coord(x, y, z),
+                               vdb::Vec3s(float(x), float(y), float(z)) / float(n - 1));
     write(path, {grid});
 }
 
 glm::vec3 slabColour(int i) {
-    static const glm::vec3 colours[6] = {{0.9f, 0.1f, 0.1f}, {0.1f, 0.8f, 0.2f}, {0.15f, 0.2f, 0.9f},
-                                         {0.95f, 0.9f, 0.2f}, {0.5f, 0.5f, 0.5f}, {0.05f, 0.05f, 0.05f}};
+    static const glm::vec3 colours[6] = {{0.9f, 0.1f, 0.1f},  {0.1f, 0.8f, 0.2f},
+                                         {0.15f, 0.2f, 0.9f}, {0.95f, 0.9f, 0.2f},
+                                         {0.5f, 0.5f, 0.5f},  {0.05f, 0.05f, 0.05f}};
     return colours[i];
 }
 
@@ -85,7 +90,8 @@ void writeColourSlabs(const fs::path& path) {
 
 void writeLevelSetWithColour(const fs::path& path) {
     vdb::initialize();
-    auto surface = vdb::tools::createLevelSetSphere<vdb::FloatGrid>(10.0f, vdb::Vec3f(0.0f), 1.0f, 3.0f);
+    auto surface =
+        vdb::tools::createLevelSetSphere<vdb::FloatGrid>(10.0f, vdb::Vec3f(0.0f), 1.0f, 3.0f);
     surface->setName("surface");
     auto colour = vdb::Vec3SGrid::create(vdb::Vec3s(0.0f));
     colour->setName("Cd");
@@ -93,7 +99,8 @@ void writeLevelSetWithColour(const fs::path& path) {
     for (int z = -12; z < 12; ++z)
         for (int y = -12; y < 12; ++y)
             for (int x = -12; x < 12; ++x)
-                acc.setValueOn(vdb::Coord(x, y, z), x < 0 ? vdb::Vec3s(0.8f, 0.1f, 0.1f) : vdb::Vec3s(0.1f, 0.1f, 0.8f));
+                acc.setValueOn(vdb::Coord(x, y, z),
+                               x < 0 ? vdb::Vec3s(0.8f, 0.1f, 0.1f) : vdb::Vec3s(0.1f, 0.1f, 0.8f));
     write(path, {surface, colour});
 }
 
@@ -196,7 +203,8 @@ void writeRotatedGrid(const fs::path& path) {
 void writeFrustumGrid(const fs::path& path) {
     auto grid = fogBox(glm::ivec3(0), glm::ivec3(8));
     grid->setTransform(vdb::math::Transform::createFrustumTransform(
-        vdb::BBoxd(vdb::Vec3d(0.0), vdb::Vec3d(16.0)), /*taper=*/0.5, /*depth=*/10.0, /*voxelDim=*/1.0));
+        vdb::BBoxd(vdb::Vec3d(0.0), vdb::Vec3d(16.0)), /*taper=*/0.5, /*depth=*/10.0,
+        /*voxelDim=*/1.0));
     write(path, {grid});
 }
 
@@ -236,7 +244,8 @@ void writeSeedCorpus(const fs::path& dir) {
     // Other compressions exercise the other decoders.
     {
         auto grid = fogBox(glm::ivec3(0), glm::ivec3(10));
-        write(dir / "fog_zip.vdb", {grid}, vdb::MetaMap(), vdb::io::COMPRESS_ZIP | vdb::io::COMPRESS_ACTIVE_MASK);
+        write(dir / "fog_zip.vdb", {grid}, vdb::MetaMap(),
+              vdb::io::COMPRESS_ZIP | vdb::io::COMPRESS_ACTIVE_MASK);
         write(dir / "fog_raw.vdb", {grid}, vdb::MetaMap(), vdb::io::COMPRESS_NONE);
     }
     // A small voxengine world: a floor, a sphere, an emissive block, two materials and a camera.

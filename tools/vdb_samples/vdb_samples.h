@@ -4,9 +4,8 @@
 #pragma once
 
 #include <filesystem>
-#include <string>
-
 #include <glm/glm.hpp>
+#include <string>
 
 namespace vox::samples {
 
@@ -14,8 +13,8 @@ namespace fs = std::filesystem;
 
 // A narrow-band level-set sphere (OpenVDB's createLevelSetSphere): radius in voxels, centre in
 // voxels, half width 3 voxels. Grid "surface", class level set.
-void writeLevelSetSphere(const fs::path& path, float radiusVoxels, glm::vec3 centreVoxels = glm::vec3(0.0f),
-                         double voxelSize = 1.0);
+void writeLevelSetSphere(const fs::path& path, float radiusVoxels,
+                         glm::vec3 centreVoxels = glm::vec3(0.0f), double voxelSize = 1.0);
 
 // Fog volume "density": density 1 inside [min, max) (index space), 0.25 on a one-voxel shell
 // around it (below the default threshold), inactive elsewhere. Large boxes are stored as tiles.

@@ -6,11 +6,11 @@
 #include <filesystem>
 #include <fstream>
 
-#include "core/atomic_file.h"
 #include "commands.h"
-#include "number_options.h"
+#include "core/atomic_file.h"
 #include "core/hash.h"
 #include "lighting/emitter_list.h"
+#include "number_options.h"
 #include "world/generators.h"
 
 namespace vox {
@@ -19,7 +19,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double msSince(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
+double msSince(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
 
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
@@ -37,7 +39,8 @@ int runEmitterBench(const EmitterBenchOptions& o) {
     std::printf("loading world %s ...\n", o.world.c_str());
     auto scene = loadWorld(o.world);
     if (!scene) return fail(scene.error());
-    auto lamp = scene->palette.add(engine::world::Material{"bench-lamp", glm::vec3(1.0f), glm::vec3(1.0f, 0.9f, 0.7f), 3.0f});
+    auto lamp = scene->palette.add(
+        engine::world::Material{"bench-lamp", glm::vec3(1.0f), glm::vec3(1.0f, 0.9f, 0.7f), 3.0f});
     if (!lamp) return fail(engine::makeError("palette full"));
     // Scatter single emissive voxels on the surface.
     engine::Rng rng(42);
@@ -60,7 +63,8 @@ int runEmitterBench(const EmitterBenchOptions& o) {
         full.push_back(msSince(start));
     }
     scene->grid.clearDirty();
-    std::printf("full rebuild: %u emitters in %.2f ms (median of 3)\n", list.aliveCount(), median(full));
+    std::printf("full rebuild: %u emitters in %.2f ms (median of 3)\n", list.aliveCount(),
+                median(full));
 
     std::vector<double> incremental, alias;
     std::uint32_t cells = 0;
@@ -79,10 +83,13 @@ int runEmitterBench(const EmitterBenchOptions& o) {
         scene->grid.clearDirty();
     }
     double inc = median(incremental), fullMs = median(full);
-    std::printf("single-voxel edit: incremental update %.4f ms (median of %d, at most %u cells rescanned), %.0fx faster "
-                "than a full rebuild\n",
-                inc, o.edits, cells, fullMs / inc);
-    std::printf("alias table rebuild after the edit (O(emitters), separate): %.3f ms\n", median(alias));
+    std::printf(
+        "single-voxel edit: incremental update %.4f ms (median of %d, at most %u cells rescanned), "
+        "%.0fx faster "
+        "than a full rebuild\n",
+        inc, o.edits, cells, fullMs / inc);
+    std::printf("alias table rebuild after the edit (O(emitters), separate): %.3f ms\n",
+                median(alias));
 
     std::filesystem::path out(o.output);
     std::error_code ec;
@@ -90,7 +97,8 @@ int runEmitterBench(const EmitterBenchOptions& o) {
     engine::AtomicFile jsonFile;
     if (engine::Status s = jsonFile.open(out); !s) return fail(s.error());
     std::ostream& json = jsonFile.stream();
-    json << "{\"world\": \"" << scene->name << "\", \"emissive_voxels\": " << scene->emissiveVoxels()
+    json << "{\"world\": \"" << scene->name
+         << "\", \"emissive_voxels\": " << scene->emissiveVoxels()
          << ", \"emitters\": " << list.aliveCount() << ", \"full_rebuild_ms\": " << fullMs
          << ", \"incremental_update_ms\": " << inc << ", \"speedup\": " << fullMs / inc
          << ", \"alias_rebuild_ms\": " << median(alias) << ", \"edits\": " << o.edits << "}\n";
@@ -102,12 +110,15 @@ int runEmitterBench(const EmitterBenchOptions& o) {
 }  // namespace
 
 void addBenchEmittersCommand(CLI::App& bench, int& exitCode) {
-    auto* cmd = bench.add_subcommand("emitters", "Emitter list: incremental update after an edit vs full rebuild");
+    auto* cmd = bench.add_subcommand(
+        "emitters", "Emitter list: incremental update after an edit vs full rebuild");
     auto o = std::make_shared<EmitterBenchOptions>();
     cmd->add_option("world", o->world, "World name or scene file")->capture_default_str();
-    cmd->add_option("--lights", o->lights, "Emissive voxels to scatter on the surface")->capture_default_str()
+    cmd->add_option("--lights", o->lights, "Emissive voxels to scatter on the surface")
+        ->capture_default_str()
         ->check(numberIn(engine::wholeRange(1, 10000000, "voxels")));
-    cmd->add_option("--edits", o->edits, "Single-voxel edits to time")->capture_default_str()
+    cmd->add_option("--edits", o->edits, "Single-voxel edits to time")
+        ->capture_default_str()
         ->check(numberIn(engine::wholeRange(1, 100000, "edits")));
     cmd->add_option("-o,--output", o->output, "JSON results file")->capture_default_str();
     cmd->callback([o, &exitCode] { exitCode = runEmitterBench(*o); });

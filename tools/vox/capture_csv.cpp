@@ -1,8 +1,7 @@
 #include "capture_csv.h"
 
-#include <fmt/format.h>
-
 #include <algorithm>
+#include <fmt/format.h>
 
 namespace vox {
 

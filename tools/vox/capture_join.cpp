@@ -1,8 +1,7 @@
 #include "capture_join.h"
 
-#include <fmt/format.h>
-
 #include <cstdio>
+#include <fmt/format.h>
 #include <vector>
 
 #include "capture_csv.h"

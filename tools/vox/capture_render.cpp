@@ -1,10 +1,9 @@
 #include "capture_render.h"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <fmt/format.h>
 
 #include "commands.h"
 #include "core/number_check.h"

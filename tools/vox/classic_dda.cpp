@@ -50,7 +50,8 @@ RayHit traceClassicTwoLevel(const BrickGrid& grid, const engine::world::Ray& ray
             glm::vec3 q = o + d * tCell;
             glm::ivec3 lo = cell * 8;
             glm::ivec3 v = glm::clamp(glm::ivec3(glm::floor(q)), lo, lo + 7);
-            if (c & shared::CELL_HOMOGENEOUS) return RayHit{true, v, 0, tCell, engine::world::MaterialId(c & 0xFFFF), steps};
+            if (c & shared::CELL_HOMOGENEOUS)
+                return RayHit{true, v, 0, tCell, engine::world::MaterialId(c & 0xFFFF), steps};
             const engine::world::BrickMask& mask = grid.brickMask(BrickGrid::cellBrick(c));
             glm::vec3 tMaxV, tDeltaV = absInv;
             for (int a = 0; a < 3; ++a)
@@ -61,7 +62,8 @@ RayHit traceClassicTwoLevel(const BrickGrid& grid, const engine::world::Ray& ray
                 glm::ivec3 local = v - lo;
                 int bit = local.x + 8 * local.y + 64 * local.z;
                 if ((mask.words[bit >> 5] >> (bit & 31)) & 1u)
-                    return RayHit{true, v, 0, t, grid.brickVoxels(BrickGrid::cellBrick(c))[bit], steps};
+                    return RayHit{true, v, 0, t, grid.brickVoxels(BrickGrid::cellBrick(c))[bit],
+                                  steps};
                 int a = minAxis(tMaxV);
                 t = tMaxV[a];
                 v[a] += step[a];
@@ -74,7 +76,8 @@ RayHit traceClassicTwoLevel(const BrickGrid& grid, const engine::world::Ray& ray
         if (tCell > tExit) return RayHit{false, {}, 0, 0.0f, 0, steps};
         cell[a] += step[a];
         tMaxC[a] += tDeltaC[a];
-        if (unsigned(cell[a]) >= unsigned(cellsSize[a])) return RayHit{false, {}, 0, 0.0f, 0, steps};
+        if (unsigned(cell[a]) >= unsigned(cellsSize[a]))
+            return RayHit{false, {}, 0, 0.0f, 0, steps};
     }
 }
 

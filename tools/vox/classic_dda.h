@@ -10,6 +10,7 @@
 
 namespace vox {
 
-engine::world::RayHit traceClassicTwoLevel(const engine::world::BrickGrid& grid, const engine::world::Ray& ray);
+engine::world::RayHit traceClassicTwoLevel(const engine::world::BrickGrid& grid,
+                                           const engine::world::Ray& ray);
 
 }  // namespace vox

@@ -3,7 +3,6 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
-
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -67,7 +66,8 @@ engine::Result<std::filesystem::path> resolvePathFile(const std::string& arg);
 // positive, not -5 (1..8192 pixels)".
 engine::Result<glm::uvec2> parseSize(const std::string& text, const char* option);
 // "x,y,z", each component within `range`.
-engine::Result<glm::vec3> parseVec3(const std::string& text, const char* option, const engine::NumberRange& range);
+engine::Result<glm::vec3> parseVec3(const std::string& text, const char* option,
+                                    const engine::NumberRange& range);
 // --show-settings: loads the world, merges its lighting with the options and prints the result.
 int showSettings(const std::string& world, const LightingOptions& options);
 // One line on stderr, exit code 1.

@@ -1,20 +1,19 @@
 // vox compare A.exr B.exr: error of image A against reference B (thesis §3.3 MAE and MSE, RMAE),
 // optionally an error heat map and a JSON record.
-#include <fmt/format.h>
-
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fmt/format.h>
 #include <fstream>
 
-#include "core/atomic_file.h"
 #include "command_files.h"
 #include "commands.h"
-#include "number_options.h"
+#include "core/atomic_file.h"
 #include "core/quoted_string.h"
 #include "io/image_io.h"
 #include "metrics/heat_map.h"
 #include "metrics/image_metrics.h"
+#include "number_options.h"
 
 namespace vox {
 
@@ -93,8 +92,8 @@ int runCompare(const CompareOptions& o) {
         std::error_code ec;
         std::filesystem::path out(o.heatmap);
         if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path(), ec);
-        auto written =
-            writeHeatMap(out, *values, a.width, a.height, HeatMapOptions{o.heatmapMax.value_or(0.0f), true});
+        auto written = writeHeatMap(out, *values, a.width, a.height,
+                                    HeatMapOptions{o.heatmapMax.value_or(0.0f), true});
         if (!written) return fail(written.error());
         map = std::move(*written);
         std::printf("wrote      %s (%s error per pixel, colour range 0 .. %.3g)\n",
@@ -110,8 +109,8 @@ int runCompare(const CompareOptions& o) {
             kRmaeEpsilon, errors->nonFinitePixels);
         if (!o.heatmap.empty())
             text += fmt::format(",\n  \"heatmap\": {{\"path\": {}, \"error\": {}, \"max\": {}}}",
-                                engine::quotedString(o.heatmap), engine::quotedString(o.heatmapError),
-                                jsonNumber(map.maxValue));
+                                engine::quotedString(o.heatmap),
+                                engine::quotedString(o.heatmapError), jsonNumber(map.maxValue));
         text += "\n}\n";
         std::error_code ec;
         std::filesystem::path out(o.json);

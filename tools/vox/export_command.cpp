@@ -13,37 +13,50 @@ namespace {
 int writeVox(const engine::world::Scene& scene, const std::string& output) {
     std::error_code ec;
     const std::filesystem::path out(output);
-    if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path(), ec);  // like every output of vox
+    if (out.has_parent_path())
+        std::filesystem::create_directories(out.parent_path(), ec);  // like every output of vox
     engine::io::VoxExportReport r;
     if (engine::Status s = engine::io::exportVox(scene, out, &r); !s) return fail(s.error());
-    std::printf("wrote    %s (%.2f MiB)\nmodels   %zu of at most 256^3\nvoxels   %llu solid\n", output.c_str(),
-                double(r.fileBytes) / (1 << 20), r.models, static_cast<unsigned long long>(r.solidVoxels));
+    std::printf("wrote    %s (%.2f MiB)\nmodels   %zu of at most 256^3\nvoxels   %llu solid\n",
+                output.c_str(), double(r.fileBytes) / (1 << 20), r.models,
+                static_cast<unsigned long long>(r.solidVoxels));
     std::printf("palette  %d colour(s), %d emissive (MATL _emit)", r.colours, r.emissive);
     if (r.quantised)
-        std::printf("; more than 255 colours, quantised: %llu voxels changed, colour error mean %.4f, max %.4f (linear RGB distance)",
-                    static_cast<unsigned long long>(r.changedVoxels), r.meanColourError, r.maxColourError);
+        std::printf(
+            "; more than 255 colours, quantised: %llu voxels changed, colour error mean %.4f, max "
+            "%.4f (linear RGB distance)",
+            static_cast<unsigned long long>(r.changedVoxels), r.meanColourError, r.maxColourError);
     else
         std::printf("; exact");
     std::printf("\n");
     if (r.emissionColourDiffers)
-        std::printf("note     %llu emissive voxels emit a colour other than their albedo; .vox emits the albedo\n",
-                    static_cast<unsigned long long>(r.emissionColourDiffers));
+        std::printf(
+            "note     %llu emissive voxels emit a colour other than their albedo; .vox emits the "
+            "albedo\n",
+            static_cast<unsigned long long>(r.emissionColourDiffers));
     return 0;
 }
 
 }  // namespace
 
 void addExportCommand(CLI::App& app, int& exitCode) {
-    auto* cmd = app.add_subcommand("export", "Export a world to OpenVDB (.vdb: material ids, albedo, emission, palette) or MagicaVoxel (.vox)");
+    auto* cmd = app.add_subcommand("export",
+                                   "Export a world to OpenVDB (.vdb: material ids, albedo, "
+                                   "emission, palette) or MagicaVoxel (.vox)");
     auto world = std::make_shared<std::string>();
     auto output = std::make_shared<std::string>();
     auto idsOnly = std::make_shared<bool>(false);
-    cmd->add_option("world", *world, "World name (worlds/NAME.toml), scene file or .vdb")->required();
-    cmd->add_option("-o,--output", *output, "Output .vdb or .vox file (the extension decides the format)")->required();
+    cmd->add_option("world", *world, "World name (worlds/NAME.toml), scene file or .vdb")
+        ->required();
+    cmd->add_option("-o,--output", *output,
+                    "Output .vdb or .vox file (the extension decides the format)")
+        ->required();
     auto tool = std::make_shared<std::string>();
-    cmd->add_flag("--ids-only", *idsOnly, "Write only the material grid (no albedo/emission grids for other tools)");
+    cmd->add_flag("--ids-only", *idsOnly,
+                  "Write only the material grid (no albedo/emission grids for other tools)");
     cmd->add_option("--for", *tool,
-                    "Also write a float 'density' fog grid for another tool: blender (and turn the file Z-up) or "
+                    "Also write a float 'density' fog grid for another tool: blender (and turn the "
+                    "file Z-up) or "
                     "houdini (Y-up)");
     cmd->callback([=, &exitCode] {
         const std::string ext = std::filesystem::path(*output).extension().string();
@@ -79,7 +92,8 @@ void addExportCommand(CLI::App& app, int& exitCode) {
         engine::io::VdbExportReport report;
         std::error_code ec;
         const std::filesystem::path out(*output);
-        if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path(), ec);  // like every output of vox
+        if (out.has_parent_path())
+            std::filesystem::create_directories(out.parent_path(), ec);  // like every output of vox
         engine::Status s = engine::io::exportVdb(*scene, out, options, &report);
         if (!s) {
             exitCode = fail(s.error());
@@ -87,11 +101,14 @@ void addExportCommand(CLI::App& app, int& exitCode) {
         }
         std::string grids;
         for (const auto& g : report.grids) grids += (grids.empty() ? "" : ", ") + g;
-        std::printf("wrote    %s (%.2f MiB)\ngrids    %s%s\nvoxels   %llu solid: %llu cells as 8^3 tiles, %llu bricks as leaves\n",
-                    output->c_str(), double(report.fileBytes) / (1 << 20), grids.c_str(),
-                    options.zUp ? "\naxes     Z-up (the engine's +y is the file's +z)" : "",
-                    static_cast<unsigned long long>(report.solidVoxels), static_cast<unsigned long long>(report.tiles),
-                    static_cast<unsigned long long>(report.leaves));
+        std::printf(
+            "wrote    %s (%.2f MiB)\ngrids    %s%s\nvoxels   %llu solid: %llu cells as 8^3 tiles, "
+            "%llu bricks as leaves\n",
+            output->c_str(), double(report.fileBytes) / (1 << 20), grids.c_str(),
+            options.zUp ? "\naxes     Z-up (the engine's +y is the file's +z)" : "",
+            static_cast<unsigned long long>(report.solidVoxels),
+            static_cast<unsigned long long>(report.tiles),
+            static_cast<unsigned long long>(report.leaves));
     });
 }
 

@@ -22,7 +22,8 @@ void onProgress(std::string_view task, std::uint64_t done, std::uint64_t total) 
     const auto now = std::chrono::steady_clock::now();
     if (gTask.name != task) {
         // The line starts with the task (for its rate and ETA) but prints only after a second.
-        gTask = {std::string(task), now, std::make_unique<ProgressLine>("generating " + std::string(task), total, "step")};
+        gTask = {std::string(task), now,
+                 std::make_unique<ProgressLine>("generating " + std::string(task), total, "step")};
     }
     const bool shown = now - gTask.start > std::chrono::seconds(1);
     if (shown) gTask.line->update(done);

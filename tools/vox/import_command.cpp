@@ -1,16 +1,16 @@
 #include <cstdio>
-#include <fmt/format.h>
 #include <filesystem>
+#include <fmt/format.h>
 
 #include "command_files.h"
 #include "commands.h"
 #include "io/vdb_export.h"
 #include "io/vdb_import.h"
 #include "io/vox_import.h"
-#include "vdb_options.h"
 #include "scene/generators/vdb_keys.h"
 #include "scene/scene_file.h"
 #include "scene/world_pair.h"
+#include "vdb_options.h"
 #include "world/world_info.h"
 
 namespace vox {
@@ -21,8 +21,9 @@ namespace {
 
 // The import by the input's extension: .vox through io/vox_import.h (--offset and
 // --memory-budget apply), anything else as OpenVDB. Fills `text` with the report.
-engine::Result<engine::world::Scene> importFile(const std::string& input, const engine::io::VdbImportOptions& options,
-                                                 std::string& text, std::uint64_t& peakBytes) {
+engine::Result<engine::world::Scene> importFile(const std::string& input,
+                                                const engine::io::VdbImportOptions& options,
+                                                std::string& text, std::uint64_t& peakBytes) {
     if (fs::path(input).extension() == ".vox") {
         engine::io::VoxImportOptions voxOptions;
         if (options.offset) voxOptions.offset = *options.offset;
@@ -43,7 +44,8 @@ engine::Result<engine::world::Scene> importFile(const std::string& input, const 
 // WORLD.toml + WORLD.N.vdb: the scene file names the payload with a vdb generator, so the world
 // stays editable as text (cameras, sky, more generators) while its voxels and palette live in
 // the exact, compact .vdb. With -o WORLD.vdb only the payload is written.
-int runImport(const std::string& input, const std::string& output, bool dryRun, const VdbCliOptions& cli) {
+int runImport(const std::string& input, const std::string& output, bool dryRun,
+              const VdbCliOptions& cli) {
     auto options = toImportOptions(cli);
     if (!options) return fail(options.error());
     std::string reportText;
@@ -53,16 +55,22 @@ int runImport(const std::string& input, const std::string& output, bool dryRun, 
     if (dryRun) {
         auto scene = importFile(input, *options, reportText, peakBytes);
         if (!scene) return fail(scene.error());
-        std::printf("imported %s (dry run: nothing written)\n%s", input.c_str(), reportText.c_str());
+        std::printf("imported %s (dry run: nothing written)\n%s", input.c_str(),
+                    reportText.c_str());
         engine::world::WorldInfo info = engine::world::describeWorld(*scene);
-        std::printf("  world size   %.2f MiB in memory (%llu bytes; %llu bricks, %llu homogeneous cells); peak heap during import %.2f MiB\n",
-                    double(info.totalBytes()) / (1 << 20), static_cast<unsigned long long>(info.totalBytes()),
-                    static_cast<unsigned long long>(info.bricks), static_cast<unsigned long long>(info.homogeneousCells),
-                    double(peakBytes) / (1 << 20));
+        std::printf(
+            "  world size   %.2f MiB in memory (%llu bytes; %llu bricks, %llu homogeneous cells); "
+            "peak heap during import %.2f MiB\n",
+            double(info.totalBytes()) / (1 << 20),
+            static_cast<unsigned long long>(info.totalBytes()),
+            static_cast<unsigned long long>(info.bricks),
+            static_cast<unsigned long long>(info.homogeneousCells), double(peakBytes) / (1 << 20));
         return 0;
     }
-    if (output.empty()) return fail(engine::makeError("{}: give -o WORLD.toml or WORLD.vdb (or --dry-run)", input));
-    if (ext != ".toml" && ext != ".vdb") return fail(engine::makeError("-o {}: the file must end in .toml or .vdb", output));
+    if (output.empty())
+        return fail(engine::makeError("{}: give -o WORLD.toml or WORLD.vdb (or --dry-run)", input));
+    if (ext != ".toml" && ext != ".vdb")
+        return fail(engine::makeError("-o {}: the file must end in .toml or .vdb", output));
     if (engine::Status s = checkCommandFiles({{"the input", input}}, {{"-o", output}}); !s)
         return fail(s.error());
     // A scene file is replaced only if vox wrote it (an import or a save): a hand-written one
@@ -78,7 +86,8 @@ int runImport(const std::string& input, const std::string& output, bool dryRun, 
 
     auto scene = importFile(input, *options, reportText, peakBytes);
     if (!scene) return fail(scene.error());
-    if (out.has_parent_path()) fs::create_directories(out.parent_path(), ec);  // like every output of vox
+    if (out.has_parent_path())
+        fs::create_directories(out.parent_path(), ec);  // like every output of vox
     fs::path payload = out;
     if (ext == ".vdb") {
         if (engine::Status s = engine::io::exportVdb(*scene, payload); !s) return fail(s.error());
@@ -89,38 +98,50 @@ int runImport(const std::string& input, const std::string& output, bool dryRun, 
         // it belongs to).
         auto text = [&](const std::string& payloadName) {
             payload = out.parent_path() / payloadName;
-            std::vector<engine::world::GeneratorRecord> generators{engine::scene::vdbPayloadGenerator(payloadName, /*ids=*/false)};
+            std::vector<engine::world::GeneratorRecord> generators{
+                engine::scene::vdbPayloadGenerator(payloadName, /*ids=*/false)};
             std::string comment = fmt::format(
                 "{} from {}.\nVoxels and palette live in {} (voxengine's VDB layout, "
                 "docs/VDB.md);\n"
                 "a [[material]] defined here with the same name overrides the payload's.",
                 engine::scene::kImportMarker, fs::path(input).filename().string(), payloadName);
-            return engine::scene::sceneText(*scene, {.headerComment = comment, .generators = &generators});
+            return engine::scene::sceneText(*scene,
+                                            {.headerComment = comment, .generators = &generators});
         };
-        if (engine::Status s = engine::scene::writeWorldPair(*scene, out, text, {.keep = {fs::path(input)}}); !s)
+        if (engine::Status s =
+                engine::scene::writeWorldPair(*scene, out, text, {.keep = {fs::path(input)}});
+            !s)
             return fail(s.error());
     }
     std::printf("imported %s\n%s", input.c_str(), reportText.c_str());
     engine::world::WorldInfo info = engine::world::describeWorld(*scene);
-    std::printf("  world size   %.2f MiB in memory (%llu bricks, %llu homogeneous cells); peak heap during import %.2f MiB\n",
-                double(info.totalBytes()) / (1 << 20), static_cast<unsigned long long>(info.bricks),
-                static_cast<unsigned long long>(info.homogeneousCells), double(peakBytes) / (1 << 20));
-    if (ext == ".toml") std::printf("wrote    %s and %s\n", output.c_str(), payload.string().c_str());
-    else std::printf("wrote    %s\n", payload.string().c_str());
+    std::printf(
+        "  world size   %.2f MiB in memory (%llu bricks, %llu homogeneous cells); peak heap during "
+        "import %.2f MiB\n",
+        double(info.totalBytes()) / (1 << 20), static_cast<unsigned long long>(info.bricks),
+        static_cast<unsigned long long>(info.homogeneousCells), double(peakBytes) / (1 << 20));
+    if (ext == ".toml")
+        std::printf("wrote    %s and %s\n", output.c_str(), payload.string().c_str());
+    else
+        std::printf("wrote    %s\n", payload.string().c_str());
     return 0;
 }
 
 }  // namespace
 
 void addImportCommand(CLI::App& app, int& exitCode) {
-    auto* cmd = app.add_subcommand("import", "Import an OpenVDB (.vdb) or MagicaVoxel (.vox) file as a world (scene file + .vdb payload)");
+    auto* cmd = app.add_subcommand("import",
+                                   "Import an OpenVDB (.vdb) or MagicaVoxel (.vox) file as a world "
+                                   "(scene file + .vdb payload)");
     auto input = std::make_shared<std::string>();
     auto output = std::make_shared<std::string>();
     auto cli = std::make_shared<VdbCliOptions>();
     auto dryRun = std::make_shared<bool>(false);
     cmd->add_option("input", *input, "Input .vdb or .vox file (by extension)")->required();
-    cmd->add_option("-o,--output", *output, "WORLD.toml (scene file + WORLD.N.vdb payload) or WORLD.vdb");
-    cmd->add_flag("--dry-run", *dryRun, "Import and report (sizes, colour error, memory) without writing anything");
+    cmd->add_option("-o,--output", *output,
+                    "WORLD.toml (scene file + WORLD.N.vdb payload) or WORLD.vdb");
+    cmd->add_flag("--dry-run", *dryRun,
+                  "Import and report (sizes, colour error, memory) without writing anything");
     addVdbImportOptions(*cmd, *cli);
     cmd->callback([=, &exitCode] { exitCode = runImport(*input, *output, *dryRun, *cli); });
 }

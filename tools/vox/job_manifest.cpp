@@ -1,11 +1,10 @@
 #include "job_manifest.h"
 
-#include <fmt/format.h>
-#include <unistd.h>
-
 #include <ctime>
+#include <fmt/format.h>
 #include <fstream>
 #include <sstream>
+#include <unistd.h>
 
 #include "core/atomic_file.h"
 #include "core/check.h"

@@ -1,8 +1,7 @@
 #include "job_submit.h"
 
-#include <fmt/format.h>
-
 #include <cstdio>
+#include <fmt/format.h>
 
 #include "commands.h"
 #include "core/checksum.h"

@@ -1,11 +1,10 @@
 #include "job_task.h"
 
-#include <fmt/format.h>
-
 #include <array>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <fmt/format.h>
 
 #include "commands.h"
 #include "job_manifest.h"

@@ -1,7 +1,6 @@
 #include "lighting_options.h"
 
 #include <cstdio>
-
 #include <fmt/format.h>
 
 #include "commands.h"
@@ -18,11 +17,16 @@ namespace {
 
 std::string typeName(const engine::lighting::Knob& k) {
     switch (k.kind) {
-        case engine::lighting::KnobKind::Count: return "UINT";
-        case engine::lighting::KnobKind::Real: return "FLOAT";
-        case engine::lighting::KnobKind::Switch: return "on|off";
-        case engine::lighting::KnobKind::Choice: break;
-        case engine::lighting::KnobKind::Custom: return "TEXT";
+        case engine::lighting::KnobKind::Count:
+            return "UINT";
+        case engine::lighting::KnobKind::Real:
+            return "FLOAT";
+        case engine::lighting::KnobKind::Switch:
+            return "on|off";
+        case engine::lighting::KnobKind::Choice:
+            break;
+        case engine::lighting::KnobKind::Custom:
+            return "TEXT";
     }
     std::string names;
     for (std::string_view c : k.choices) names += fmt::format("{}{}", names.empty() ? "" : "|", c);
@@ -40,14 +44,18 @@ void addLightingOptions(CLI::App& cmd, LightingOptions& o) {
     for (const KnobGroup& g : engine::lighting::knobGroups()) {
         for (const engine::lighting::Knob& k : g.knobs) {
             std::string help = fmt::format("{} (default: {})", k.help, knobText(k, defaults));
-            if (k.kind == engine::lighting::KnobKind::Count || k.kind == engine::lighting::KnobKind::Real)
+            if (k.kind == engine::lighting::KnobKind::Count ||
+                k.kind == engine::lighting::KnobKind::Real)
                 help = fmt::format("{}; {}..{}", help, k.min, k.max);
-            CLI::Option* option = cmd.add_option(knobOption(g, k), o.given[i++], help)->type_name(typeName(k));
-            if (k.kind == engine::lighting::KnobKind::Count || k.kind == engine::lighting::KnobKind::Real)
+            CLI::Option* option =
+                cmd.add_option(knobOption(g, k), o.given[i++], help)->type_name(typeName(k));
+            if (k.kind == engine::lighting::KnobKind::Count ||
+                k.kind == engine::lighting::KnobKind::Real)
                 option->check(numberIn(engine::lighting::knobRange(k)));
         }
     }
-    cmd.add_flag("--show-settings", o.showSettings, "Print the lighting settings this command would use, and stop");
+    cmd.add_flag("--show-settings", o.showSettings,
+                 "Print the lighting settings this command would use, and stop");
 }
 
 std::vector<KnobValue> lightingOverrides(const LightingOptions& o) {
@@ -55,21 +63,24 @@ std::vector<KnobValue> lightingOverrides(const LightingOptions& o) {
     std::size_t i = 0;
     for (const KnobGroup& g : engine::lighting::knobGroups()) {
         for (const engine::lighting::Knob& k : g.knobs) {
-            if (i < o.given.size() && o.given[i]) out.push_back({&k, *o.given[i], knobOption(g, k)});
+            if (i < o.given.size() && o.given[i])
+                out.push_back({&k, *o.given[i], knobOption(g, k)});
             ++i;
         }
     }
     return out;
 }
 
-engine::Result<LightingSettings> lightingSettings(const LightingOptions& o, const engine::world::Scene* scene) {
+engine::Result<LightingSettings> lightingSettings(const LightingOptions& o,
+                                                  const engine::world::Scene* scene) {
     return engine::scene::lightingFor(scene, lightingOverrides(o));
 }
 
 std::string settingsText(const LightingSettings& s) {
     std::string text;
     for (const KnobGroup& g : engine::lighting::knobGroups()) {
-        for (const engine::lighting::Knob& k : g.knobs) text += fmt::format("{} {}\n", knobOption(g, k), knobText(k, s));
+        for (const engine::lighting::Knob& k : g.knobs)
+            text += fmt::format("{} {}\n", knobOption(g, k), knobText(k, s));
     }
     return text;
 }
@@ -83,7 +94,8 @@ int showSettings(const std::string& world, const LightingOptions& options) {
     return 0;
 }
 
-engine::Result<std::vector<engine::lighting::KnobValue>> knobValuesOf(const std::string& text, const std::string& where) {
+engine::Result<std::vector<engine::lighting::KnobValue>> knobValuesOf(const std::string& text,
+                                                                      const std::string& where) {
     std::vector<std::string> words;
     std::size_t at = 0;
     while (at < text.size()) {
@@ -95,9 +107,12 @@ engine::Result<std::vector<engine::lighting::KnobValue>> knobValuesOf(const std:
     std::vector<engine::lighting::KnobValue> out;
     for (std::size_t i = 0; i < words.size(); i += 2) {
         const std::string& option = words[i];
-        const engine::lighting::Knob* k =
-            option.rfind("--", 0) == 0 ? engine::lighting::knobForOption(option.substr(2)) : nullptr;
-        if (!k) return engine::makeError("{}: '{}' is not a lighting option (vox render --help lists them)", where, option);
+        const engine::lighting::Knob* k = option.rfind("--", 0) == 0
+                                              ? engine::lighting::knobForOption(option.substr(2))
+                                              : nullptr;
+        if (!k)
+            return engine::makeError(
+                "{}: '{}' is not a lighting option (vox render --help lists them)", where, option);
         if (i + 1 >= words.size()) return engine::makeError("{}: {} needs a value", where, option);
         out.push_back({k, words[i + 1], fmt::format("{} {}", where, option)});
     }

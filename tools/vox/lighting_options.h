@@ -24,11 +24,12 @@ void addLightingOptions(CLI::App& cmd, LightingOptions& o);
 // The options given, as values that override a scene's.
 std::vector<engine::lighting::KnobValue> lightingOverrides(const LightingOptions& o);
 // The one merge: defaults, the scene's settings when given, then the command line's.
-engine::Result<engine::lighting::LightingSettings> lightingSettings(const LightingOptions& o,
-                                                                   const engine::world::Scene* scene = nullptr);
+engine::Result<engine::lighting::LightingSettings> lightingSettings(
+    const LightingOptions& o, const engine::world::Scene* scene = nullptr);
 // "--method ris --sampling power" as knob values (a benchmark's variant); `where` names the source
 // in messages.
-engine::Result<std::vector<engine::lighting::KnobValue>> knobValuesOf(const std::string& text, const std::string& where);
+engine::Result<std::vector<engine::lighting::KnobValue>> knobValuesOf(const std::string& text,
+                                                                      const std::string& where);
 // Every knob as `option value`, one per line: what --show-settings prints.
 std::string settingsText(const engine::lighting::LightingSettings& s);
 

@@ -1,8 +1,7 @@
 #include "local_scheduler.h"
 
-#include <fmt/format.h>
-
 #include <cstdio>
+#include <fmt/format.h>
 
 #include "job_kind.h"
 #include "job_manifest.h"

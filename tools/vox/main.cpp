@@ -5,12 +5,11 @@
 #include <optional>
 
 #include "commands.h"
-
 #include "core/log.h"
 #include "core/memory_budget.h"
 #include "core/symbol_table_pages.h"
-#include "gpu/texel_buffer_limit.h"
 #include "generator_progress.h"
+#include "gpu/texel_buffer_limit.h"
 #include "io/vdb_import.h"
 #include "io/vox_import.h"
 #include "number_options.h"
@@ -30,9 +29,10 @@ Status checkLooksLikeText(const std::filesystem::path& path) {
     const std::size_t n = std::fread(head, 1, sizeof head, f);
     std::fclose(f);
     if (std::memchr(head, 0, n) == nullptr) return {};
-    return engine::makeError("{}: not a scene file (binary data; a TOML scene file, a .vdb or a .vox file was expected, "
-                             "told apart by the file's extension)",
-                             path.string());
+    return engine::makeError(
+        "{}: not a scene file (binary data; a TOML scene file, a .vdb or a .vox file was expected, "
+        "told apart by the file's extension)",
+        path.string());
 }
 
 }  // namespace
@@ -84,7 +84,8 @@ engine::Result<glm::uvec2> parseSize(const std::string& text, const char* option
     return glm::uvec2(unsigned(*w), unsigned(*h));
 }
 
-engine::Result<glm::vec3> parseVec3(const std::string& text, const char* option, const engine::NumberRange& range) {
+engine::Result<glm::vec3> parseVec3(const std::string& text, const char* option,
+                                    const engine::NumberRange& range) {
     glm::vec3 out(0.0f);
     std::string_view rest = text;
     for (int i = 0; i < 3; ++i) {
@@ -112,14 +113,18 @@ int main(int argc, char** argv) {
     vox::showLongProgress();
     // libopenvdb's symbol tables were read once by the dynamic linker; 26 MB nobody reads again.
     engine::releaseSymbolTablePages();
-    CLI::App app{"vox: voxel engine tool (play, edit, render, capture, inspect, compare, import, export and benchmark brick-grid worlds)", "vox"};
+    CLI::App app{
+        "vox: voxel engine tool (play, edit, render, capture, inspect, compare, import, export and "
+        "benchmark brick-grid worlds)",
+        "vox"};
     app.require_subcommand(1);
     // Options of vox itself may also follow the subcommand (vox render --memory-budget 2048 …).
     app.fallthrough();
     app.add_option_function<double>(
            "--memory-budget",
            [](double mib) { engine::setMemoryBudgetBytes(std::uint64_t(mib * double(1 << 20))); },
-           "MiB a world may take to build and show (CPU grid, GPU copy, frame buffers); default 3/4 of "
+           "MiB a world may take to build and show (CPU grid, GPU copy, frame buffers); default "
+           "3/4 of "
            "physical memory or of ulimit -v")
         ->check(vox::numberIn(engine::closedRange(64.0, double(1 << 24), "MiB")));
     int exitCode = 0;
@@ -153,8 +158,11 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "vox: %s\n", e.what());
         return 1;
     } catch (const std::bad_alloc&) {
-        std::fprintf(stderr, "vox: out of memory (budget %.0f MiB): the world or the image is too large for this "
-                     "machine; make it smaller\n", double(engine::memoryBudgetBytes()) / (1 << 20));
+        std::fprintf(
+            stderr,
+            "vox: out of memory (budget %.0f MiB): the world or the image is too large for this "
+            "machine; make it smaller\n",
+            double(engine::memoryBudgetBytes()) / (1 << 20));
         return 1;
     } catch (const CLI::CallForHelp& e) {
         return app.exit(e);

@@ -7,7 +7,8 @@ CLI::Validator numberIn(const engine::NumberRange& range) {
         [range](std::string& text) -> std::string {
             auto v = engine::parseNumber("", text, range);
             if (v.ok()) return {};
-            // parseNumber's "': expected ..." for text that is no number; drop the empty name's ": ".
+            // parseNumber's "': expected ..." for text that is no number; drop the empty name's ":
+            // ".
             const std::string& m = v.error().message;
             return m.rfind(": ", 0) == 0 ? m.substr(2) : m;
         },

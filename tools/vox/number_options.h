@@ -18,6 +18,7 @@ CLI::Validator numberIn(const engine::NumberRange& range);
 inline constexpr engine::NumberRange kExposureRange = engine::aboveRange(0.0, 1e6);
 inline constexpr engine::NumberRange kFrameCountRange = engine::wholeRange(1, 100000, "frames");
 inline constexpr engine::NumberRange kWarmupRange = engine::wholeRange(0, 100000, "frames");
-inline constexpr engine::NumberRange kSamplesRange = engine::wholeRange(1, 1000000, "samples per pixel");
+inline constexpr engine::NumberRange kSamplesRange =
+    engine::wholeRange(1, 1000000, "samples per pixel");
 
 }  // namespace vox

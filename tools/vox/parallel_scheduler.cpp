@@ -1,8 +1,7 @@
 #include "parallel_scheduler.h"
 
-#include <fmt/format.h>
-
 #include <cstdio>
+#include <fmt/format.h>
 
 #include "job_manifest.h"
 #include "job_status.h"

@@ -1,12 +1,11 @@
 #include "slurm_scheduler.h"
 
-#include <fmt/format.h>
-#include <sys/stat.h>
-
 #include <cstdio>
 #include <cstdlib>
+#include <fmt/format.h>
 #include <set>
 #include <sstream>
+#include <sys/stat.h>
 
 #include "core/atomic_file.h"
 #include "job_kind.h"

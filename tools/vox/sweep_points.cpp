@@ -1,10 +1,9 @@
 #include "sweep_points.h"
 
-#include <fmt/format.h>
-
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fmt/format.h>
 #include <sstream>
 
 #include "commands.h"

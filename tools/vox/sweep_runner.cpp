@@ -1,10 +1,9 @@
 #include "sweep_runner.h"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <cstdio>
 #include <ctime>
+#include <fmt/format.h>
 #include <fstream>
 #include <sstream>
 
@@ -28,13 +27,16 @@ double median(std::vector<double> v) {
 
 // Mean luminance over the surface pixels that do not emit, image and reference alike: the light
 // the methods are responsible for (emitters and sky are exact in every method and would hide it).
-double nonEmitterMeanRatio(const engine::render::FrameImages& img, const std::vector<glm::vec4>& reference,
+double nonEmitterMeanRatio(const engine::render::FrameImages& img,
+                           const std::vector<glm::vec4>& reference,
                            const engine::world::Scene& scene) {
     auto luminance = [](const glm::vec4& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; };
     double a = 0.0, b = 0.0;
     for (std::size_t i = 0; i < img.gbuffer.size() && i < reference.size(); ++i) {
         const shared::GBufferTexel& g = img.gbuffer[i];
-        if (std::uint32_t(g.voxel.w) >= 6 || scene.palette[engine::world::MaterialId(g.data.x)].emissive()) continue;
+        if (std::uint32_t(g.voxel.w) >= 6 ||
+            scene.palette[engine::world::MaterialId(g.data.x)].emissive())
+            continue;
         a += luminance(img.radiance[i]);
         b += luminance(reference[i]);
     }
@@ -56,16 +58,19 @@ std::uint32_t hashBytes(const std::string& s, std::uint32_t h) {
 }  // namespace
 
 SweepPoint measureSetting(engine::gpu::Context& gpu, engine::world::Scene& scene,
-                          const engine::world::CameraPreset& camera, const engine::render::FrameSettings& frame,
-                          LightingSettings lighting, std::uint32_t frames, const std::vector<glm::vec4>& reference,
+                          const engine::world::CameraPreset& camera,
+                          const engine::render::FrameSettings& frame, LightingSettings lighting,
+                          std::uint32_t frames, const std::vector<glm::vec4>& reference,
                           std::string label) {
     engine::render::Renderer renderer(gpu);
-    return measureSetting(renderer, scene, camera, frame, lighting, frames, reference, std::move(label));
+    return measureSetting(renderer, scene, camera, frame, lighting, frames, reference,
+                          std::move(label));
 }
 
 SweepPoint measureSetting(engine::render::Renderer& renderer, engine::world::Scene& scene,
-                          const engine::world::CameraPreset& camera, const engine::render::FrameSettings& frame,
-                          LightingSettings lighting, std::uint32_t frames, const std::vector<glm::vec4>& reference,
+                          const engine::world::CameraPreset& camera,
+                          const engine::render::FrameSettings& frame, LightingSettings lighting,
+                          std::uint32_t frames, const std::vector<glm::vec4>& reference,
                           std::string label) {
     renderer.resetHistory();
     std::map<std::string, std::vector<double>> times;
@@ -98,7 +103,8 @@ SweepPoint measureSetting(engine::render::Renderer& renderer, engine::world::Sce
         }
         p.meanRatio += nonEmitterMeanRatio(img, reference, scene);
         ++counted;
-        if (lighting.method != Method::Restir) lighting.seed += 7919;  // memoryless methods: independent frames
+        if (lighting.method != Method::Restir)
+            lighting.seed += 7919;  // memoryless methods: independent frames
     }
     for (auto& [name, v] : times) p.passMs[name] = median(v);
     p.totalMs = median(totals);
@@ -111,17 +117,20 @@ SweepPoint measureSetting(engine::render::Renderer& renderer, engine::world::Sce
     return p;
 }
 
-engine::Result<std::vector<glm::vec4>> cachedReference(engine::gpu::Context& gpu, engine::world::Scene& scene,
+engine::Result<std::vector<glm::vec4>> cachedReference(engine::gpu::Context& gpu,
+                                                       engine::world::Scene& scene,
                                                        const engine::world::CameraPreset& camera,
-                                                       const engine::render::FrameSettings& frame, std::uint32_t spp,
-                                                       std::uint32_t bounces, const std::filesystem::path& cacheDir,
+                                                       const engine::render::FrameSettings& frame,
+                                                       std::uint32_t spp, std::uint32_t bounces,
+                                                       const std::filesystem::path& cacheDir,
                                                        const std::string& variant) {
     std::ostringstream key;
     std::ifstream source(scene.sourcePath, std::ios::binary);
     key << source.rdbuf();
-    key << fmt::format("|{} {} {}|{} {} {}|{}|{}x{}|{}|{}", camera.position.x, camera.position.y, camera.position.z,
-                       camera.target.x, camera.target.y, camera.target.z, camera.fovYDegrees, frame.width,
-                       frame.height, spp, bounces) + "|" + variant;
+    key << fmt::format("|{} {} {}|{} {} {}|{}|{}x{}|{}|{}", camera.position.x, camera.position.y,
+                       camera.position.z, camera.target.x, camera.target.y, camera.target.z,
+                       camera.fovYDegrees, frame.width, frame.height, spp, bounces) +
+               "|" + variant;
     // The estimator's version: images cached by an older reference (no MIS) are not reused.
     key << "|reference 2: pixel centre, MIS";
     std::uint32_t h = hashBytes(key.str(), 0x5eed);
@@ -133,9 +142,11 @@ engine::Result<std::vector<glm::vec4>> cachedReference(engine::gpu::Context& gpu
     auto lock = engine::ExclusiveFileLock::acquire(file.string() + ".lock");
     if (std::filesystem::exists(file, ec)) {
         auto img = engine::io::readExr(file);
-        if (img.ok() && img->width == frame.width && img->height == frame.height) return std::move(img->pixels);
+        if (img.ok() && img->width == frame.width && img->height == frame.height)
+            return std::move(img->pixels);
     }
-    std::fprintf(stderr, "%s: rendering the reference (%u spp, %u bounce(s)) ...\n", scene.name.c_str(), spp, bounces);
+    std::fprintf(stderr, "%s: rendering the reference (%u spp, %u bounce(s)) ...\n",
+                 scene.name.c_str(), spp, bounces);
     engine::render::Renderer renderer(gpu);
     LightingSettings ref;
     ref.method = Method::Reference;
@@ -144,7 +155,8 @@ engine::Result<std::vector<glm::vec4>> cachedReference(engine::gpu::Context& gpu
     ref.referenceFilter = engine::lighting::ReferenceFilter::PixelCentre;
     ref.samplesPerFrame = 16;
     ref.bounces = bounces;
-    for (std::uint32_t s = 0; s < spp; s += ref.samplesPerFrame) renderer.render(scene, camera, frame, ref);
+    for (std::uint32_t s = 0; s < spp; s += ref.samplesPerFrame)
+        renderer.render(scene, camera, frame, ref);
     std::vector<glm::vec4> pixels = renderer.readback().radiance;
     std::filesystem::create_directories(cacheDir, ec);
     engine::Status saved = engine::io::writeExr(file, frame.width, frame.height, pixels);

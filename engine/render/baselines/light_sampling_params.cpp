@@ -2,7 +2,8 @@
 
 namespace engine::render {
 
-shared::LightSamplingParams lightSamplingParams(const lighting::LightingSettings& l, std::uint32_t frameIndex) {
+shared::LightSamplingParams lightSamplingParams(const lighting::LightingSettings& l,
+                                                std::uint32_t frameIndex) {
     shared::LightSamplingParams p{};
     p.samples = l.shadowRays;
     p.everyLight = l.method == lighting::Method::BruteForce ? 1u : 0u;

@@ -9,6 +9,7 @@
 
 namespace engine::render {
 
-shared::LightSamplingParams lightSamplingParams(const lighting::LightingSettings& settings, std::uint32_t frameIndex);
+shared::LightSamplingParams lightSamplingParams(const lighting::LightingSettings& settings,
+                                                std::uint32_t frameIndex);
 
 }  // namespace engine::render

@@ -23,7 +23,8 @@ struct LightSamplingIo {
 class LightSamplingPass : public ScreenLitPass<LightSamplingIo> {
 public:
     using Io = LightSamplingIo;
-    explicit LightSamplingPass(gpu::Context& ctx) : ScreenLitPass(ctx, "light_sampling", "baselines/light_sampling") {}
+    explicit LightSamplingPass(gpu::Context& ctx)
+        : ScreenLitPass(ctx, "light_sampling", "baselines/light_sampling") {}
 };
 
 }  // namespace engine::render

@@ -40,7 +40,8 @@ std::uint32_t dvfTexel(std::uint32_t face, glm::vec3 dir) {
     l /= std::abs(l.x) + std::abs(l.y) + l.z;
     const glm::vec2 p(l.x - l.y, l.x + l.y);
     const float grid = static_cast<float>(shared::DVF_GRID);
-    const glm::vec2 c = glm::clamp((p * 0.5f + 0.5f) * grid, glm::vec2(0.0f), glm::vec2(grid - 0.5f));
+    const glm::vec2 c =
+        glm::clamp((p * 0.5f + 0.5f) * grid, glm::vec2(0.0f), glm::vec2(grid - 0.5f));
     return static_cast<std::uint32_t>(c.x) + static_cast<std::uint32_t>(c.y) * shared::DVF_GRID;
 }
 
@@ -51,7 +52,8 @@ std::array<float, 6 * shared::DVF_DIRECTIONS> dvfSkyWeights() {
     const double grid = shared::DVF_GRID;
     const double du = 1.0 / (grid * kSub);
     auto dir = [](std::uint32_t face, double u, double v) {
-        return glm::dvec3(dvfDirection(face, glm::vec2(static_cast<float>(u), static_cast<float>(v))));
+        return glm::dvec3(
+            dvfDirection(face, glm::vec2(static_cast<float>(u), static_cast<float>(v))));
     };
     std::array<float, 6 * shared::DVF_DIRECTIONS> weights{};
     for (std::uint32_t face = 0; face < 6; ++face) {
@@ -72,7 +74,8 @@ std::array<float, 6 * shared::DVF_DIRECTIONS> dvfSkyWeights() {
                     sum += skyGradient(w) * std::max(glm::dot(w, n), 0.0) * solidAngle;
                 }
             }
-            weights[face * shared::DVF_DIRECTIONS + d] = static_cast<float>(sum / 3.14159265358979323846);
+            weights[face * shared::DVF_DIRECTIONS + d] =
+                static_cast<float>(sum / 3.14159265358979323846);
         }
     }
     return weights;

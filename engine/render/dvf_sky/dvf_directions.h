@@ -5,7 +5,6 @@
 
 #include <array>
 #include <cstdint>
-
 #include <glm/glm.hpp>
 
 #include "shared/dvf_sky.h"

@@ -39,7 +39,8 @@ class DvfSkyPass {
 public:
     DvfSkyPass(gpu::Context& ctx, std::string name, const std::string& shader)
         : mPass(ctx, std::move(name), shader, bindingCount<DvfSkyIo>()) {}
-    void record(gpu::CommandList& cmd, const SceneBindings& scene, const DvfSkyIo& io, glm::uvec2 groups) {
+    void record(gpu::CommandList& cmd, const SceneBindings& scene, const DvfSkyIo& io,
+                glm::uvec2 groups) {
         mPass.record(cmd, scene, io.bindings(), groups);
     }
 

@@ -10,8 +10,10 @@ glm::ivec3 coarsePatchBase(glm::ivec3 voxel, std::uint32_t face) {
     return base;
 }
 
-std::optional<CacheKey> coarsePatchKey(const world::BrickGrid& grid, glm::ivec3 voxel, std::uint32_t face) {
-    if (face >= shared::CACHE_FACES || glm::any(glm::lessThan(voxel, glm::ivec3(0)))) return std::nullopt;
+std::optional<CacheKey> coarsePatchKey(const world::BrickGrid& grid, glm::ivec3 voxel,
+                                       std::uint32_t face) {
+    if (face >= shared::CACHE_FACES || glm::any(glm::lessThan(voxel, glm::ivec3(0))))
+        return std::nullopt;
     const std::uint32_t axis = face >> 1, ua = (axis + 1) % 3, va = (axis + 2) % 3;
     const glm::ivec3 base = coarsePatchBase(voxel, face);
     glm::ivec3 normal(0);
@@ -21,14 +23,15 @@ std::optional<CacheKey> coarsePatchKey(const world::BrickGrid& grid, glm::ivec3 
             glm::ivec3 v = base;
             v[ua] += i;
             v[va] += j;
-            if (grid.get(v) == world::kEmpty || grid.get(v + normal) != world::kEmpty) return std::nullopt;
+            if (grid.get(v) == world::kEmpty || grid.get(v + normal) != world::kEmpty)
+                return std::nullopt;
         }
     }
     return CacheKey{base, shared::CACHE_SET_STATIC, 1u + face};
 }
 
-CacheKey staticKeyFor(const world::BrickGrid& grid, glm::ivec3 voxel, std::uint32_t face, float viewDistance,
-                      float lodDistance) {
+CacheKey staticKeyFor(const world::BrickGrid& grid, glm::ivec3 voxel, std::uint32_t face,
+                      float viewDistance, float lodDistance) {
     return StaticKeys(grid, lodDistance).keyFor(voxel, face, viewDistance);
 }
 

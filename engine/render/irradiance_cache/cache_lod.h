@@ -8,32 +8,34 @@
 // gather.glsl, gatherPixel) applies the same rule per pixel.
 #pragma once
 
-#include <optional>
-
 #include <glm/glm.hpp>
+#include <optional>
 
 #include "render/irradiance_cache/irradiance_cache_directory.h"
 #include "world/brick_grid.h"
 
 namespace engine::render {
 
-// The lowest voxel of the 2x2 patch of `face` that holds `voxel` (even coordinates in the face's plane).
+// The lowest voxel of the 2x2 patch of `face` that holds `voxel` (even coordinates in the face's
+// plane).
 glm::ivec3 coarsePatchBase(glm::ivec3 voxel, std::uint32_t face);
 
 // The coarse key of `face` of static voxel `voxel` if its 2x2 patch is open, else nothing. Every
 // voxel of one patch gets the same answer.
-std::optional<CacheKey> coarsePatchKey(const world::BrickGrid& grid, glm::ivec3 voxel, std::uint32_t face);
+std::optional<CacheKey> coarsePatchKey(const world::BrickGrid& grid, glm::ivec3 voxel,
+                                       std::uint32_t face);
 
 // The key a static pixel at `viewDistance` reads: coarse when LOD is on, the pixel is at least
 // `lodDistance` away and its patch is open; otherwise the voxel's own.
-CacheKey staticKeyFor(const world::BrickGrid& grid, glm::ivec3 voxel, std::uint32_t face, float viewDistance,
-                      float lodDistance);
+CacheKey staticKeyFor(const world::BrickGrid& grid, glm::ivec3 voxel, std::uint32_t face,
+                      float viewDistance, float lodDistance);
 
 // staticKeyFor over the pixels of a frame in scan order: neighbouring far pixels mostly lie in
 // one patch, so the last patch's answer is kept and the grid read again only for a new patch.
 class StaticKeys {
 public:
-    StaticKeys(const world::BrickGrid& grid, float lodDistance) : mGrid(grid), mLodDistance(lodDistance) {}
+    StaticKeys(const world::BrickGrid& grid, float lodDistance)
+        : mGrid(grid), mLodDistance(lodDistance) {}
     CacheKey keyFor(glm::ivec3 voxel, std::uint32_t face, float viewDistance);
 
 private:

@@ -15,7 +15,8 @@ shared::CacheParams cacheParams(const lighting::IrradianceCacheSettings& s, cons
     p.seed = f.seed;
     p.tableMask = f.buckets - 1u;
     p.capacity = f.capacity;
-    p.flags = (s.filter ? 0u : shared::CACHE_FLAG_NO_FILTER) | (s.fullRetrace ? shared::CACHE_FLAG_FULL_RETRACE : 0u);
+    p.flags = (s.filter ? 0u : shared::CACHE_FLAG_NO_FILTER) |
+              (s.fullRetrace ? shared::CACHE_FLAG_FULL_RETRACE : 0u);
     p.width = f.image.x;
     p.height = f.image.y;
     p.staticUpdates = f.staticUpdates;

@@ -3,7 +3,6 @@
 #pragma once
 
 #include <cstdint>
-
 #include <glm/glm.hpp>
 
 #include "lighting/irradiance_cache_settings.h"
@@ -19,11 +18,12 @@ struct CacheFrame {
     std::uint32_t buckets = 0;        // hash table buckets (a power of two)
     std::uint32_t capacity = 0;       // slots the GPU buffers hold
     std::uint32_t frameIndex = 0;
-    std::uint32_t seed = 0;           // the lighting seed
+    std::uint32_t seed = 0;  // the lighting seed
     glm::uvec2 image{0};
     double timeSeconds = 0.0;
 };
 
-shared::CacheParams cacheParams(const lighting::IrradianceCacheSettings& settings, const CacheFrame& frame);
+shared::CacheParams cacheParams(const lighting::IrradianceCacheSettings& settings,
+                                const CacheFrame& frame);
 
 }  // namespace engine::render

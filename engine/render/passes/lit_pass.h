@@ -14,15 +14,19 @@ namespace engine::render {
 
 class LitPass {
 public:
-    LitPass(gpu::Context& ctx, std::string name, const std::string& shader, std::uint32_t ownBindings);
+    LitPass(gpu::Context& ctx, std::string name, const std::string& shader,
+            std::uint32_t ownBindings);
     // `own`: the pass's buffers, at LIT_PASS_BINDING_FIRST and after.
-    void record(gpu::CommandList& cmd, const SceneBindings& scene, std::span<const PassBinding> own, glm::uvec2 groups);
+    void record(gpu::CommandList& cmd, const SceneBindings& scene, std::span<const PassBinding> own,
+                glm::uvec2 groups);
     // Workgroup counts from `args` at `offset` (ComputePass::recordIndirect).
-    void recordIndirect(gpu::CommandList& cmd, const SceneBindings& scene, std::span<const PassBinding> own,
-                        const gpu::Buffer& args, std::uint64_t offset);
+    void recordIndirect(gpu::CommandList& cmd, const SceneBindings& scene,
+                        std::span<const PassBinding> own, const gpu::Buffer& args,
+                        std::uint64_t offset);
 
 private:
-    std::vector<PassBinding> withScene(const SceneBindings& scene, std::span<const PassBinding> own) const;
+    std::vector<PassBinding> withScene(const SceneBindings& scene,
+                                       std::span<const PassBinding> own) const;
 
     ComputePass mPass;
 };

@@ -9,20 +9,22 @@
 namespace engine::render {
 
 struct PrimaryRayIo {
-    const GpuWorld& world;          // read
-    const gpu::Buffer& frameParams; // read
-    gpu::Buffer& gbuffer;           // write
+    const GpuWorld& world;           // read
+    const gpu::Buffer& frameParams;  // read
+    gpu::Buffer& gbuffer;            // write
     auto bindings() const {
-        return joinBindings(worldBindings(world),
-                            std::to_array<PassBinding>({{shared::PRIMARY_BINDING_FRAME, &frameParams},
-                                                        {shared::PRIMARY_BINDING_GBUFFER, &gbuffer}}));
+        return joinBindings(
+            worldBindings(world),
+            std::to_array<PassBinding>({{shared::PRIMARY_BINDING_FRAME, &frameParams},
+                                        {shared::PRIMARY_BINDING_GBUFFER, &gbuffer}}));
     }
 };
 
 class PrimaryRayPass : public ScreenPass<PrimaryRayIo> {
 public:
     using Io = PrimaryRayIo;
-    explicit PrimaryRayPass(gpu::Context& ctx) : ScreenPass(ctx, "primary_rays", "world/primary_rays") {}
+    explicit PrimaryRayPass(gpu::Context& ctx)
+        : ScreenPass(ctx, "primary_rays", "world/primary_rays") {}
 };
 
 }  // namespace engine::render

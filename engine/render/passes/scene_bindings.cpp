@@ -13,11 +13,12 @@ std::array<PassBinding, 5> worldBindings(const GpuWorld& world) {
 }
 
 std::array<PassBinding, 9> sceneBindings(const SceneBindings& scene) {
-    return joinBindings(worldBindings(scene.world),
-                        std::to_array<PassBinding>({{shared::LIGHTS_BINDING_INFO, &scene.lights.info()},
-                                                    {shared::LIGHTS_BINDING_EMITTERS, &scene.lights.emitters()},
-                                                    {shared::LIGHTS_BINDING_ALIVE, &scene.lights.alive()},
-                                                    {shared::LIGHTS_BINDING_ALIAS, &scene.lights.alias()}}));
+    return joinBindings(
+        worldBindings(scene.world),
+        std::to_array<PassBinding>({{shared::LIGHTS_BINDING_INFO, &scene.lights.info()},
+                                    {shared::LIGHTS_BINDING_EMITTERS, &scene.lights.emitters()},
+                                    {shared::LIGHTS_BINDING_ALIVE, &scene.lights.alive()},
+                                    {shared::LIGHTS_BINDING_ALIAS, &scene.lights.alias()}}));
 }
 
 }  // namespace engine::render

@@ -15,11 +15,12 @@ struct SunShadeIo {
     gpu::Buffer& radiance;           // write: vec4 per pixel
     gpu::Buffer& rayStats;           // write: uvec4 per pixel
     auto bindings() const {
-        return joinBindings(worldBindings(world),
-                            std::to_array<PassBinding>({{shared::SUN_BINDING_FRAME, &frameParams},
-                                                        {shared::SUN_BINDING_GBUFFER, &gbuffer},
-                                                        {shared::SUN_BINDING_RADIANCE, &radiance},
-                                                        {shared::SUN_BINDING_RAY_STATS, &rayStats}}));
+        return joinBindings(
+            worldBindings(world),
+            std::to_array<PassBinding>({{shared::SUN_BINDING_FRAME, &frameParams},
+                                        {shared::SUN_BINDING_GBUFFER, &gbuffer},
+                                        {shared::SUN_BINDING_RADIANCE, &radiance},
+                                        {shared::SUN_BINDING_RAY_STATS, &rayStats}}));
     }
 };
 

@@ -21,9 +21,10 @@ public:
         const gpu::Buffer& rays;    // read: TraceRayInput[]
         gpu::Buffer& hits;          // write: TraceRayOutput[]
         auto bindings() const {
-            return joinBindings(worldBindings(world), std::to_array<PassBinding>({{shared::TRACE_BINDING_PARAMS, &params},
-                                                                                  {shared::TRACE_BINDING_RAYS, &rays},
-                                                                                  {shared::TRACE_BINDING_HITS, &hits}}));
+            return joinBindings(worldBindings(world),
+                                std::to_array<PassBinding>({{shared::TRACE_BINDING_PARAMS, &params},
+                                                            {shared::TRACE_BINDING_RAYS, &rays},
+                                                            {shared::TRACE_BINDING_HITS, &hits}}));
         }
     };
     void record(gpu::CommandList& cmd, const Io& io, std::uint32_t rayCount, std::uint32_t mode);

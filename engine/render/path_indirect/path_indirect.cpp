@@ -1,8 +1,7 @@
 #include "render/path_indirect/path_indirect.h"
 
-#include <fmt/format.h>
-
 #include <algorithm>
+#include <fmt/format.h>
 
 #include "render/frame_commands.h"
 

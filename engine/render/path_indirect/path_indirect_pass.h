@@ -16,19 +16,21 @@ struct PathIndirectIo {
     gpu::Buffer& indirect;           // write
     gpu::Buffer& radiance;           // read and write: the term is added
     auto bindings() const {
-        return std::to_array<PassBinding>({{shared::PATH_INDIRECT_BINDING_FRAME, &frameParams},
-                                           {shared::PATH_INDIRECT_BINDING_PARAMS, &params},
-                                           {shared::PATH_INDIRECT_BINDING_GBUFFER, &gbuffer},
-                                           {shared::PATH_INDIRECT_BINDING_ACCUMULATION, &accumulation},
-                                           {shared::PATH_INDIRECT_BINDING_INDIRECT, &indirect},
-                                           {shared::PATH_INDIRECT_BINDING_RADIANCE, &radiance}});
+        return std::to_array<PassBinding>(
+            {{shared::PATH_INDIRECT_BINDING_FRAME, &frameParams},
+             {shared::PATH_INDIRECT_BINDING_PARAMS, &params},
+             {shared::PATH_INDIRECT_BINDING_GBUFFER, &gbuffer},
+             {shared::PATH_INDIRECT_BINDING_ACCUMULATION, &accumulation},
+             {shared::PATH_INDIRECT_BINDING_INDIRECT, &indirect},
+             {shared::PATH_INDIRECT_BINDING_RADIANCE, &radiance}});
     }
 };
 
 class PathIndirectPass : public ScreenLitPass<PathIndirectIo> {
 public:
     using Io = PathIndirectIo;
-    explicit PathIndirectPass(gpu::Context& ctx) : ScreenLitPass(ctx, "path.trace", "path_indirect/trace_paths") {}
+    explicit PathIndirectPass(gpu::Context& ctx)
+        : ScreenLitPass(ctx, "path.trace", "path_indirect/trace_paths") {}
 };
 
 }  // namespace engine::render

@@ -1,8 +1,7 @@
 #include "render/reference/reference.h"
 
-#include <fmt/format.h>
-
 #include <algorithm>
+#include <fmt/format.h>
 
 #include "gpu/command_list.h"
 #include "gpu/uploader.h"

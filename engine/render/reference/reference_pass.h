@@ -24,7 +24,8 @@ struct ReferenceIo {
 class ReferencePass : public ScreenLitPass<ReferenceIo> {
 public:
     using Io = ReferenceIo;
-    explicit ReferencePass(gpu::Context& ctx) : ScreenLitPass(ctx, "reference", "reference/path_trace") {}
+    explicit ReferencePass(gpu::Context& ctx)
+        : ScreenLitPass(ctx, "reference", "reference/path_trace") {}
 };
 
 }  // namespace engine::render

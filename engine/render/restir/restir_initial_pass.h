@@ -23,7 +23,8 @@ struct RestirInitialIo {
 class RestirInitialPass : public ScreenLitPass<RestirInitialIo> {
 public:
     using Io = RestirInitialIo;
-    explicit RestirInitialPass(gpu::Context& ctx) : ScreenLitPass(ctx, "restir_initial", "restir/initial_candidates") {}
+    explicit RestirInitialPass(gpu::Context& ctx)
+        : ScreenLitPass(ctx, "restir_initial", "restir/initial_candidates") {}
 };
 
 }  // namespace engine::render

@@ -11,7 +11,8 @@ shared::RestirParams restirParams(const lighting::LightingSettings& l, std::uint
     p.knobs.spatial = restir && l.restir.spatial ? 1u : 0u;
     // The unbiased normalisation counts neighbours by visibility, which is only right when every
     // stored reservoir's weight already accounts for its own sample's visibility.
-    p.knobs.candidateVisibility = restir && (l.restir.candidateVisibility || l.restir.unbiased) ? 1u : 0u;
+    p.knobs.candidateVisibility =
+        restir && (l.restir.candidateVisibility || l.restir.unbiased) ? 1u : 0u;
     p.area = l.area ? 1u : 0u;
     p.byPower = l.byPower ? 1u : 0u;
     p.frameIndex = frameIndex;

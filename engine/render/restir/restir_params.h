@@ -9,6 +9,7 @@
 
 namespace engine::render {
 
-shared::RestirParams restirParams(const lighting::LightingSettings& settings, std::uint32_t frameIndex);
+shared::RestirParams restirParams(const lighting::LightingSettings& settings,
+                                  std::uint32_t frameIndex);
 
 }  // namespace engine::render

@@ -25,7 +25,8 @@ struct RestirShadeIo {
 class RestirShadePass : public ScreenLitPass<RestirShadeIo> {
 public:
     using Io = RestirShadeIo;
-    explicit RestirShadePass(gpu::Context& ctx) : ScreenLitPass(ctx, "restir_shade", "restir/shade") {}
+    explicit RestirShadePass(gpu::Context& ctx)
+        : ScreenLitPass(ctx, "restir_shade", "restir/shade") {}
 };
 
 }  // namespace engine::render

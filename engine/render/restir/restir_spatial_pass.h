@@ -27,7 +27,8 @@ struct RestirSpatialIo {
 class RestirSpatialPass : public ScreenLitPass<RestirSpatialIo> {
 public:
     using Io = RestirSpatialIo;
-    explicit RestirSpatialPass(gpu::Context& ctx) : ScreenLitPass(ctx, "restir_spatial", "restir/spatial_reuse") {}
+    explicit RestirSpatialPass(gpu::Context& ctx)
+        : ScreenLitPass(ctx, "restir_spatial", "restir/spatial_reuse") {}
 };
 
 }  // namespace engine::render

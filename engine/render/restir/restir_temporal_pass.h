@@ -17,20 +17,22 @@ struct RestirTemporalIo {
     const gpu::Buffer& prevReservoirs;  // read
     gpu::Buffer& own;                   // write
     auto bindings() const {
-        return std::to_array<PassBinding>({{shared::RESTIR_BINDING_FRAME, &frameParams},
-                                           {shared::RESTIR_BINDING_PARAMS, &restirParams},
-                                           {shared::RESTIR_BINDING_GBUFFER, &gbuffer},
-                                           {shared::RESTIR_TEMPORAL_BINDING_PREV_GBUFFER, &prevGbuffer},
-                                           {shared::RESTIR_TEMPORAL_BINDING_CANDIDATES, &candidates},
-                                           {shared::RESTIR_TEMPORAL_BINDING_PREVIOUS, &prevReservoirs},
-                                           {shared::RESTIR_TEMPORAL_BINDING_OWN, &own}});
+        return std::to_array<PassBinding>(
+            {{shared::RESTIR_BINDING_FRAME, &frameParams},
+             {shared::RESTIR_BINDING_PARAMS, &restirParams},
+             {shared::RESTIR_BINDING_GBUFFER, &gbuffer},
+             {shared::RESTIR_TEMPORAL_BINDING_PREV_GBUFFER, &prevGbuffer},
+             {shared::RESTIR_TEMPORAL_BINDING_CANDIDATES, &candidates},
+             {shared::RESTIR_TEMPORAL_BINDING_PREVIOUS, &prevReservoirs},
+             {shared::RESTIR_TEMPORAL_BINDING_OWN, &own}});
     }
 };
 
 class RestirTemporalPass : public ScreenLitPass<RestirTemporalIo> {
 public:
     using Io = RestirTemporalIo;
-    explicit RestirTemporalPass(gpu::Context& ctx) : ScreenLitPass(ctx, "restir_temporal", "restir/temporal_reuse") {}
+    explicit RestirTemporalPass(gpu::Context& ctx)
+        : ScreenLitPass(ctx, "restir_temporal", "restir/temporal_reuse") {}
 };
 
 }  // namespace engine::render

@@ -26,8 +26,10 @@ public:
     explicit VctInjectPass(gpu::Context& ctx)
         : mPass(ctx, "vct.inject", "vct/inject_radiance", bindingCount<VctInjectIo>()) {}
     // Texels as a 2D grid: x, then y + RES * (z + RES * level).
-    void record(gpu::CommandList& cmd, const SceneBindings& scene, const VctInjectIo& io, std::uint32_t levels) {
-        mPass.record(cmd, scene, io.bindings(), screenGroups({shared::VCT_RES, shared::VCT_RES * shared::VCT_RES * levels}));
+    void record(gpu::CommandList& cmd, const SceneBindings& scene, const VctInjectIo& io,
+                std::uint32_t levels) {
+        mPass.record(cmd, scene, io.bindings(),
+                     screenGroups({shared::VCT_RES, shared::VCT_RES * shared::VCT_RES * levels}));
     }
 
 private:

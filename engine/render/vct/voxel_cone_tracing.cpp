@@ -1,9 +1,8 @@
 #include "render/vct/voxel_cone_tracing.h"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <cmath>
+#include <fmt/format.h>
 #include <glm/common.hpp>
 #include <utility>
 

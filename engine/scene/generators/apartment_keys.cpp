@@ -17,7 +17,8 @@ ApartmentParams parse(GeneratorKeys& g) {
     p.windowSpacing = g.integer("window_spacing", p.windowSpacing, wholeRange(2, 1024, "voxels"));
     p.lit = static_cast<float>(g.number("lit", p.lit, closedRange(0.0, 1.0)));
     p.balconies = static_cast<float>(g.number("balconies", p.balconies, closedRange(0.0, 1.0)));
-    p.baseDepth = g.integer("base_depth", p.baseDepth, wholeRange(0, world::kMaxWorldExtent, "voxels"));
+    p.baseDepth =
+        g.integer("base_depth", p.baseDepth, wholeRange(0, world::kMaxWorldExtent, "voxels"));
     p.seed = static_cast<std::uint32_t>(g.integer("seed", static_cast<int>(p.seed), kSeedRange));
     p.wall = g.material("wall");
     p.slab = g.material("slab");

@@ -12,11 +12,15 @@ BuildingsParams parse(GeneratorKeys& g) {
     BuildingsParams p;
     p.count = g.integer("count", p.count, wholeRange(0, 10000));
     p.seed = static_cast<std::uint32_t>(g.integer("seed", static_cast<int>(p.seed), kSeedRange));
-    p.minHeight = g.integer("min_height", p.minHeight, wholeRange(6, world::kMaxWorldExtent, "voxels"));
-    p.maxHeight = g.integer("max_height", p.maxHeight, wholeRange(6, world::kMaxWorldExtent, "voxels"));
+    p.minHeight =
+        g.integer("min_height", p.minHeight, wholeRange(6, world::kMaxWorldExtent, "voxels"));
+    p.maxHeight =
+        g.integer("max_height", p.maxHeight, wholeRange(6, world::kMaxWorldExtent, "voxels"));
     // Sizes are [x, y, z] like every extent; y is not used.
-    glm::ivec3 minSize = g.ivec3("min_size", {p.minSize.x, 0, p.minSize.y}, wholeRange(0, world::kMaxWorldExtent, "voxels"));
-    glm::ivec3 maxSize = g.ivec3("max_size", {p.maxSize.x, 0, p.maxSize.y}, wholeRange(0, world::kMaxWorldExtent, "voxels"));
+    glm::ivec3 minSize = g.ivec3("min_size", {p.minSize.x, 0, p.minSize.y},
+                                 wholeRange(0, world::kMaxWorldExtent, "voxels"));
+    glm::ivec3 maxSize = g.ivec3("max_size", {p.maxSize.x, 0, p.maxSize.y},
+                                 wholeRange(0, world::kMaxWorldExtent, "voxels"));
     p.minSize = {minSize.x, minSize.z};
     p.maxSize = {maxSize.x, maxSize.z};
     p.wall = g.material("wall");

@@ -11,7 +11,8 @@ using world::CornellParams;
 CornellParams parse(GeneratorKeys& g) {
     CornellParams p;
     p.origin = g.ivec3("origin", p.origin, kVoxelIndexRange);
-    p.interior = g.integer("interior", p.interior, wholeRange(16, world::kMaxWorldExtent, "voxels"));
+    p.interior =
+        g.integer("interior", p.interior, wholeRange(16, world::kMaxWorldExtent, "voxels"));
     p.wall = g.integer("wall", p.wall, wholeRange(0, 1024, "voxels"));
     p.lightBricks = g.integer("light_bricks", p.lightBricks, wholeRange(0, 4096, "bricks"));
     p.white = g.material("white");

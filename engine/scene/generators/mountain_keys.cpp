@@ -18,19 +18,26 @@ MountainParams parse(GeneratorKeys& g) {
     m.top = g.material("top");
     m.soil = g.material("soil");
     m.rock = g.material("rock");
-    m.soilDepth = g.integer("soil_depth", m.soilDepth, wholeRange(0, world::kMaxWorldExtent, "voxels"));
+    m.soilDepth =
+        g.integer("soil_depth", m.soilDepth, wholeRange(0, world::kMaxWorldExtent, "voxels"));
     m.snow = g.material("snow", "empty");
     m.snowLine = g.integer("snow_line", m.snowLine, kNoneAbove);
     m.cliff = g.material("cliff", "empty");
     m.cliffStep = g.integer("cliff_step", m.cliffStep, kNoneAbove);
     glm::vec3 size(g.scene().grid.sizeInVoxels());
     p.peak = g.vec2("peak", {size.x * 0.5f, size.z * 0.5f}, world::kCoordinateRange);
-    p.peakHeight = static_cast<float>(g.number("peak_height", p.peakHeight, closedRange(-world::kMaxWorldExtent, world::kMaxWorldExtent, "voxels")));
-    p.baseHeight = static_cast<float>(g.number("base_height", p.baseHeight, closedRange(-world::kMaxWorldExtent, world::kMaxWorldExtent, "voxels")));
+    p.peakHeight = static_cast<float>(
+        g.number("peak_height", p.peakHeight,
+                 closedRange(-world::kMaxWorldExtent, world::kMaxWorldExtent, "voxels")));
+    p.baseHeight = static_cast<float>(
+        g.number("base_height", p.baseHeight,
+                 closedRange(-world::kMaxWorldExtent, world::kMaxWorldExtent, "voxels")));
     p.radius = static_cast<float>(g.number("radius", p.radius, aboveRange(0.0, 1e6, "voxels")));
-    p.hills = static_cast<float>(g.number("hills", p.hills, closedRange(-world::kMaxWorldExtent, world::kMaxWorldExtent, "voxels")));
+    p.hills = static_cast<float>(g.number(
+        "hills", p.hills, closedRange(-world::kMaxWorldExtent, world::kMaxWorldExtent, "voxels")));
     p.ridges = static_cast<float>(g.number("ridges", p.ridges, closedRange(0.0, 1.0)));
-    p.wavelength = static_cast<float>(g.number("wavelength", p.wavelength, aboveRange(0.0, 1e6, "voxels")));
+    p.wavelength =
+        static_cast<float>(g.number("wavelength", p.wavelength, aboveRange(0.0, 1e6, "voxels")));
     p.octaves = g.integer("octaves", p.octaves, wholeRange(1, 12));
     p.terrace = g.integer("terrace", p.terrace, wholeRange(0, 64, "voxels"));
     p.seed = static_cast<std::uint32_t>(g.integer("seed", static_cast<int>(p.seed), kSeedRange));

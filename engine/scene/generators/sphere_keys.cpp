@@ -16,7 +16,8 @@ struct SphereParams {
 SphereParams parse(GeneratorKeys& g) {
     SphereParams p;
     p.center = g.vec3("center", {}, world::kCoordinateRange, true);
-    p.radius = static_cast<float>(g.number("radius", p.radius, aboveRange(0.0, world::kMaxWorldExtent, "voxels")));
+    p.radius = static_cast<float>(
+        g.number("radius", p.radius, aboveRange(0.0, world::kMaxWorldExtent, "voxels")));
     p.material = g.material("material");
     return p;
 }

@@ -14,10 +14,16 @@ TerrainParams parse(GeneratorKeys& g) {
     p.top = g.material("top");
     p.soil = g.material("soil");
     p.rock = g.material("rock");
-    p.soilDepth = g.integer("soil_depth", p.soilDepth, wholeRange(0, world::kMaxWorldExtent, "voxels"));
-    p.baseHeight = static_cast<float>(g.number("base_height", p.baseHeight, closedRange(-world::kMaxWorldExtent, world::kMaxWorldExtent, "voxels")));
-    p.amplitude = static_cast<float>(g.number("amplitude", p.amplitude, closedRange(-world::kMaxWorldExtent, world::kMaxWorldExtent, "voxels")));
-    p.wavelength = static_cast<float>(g.number("wavelength", p.wavelength, aboveRange(0.0, 1e6, "voxels")));
+    p.soilDepth =
+        g.integer("soil_depth", p.soilDepth, wholeRange(0, world::kMaxWorldExtent, "voxels"));
+    p.baseHeight = static_cast<float>(
+        g.number("base_height", p.baseHeight,
+                 closedRange(-world::kMaxWorldExtent, world::kMaxWorldExtent, "voxels")));
+    p.amplitude = static_cast<float>(
+        g.number("amplitude", p.amplitude,
+                 closedRange(-world::kMaxWorldExtent, world::kMaxWorldExtent, "voxels")));
+    p.wavelength =
+        static_cast<float>(g.number("wavelength", p.wavelength, aboveRange(0.0, 1e6, "voxels")));
     p.octaves = g.integer("octaves", p.octaves, wholeRange(1, 12));
     p.seed = static_cast<std::uint32_t>(g.integer("seed", static_cast<int>(p.seed), kSeedRange));
     return p;

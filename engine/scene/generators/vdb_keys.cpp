@@ -61,8 +61,10 @@ VdbParams parse(GeneratorKeys& g) {
             o.heightMaterials.push_back(g.scene().palette[*id]);
         }
     }
-    o.fogThreshold = static_cast<float>(g.number("fog_threshold", o.fogThreshold, closedRange(-1e6, 1e6)));
-    o.maxColours = g.integer("max_colours", o.maxColours, wholeRange(1, double(world::kMaxMaterials - 1)));
+    o.fogThreshold =
+        static_cast<float>(g.number("fog_threshold", o.fogThreshold, closedRange(-1e6, 1e6)));
+    o.maxColours =
+        g.integer("max_colours", o.maxColours, wholeRange(1, double(world::kMaxMaterials - 1)));
     // Absent: the file's own voxel size (0 in the options); 0 in the file is refused.
     o.voxelSize = g.number("voxel_size", 0.0, aboveRange(0.0, 1e6, "file units"));
     if (g.has("offset")) o.offset = g.ivec3("offset", {}, kVoxelIndexRange);
@@ -93,7 +95,8 @@ Status run(const VdbParams& p, world::Scene& scene) {
     io::VdbImportReport report;
     if (Status s = io::importVdbInto(scene, path, p.options, &report); !s) return s;
     // The notes `vox import` prints (content cut off at the world's edge, axes turned, resampling).
-    for (const std::string& note : report.plan.notes) log::warn("{}: vdb generator, {}: {}", scene.sourcePath, p.source, note);
+    for (const std::string& note : report.plan.notes)
+        log::warn("{}: vdb generator, {}: {}", scene.sourcePath, p.source, note);
     return {};
 }
 

@@ -19,15 +19,17 @@ VoxParams parse(GeneratorKeys& g) {
     VoxParams p;
     p.source = g.string("source");
     p.options.offset = g.ivec3("offset", p.options.offset, kVoxelIndexRange);
-    int budget = g.integer("memory_budget_mib", int(p.options.memoryBudgetBytes >> 20), wholeRange(1, 1 << 24, "MiB"));
+    int budget = g.integer("memory_budget_mib", int(p.options.memoryBudgetBytes >> 20),
+                           wholeRange(1, 1 << 24, "MiB"));
     p.options.memoryBudgetBytes = std::uint64_t(budget) << 20;
     return p;
 }
 
 Status run(const VoxParams& p, world::Scene& scene) {
     namespace fs = std::filesystem;
-    fs::path path = fs::path(p.source).is_absolute() ? fs::path(p.source)
-                                                     : fs::path(scene.sourcePath).parent_path() / p.source;
+    fs::path path = fs::path(p.source).is_absolute()
+                        ? fs::path(p.source)
+                        : fs::path(scene.sourcePath).parent_path() / p.source;
     return io::importVoxInto(scene, path, p.options);
 }
 
