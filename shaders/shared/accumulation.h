@@ -7,15 +7,16 @@
 SHARED_BEGIN
 
 struct AccumulationParams {
-    uint frames;   // frames in the running mean, this one included (1 = restart from this frame)
+    uint frames;  // frames in the running mean, this one included (1 = restart from this frame)
     uint pad0, pad1, pad2;
 };
 SHARED_ASSERT_SIZE(AccumulationParams, 16);
 
-SHARED_CONST uint ACCUMULATION_BINDING_FRAME = 0u;     // FrameParams
-SHARED_CONST uint ACCUMULATION_BINDING_PARAMS = 1u;    // AccumulationParams
-SHARED_CONST uint ACCUMULATION_BINDING_HISTORY = 2u;   // vec4 per pixel: the mean so far
-SHARED_CONST uint ACCUMULATION_BINDING_RADIANCE = 3u;  // vec4 per pixel: this frame's, replaced by the mean
+SHARED_CONST uint ACCUMULATION_BINDING_FRAME = 0u;    // FrameParams
+SHARED_CONST uint ACCUMULATION_BINDING_PARAMS = 1u;   // AccumulationParams
+SHARED_CONST uint ACCUMULATION_BINDING_HISTORY = 2u;  // vec4 per pixel: the mean so far
+SHARED_CONST uint ACCUMULATION_BINDING_RADIANCE =
+    3u;  // vec4 per pixel: this frame's, replaced by the mean
 
 SHARED_END
 

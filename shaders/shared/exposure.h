@@ -14,18 +14,19 @@ SHARED_CONST float EXPOSURE_LOG2_MIN = -16.0f;
 SHARED_CONST float EXPOSURE_LOG2_MAX = 16.0f;
 
 struct ExposureParams {
-    float key;          // exposure = key / metered luminance
-    float adaptation;   // fraction of the way (in stops) to the metered exposure per frame
-    uint restart;       // 1: take the metered exposure at once (first frame, new size or settings)
-    float lowPercentile;   // the metering averages the pixels between these percentiles of the
-    float highPercentile;  // non-black ones: dark corners and a few lamps do not swing it
+    float key;         // exposure = key / metered luminance
+    float adaptation;  // fraction of the way (in stops) to the metered exposure per frame
+    uint restart;      // 1: take the metered exposure at once (first frame, new size or settings)
+    float lowPercentile;     // the metering averages the pixels between these percentiles of the
+    float highPercentile;    // non-black ones: dark corners and a few lamps do not swing it
     float minLog2, maxLog2;  // the exposure's range in stops
     uint pad0;
 };
 SHARED_ASSERT_SIZE(ExposureParams, 32);
 
 struct ExposureState {
-    vec4 value;  // x exposure in use, y metered log2 luminance, z the metered exposure, w pixels metered
+    vec4 value;  // x exposure in use, y metered log2 luminance, z the metered exposure, w pixels
+                 // metered
 };
 SHARED_ASSERT_SIZE(ExposureState, 16);
 
