@@ -62,10 +62,10 @@ engine::Result<std::size_t> BackgroundSaver::request(engine::world::Scene& scene
     if (savePath.extension() != ".db") {
         const std::vector<engine::world::GeneratorRecord> generators{
             engine::scene::storeGenerator(job.store.filename().string())};
-        job.sceneText = engine::scene::sceneText(
-            scene, {.headerComment = engine::scene::kSaveMarker,
-                    .generators = &generators,
-                    .objectGenerators = &objects.generators});
+        job.sceneText =
+            engine::scene::sceneText(scene, {.headerComment = engine::scene::kSaveMarker,
+                                             .generators = &generators,
+                                             .objectGenerators = &objects.generators});
     }
     const std::size_t regions = job.snapshot.regions.size();
     {

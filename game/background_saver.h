@@ -55,8 +55,9 @@ public:
 
     // Takes the snapshot now and queues the write; returns the number of regions copied. Refuses
     // (at once) a scene file that is not a save.
-    engine::Result<std::size_t> request(engine::world::Scene& scene, const std::filesystem::path& savePath,
-                        bool autosave, std::uint64_t worldVersion);
+    engine::Result<std::size_t> request(engine::world::Scene& scene,
+                                        const std::filesystem::path& savePath, bool autosave,
+                                        std::uint64_t worldVersion);
     // Saves finished since the last call, in order. The caller re-marks nothing: a failed save's
     // regions are marked edited again here (scene.grid is the one given to request()).
     std::vector<Done> poll(engine::world::Scene& scene);
@@ -71,7 +72,7 @@ private:
         std::uint64_t worldVersion = 0;
         std::optional<std::uint64_t> expectedCommits;
         engine::scene::StoreSnapshot snapshot;
-        std::string sceneText;  // for a .toml save path
+        std::string sceneText;                             // for a .toml save path
         std::vector<engine::scene::PayloadFile> payloads;  // object models beside the save
         std::vector<engine::world::RegionKey> keys;
     };

@@ -20,8 +20,8 @@ double msSince(Clock::time_point t) {
 }
 
 // The order scene keys are joined in: the reader does not care, a reader of the text does.
-constexpr const char* kKeyOrder[] = {"world",  "material", "object", "camera",
-                                     "sky",    "indirect", "path"};
+constexpr const char* kKeyOrder[] = {"world", "material", "object", "camera",
+                                     "sky",   "indirect", "path"};
 
 std::string regionWhere(const fs::path& path, world::RegionKey k) {
     return fmt::format("{}: region ({}, {}, {})", path.string(), k.x, k.y, k.z);
@@ -84,9 +84,8 @@ std::string sceneTextOfKeys(const std::map<std::string, std::string>& keys) {
     for (const char* name : kKeyOrder)
         if (auto it = keys.find(name); it != keys.end()) add(it->second);
     for (const auto& [name, t] : keys)
-        if (std::find_if(std::begin(kKeyOrder), std::end(kKeyOrder), [&](const char* k) {
-                return name == k;
-            }) == std::end(kKeyOrder))
+        if (std::find_if(std::begin(kKeyOrder), std::end(kKeyOrder),
+                         [&](const char* k) { return name == k; }) == std::end(kKeyOrder))
             add(t);
     return text;
 }
@@ -158,9 +157,7 @@ Result<StoreWriteReport> writeWorldStore(const world::Scene& scene, const fs::pa
         return makeError("{}: not a world store; refusing to overwrite it", path.string());
     // A new file is made under a temporary name, so a crash never leaves a half store at `path`;
     // an existing store is replaced in one transaction (SQLite's own atomic commit).
-    const fs::path target =
-        exists ? path
-               : temporaryPathFor(path);
+    const fs::path target = exists ? path : temporaryPathFor(path);
     if (!exists) {
         for (const char* suffix : {"", "-wal", "-shm"}) fs::remove(target.string() + suffix, ec);
     }
@@ -249,8 +246,8 @@ Result<world::Scene> loadWorldStore(const fs::path& path, std::optional<world::B
     } else {
         const world::Box b = box->intersect(scene->grid.bounds());
         if (b.empty())
-            return makeError("{}: the box lies outside the world ({}x{}x{})", path.string(),
-                             size.x, size.y, size.z);
+            return makeError("{}: the box lies outside the world ({}x{}x{})", path.string(), size.x,
+                             size.y, size.z);
         const glm::ivec3 lo = b.min / world::kBrickDim;
         const glm::ivec3 hi = (b.max + world::kBrickDim - 1) / world::kBrickDim;
         world::BrickGrid grid((hi - lo) * world::kBrickDim);

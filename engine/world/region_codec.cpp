@@ -1,10 +1,9 @@
 #include "world/region_codec.h"
 
-#include <zstd.h>
-
 #include <algorithm>
 #include <bit>
 #include <cstring>
+#include <zstd.h>
 
 #include "core/check.h"
 
@@ -72,13 +71,12 @@ EncodedRegion encodeRegion(const RegionSnapshot& region, int zstdLevel) {
     std::vector<std::uint8_t> raw;
     raw.reserve(kHeaderWords * 4 + region.cells.size() * 4 +
                 region.bricks.size() * sizeof(BrickVoxels));
-    const std::uint32_t header[kHeaderWords] = {
-        kMagic,
-        kVersion,
-        std::uint32_t(region.size.x),
-        std::uint32_t(region.size.y),
-        std::uint32_t(region.size.z),
-        std::uint32_t(region.bricks.size())};
+    const std::uint32_t header[kHeaderWords] = {kMagic,
+                                                kVersion,
+                                                std::uint32_t(region.size.x),
+                                                std::uint32_t(region.size.y),
+                                                std::uint32_t(region.size.z),
+                                                std::uint32_t(region.bricks.size())};
     put(raw, header, sizeof(header));
     put(raw, region.cells.data(), region.cells.size() * sizeof(std::uint32_t));
     for (const BrickVoxels& b : region.bricks) put(raw, b.data(), sizeof(BrickVoxels));
@@ -113,15 +111,13 @@ Result<RegionSnapshot> decodeRegion(RegionKey key, std::span<const std::uint8_t>
         return makeError("{}: not a zstd frame with a known size ({} bytes)", where, blob.size());
     if (declared < headerBytes || declared > maxBytes)
         return makeError("{}: payload of {} bytes, outside 24..{} for a region of {}x{}x{} cells",
-                         where, declared, maxBytes, expectedSize.x, expectedSize.y,
-                         expectedSize.z);
+                         where, declared, maxBytes, expectedSize.x, expectedSize.y, expectedSize.z);
     std::vector<std::uint8_t> raw(declared);
     const std::size_t n = ZSTD_decompress(raw.data(), raw.size(), blob.data(), blob.size());
     if (ZSTD_isError(n))
         return makeError("{}: damaged compressed data: {}", where, ZSTD_getErrorName(n));
     if (n != declared)
-        return makeError("{}: {} bytes after decompression, the frame says {}", where, n,
-                         declared);
+        return makeError("{}: {} bytes after decompression, the frame says {}", where, n, declared);
 
     std::uint32_t header[kHeaderWords];
     std::memcpy(header, raw.data(), sizeof(header));
@@ -152,8 +148,7 @@ Result<RegionSnapshot> decodeRegion(RegionKey key, std::span<const std::uint8_t>
         const std::uint32_t v = s.cells[i];
         if (BrickGrid::cellIsBrick(v)) {
             if (v != nextBrick)
-                return makeError("{}: cell {} names brick {}, expected {}", where, i, v,
-                                 nextBrick);
+                return makeError("{}: cell {} names brick {}, expected {}", where, i, v, nextBrick);
             ++nextBrick;
         } else if (v != shared::CELL_EMPTY &&
                    ((v & ~(shared::CELL_HOMOGENEOUS | shared::CELL_MATERIAL_MASK)) != 0 ||

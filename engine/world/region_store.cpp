@@ -1,7 +1,6 @@
 #include "world/region_store.h"
 
 #include <sqlite3.h>
-
 #include <sstream>
 
 namespace engine::world {
@@ -131,8 +130,7 @@ static Result<sqlite3*> openDatabase(const fs::path& path, int flags) {
 
 Result<RegionStore> RegionStore::open(const fs::path& path, bool writable) {
     std::error_code ec;
-    if (!fs::is_regular_file(path, ec))
-        return makeError("{}: no such world store", path.string());
+    if (!fs::is_regular_file(path, ec)) return makeError("{}: no such world store", path.string());
     auto db = openDatabase(path, writable ? SQLITE_OPEN_READWRITE : SQLITE_OPEN_READONLY);
     if (!db) return db.error();
     RegionStore store;
@@ -183,17 +181,18 @@ Result<RegionStore> RegionStore::openOrCreate(const fs::path& path, glm::ivec3 w
             "BEGIN IMMEDIATE; {} PRAGMA application_id={}; PRAGMA user_version={}; "
             "INSERT INTO meta VALUES('format', '{}'), ('world_size', '{}'), "
             "('region_cells', '{}'), ('commits', '0'); COMMIT;",
-            kSchema, kApplicationId, kFormatVersion, kFormatVersion,
-            sizeText(worldSizeInVoxels), regionCells);
+            kSchema, kApplicationId, kFormatVersion, kFormatVersion, sizeText(worldSizeInVoxels),
+            regionCells);
         if (exec(store.mDb, sql.c_str()) != SQLITE_OK) {
             Status s = store.fail("cannot make the world store");
             exec(store.mDb, "ROLLBACK");
             return s.error();
         }
     } else if (*id != kApplicationId) {
-        return makeError("{}: not a world store (SQLite application id {:#x}); refusing to "
-                         "overwrite it",
-                         path.string(), std::uint32_t(*id));
+        return makeError(
+            "{}: not a world store (SQLite application id {:#x}); refusing to "
+            "overwrite it",
+            path.string(), std::uint32_t(*id));
     }
     if (Status s = store.readMeta(); !s) return s.error();
     return store;
@@ -203,8 +202,8 @@ Status RegionStore::readMeta() {
     const auto version = queryInt(mDb, "PRAGMA user_version");
     if (!version) return fail("cannot read the store's header");
     if (*version != kFormatVersion)
-        return makeError("{}: world store format {}, this build reads {}", mPath.string(),
-                         *version, kFormatVersion);
+        return makeError("{}: world store format {}, this build reads {}", mPath.string(), *version,
+                         kFormatVersion);
     Statement s(mDb, "SELECT key, value FROM meta");
     if (!s.ok()) return fail("cannot read the store's meta table");
     std::map<std::string, std::string> meta;
@@ -260,8 +259,7 @@ Status RegionStore::forEachRegion(
 }
 
 Result<std::vector<RegionRow>> RegionStore::listRegions() const {
-    Statement s(mDb,
-                "SELECT x, y, z, raw_bytes, length(data) FROM regions ORDER BY z, y, x");
+    Statement s(mDb, "SELECT x, y, z, raw_bytes, length(data) FROM regions ORDER BY z, y, x");
     if (!s.ok()) return fail("cannot list the regions");
     std::vector<RegionRow> rows;
     int rc;
@@ -335,10 +333,10 @@ Status RegionStore::putSceneKey(const std::string& name, const std::string& toml
 Status RegionStore::commitTransaction(std::optional<glm::ivec3> worldSizeInVoxels) {
     const std::uint64_t commits = mInfo.commits + 1;
     const glm::ivec3 size = worldSizeInVoxels.value_or(mInfo.worldSizeInVoxels);
-    const std::string meta =
-        fmt::format("UPDATE meta SET value = '{}' WHERE key = 'commits'; "
-                    "UPDATE meta SET value = '{}' WHERE key = 'world_size';",
-                    commits, sizeText(size));
+    const std::string meta = fmt::format(
+        "UPDATE meta SET value = '{}' WHERE key = 'commits'; "
+        "UPDATE meta SET value = '{}' WHERE key = 'world_size';",
+        commits, sizeText(size));
     if (exec(mDb, meta.c_str()) != SQLITE_OK) return failTransaction("cannot save");
     if (exec(mDb, "COMMIT") != SQLITE_OK) return failTransaction("cannot commit the save");
     mInTransaction = false;

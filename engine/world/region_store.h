@@ -46,7 +46,7 @@ struct RegionRow {
 struct StoreCommit {
     bool replaceAll = false;  // delete every region and scene key first (a whole-world write)
     std::vector<EncodedRegion> put;
-    std::vector<RegionKey> erase;  // regions now empty
+    std::vector<RegionKey> erase;                                // regions now empty
     std::vector<std::pair<std::string, std::string>> sceneKeys;  // replaces the keys given
     std::optional<glm::ivec3> worldSizeInVoxels;                 // a new world size
 };

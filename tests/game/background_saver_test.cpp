@@ -4,13 +4,12 @@
 // check, and holds every region's previous or new state — all of them the same save's.
 #include "game/background_saver.h"
 
+#include <cstdlib>
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
-#include <unistd.h>
-
-#include <cstdlib>
 #include <thread>
+#include <unistd.h>
 
 #include "core/hash.h"
 #include "io/vdb_test_util.h"
@@ -31,8 +30,8 @@ Scene sandbox() {
     return std::move(*scene);
 }
 
-game::BackgroundSaver::Done saveAndWait(game::BackgroundSaver& saver, Scene& scene, const fs::path& p,
-                                  std::uint64_t version = 1) {
+game::BackgroundSaver::Done saveAndWait(game::BackgroundSaver& saver, Scene& scene,
+                                        const fs::path& p, std::uint64_t version = 1) {
     auto r = saver.request(scene, p, false, version);
     EXPECT_TRUE(r.ok()) << r.error().message;
     saver.waitIdle();
@@ -122,7 +121,8 @@ std::vector<int> readMarkers(const engine::world::BrickGrid& grid) {
     return out;
 }
 
-// VOX_STORE_CRASH_RUNS sets the number of kills (200 for the acceptance: tools/store_crash_test.sh).
+// VOX_STORE_CRASH_RUNS sets the number of kills (200 for the acceptance:
+// tools/store_crash_test.sh).
 TEST(BackgroundSaver, KilledDuringSavesLeavesPreviousOrNewState) {
     vox_test::ScratchDir dir("crash");
     const char* env = std::getenv("VOX_STORE_CRASH_RUNS");
@@ -165,8 +165,8 @@ TEST(BackgroundSaver, KilledDuringSavesLeavesPreviousOrNewState) {
         ::kill(child, SIGKILL);
         int status = 0;
         ::waitpid(child, &status, 0);
-        ASSERT_TRUE(WIFSIGNALED(status)) << "run " << run << ": the child ended by itself, status "
-                                         << status;
+        ASSERT_TRUE(WIFSIGNALED(status))
+            << "run " << run << ": the child ended by itself, status " << status;
         std::uint32_t reported = 0, n = 0;
         while (::read(fd[0], &n, sizeof n) == sizeof n) reported = n;
         ::close(fd[0]);

@@ -113,7 +113,8 @@ TEST(StoreWorld, SceneFileNamingTheStoreMapsMaterialsByName) {
 
 TEST(StoreWorld, BoxReadsOnlyTheRegionsItMeets) {
     vox_test::ScratchDir dir("box");
-    auto scene = engine::scene::loadSceneFile(engine::scene::resolveWorldPath("terrain_1024").value());
+    auto scene =
+        engine::scene::loadSceneFile(engine::scene::resolveWorldPath("terrain_1024").value());
     ASSERT_TRUE(scene.ok());
     ASSERT_TRUE(engine::scene::writeWorldStore(*scene, dir / "w.db").ok());
     const engine::world::Box box{{130, 0, 260}, {300, 200, 333}};

@@ -2,10 +2,9 @@
 // error line naming the row, never a crash.
 #include "world/region_codec.h"
 
+#include <cstring>
 #include <gtest/gtest.h>
 #include <zstd.h>
-
-#include <cstring>
 
 #include "world/random_worlds.h"
 
@@ -22,9 +21,8 @@ BrickGrid throughCodec(const BrickGrid& grid, std::size_t paletteSize) {
             for (int x = 0; x < n.x; ++x) {
                 const RegionKey key{x, y, z};
                 const EncodedRegion e = encodeRegion(snapshotRegion(grid, key));
-                auto back = decodeRegion(key, e.blob,
-                                         regionCells(key, grid.sizeInCells()).size(), paletteSize,
-                                         "test");
+                auto back = decodeRegion(key, e.blob, regionCells(key, grid.sizeInCells()).size(),
+                                         paletteSize, "test");
                 EXPECT_TRUE(back.ok()) << back.error().message;
                 if (back) writeRegion(*back, out);
             }
@@ -87,8 +85,9 @@ TEST(RegionCodec, RefusesDamagedAndHostilePayloads) {
 
     const std::uint32_t cells = std::uint32_t(size.x * size.y * size.z);
     const auto header = [&](std::uint32_t bricks) {
-        return std::vector<std::uint32_t>{0x47525856u, 1, std::uint32_t(size.x),
-                                          std::uint32_t(size.y), std::uint32_t(size.z), bricks};
+        return std::vector<std::uint32_t>{0x47525856u,           1,
+                                          std::uint32_t(size.x), std::uint32_t(size.y),
+                                          std::uint32_t(size.z), bricks};
     };
     // Absurd brick count, a size other than the region's, bad magic, a brick numbered twice.
     {

@@ -2,13 +2,12 @@
 // damaged) refused with one line, and a full disk during a commit keeping the previous state.
 #include "world/region_store.h"
 
+#include <fstream>
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
-
-#include <fstream>
 
 #include "core/hash.h"
 #include "io/vdb_test_util.h"
@@ -126,8 +125,8 @@ TEST(RegionStore, OneVoxelEditCommitsOneRegion) {
     scene.grid.set(p, MaterialId(scene.grid.get(p) % 4 + 1));
     const std::vector<RegionKey> dirty = scene.grid.regionsEditedAfter(saved);
     ASSERT_EQ(dirty.size(), 1u);
-    auto report = engine::scene::commitSnapshot(
-        engine::scene::snapshotStore(scene, dirty, false), path, std::uint64_t(1));
+    auto report = engine::scene::commitSnapshot(engine::scene::snapshotStore(scene, dirty, false),
+                                                path, std::uint64_t(1));
     ASSERT_TRUE(report.ok()) << report.error().message;
     EXPECT_LE(report->regionsWritten + report->regionsErased, 2u);
     EXPECT_EQ(report->regionsWritten, 1u);
