@@ -14,8 +14,17 @@ namespace engine::scene {
 
 // The scene's settings as knob values (its [indirect] mode and cache knobs).
 std::vector<lighting::KnobValue> sceneLightingValues(const world::Scene& scene);
-// Defaults, then the scene's values (when given), then `overrides`; normalised and validated.
-Result<lighting::LightingSettings> lightingFor(const world::Scene* scene,
-                                               std::span<const lighting::KnobValue> overrides);
+// Defaults, then the entry point's own defaults (`commandDefaults`), then the scene's values
+// (when given), then `overrides`; normalised and validated.
+Result<lighting::LightingSettings> lightingFor(
+    const world::Scene* scene, std::span<const lighting::KnobValue> overrides,
+    std::span<const lighting::KnobValue> commandDefaults = {});
+
+// What a player is shown unless the scene or the command line say otherwise (`vox play`,
+// `vox render`, `vox capture`): the image reconstructed at the display's size and denoised, the
+// exposure metered; `fullLighting` adds the irradiance cache (whose rays see the sky) and, for a
+// scene that asks for no indirect method, the DVF sky. Without `autoExposure` (a fixed --exposure
+// was given) the exposure stays fixed.
+std::vector<lighting::KnobValue> playerDefaults(bool fullLighting, bool autoExposure = true);
 
 }  // namespace engine::scene

@@ -25,6 +25,7 @@
 #include "lighting_options.h"
 #include "number_options.h"
 #include "render/frame_plan.h"
+#include "scene/scene_lighting.h"
 #include "tool_gpu.h"
 
 namespace vox {
@@ -74,7 +75,7 @@ int runCapture(const CaptureOptions& o) {
                           dir,   o.exr, o.exposure};
     auto seconds =
         renderCapture(**ctx, *setup, request, [&](const CapturedFrame& f) -> engine::Status {
-            sheet.place(f.index, f.images.rgba8, f.images.width, f.images.height);
+            sheet.place(f.index, f.images.rgba8, f.images.displayWidth, f.images.displayHeight);
             rows.push_back(f.row);
             return {};
         });
@@ -151,6 +152,9 @@ void addCaptureCommand(CLI::App& app, int& exitCode) {
         ->capture_default_str()
         ->check(numberIn(kExposureRange));
     addLightingOptions(*cmd, o->lighting);
+    // The denoised display; the exposure stays --exposure's, so a frame rendered by any task of a
+    // job is exposed as in one run.
+    o->lighting.commandDefaults = engine::scene::playerDefaults(false, false);
     job::addJobOptions(*cmd, o->job);
     cmd->add_option("--join", o->join,
                     "Join the job in DIR: one CSV, contact sheet and MP4; refuses while frames are "
