@@ -262,7 +262,7 @@ engine::Status Sandbox::init() {
     mRenderer = std::make_unique<engine::render::Renderer>(*mCtx);
     mHud.visible = mOptions.hud;
     auto lighting =
-        engine::scene::lightingFor(&mScene, mOptions.lighting, engine::scene::playerDefaults(true));
+        engine::scene::lightingFor(&mScene, mOptions.lighting, engine::scene::playerDefaults());
     if (!lighting) return lighting.error();
     mLighting = *lighting;
 

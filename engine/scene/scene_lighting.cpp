@@ -32,15 +32,11 @@ Result<lighting::LightingSettings> lightingFor(
     return lighting::mergeLighting(layers);
 }
 
-std::vector<lighting::KnobValue> playerDefaults(bool fullLighting, bool autoExposure) {
+std::vector<lighting::KnobValue> playerDefaults(bool autoExposure) {
     const char* where = "the player's defaults";
     std::vector<lighting::KnobValue> values{
         {lighting::knobForOption("display"), "denoised", where}};
     if (autoExposure) values.push_back({lighting::knobForOption("auto-exposure"), "on", where});
-    if (fullLighting) {
-        values.push_back({lighting::knobForOption("indirect"), "cache", where});
-        values.push_back({lighting::knobForOption("sky"), "dvf", where});
-    }
     return values;
 }
 

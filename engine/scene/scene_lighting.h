@@ -21,10 +21,8 @@ Result<lighting::LightingSettings> lightingFor(
     std::span<const lighting::KnobValue> commandDefaults = {});
 
 // What a player is shown unless the scene or the command line say otherwise (`vox play`,
-// `vox render`, `vox capture`): the image reconstructed at the display's size and denoised, the
-// exposure metered; `fullLighting` adds the irradiance cache (whose rays see the sky) and, for a
-// scene that asks for no indirect method, the DVF sky. Without `autoExposure` (a fixed --exposure
-// was given) the exposure stays fixed.
-std::vector<lighting::KnobValue> playerDefaults(bool fullLighting, bool autoExposure = true);
+// `vox render`): the image reconstructed at the display's size and denoised, the exposure
+// metered. Without `autoExposure` (a fixed --exposure was given) the exposure stays fixed.
+std::vector<lighting::KnobValue> playerDefaults(bool autoExposure = true);
 
 }  // namespace engine::scene

@@ -17,10 +17,11 @@ namespace {
 // A floor of two albedos in a 2-voxel checkerboard, a wall casting a hard sun shadow across it,
 // and four small lamps: one ReSTIR sample per pixel is noisy, the sun's edge is sharp.
 Scene checkerboard() {
-    Scene scene = paletteScene({32, 16, 32},
-                               {Material{"light", glm::vec3(0.8f)}, Material{"dark", glm::vec3(0.2f)},
-                                Material{"lamp", glm::vec3(0.7f), glm::vec3(1.0f, 0.9f, 0.7f), 8.0f}},
-                               false);
+    Scene scene =
+        paletteScene({32, 16, 32},
+                     {Material{"light", glm::vec3(0.8f)}, Material{"dark", glm::vec3(0.2f)},
+                      Material{"lamp", glm::vec3(0.7f), glm::vec3(1.0f, 0.9f, 0.7f), 8.0f}},
+                     false);
     for (int z = 0; z < 32; ++z)
         for (int x = 0; x < 32; ++x) scene.grid.set({x, 0, z}, ((x / 2 + z / 2) % 2) ? 1 : 2);
     fillBox(scene.grid, Box{{0, 1, 20}, {32, 9, 21}}, 1);  // the wall
@@ -89,7 +90,8 @@ TEST_F(Denoiser, KeepsVoxelFaceAndShadowEdges) {
     Renderer truthRenderer(gpu_testing::context());
     const FrameImages truth = renderFrames(truthRenderer, scene, truthSettings, frame(size), 256);
     Renderer renderer(gpu_testing::context());
-    const FrameImages denoised = renderFrames(renderer, scene, restir(Display::Denoised, false), frame(size), 32);
+    const FrameImages denoised =
+        renderFrames(renderer, scene, restir(Display::Denoised, false), frame(size), 32);
 
     // Contrast between neighbouring pixels on different floor voxels (different albedo, or lit and
     // shadowed): the sum of |difference| over the pairs the G-buffer says straddle such an edge.
@@ -100,7 +102,8 @@ TEST_F(Denoiser, KeepsVoxelFaceAndShadowEdges) {
                 const std::size_t a = std::size_t(y) * size + x, b = a + 1;
                 const auto& ga = truth.gbuffer[a];
                 const auto& gb = truth.gbuffer[b];
-                if (ga.voxel.y != 0 || gb.voxel.y != 0 || ga.voxel.w != 3 || gb.voxel.w != 3) continue;
+                if (ga.voxel.y != 0 || gb.voxel.y != 0 || ga.voxel.w != 3 || gb.voxel.w != 3)
+                    continue;
                 if (glm::ivec3(ga.voxel) == glm::ivec3(gb.voxel)) continue;
                 sum += std::abs(luminance(image[a]) - luminance(image[b]));
             }

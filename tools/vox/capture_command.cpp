@@ -152,9 +152,6 @@ void addCaptureCommand(CLI::App& app, int& exitCode) {
         ->capture_default_str()
         ->check(numberIn(kExposureRange));
     addLightingOptions(*cmd, o->lighting);
-    // The denoised display; the exposure stays --exposure's, so a frame rendered by any task of a
-    // job is exposed as in one run.
-    o->lighting.commandDefaults = engine::scene::playerDefaults(false, false);
     job::addJobOptions(*cmd, o->job);
     cmd->add_option("--join", o->join,
                     "Join the job in DIR: one CSV, contact sheet and MP4; refuses while frames are "

@@ -246,8 +246,7 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
     addLightingOptions(*cmd, o->lighting);
     cmd->callback([o, cmd, &exitCode] {
         // A fixed --exposure is the exposure: not metered.
-        o->lighting.commandDefaults =
-            engine::scene::playerDefaults(false, cmd->count("--exposure") == 0);
+        o->lighting.commandDefaults = engine::scene::playerDefaults(cmd->count("--exposure") == 0);
         exitCode = runRender(*o);
     });
 }

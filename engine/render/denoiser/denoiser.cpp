@@ -74,11 +74,11 @@ void Denoiser::prepare(const FrameChanges& changes, const FrameInput& in, gpu::U
 void Denoiser::record(FrameCommands& commands, const FrameBuffers& frame) {
     gpu::CommandList& cmd = commands.current();
     const std::uint32_t now = frame.parity, then = frame.parity ^ 1u;
-    mTemporal.record(cmd, frame.scene,
-                     {frame.frameParams, mParams[0], frame.gbuffer, frame.prevGbuffer,
-                      frame.radiance, mHistory[then], mHistory[now], mMoments[then], mMoments[now],
-                      mFiltered[0]},
-                     frame.size);
+    mTemporal.record(
+        cmd, frame.scene,
+        {frame.frameParams, mParams[0], frame.gbuffer, frame.prevGbuffer, frame.radiance,
+         mHistory[then], mHistory[now], mMoments[then], mMoments[now], mFiltered[0]},
+        frame.size);
     for (std::uint32_t i = 0; i < mPasses; ++i) {
         mAtrous.record(cmd, frame.scene,
                        {frame.frameParams, mParams[i + 1], frame.gbuffer, frame.radiance,

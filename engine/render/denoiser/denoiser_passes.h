@@ -20,17 +20,16 @@ struct DenoiserTemporalIo {
     gpu::Buffer& moments;            // write
     gpu::Buffer& filtered;           // write: the a-trous passes' input
     auto bindings() const {
-        return std::to_array<PassBinding>(
-            {{shared::DENOISER_BINDING_FRAME, &frameParams},
-             {shared::DENOISER_BINDING_PARAMS, &params},
-             {shared::DENOISER_BINDING_GBUFFER, &gbuffer},
-             {shared::DENOISER_BINDING_PREV_GBUFFER, &prevGbuffer},
-             {shared::DENOISER_BINDING_RADIANCE, &radiance},
-             {shared::DENOISER_BINDING_PREV_HISTORY, &prevHistory},
-             {shared::DENOISER_BINDING_HISTORY, &history},
-             {shared::DENOISER_BINDING_PREV_MOMENTS, &prevMoments},
-             {shared::DENOISER_BINDING_MOMENTS, &moments},
-             {shared::DENOISER_BINDING_FILTERED, &filtered}});
+        return std::to_array<PassBinding>({{shared::DENOISER_BINDING_FRAME, &frameParams},
+                                           {shared::DENOISER_BINDING_PARAMS, &params},
+                                           {shared::DENOISER_BINDING_GBUFFER, &gbuffer},
+                                           {shared::DENOISER_BINDING_PREV_GBUFFER, &prevGbuffer},
+                                           {shared::DENOISER_BINDING_RADIANCE, &radiance},
+                                           {shared::DENOISER_BINDING_PREV_HISTORY, &prevHistory},
+                                           {shared::DENOISER_BINDING_HISTORY, &history},
+                                           {shared::DENOISER_BINDING_PREV_MOMENTS, &prevMoments},
+                                           {shared::DENOISER_BINDING_MOMENTS, &moments},
+                                           {shared::DENOISER_BINDING_FILTERED, &filtered}});
     }
 };
 

@@ -64,8 +64,8 @@ void TemporalUpsampling::prepare(const FrameChanges& changes, const FrameInput& 
 
     shared::UpsamplingParams p{};
     // A new world or new settings start over; a new render size does not (the display is kept).
-    p.flags = mRestart || changes.newWorld || changes.settingsChanged ? shared::UPSAMPLING_RESTART
-                                                                      : 0u;
+    p.flags =
+        mRestart || changes.newWorld || changes.settingsChanged ? shared::UPSAMPLING_RESTART : 0u;
     p.maxHistory = float(std::max(in.lighting.display.resolveHistory, 1u));
     p.clipGamma = 1.25f;
     uploader.write(mParams, 0, &p, sizeof(p));
