@@ -275,7 +275,8 @@ engine::Status Sandbox::init() {
     mPresenter = std::make_unique<engine::gpu::Presenter>(*mCtx, mWindow->framebufferSize(), true);
     mRenderer = std::make_unique<engine::render::Renderer>(*mCtx);
     mHud.visible = mOptions.hud;
-    auto lighting = engine::scene::lightingFor(&mScene, mOptions.lighting);
+    auto lighting =
+        engine::scene::lightingFor(&mScene, mOptions.lighting, engine::scene::playerDefaults());
     if (!lighting) return lighting.error();
     mLighting = *lighting;
 
@@ -454,6 +455,9 @@ Sandbox::RenderedFrame Sandbox::renderFrame(glm::uvec2 framebuffer) {
     glm::uvec2 size = renderSize(framebuffer);
     settings.width = size.x;
     settings.height = size.y;
+    // A reconstructing display (--display upsampled or denoised) resolves to the window's size.
+    settings.displayWidth = framebuffer.x;
+    settings.displayHeight = framebuffer.y;
     settings.exposure = mExposure;
     settings.timeSeconds =
         mTime;  // dynamic objects: the script clock when scripted, else wall clock
@@ -794,14 +798,15 @@ void Sandbox::writeRenderImage(const fs::path& path) {
     engine::render::FrameImages images = mRenderer->readback();
     std::error_code ec;
     if (path.has_parent_path()) fs::create_directories(path.parent_path(), ec);
-    engine::Status s = engine::io::writePng(path, images.width, images.height, images.rgba8);
+    engine::Status s =
+        engine::io::writePng(path, images.displayWidth, images.displayHeight, images.rgba8);
     if (!s) {
         message("screenshot failed: " + s.error().message);
         return;
     }
     logView("screenshot", path);
-    message(fmt::format("screenshot {} ({}x{}, rendered image)", path.string(), images.width,
-                        images.height));
+    message(fmt::format("screenshot {} ({}x{}, rendered image)", path.string(), images.displayWidth,
+                        images.displayHeight));
 }
 
 void Sandbox::writeWindowCapture(const fs::path& path) {
