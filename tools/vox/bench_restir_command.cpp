@@ -35,11 +35,10 @@ void printFooter(const RestirBenchOptions& o, double seconds, const std::filesys
         "\nratio = row / versus row per seed, median (min–max): above 1 favours the versus row "
         "(ReSTIR)\n");
     std::printf(
-        "MSE×time: the work-normalised ratio; its interval: the sign test's over seeds (MSE) times "
-        "over %u+ "
-        "interleaved rounds (time); \"> 1\" (the versus row wins) or \"< 1\" only when it excludes "
-        "1 with %.0f %% "
-        "coverage, else unresolved\n",
+        "MSE×cost: the work-normalised ratio, cost = counted work at per-kind costs calibrated "
+        "in %u+ interleaved rounds; its interval: the sign test's over seeds (MSE) times over the "
+        "rounds' fits (cost); \"> 1\" (the versus row wins) or \"< 1\" only when it excludes 1 "
+        "with %.0f %% coverage, else unresolved\n",
         kCostRounds.minRounds, 100.0 * o.confidence);
     std::printf("wall time %.0f s (references included; cached ones are read back)\n", seconds);
     std::printf("wrote    %s\nwrote    %s\n", json.string().c_str(), csv.string().c_str());

@@ -12,7 +12,9 @@
 
 #include "core/error.h"
 #include "lighting/lighting_settings.h"
+#include "metrics/cost_model.h"
 #include "metrics/interleaved_rounds.h"
+#include "render/frame_work.h"
 #include "render/renderer.h"
 #include "thesis_scenes.h"
 #include "world/scene.h"
@@ -42,7 +44,7 @@ struct RestirBenchOptions {
     std::string markdown;
 };
 
-// Which knob a row scales to ReSTIR's frame time.
+// Which knob a row scales to ReSTIR's cost (the cost model's, from counted work).
 enum class EqualTime { None, ShadowRays, Candidates };
 
 struct Row {
@@ -55,13 +57,22 @@ struct Row {
 struct RowResult {
     std::vector<double> ms, mse, mae, meanRatio;  // one per seed
     std::uint32_t scaledTo = 0;                   // shadow rays or candidates (scaled rows)
-    std::vector<double> roundMs;  // the interleaved timing's rounds, at the fitted settings
+    engine::render::FrameWork work;               // one frame's, at the fitted settings
 };
 
-// The interleaved timing of all rows at their fitted settings: enough rounds that a time ratio's
-// interval covers 97 %, so that with 5 seeds' min-max of error ratios (93.75 %) the product still
-// covers 90 %.
+// The cost model's calibration: every calibration point timed in interleaved rounds (at least
+// 10, so that a cost ratio's interval covers 97 % and, with 5 seeds' min-max of error ratios at
+// 93.75 %, the product still covers 90 %).
 constexpr engine::metrics::RoundsPlan kCostRounds{1, 10, 16, 0.97, 0.03};
+
+// A setting timed to calibrate the cost model: each row as given, and each scaled row at two
+// counts of its scaled knob (so the model sees that knob's slope).
+struct CalibrationPoint {
+    std::string label;
+    engine::lighting::LightingSettings lighting;
+    engine::render::FrameWork work;
+    std::vector<double> roundMs;  // its time in each interleaved round
+};
 
 // The rows: the default rows (per --sampling value for those that resample), then the variants.
 engine::Result<std::vector<Row>> rowsOf(const RestirBenchOptions& o);
@@ -92,16 +103,21 @@ struct RestirSetup {
 struct SceneResults {
     std::vector<RowResult> rows;
     std::uint32_t emitters = 0;
-    double targetMs = 0.0;  // the yardstick's median time: the equal time
+    double targetMs = 0.0;                      // the yardstick's median time
+    std::vector<CalibrationPoint> calibration;  // the first is the yardstick: the cost unit
+    engine::metrics::CostModel model;           // per-kind costs, in the yardstick's time
 };
+
+// Row i's cost over row v's under the scene's model, with the calibration rounds' interval.
+engine::metrics::MedianInterval costRatio(const SceneResults& s, std::size_t i, std::size_t v);
 
 // Progress over all scenes, rows and seeds, for the lines on stderr.
 struct RestirProgress {
     std::size_t done = 0, total = 0;
 };
 
-// One scene: the scaled rows fitted to the yardstick's time, every row timed in interleaved
-// rounds, then every row per seed.
+// One scene: the cost model calibrated in interleaved rounds, the scaled rows set to the
+// yardstick's cost under it, then every row per seed.
 engine::Result<SceneResults> measureScene(const RestirSetup& setup, engine::world::Scene& scene,
                                           RestirProgress& progress);
 
