@@ -67,8 +67,8 @@ def bars(points, key):
     """Error bars (lower, upper distances) for x (cost) and y (error), or None without them."""
     if not all(p["costed"] for p in points):
         return None, None
-    xerr = [[p["ms"] - p["ms_low"] for p in points], [p["ms_high"] - p["ms"] for p in points]]
-    yerr = [[p[key] - p[key + "_low"] for p in points], [p[key + "_high"] - p[key] for p in points]]
+    xerr = [[max(p["ms"] - p["ms_low"], 0) for p in points], [max(p["ms_high"] - p["ms"], 0) for p in points]]
+    yerr = [[max(p[key] - p[key + "_low"], 0) for p in points], [max(p[key + "_high"] - p[key], 0) for p in points]]
     return xerr, yerr
 
 

@@ -178,6 +178,7 @@ int runRecommend(const RecommendOptions& o) {
     struct Candidate {
         std::string setting;
         double ms, mae, costLow, costHigh, maeHigh;
+        bool spread;  // seeds and intervals measured
     };
     std::vector<Candidate> rows;
     while (std::getline(in, line)) {
@@ -196,7 +197,8 @@ int runRecommend(const RecommendOptions& o) {
                     std::atof(rest[4].c_str()),
                     0.0,
                     0.0,
-                    0.0};
+                    0.0,
+                    rest.size() >= 16};
         c.costLow = c.costHigh = c.ms;
         c.maeHigh = c.mae;
         if (rest.size() >= 16) {
@@ -239,6 +241,12 @@ int runRecommend(const RecommendOptions& o) {
         best->costHigh, rows.size());
     // Verdicts: the target met by every seed, and cheaper than the runner-up beyond the cost
     // intervals; else not resolved at the sweep's budget (more --seeds).
+    if (!best->spread) {  // one measurement: nothing to resolve with
+        std::printf(
+            "  meets the target: not resolved at this budget (one measurement per "
+            "setting)\n");
+        return 0;
+    }
     std::printf("  meets the target: %s\n",
                 best->maeHigh <= o.targetMae
                     ? "yes, every seed"
