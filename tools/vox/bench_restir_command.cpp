@@ -38,8 +38,8 @@ void printFooter(const RestirBenchOptions& o, double seconds, const std::filesys
         "MSE×cost: the work-normalised ratio, cost = counted work at per-kind costs calibrated "
         "in %u+ interleaved rounds; its interval: the sign test's over seeds (MSE) times over the "
         "rounds' fits (cost); \"> 1\" (the versus row wins) or \"< 1\" only when it excludes 1 "
-        "with %.0f %% coverage, else unresolved\n",
-        kCostRounds.minRounds, 100.0 * o.confidence);
+        "(by %.0f %%) with %.0f %% coverage, else unresolved\n",
+        kCostRounds.minRounds, 100.0 * o.noise, 100.0 * o.confidence);
     std::printf("wall time %.0f s (references included; cached ones are read back)\n", seconds);
     std::printf("wrote    %s\nwrote    %s\n", json.string().c_str(), csv.string().c_str());
 }
@@ -147,6 +147,11 @@ void addBenchRestirCommand(CLI::App& bench, int& exitCode) {
                     "%: 0.95 needs 6)")
         ->capture_default_str()
         ->check(numberIn(engine::closedRange(0.5, 0.999)));
+    cmd->add_option("--noise", o->noise,
+                    "A verdict needs its interval to exclude 1 by this fraction (a smaller "
+                    "difference is within the cost model's own error)")
+        ->capture_default_str()
+        ->check(numberIn(engine::closedRange(0.0, 1.0)));
     cmd->add_flag(
         "--quick", o->quick,
         "A first look: 64x40, 8 frames, 256 spp reference (over --size, --frames, --ref-spp)");

@@ -34,8 +34,10 @@ struct RestirBenchOptions {
     std::string rows = "restir,restir-unbiased,ris,uniform";
     std::string sampling;  // empty: the sampling knob's default
     std::vector<std::string> variants;
-    std::string versus;          // empty: every ReSTIR row at defaults (one per --sampling value)
-    double confidence = 0.9;     // of the verdicts' intervals; 5 seeds' min-max covers 93.75 %
+    std::string versus;       // empty: every ReSTIR row at defaults (one per --sampling value)
+    double confidence = 0.9;  // of the verdicts' intervals; 5 seeds' min-max covers 93.75 %
+    double noise = 0.05;      // a verdict's interval must exclude 1 by this much (criterion.rs's
+                              // noise threshold): the cost model's own fit is 1-3 % off its points
     std::string clock = "auto";  // gpu: fastest frame's GPU timestamps; cpu: the process's CPU
                                  // time; auto: cpu on a CPU device
     bool quick = false;

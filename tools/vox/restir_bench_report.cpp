@@ -49,11 +49,12 @@ engine::metrics::MedianInterval workNormalisedRatio(const SceneResults& s, std::
                            costRatio(s, i, v));
 }
 
-std::string jsonInterval(const engine::metrics::MedianInterval& m, double confidence) {
+std::string jsonInterval(const engine::metrics::MedianInterval& m, double confidence,
+                         double noise = 0.0) {
     return fmt::format(
         "{{\"median\": {}, \"low\": {}, \"high\": {}, \"coverage\": {}, \"verdict\": \"{}\"}}",
         m.median, m.low, m.high, m.covered,
-        engine::metrics::verdictName(engine::metrics::verdictOf(m, confidence)));
+        engine::metrics::verdictName(engine::metrics::verdictOf(m, confidence, noise)));
 }
 
 // The calibration: per-kind costs (in the yardstick's frame time) with the rounds' intervals,
@@ -207,8 +208,8 @@ void RestirReport::addVersus(const RowResult& r, std::size_t i, const SceneResul
         SeedSummary msRatio =
             engine::metrics::summarize(engine::metrics::perSeedRatios(r.ms, d.ms));
         const engine::metrics::MedianInterval work = workNormalisedRatio(results, i, v, confidence);
-        const std::string_view verdict =
-            engine::metrics::verdictName(engine::metrics::verdictOf(work, confidence));
+        const std::string_view verdict = engine::metrics::verdictName(
+            engine::metrics::verdictOf(work, confidence, mSetup.options.noise));
         // The clock's view beside the model's: time per seed (rows interleaved A B .., .. B A).
         const engine::metrics::MedianInterval time =
             engine::metrics::medianInterval(engine::metrics::perSeedRatios(r.ms, d.ms), confidence);
@@ -219,7 +220,8 @@ void RestirReport::addVersus(const RowResult& r, std::size_t i, const SceneResul
             "\"mse_cost_ratio\": {}}}",
             k ? ", " : "", jsonString(mSetup.rows[v].name), jsonSummary(mseRatio),
             jsonSummary(maeRatio), jsonSummary(msRatio), jsonInterval(time, confidence),
-            jsonInterval(cost, kCostRounds.confidence), jsonInterval(work, confidence));
+            jsonInterval(cost, kCostRounds.confidence),
+            jsonInterval(work, confidence, mSetup.options.noise));
         if (v == i) {
             mTable += " — | — | — |";
             continue;

@@ -253,7 +253,9 @@ void printFront(const std::string& scene, const std::vector<RoundsOfPoint>& poin
             // The two points' cost ratio over the rounds' fits, not their separate intervals
             // (both move with the unit's time alike).
             const MedianInterval ratio = model.ratio(e.p->work.count, c.p->work.count, 0.9);
-            const bool cost = ratio.low > 1.0;
+            // Dearer beyond the noise threshold vox bench restir's verdicts use (5 %).
+            const bool cost =
+                engine::metrics::verdictOf(ratio, 0.9, 0.05) == engine::metrics::Verdict::Above;
             const bool error = e.mae.max < c.mae.min;
             verdict = cost && error ? "  more accurate and dearer than the previous: resolved"
                                     : "  against the previous: not resolved at this budget";
