@@ -54,6 +54,12 @@ std::vector<double> leastSquares(const std::vector<std::vector<double>>& rows,
             for (std::size_t j = 0; j < n; ++j) ata[i][j] += ai * r[active[j]] / scale[j];
         }
     }
+    // A ridge far below the data's scale: an underdetermined fit (two points, four kinds) gets the
+    // smallest solution instead of none, and a determined one is not moved measurably.
+    double trace = 0.0;
+    for (std::size_t i = 0; i < n; ++i) trace += ata[i][i];
+    for (std::size_t i = 0; i < n; ++i)
+        ata[i][i] += 1e-9 * trace / double(std::max<std::size_t>(n, 1));
     std::vector<double> x(kinds, 0.0), z;
     if (!solve(ata, atb, z)) return x;
     for (std::size_t j = 0; j < n; ++j) x[active[j]] = z[j] / scale[j];

@@ -65,6 +65,12 @@ int runRestirBench(RestirBenchOptions o) {
     if (!rows) return fail(rows.error());
     auto versus = versusOf(o, *rows);
     if (!versus) return fail(versus.error());
+    PinnedCounts pinned;
+    if (!o.countsFrom.empty()) {
+        auto read = readPinnedCounts(o.countsFrom);
+        if (!read) return fail(read.error());
+        pinned = std::move(*read);
+    }
     auto scenes = loadWorlds(o.worlds);
     if (!scenes) return fail(scenes.error());
     auto ctx = createBenchGpu();
@@ -82,7 +88,14 @@ int runRestirBench(RestirBenchOptions o) {
     const auto started = std::chrono::steady_clock::now();
 
     const std::filesystem::path out(o.output);
-    const RestirSetup setup{o, *rows, *versus, gpu, *frame, cpuClock, out.parent_path() / "cache"};
+    const RestirSetup setup{o,
+                            *rows,
+                            *versus,
+                            gpu,
+                            *frame,
+                            cpuClock,
+                            out.parent_path() / "cache",
+                            o.countsFrom.empty() ? nullptr : &pinned};
     RestirReport report(setup);
     if (engine::Status s = report.open(out, gpu.info().name); !s) return fail(s.error());
     RestirProgress progress{0, scenes->size() * rows->size() * o.seeds};
@@ -152,6 +165,11 @@ void addBenchRestirCommand(CLI::App& bench, int& exitCode) {
                     "difference is within the cost model's own error)")
         ->capture_default_str()
         ->check(numberIn(engine::closedRange(0.0, 1.0)));
+    cmd->add_option("--counts-from", o->countsFrom,
+                    "Render the scaled rows at an earlier run's equal-cost counts (its JSON): "
+                    "repeated runs then compare the same settings, and only this run's cost "
+                    "model moves MSE×cost")
+        ->check(CLI::ExistingFile);
     cmd->add_flag(
         "--quick", o->quick,
         "A first look: 64x40, 8 frames, 256 spp reference (over --size, --frames, --ref-spp)");

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -44,7 +45,12 @@ struct RestirBenchOptions {
     std::string output =
         "out/bench_restir.json";  // and the summary CSV beside it (.csv), for vox bench recommend
     std::string markdown;
+    std::string countsFrom;  // an earlier run's JSON: its equal-cost counts instead of this run's
 };
+
+// Equal-cost counts by (scene, row name), from --counts-from.
+using PinnedCounts = std::map<std::pair<std::string, std::string>, std::uint32_t>;
+engine::Result<PinnedCounts> readPinnedCounts(const std::string& path);
 
 // Which knob a row scales to ReSTIR's cost (the cost model's, from counted work).
 enum class EqualTime { None, ShadowRays, Candidates };
@@ -59,7 +65,8 @@ struct Row {
 struct RowResult {
     std::vector<double> ms, mse, mae, meanRatio;  // one per seed
     std::uint32_t scaledTo = 0;                   // shadow rays or candidates (scaled rows)
-    engine::render::FrameWork work;               // one frame's, at the fitted settings
+    std::uint32_t fittedTo = 0;      // what this run's model gave (differs when pinned)
+    engine::render::FrameWork work;  // one frame's, at the fitted settings
 };
 
 // The cost model's calibration: every calibration point timed in interleaved rounds (at least
@@ -98,8 +105,9 @@ struct RestirSetup {
     const std::vector<std::size_t>& versus;
     engine::gpu::Context& gpu;
     engine::render::FrameSettings frame;
-    bool cpuClock;                   // a frame's time: CPU time, else the fastest GPU frame's
-    std::filesystem::path cacheDir;  // the references, cached on disk
+    bool cpuClock;                         // a frame's time: CPU time, else the fastest GPU frame's
+    std::filesystem::path cacheDir;        // the references, cached on disk
+    const PinnedCounts* pinned = nullptr;  // --counts-from: counts that replace the fitted ones
 };
 
 struct SceneResults {

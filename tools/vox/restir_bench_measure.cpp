@@ -135,12 +135,19 @@ void fitEqualCost(SceneBench& b, SceneResults& results) {
     for (std::size_t i = 0; i < b.setup.rows.size(); ++i) {
         const Row& row = b.setup.rows[i];
         if (row.scale == EqualTime::None) continue;
-        const std::uint32_t n = equalCostCount(b, results.model, i);
+        const std::uint32_t fitted = equalCostCount(b, results.model, i);
+        std::uint32_t n = fitted;
+        if (b.setup.pinned) {
+            auto it = b.setup.pinned->find({b.scene.name, row.name});
+            if (it != b.setup.pinned->end()) n = it->second;
+        }
         scaledKnob(b.settings[i], row.scale) = n;
         results.rows[i].scaledTo = n;
-        std::fprintf(stderr, "    %s: %u %s cost what %s does\n", row.name.c_str(), n,
+        results.rows[i].fittedTo = fitted;
+        std::fprintf(stderr, "    %s: %u %s cost what %s does%s\n", row.name.c_str(), fitted,
                      row.scale == EqualTime::ShadowRays ? "rays" : "candidates",
-                     b.setup.rows[b.setup.versus[0]].name.c_str());
+                     b.setup.rows[b.setup.versus[0]].name.c_str(),
+                     n == fitted ? "" : fmt::format("; rendered at {} (--counts-from)", n).c_str());
     }
 }
 

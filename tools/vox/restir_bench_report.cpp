@@ -158,7 +158,7 @@ void RestirReport::addRow(const std::string& scene, const SceneResults& results,
     const LightingSettings shown = shownSettings(row, r);
     mJson.stream() << fmt::format(
         "    {{\"name\": {}, \"settings\": {}, \"sampling\": {}, \"equal_time\": {}, "
-        "\"ms\": {}, \"mse\": {}, "
+        "\"fitted_count\": {}, \"ms\": {}, \"mse\": {}, "
         "\"mae\": {}, \"mean_ratio\": {}, \"per_seed\": {{\"ms\": {}, \"mse\": {}, "
         "\"mae\": {}, \"mean_ratio\": {}}}, "
         "\"versus\": {{",
@@ -166,8 +166,9 @@ void RestirReport::addRow(const std::string& scene, const SceneResults& results,
         jsonString(row.sampling),
         row.scale == EqualTime::None ? "null"
                                      : fmt::format("{{\"{}\": {}}}", scaledKnob(row), r.scaledTo),
-        jsonSummary(ms), jsonSummary(mse), jsonSummary(mae), jsonSummary(mean), jsonArray(r.ms),
-        jsonArray(r.mse), jsonArray(r.mae), jsonArray(r.meanRatio));
+        row.scale == EqualTime::None ? "null" : fmt::format("{}", r.fittedTo), jsonSummary(ms),
+        jsonSummary(mse), jsonSummary(mae), jsonSummary(mean), jsonArray(r.ms), jsonArray(r.mse),
+        jsonArray(r.mae), jsonArray(r.meanRatio));
     // The scaled knob is no part of what the row is.
     const std::string base =
         row.scale == EqualTime::None ? settingsText(withDefaultSampling(shown)) : "";
