@@ -1,8 +1,9 @@
 // The work a frame lit with given settings issues, counted per kind from the settings and the
 // dispatch size alone: no clock, so a cost built on it does not move with the machine's load.
-// The counts are per dispatched pixel, as the passes are written (render/restir/,
-// render/baselines/): every pixel of the image runs every pass of its method, and sky pixels,
-// which return early, are the same share of every row of a scene, so they scale the kinds alike.
+// The counts are the work issued per dispatched pixel, as the passes are written
+// (shaders/restir/, shaders/baselines/): what a shader skips at run time (sky pixels, neighbours
+// rejected by the depth and normal test, the shadow ray of a zero contribution) is not subtracted,
+// so a kind's fitted cost is per issued unit, its early-outs averaged in.
 // What a kind costs is measured separately (metrics/cost_model.h); tools/vox's benches scale rows
 // to equal cost with it.
 #pragma once
