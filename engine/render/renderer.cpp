@@ -128,12 +128,14 @@ void Renderer::resetHistory() {
 
 void Renderer::checkMemory(const world::Scene& scene, glm::uvec2 size, glm::uvec2 displaySize,
                            const lighting::LightingSettings& lighting) {
-    if (mSize == size && mDisplaySize == displaySize && !mWorld.needsFullUpload(scene.grid)) return;
+    if (mSize == size && mRequestedDisplay == displaySize && !mWorld.needsFullUpload(scene.grid))
+        return;
     // About to allocate the frame's buffers or the world's GPU copy: refuse, with the plan, what
     // would not fit, before allocating any of it.
     const MemoryPlan memory = planMemory(scene, size, lighting, displaySize);
     if (Status s = checkMemoryPlan(memory, memoryBudgetBytes(), "world '" + scene.name + "'"); !s)
         throw MemoryBudgetExceeded(s.error().message);
+    mRequestedDisplay = displaySize;
 }
 
 void Renderer::updateScene(world::Scene& scene, const FrameSettings& settings,
@@ -187,15 +189,18 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
                              const lighting::LightingSettings& lighting,
                              gpu::Presenter* presenter) {
     const glm::uvec2 size(settings.width, settings.height);
+    // The display's size if a technique resolves to it (the memory plan asks the frame plan).
+    const glm::uvec2 requestedDisplay =
+        settings.displayWidth != 0 ? glm::uvec2(settings.displayWidth, settings.displayHeight)
+                                   : size;
+    checkMemory(scene, size, requestedDisplay, lighting);
+    // Before the scene's update: a new size forgets the last frame's time, which the objects'
+    // previous poses must not see after the update.
+    resize(size);
     FrameResult result;
     updateScene(scene, settings, lighting, result);
     const FramePlan frame = planFrame(lighting, sceneShape(scene), size);
-    const glm::uvec2 displaySize = frame.writesDisplay && settings.displayWidth != 0
-                                       ? glm::uvec2(settings.displayWidth, settings.displayHeight)
-                                       : size;
-    checkMemory(scene, size, displaySize, lighting);
-    resize(size);
-    resizeDisplay(displaySize, frame.writesDisplay);
+    resizeDisplay(frame.writesDisplay ? requestedDisplay : size, frame.writesDisplay);
     // Every pass compiled without the code of the features this frame does not use.
     const std::span<const std::uint32_t> specialization =
         mSpecializeShaders ? std::span<const std::uint32_t>(frame.features)

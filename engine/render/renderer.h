@@ -135,6 +135,7 @@ private:
     gpu::Buffer mExposure;  // shared::ExposureState: the tonemap's exposure when it is automatic
     gpu::Buffer mGBuffers[2];
     glm::uvec2 mDisplaySize{0};
+    glm::uvec2 mRequestedDisplay{0};  // the display size the memory was last checked for
     gpu::Buffer mDisplay[2];     // the display image and last frame's, when a technique writes it
     std::uint32_t mCurrent = 0;  // which of the ping-pong pair is this frame's
     std::uint32_t mFrameIndex = 0;
