@@ -112,8 +112,10 @@ int runImport(const std::string& input, const std::string& output, bool dryRun,
     if (ext == ".db") return runStoreImport(input, output, regionCells, cli);
     if (ext != ".toml" && ext != ".vdb")
         return fail(engine::makeError("-o {}: the file must end in .db, .toml or .vdb", output));
+    // Anything but .vox is read as OpenVDB (whatever its name, as before the store); a world
+    // (scene file or store) converts only to a store.
     if (const std::string inExt = fs::path(input).extension().string();
-        inExt != ".vdb" && inExt != ".vox")
+        inExt == ".toml" || inExt == ".db")
         return fail(engine::makeError(
             "{}: a world converts only to a store (-o WORLD.db); import takes .vdb or .vox",
             input));
