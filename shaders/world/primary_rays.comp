@@ -38,8 +38,9 @@ void main() {
         vec3 rel = prevPosition - gFrame.prevCameraPosition.xyz;
         float z = dot(rel, gFrame.prevCameraForward.xyz);
         if (z > 1e-4) {
-            float tanHalf = gFrame.cameraPosition.w;
-            vec2 ndc = vec2(dot(rel, gFrame.prevCameraRight.xyz) / (z * tanHalf * gFrame.cameraForward.w),
+            // The previous camera's own field of view and aspect: a path may zoom.
+            float tanHalf = gFrame.prevCameraPosition.w;
+            vec2 ndc = vec2(dot(rel, gFrame.prevCameraRight.xyz) / (z * tanHalf * gFrame.prevCameraForward.w),
                             -dot(rel, gFrame.prevCameraUp.xyz) / (z * tanHalf));
             vec2 prevPixel = (ndc * 0.5 + 0.5) * vec2(gFrame.imageSize.xy);
             texel.motion = vec4(prevPixel, length(rel), 1.0);

@@ -95,14 +95,13 @@ TEST(UpsamplingJitter, HaltonOffsetsCoverThePixel) {
 // Every pixel whose surface point the previous camera also saw maps, through the G-buffer's motion
 // vector, to an image position where the CPU traversal from the previous camera hits the same
 // voxel and face. Disoccluded points (the previous ray stops nearer) are the only exceptions.
-TEST_F(Upsampling, ReprojectionIsExact) {
-    Scene scene = edges();
+struct Reprojection {
+    int checked = 0, disoccluded = 0, wrong = 0;
+};
+Reprojection reproject(const Scene& world, const CameraPreset& before, const CameraPreset& after) {
+    Scene scene = world;
     const std::uint32_t size = 64;
     Renderer renderer(gpu_testing::context());
-    CameraPreset before = scene.camera();
-    CameraPreset after = before;
-    after.position += glm::vec3(1.7f, 0.6f, -0.9f);  // a known move, and a turn
-    after.target += glm::vec3(-0.8f, 0.3f, 0.5f);
     LightingSettings l = display(engine::lighting::Display::Upsampled);
     renderer.render(scene, before, frame(size), l);
     renderer.render(scene, after, frame(size), l);
@@ -110,7 +109,7 @@ TEST_F(Upsampling, ReprojectionIsExact) {
     const shared::FrameParams prev =
         engine::render::makeFrameParams(before, scene.sky, frame(size));
 
-    int checked = 0, disoccluded = 0, wrong = 0;
+    Reprojection r;
     for (std::size_t i = 0; i < images.gbuffer.size(); ++i) {
         const auto& g = images.gbuffer[i];
         if (g.voxel.w >= 6 || g.motion.w == 0.0f) continue;
@@ -121,16 +120,39 @@ TEST_F(Upsampling, ReprojectionIsExact) {
         const glm::vec3 point(g.position);
         const float toPoint = glm::length(point - before.position);
         if (hit.hit && hit.t < toPoint - 1e-2f) {
-            ++disoccluded;
+            ++r.disoccluded;
             continue;
         }
-        ++checked;
+        ++r.checked;
         if (!hit.hit || hit.voxel != glm::ivec3(g.voxel) || hit.face != std::uint32_t(g.voxel.w))
-            ++wrong;
+            ++r.wrong;
     }
-    EXPECT_GT(checked, int(size * size) / 2);
-    EXPECT_GT(disoccluded, 0);  // the move uncovers something: the test sees the difference
-    EXPECT_EQ(wrong, 0) << "of " << checked;
+    return r;
+}
+
+TEST_F(Upsampling, ReprojectionIsExact) {
+    const Scene scene = edges();
+    const CameraPreset before = scene.camera();
+    CameraPreset after = before;
+    after.position += glm::vec3(1.7f, 0.6f, -0.9f);  // a known move, and a turn
+    after.target += glm::vec3(-0.8f, 0.3f, 0.5f);
+    const Reprojection r = reproject(scene, before, after);
+    EXPECT_GT(r.checked, 64 * 64 / 2);
+    EXPECT_GT(r.disoccluded, 0);  // the move uncovers something: the test sees the difference
+    EXPECT_EQ(r.wrong, 0) << "of " << r.checked;
+}
+
+// A camera path may zoom: the motion vectors project with the previous frame's field of view
+// (they used this frame's until a flythrough's blur showed it).
+TEST_F(Upsampling, ReprojectionIsExactWhenTheCameraZooms) {
+    const Scene scene = edges();
+    const CameraPreset before = scene.camera();
+    CameraPreset after = before;
+    after.fovYDegrees -= 6.0f;  // zoom in: every pixel still in the old view
+    after.position += glm::vec3(0.4f, 0.0f, 0.3f);
+    const Reprojection r = reproject(scene, before, after);
+    EXPECT_GT(r.checked, 64 * 64 / 2);
+    EXPECT_EQ(r.wrong, 0) << "of " << r.checked;
 }
 
 // Render 32x32, display 64x64, 32 still frames: the resolved image is nearer the box-filtered
