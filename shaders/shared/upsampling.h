@@ -8,10 +8,12 @@ SHARED_BEGIN
 
 // UpsamplingParams.flags
 SHARED_CONST uint UPSAMPLING_RESTART = 1u;  // no history: the first frame, or a new display size
+// The world, its lights or the sky changed: the history counts as a few frames at most.
+SHARED_CONST uint UPSAMPLING_LIGHTING_CHANGED = 2u;
 
 struct UpsamplingParams {
     uint flags;        // UPSAMPLING_*
-    float maxHistory;  // the weight the display history holds at most (frames)
+    float maxHistory;  // frames of samples the display history holds at most
     float clipGamma;   // history clipped to the neighbourhood's mean +- gamma standard deviations
     uint pad0;
 };

@@ -32,6 +32,47 @@ vec3 fromYCoCg(vec3 c) { return vec3(c.x + c.y - c.z, c.x + c.z, c.x - c.y - c.z
 
 // exp(-kSharpness d^2): a standard deviation of 0.3 display pixels.
 const float kSharpness = 1.0 / (2.0 * 0.3 * 0.3);
+// The weight one frame's samples add to a display pixel on average: the render samples' density
+// (render pixels per display pixel) times the Gaussian's integral, 2 pi sigma^2. History lengths
+// are in frames of that weight, whatever the render scale.
+const float kGaussianIntegral = 2.0 * 3.14159265 * 0.3 * 0.3;
+// After an edit, a light or the sky changed, or where the clip had to move the history by more
+// than a tenth of the light here (it disagrees with this frame beyond its noise: a light
+// switched, a shadow moved), the history counts as at most this many frames, so the display
+// follows a change within about as many.
+const float kChangedHistory = 2.0;
+
+// Last frame's display at `p` (display pixels), Catmull-Rom over the 4x4 texels around it: a
+// bilinear fetch blurs the history a little every frame the camera moves, and the blur adds up
+// (Karis 2014 samples the history bicubically for the same reason). The taps are clamped to the
+// image; the weight channel is read bilinearly, and negative lobes cannot make colour negative
+// (the clip and the final max() follow).
+vec4 catmullRomHistory(vec2 p, ivec2 display) {
+    p -= 0.5;
+    ivec2 base = ivec2(floor(p));
+    vec2 f = p - vec2(base);
+    vec2 w0 = f * (-0.5 + f * (1.0 - 0.5 * f));
+    vec2 w1 = 1.0 + f * f * (-2.5 + 1.5 * f);
+    vec2 w2 = f * (0.5 + f * (2.0 - 1.5 * f));
+    vec2 w3 = f * f * (-0.5 + 0.5 * f);
+    vec2 wx[4] = vec2[4](vec2(w0.x, 0.0), vec2(w1.x, 0.0), vec2(w2.x, 0.0), vec2(w3.x, 0.0));
+    float wy[4] = float[4](w0.y, w1.y, w2.y, w3.y);
+    ivec2 last = display - 1;
+    vec3 rgb = vec3(0.0);
+    float weight = 0.0;
+    for (int j = 0; j < 4; ++j) {
+        int y = clamp(base.y - 1 + j, 0, last.y);
+        for (int i = 0; i < 4; ++i) {
+            int x = clamp(base.x - 1 + i, 0, last.x);
+            vec4 h = gPrevDisplay[uint(x) + uint(y) * uint(display.x)];
+            rgb += h.rgb * (wx[i].x * wy[j]);
+            if (i == 1 || i == 2) {
+                if (j == 1 || j == 2) weight += h.w * ((i == 1 ? 1.0 - f.x : f.x) * (j == 1 ? 1.0 - f.y : f.y));
+            }
+        }
+    }
+    return vec4(max(rgb, vec3(0.0)), weight);
+}
 
 void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;
@@ -46,7 +87,7 @@ void main() {
 
     // The 3x3 samples around it: what they add to this display pixel (a Gaussian of 0.3 display
     // pixels around its centre, near a box: over a jitter cycle the samples that fall in it), an
-    // interpolated colour for when nothing else is known (a Gaussian of half a render pixel), the
+    // interpolated colour for when nothing else is known (a Gaussian of a third of a render pixel), the
     // colour spread for clipping, and the surfaces seen.
     vec3 added = vec3(0.0), colour = vec3(0.0), m1 = vec3(0.0), m2 = vec3(0.0);
     float addedWeight = 0.0, colourWeight = 0.0;
@@ -60,7 +101,7 @@ void main() {
         vec3 c = max(gRadiance[qi].rgb, vec3(0.0));
         vec2 samplePosition = vec2(q) + 0.5 + jitter;
         vec2 d = samplePosition - centre;
-        float w = exp(-2.0 * dot(d, d));
+        float w = exp(-4.5 * dot(d, d));
         colour += c * w;
         colourWeight += w;
         vec2 dd = d / scale;
@@ -91,19 +132,7 @@ void main() {
             uint previousKey = gPrevKeys[uint(keyTexel.x) + uint(keyTexel.y) * display.x];
             bool seen = false;
             for (int k = 0; k < 9; ++k) seen = seen || keys[k] == previousKey;
-            if (seen) {
-                // Bilinear, the taps clamped to the image.
-                vec2 p = previous - 0.5;
-                ivec2 base = ivec2(floor(p));
-                vec2 f = p - vec2(base);
-                ivec2 last = ivec2(display) - 1;
-                ivec2 a = clamp(base, ivec2(0), last), b = clamp(base + 1, ivec2(0), last);
-                vec4 h00 = gPrevDisplay[uint(a.x) + uint(a.y) * display.x];
-                vec4 h10 = gPrevDisplay[uint(b.x) + uint(a.y) * display.x];
-                vec4 h01 = gPrevDisplay[uint(a.x) + uint(b.y) * display.x];
-                vec4 h11 = gPrevDisplay[uint(b.x) + uint(b.y) * display.x];
-                history = mix(mix(h00, h10, f.x), mix(h01, h11, f.x), f.y);
-            }
+            if (seen) history = catmullRomHistory(previous, ivec2(display));
         }
     }
 
@@ -116,9 +145,13 @@ void main() {
         vec3 mean = m1 / 9.0;
         vec3 sigma = sqrt(max(m2 / 9.0 - mean * mean, vec3(0.0)));
         vec3 h = toYCoCg(history.rgb);
-        h = clamp(h, mean - gParams.clipGamma * sigma, mean + gParams.clipGamma * sigma);
-        result = (fromYCoCg(h) * history.w + added) / (history.w + addedWeight);
-        weight = min(history.w + addedWeight, gParams.maxHistory);
+        vec3 clipped = clamp(h, mean - gParams.clipGamma * sigma, mean + gParams.clipGamma * sigma);
+        float frameWeight = scale.x * scale.y * kGaussianIntegral;
+        float historyWeight = history.w;
+        if ((gParams.flags & UPSAMPLING_LIGHTING_CHANGED) != 0u || abs(clipped.x - h.x) > 0.1 * max(mean.x, 1e-4))
+            historyWeight = min(historyWeight, kChangedHistory * frameWeight);
+        result = (fromYCoCg(clipped) * historyWeight + added) / (historyWeight + addedWeight);
+        weight = min(historyWeight + addedWeight, gParams.maxHistory * frameWeight);
     }
     gDisplay[index] = vec4(max(result, vec3(0.0)), weight);
     gKeys[index] = nearestKey;

@@ -66,6 +66,10 @@ void TemporalUpsampling::prepare(const FrameChanges& changes, const FrameInput& 
     // A new world or new settings start over; a new render size does not (the display is kept).
     p.flags =
         mRestart || changes.newWorld || changes.settingsChanged ? shared::UPSAMPLING_RESTART : 0u;
+    // Objects that move are caught by their surface keys; the rest of a change only by the clip,
+    // which a bright sub-pixel light or a noisy neighbourhood can hide.
+    if (changes.staticWorldChanged || changes.lightsUploaded || changes.skyChanged)
+        p.flags |= shared::UPSAMPLING_LIGHTING_CHANGED;
     p.maxHistory = float(std::max(in.lighting.display.resolveHistory, 1u));
     p.clipGamma = 1.25f;
     uploader.write(mParams, 0, &p, sizeof(p));
