@@ -541,7 +541,8 @@ const Knob kDisplay[] = {
     {.name = "display",
      .help = "The image shown: raw (as shaded, one sample per pixel at the render size) | "
              "upsampled (jittered primary rays resolved over frames to the display size) | "
-             "denoised (the lighting denoised first; vox play, render and capture default to it)",
+             "denoised (the lighting denoised first; vox play and render default to it; capture "
+             "keeps raw so that a split capture equals one run)",
      .kind = KnobKind::Choice,
      .choices = kDisplays,
      .get = getPartField<&S::display, &D::mode>,

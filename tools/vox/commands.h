@@ -32,6 +32,7 @@ void addBenchStabilityCommand(CLI::App& bench, int& exitCode);
 void addBenchCacheCommand(CLI::App& bench, int& exitCode);
 void addBenchFrameCommand(CLI::App& bench, int& exitCode);
 void addBenchFlythroughCommand(CLI::App& bench, int& exitCode);
+void addBenchDisplayCommand(CLI::App& bench, int& exitCode);
 void addBenchSkyCommand(CLI::App& bench, int& exitCode);
 
 struct RenderOptions {

@@ -151,6 +151,7 @@ int main(int argc, char** argv) {
     vox::addBenchCacheCommand(*bench, exitCode);
     vox::addBenchFrameCommand(*bench, exitCode);
     vox::addBenchFlythroughCommand(*bench, exitCode);
+    vox::addBenchDisplayCommand(*bench, exitCode);
     vox::addBenchSkyCommand(*bench, exitCode);
     try {
         app.parse(argc, argv);

@@ -1,0 +1,363 @@
+// vox bench display's stability cases (display_bench.h). Each group of the world's timeline
+// events that share a frame is replayed on a still camera — the path's camera at that moment,
+// scene time held there — so that what changes on screen is the event alone:
+//   still: `stillFrames` frames converge; the last is compared with the converged reference
+//          (relative MAE) and the last 16 give the flicker: the mean |frame - previous frame| of
+//          the clamped luminance over the reference's mean;
+//   edit / light: the event, then `afterFrames` frames; its region (pixels whose reference
+//          luminance changed by more than 10 %) is followed until its mean stays within 10 % of
+//          the row's new steady value (the mean of the last 4 frames), which is also compared
+//          with the reference's;
+//   object: a dynamic object starts; each of `ghostFrames` frames is compared with its own
+//          reference. A pixel the object left a frames ago is "age a"; the ghost trail is the
+//          largest age whose relative error is above 1.5x that of the pixels the object never
+//          covered (0: no ghost). Coverage comes from the native raw row's G-buffer.
+// Luminance is clamped at the reference's 98th percentile as in metrics/display_error.h.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fmt/format.h>
+#include <map>
+#include <optional>
+#include <ostream>
+
+#include "display_bench.h"
+#include "metrics/display_error.h"
+#include "progress_line.h"
+#include "shared/gbuffer.h"
+
+namespace vox {
+
+namespace {
+
+using engine::lighting::Display;
+using engine::lighting::LightingSettings;
+using engine::render::Renderer;
+using engine::world::Flythrough;
+using engine::world::Scene;
+using engine::world::TimelineEvent;
+
+double luminance(glm::vec4 p) { return 0.2126 * p.x + 0.7152 * p.y + 0.0722 * p.z; }
+
+double clampLimit(const std::vector<glm::vec4>& reference) {
+    std::vector<double> l(reference.size());
+    for (std::size_t i = 0; i < l.size(); ++i) l[i] = luminance(reference[i]);
+    const std::size_t k =
+        std::min(l.size() - 1, std::size_t(engine::metrics::kDisplayClampPercentile * l.size()));
+    std::nth_element(l.begin(), l.begin() + std::ptrdiff_t(k), l.end());
+    return std::max(l[k], 1e-12);
+}
+
+std::vector<double> clampedLuminance(const std::vector<glm::vec4>& img, double limit) {
+    std::vector<double> out(img.size());
+    for (std::size_t i = 0; i < img.size(); ++i) out[i] = std::min(luminance(img[i]), limit);
+    return out;
+}
+
+double meanOver(const std::vector<double>& v, const std::vector<std::uint8_t>& mask) {
+    double s = 0.0;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < v.size(); ++i)
+        if (mask[i]) s += v[i], ++n;
+    return n ? s / double(n) : 0.0;
+}
+
+// A row replaying one case: its own scene and timeline (events before the case applied).
+struct RowRun {
+    DisplayRow row;
+    Scene scene;
+    engine::world::Timeline timeline;
+    std::unique_ptr<Renderer> renderer;
+    std::vector<double> regionMeans;  // edit / light: per frame after the event
+    std::vector<std::uint8_t> objectMask;
+};
+
+const char* kindName(TimelineEvent::Kind k) {
+    switch (k) {
+        case TimelineEvent::Kind::Light:
+            return "light";
+        case TimelineEvent::Kind::DynamicStart:
+            return "object";
+        default:
+            return "edit";
+    }
+}
+
+// Per row, what the stability table says of it over all cases.
+struct RowSummary {
+    std::vector<double> stillMae, flicker, framesToSteady, steadyRatio;
+    std::optional<int> ghostTrail;
+    std::string ghostDetail;
+};
+
+}  // namespace
+
+engine::Status displayStability(engine::gpu::Context& ctx, const Scene& scene,
+                                const Flythrough& fly, const std::vector<DisplayRow>& rows,
+                                const LightingSettings& base, const StabilityOptions& o,
+                                std::string& table, std::ostream& csv) {
+    Scene bound = scene;
+    Flythrough f = fly;
+    if (engine::Status s = f.timeline.bind(bound); !s) return s;
+    // The events' frames, each once: a case replays everything its frame applies.
+    std::vector<std::uint32_t> caseFrames;
+    std::map<std::uint32_t, std::string> caseNames;
+    for (const TimelineEvent& e : f.timeline.events()) {
+        const std::uint32_t frame = engine::world::Timeline::firstFrame(e.time, f.fps);
+        if (caseFrames.empty() || caseFrames.back() != frame) caseFrames.push_back(frame);
+        std::string& name = caseNames[frame];
+        name += fmt::format("{}{} {}", name.empty() ? "" : " + ", kindName(e.kind),
+                            e.kind == TimelineEvent::Kind::Light
+                                ? fmt::format("{} {}", e.material, e.on ? "on" : "off")
+                            : e.kind == TimelineEvent::Kind::DynamicStart ? e.object
+                                                                          : e.material);
+    }
+    if (caseFrames.empty())
+        return engine::makeError("{}: no timeline events for the stability cases", fly.source);
+    std::ptrdiff_t nativeRow = -1;
+    for (std::size_t i = 0; i < rows.size(); ++i)
+        if (rows[i].mode == Display::Raw && rows[i].scale == 1.0) nativeRow = std::ptrdiff_t(i);
+
+    std::vector<RowSummary> summary(rows.size());
+    DisplayReference reference(ctx, base, o.referenceSpp);
+    ProgressLine progress(fmt::format("stability ({} cases x {} rows, {}x{})", caseFrames.size(),
+                                      rows.size(), o.display.x, o.display.y),
+                          std::uint32_t(caseFrames.size()));
+    std::uint32_t done = 0;
+    for (std::uint32_t frame : caseFrames) {
+        const std::string& name = caseNames[frame];
+        const bool object = name.find("object") != std::string::npos;
+        const double t0 = Flythrough::frameTime(frame, f.fps);
+        const engine::world::CameraPreset camera = f.camera.at(t0, "still");
+        // Everything before the case's frame, in the rows' and the reference's scenes.
+        Scene before = bound;
+        engine::world::Timeline timeline = f.timeline;
+        if (frame > 0) timeline.applyThrough(frame - 1, f.fps, before);
+        std::vector<RowRun> runs(rows.size());
+        for (std::size_t i = 0; i < rows.size(); ++i) {
+            runs[i].row = rows[i];
+            runs[i].scene = before;
+            runs[i].timeline = timeline;
+            runs[i].renderer = std::make_unique<Renderer>(ctx);
+        }
+        Scene refScene = before;
+        engine::world::Timeline refTimeline = timeline;
+        const auto refBefore = reference.render(refScene, camera, o.display, t0);
+        const double limitBefore = clampLimit(refBefore);
+        const auto lumRefBefore = clampedLuminance(refBefore, limitBefore);
+        double refMeanBefore = 0.0;
+        for (double v : lumRefBefore) refMeanBefore += v;
+        refMeanBefore /= double(lumRefBefore.size());
+
+        auto render = [&](RowRun& r, double t) {
+            auto frameSettings = rowFrame(r.row, o.display);
+            frameSettings.timeSeconds = t;
+            r.renderer->render(r.scene, camera, frameSettings, rowLighting(r.row, base));
+        };
+        // Still frames: converge, the flicker of the last 16, the error of the last.
+        for (RowRun& r : runs) {
+            std::vector<double> previous;
+            double flicker = 0.0;
+            int pairs = 0;
+            for (std::uint32_t i = 0; i < o.stillFrames; ++i) {
+                render(r, t0);
+                if (i + 16 < o.stillFrames) continue;
+                const auto lum = clampedLuminance(shownImage(*r.renderer, o.display), limitBefore);
+                if (!previous.empty()) {
+                    double d = 0.0;
+                    for (std::size_t p = 0; p < lum.size(); ++p)
+                        d += std::abs(lum[p] - previous[p]);
+                    flicker += d / double(lum.size()) / std::max(refMeanBefore, 1e-12);
+                    ++pairs;
+                }
+                previous = lum;
+            }
+            const auto shown = shownImage(*r.renderer, o.display);
+            auto e = engine::metrics::compareDisplay({shown, o.display.x, o.display.y},
+                                                     {refBefore, o.display.x, o.display.y});
+            if (!e) return e.error();
+            RowSummary& s = summary[std::size_t(&r - runs.data())];
+            s.stillMae.push_back(e->relativeMae);
+            s.flicker.push_back(pairs ? flicker / pairs : 0.0);
+            csv << fmt::format("\"{}\",{},still_relative_mae,{:.5f}\n", name, r.row.label(),
+                               e->relativeMae);
+            csv << fmt::format("\"{}\",{},still_flicker,{:.5f}\n", name, r.row.label(),
+                               s.flicker.back());
+            if (object && std::ptrdiff_t(&r - runs.data()) == nativeRow) {
+                const auto images = r.renderer->readback();
+                r.objectMask.resize(images.gbuffer.size());
+                for (std::size_t p = 0; p < images.gbuffer.size(); ++p)
+                    r.objectMask[p] =
+                        (images.gbuffer[p].data.w & shared::GBUFFER_FLAG_DYNAMIC) != 0;
+            }
+        }
+        // The event.
+        refTimeline.applyThrough(frame, f.fps, refScene);
+        for (RowRun& r : runs) r.timeline.applyThrough(frame, f.fps, r.scene);
+
+        if (!object) {
+            const auto refAfter = reference.render(refScene, camera, o.display, t0);
+            const double limit = clampLimit(refAfter);
+            const auto la = clampedLuminance(refAfter, limit);
+            const auto lb = clampedLuminance(refBefore, limit);
+            std::vector<std::uint8_t> region(la.size());
+            std::size_t regionPixels = 0;
+            for (std::size_t p = 0; p < la.size(); ++p) {
+                region[p] = std::abs(la[p] - lb[p]) > 0.1 * std::max(la[p], lb[p]) &&
+                            std::abs(la[p] - lb[p]) > 0.01 * limit;
+                regionPixels += region[p];
+            }
+            const double refRegion = meanOver(la, region);
+            for (std::size_t i = 0; i < runs.size(); ++i) {
+                RowRun& r = runs[i];
+                for (std::uint32_t j = 0; j < o.afterFrames; ++j) {
+                    render(r, t0);
+                    r.regionMeans.push_back(meanOver(
+                        clampedLuminance(shownImage(*r.renderer, o.display), limit), region));
+                }
+                if (regionPixels < 16) {
+                    csv << fmt::format(
+                        "\"{}\",{},frames_to_10pct,,region of {} pixels: not in view\n", name,
+                        r.row.label(), regionPixels);
+                    continue;
+                }
+                const auto& m = r.regionMeans;
+                const double steady =
+                    (m[m.size() - 1] + m[m.size() - 2] + m[m.size() - 3] + m[m.size() - 4]) / 4.0;
+                int frames = 1;
+                for (std::size_t j = 0; j < m.size(); ++j)
+                    if (std::abs(m[j] - steady) > 0.1 * steady) frames = int(j) + 2;
+                summary[i].framesToSteady.push_back(frames);
+                summary[i].steadyRatio.push_back(steady / std::max(refRegion, 1e-12));
+                std::string curve;
+                for (double v : m) curve += fmt::format(" {:.3f}", v / std::max(refRegion, 1e-12));
+                csv << fmt::format(
+                    "\"{}\",{},frames_to_10pct,{},region {} px; region mean / "
+                    "reference per frame:{}\n",
+                    name, r.row.label(), frames, regionPixels, curve);
+            }
+        } else if (nativeRow >= 0) {
+            // Ghosts: each frame against its own reference, pixels binned by the frames since the
+            // object left them.
+            const std::size_t n = std::size_t(o.display.x) * o.display.y;
+            std::vector<int> lastCovered(n, -1);
+            const auto& mask0 = runs[std::size_t(nativeRow)].objectMask;
+            for (std::size_t p = 0; p < n && p < mask0.size(); ++p)
+                if (mask0[p]) lastCovered[p] = 0;
+            constexpr int kAges = 8;
+            std::vector<std::array<double, kAges + 1>> err(runs.size()), ref(runs.size());
+            std::vector<double> bgErr(runs.size()), bgRef(runs.size());
+            std::vector<std::array<std::size_t, kAges + 1>> counts(runs.size());
+            std::vector<std::uint8_t> everCovered(n);
+            for (std::size_t p = 0; p < n; ++p) everCovered[p] = lastCovered[p] >= 0;
+            std::vector<std::vector<std::vector<double>>> shownLum(runs.size());
+            std::vector<std::vector<double>> refLum;
+            std::vector<std::vector<std::uint8_t>> masks;
+            for (std::uint32_t j = 1; j <= o.ghostFrames; ++j) {
+                const double t = t0 + double(j) / f.fps;
+                const auto refJ = reference.render(refScene, camera, o.display, t);
+                const double limit = clampLimit(refJ);
+                refLum.push_back(clampedLuminance(refJ, limit));
+                for (std::size_t i = 0; i < runs.size(); ++i) {
+                    render(runs[i], t);
+                    shownLum[i].push_back(
+                        clampedLuminance(shownImage(*runs[i].renderer, o.display), limit));
+                    if (std::ptrdiff_t(i) == nativeRow) {
+                        const auto images = runs[i].renderer->readback();
+                        std::vector<std::uint8_t> m(n);
+                        for (std::size_t p = 0; p < n; ++p)
+                            m[p] = (images.gbuffer[p].data.w & shared::GBUFFER_FLAG_DYNAMIC) != 0;
+                        masks.push_back(std::move(m));
+                    }
+                }
+            }
+            for (const auto& m : masks)
+                for (std::size_t p = 0; p < n; ++p) everCovered[p] |= m[p];
+            for (std::uint32_t j = 1; j <= o.ghostFrames; ++j) {
+                const auto& m = masks[j - 1];
+                for (std::size_t p = 0; p < n; ++p) {
+                    if (m[p]) {
+                        lastCovered[p] = int(j);
+                        continue;
+                    }
+                    const int age = lastCovered[p] < 0 ? -1 : int(j) - lastCovered[p];
+                    for (std::size_t i = 0; i < runs.size(); ++i) {
+                        const double e = std::abs(shownLum[i][j - 1][p] - refLum[j - 1][p]);
+                        if (!everCovered[p]) {
+                            bgErr[i] += e;
+                            bgRef[i] += refLum[j - 1][p];
+                        } else if (age >= 1 && age <= kAges) {
+                            err[i][std::size_t(age)] += e;
+                            ref[i][std::size_t(age)] += refLum[j - 1][p];
+                            ++counts[i][std::size_t(age)];
+                        }
+                    }
+                }
+            }
+            for (std::size_t i = 0; i < runs.size(); ++i) {
+                const double bg = bgErr[i] / std::max(bgRef[i], 1e-12);
+                int trail = 0;
+                std::string curve;
+                for (int a = 1; a <= kAges; ++a) {
+                    if (counts[i][std::size_t(a)] < 16) continue;
+                    const double e =
+                        err[i][std::size_t(a)] / std::max(ref[i][std::size_t(a)], 1e-12);
+                    curve += fmt::format(" {}:{:.3f}", a, e);
+                    if (e > 1.5 * bg) trail = a;
+                }
+                summary[i].ghostTrail = trail;
+                summary[i].ghostDetail = fmt::format("background {:.3f}; by age{}", bg, curve);
+                csv << fmt::format("\"{}\",{},ghost_trail_frames,{},\"{}\"\n", name,
+                                   rows[i].label(), trail, summary[i].ghostDetail);
+            }
+        }
+        progress.update(++done, name);
+    }
+    progress.finish();
+
+    // The table: one line per row over all cases, the flicker relative to raw at the same scale.
+    auto avg = [](const std::vector<double>& v) {
+        double s = 0.0;
+        for (double x : v) s += x;
+        return v.empty() ? 0.0 : s / double(v.size());
+    };
+    auto worst = [](const std::vector<double>& v) {
+        return v.empty() ? 0.0 : *std::max_element(v.begin(), v.end());
+    };
+    table += fmt::format(
+        "\nStability on {} ({} cases: {}; {}x{}, reference {} spp):\n\n| row | still rel. MAE "
+        "after {} frames | flicker | flicker / raw same scale | frames to 10 % (worst) | steady / "
+        "reference (range) | ghost trail (frames) |\n|---|---|---|---|---|---|---|\n",
+        scene.name, caseFrames.size(),
+        [&] {
+            std::string s;
+            for (auto& [fr, n] : caseNames)
+                s += fmt::format("{}{} at frame {}", s.empty() ? "" : "; ", n, fr);
+            return s;
+        }(),
+        o.display.x, o.display.y, o.referenceSpp, o.stillFrames);
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        double rawFlicker = 0.0;
+        for (std::size_t k = 0; k < rows.size(); ++k)
+            if (rows[k].mode == Display::Raw && rows[k].scale == rows[i].scale)
+                rawFlicker = avg(summary[k].flicker);
+        const auto& s = summary[i];
+        const auto [lo, hi] =
+            s.steadyRatio.empty()
+                ? std::pair<double, double>{0.0, 0.0}
+                : std::pair<double, double>{
+                      *std::min_element(s.steadyRatio.begin(), s.steadyRatio.end()),
+                      *std::max_element(s.steadyRatio.begin(), s.steadyRatio.end())};
+        const std::string line = fmt::format(
+            "| {} | {:.4f} | {:.4f} | {:.2f} | {:.0f} | {:.2f}–{:.2f} | {} |\n", rows[i].label(),
+            avg(s.stillMae), avg(s.flicker), avg(s.flicker) / std::max(rawFlicker, 1e-12),
+            worst(s.framesToSteady), lo, hi,
+            s.ghostTrail ? fmt::format("{} ({})", *s.ghostTrail, s.ghostDetail) : "—");
+        table += line;
+        std::printf("%s", line.c_str());
+    }
+    std::fflush(stdout);
+    return {};
+}
+
+}  // namespace vox
