@@ -54,6 +54,7 @@ struct DisplayBenchOptions {
     std::string stabilityWorld = "sandbox";  // "none": skip the stability cases
     std::string stabilitySize;               // default: --size
     std::uint32_t stabilitySpp = 64;
+    StabilityOptions stability;  // its frame counts; display and spp from the options above
     bool images = false;  // PNGs of every reference frame: the reference and each row's image
     LightingOptions lighting;
     std::string output = "out/display";
@@ -270,7 +271,7 @@ int runDisplayBench(const DisplayBenchOptions& o) {
         if (!fly) return fail(fly.error());
         auto lighting = lightingSettings(o.lighting, &*scene);
         if (!lighting) return fail(lighting.error());
-        StabilityOptions so;
+        StabilityOptions so = o.stability;
         so.display = stabilityDisplay;
         so.referenceSpp = o.stabilitySpp;
         if (engine::Status s =
@@ -326,6 +327,18 @@ void addBenchDisplayCommand(CLI::App& bench, int& exitCode) {
                     "Reference samples per pixel of the stability cases")
         ->capture_default_str()
         ->check(numberIn(engine::wholeRange(1, 65536, "samples per pixel")));
+    cmd->add_option("--still-frames", o->stability.stillFrames,
+                    "Stability: still frames before each event (the last 16 give the flicker)")
+        ->capture_default_str()
+        ->check(numberIn(engine::wholeRange(2, 100000, "frames")));
+    cmd->add_option("--after-frames", o->stability.afterFrames,
+                    "Stability: frames after an edit or light (the last 4 are its steady value)")
+        ->capture_default_str()
+        ->check(numberIn(engine::wholeRange(4, 100000, "frames")));
+    cmd->add_option("--ghost-frames", o->stability.ghostFrames,
+                    "Stability: frames of a moving object, each against its own reference")
+        ->capture_default_str()
+        ->check(numberIn(engine::wholeRange(1, 100000, "frames")));
     cmd->add_flag("--images", o->images,
                   "Write every reference frame and each row's image of it as PNGs (images/)");
     addLightingOptions(*cmd, o->lighting);
