@@ -24,6 +24,7 @@ std::pair<glm::ivec3, glm::ivec3> unionOf(glm::ivec3 aMin, glm::ivec3 aMax, glm:
 
 VoxelConeTracing::VoxelConeTracing(gpu::Context& ctx) : mCtx(ctx), mInject(ctx), mCones(ctx) {
     mParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::VctParams), "vct.params");
+    mList = gpu::Buffer(ctx, gpu::BufferKind::Storage, VctInjectPass::listBytes(), "vct.list");
 }
 
 std::uint64_t VoxelConeTracing::volumeBytes() {
@@ -42,7 +43,8 @@ TechniquePlan VoxelConeTracing::plan(const lighting::LightingSettings& l, const 
     TechniquePlan p;
     p.runs = lighting::usesVct(l);
     p.addsIndirect = true;
-    p.deviceBytes = sizeof(shared::VctParams) + 2 * volumeBytes();  // fixed: two volumes
+    p.deviceBytes = sizeof(shared::VctParams) + 2 * volumeBytes() +  // fixed: two volumes
+                    VctInjectPass::listBytes();
     return p;
 }
 
@@ -83,7 +85,8 @@ void VoxelConeTracing::prepare(const FrameChanges& changes, const FrameInput& in
                                mPrevSettings == lighting.vct && mPrevSeed == lighting.seed;
     p.flags = (lighting.vct.leakMitigation ? shared::VCT_LEAK_MITIGATION : 0u) |
               (lighting.vct.extraBounce ? shared::VCT_EXTRA_BOUNCE : 0u) |
-              (previousValid ? shared::VCT_PREVIOUS_VALID : 0u);
+              (previousValid ? shared::VCT_PREVIOUS_VALID : 0u) |
+              (lighting.vct.extraBounce ? 0u : shared::VCT_IN_PLACE);
     p.seed = lighting.seed;
     p.startOffset = lighting.vct.startOffset;
     // The objects' bounds now and last frame: where they are and where they left.
@@ -100,14 +103,20 @@ void VoxelConeTracing::prepare(const FrameChanges& changes, const FrameInput& in
     mPrevSettings = lighting.vct;
     mPrevSeed = lighting.seed;
     mLevels = levels;
+    mExtraBounce = lighting.vct.extraBounce;
     mLastFrame = in.frameIndex;
     mPrepared = true;
 }
 
 void VoxelConeTracing::record(FrameCommands& commands, const FrameBuffers& frame) {
     gpu::CommandList& cmd = commands.current();
+    // Without the extra bounce nothing reads last frame's volume while this one is written: one
+    // volume, updated in place (VCT_IN_PLACE), so the texels that keep their values cost no copy.
+    if (!mExtraBounce) mCurrent = 0;
     gpu::Buffer& volume = mVolumes[mCurrent];
-    mInject.record(cmd, frame.scene, {frame.frameParams, mParams, mVolumes[mCurrent ^ 1u], volume},
+    const gpu::Buffer& previous = mExtraBounce ? mVolumes[mCurrent ^ 1u] : volume;
+    cmd.fillBuffer(mList, 0);  // the injection list's count
+    mInject.record(cmd, frame.scene, {frame.frameParams, mParams, previous, volume, mList},
                    mLevels);
     mCones.record(
         cmd, frame.scene,
