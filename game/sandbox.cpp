@@ -14,6 +14,7 @@
 
 #include "core/atomic_file.h"
 #include "game/autosave.h"
+#include "game/background_saver.h"
 #include "game/camera_controller.h"
 #include "game/edit_tools.h"
 #include "game/hud.h"
@@ -32,6 +33,7 @@
 #include "io/image_io.h"
 #include "render/camera.h"
 #include "render/renderer.h"
+#include "scene/generators/store_keys.h"
 #include "scene/scene_file.h"
 #include "scene/scene_lighting.h"
 
@@ -88,7 +90,11 @@ private:
     void handleObjects(bool clicks);
     void undo();
     void redo();
-    engine::Status save(const fs::path& path, bool autosave);
+    // Queues a save (game/background_saver.h); `wait` blocks until it is on disk (quitting).
+    engine::Status save(const fs::path& path, bool autosave, bool wait = false);
+    // Reports the saves finished since the last call; returns the last failure, if any (a failed
+    // save is not reported with `quiet`: the caller says it).
+    engine::Status pollSaves(bool quiet = false);
     void requestQuit();
     void setMouseLook(bool on);
     void message(std::string text);
@@ -100,12 +106,16 @@ private:
     HudStats hudStats();
     glm::uvec2 renderSize(glm::uvec2 framebuffer) const;
     std::string title() const;
-    bool unsaved() const { return mWorldVersion != mSavedVersion; }
+    // A save being written counts as saved; if it fails, the world is unsaved again.
+    bool unsaved() const {
+        return mWorldVersion != mSavedVersion && mPendingSaveVersion != mWorldVersion;
+    }
 
     PlayOptions mOptions;
     world::Scene mScene;
     fs::path mWorldPath, mSavePath;
     std::unique_ptr<WorldStore> mStore = makeWorldStore();
+    BackgroundSaver mSaver;
 
     // Declaration order is destruction order reversed: the presenter needs the ImGui context
     // and the device, and the device's surface needs the window.
@@ -147,6 +157,7 @@ private:
     bool mQuitPrompt = false;
 
     std::uint64_t mWorldVersion = 0, mSavedVersion = 0;
+    std::optional<std::uint64_t> mPendingSaveVersion;
     engine::lighting::LightingSettings mLighting;
     Pick mTarget;
 
@@ -191,6 +202,9 @@ engine::Status Sandbox::init() {
     auto scene = mStore->load(mWorldPath);
     if (!scene) return scene.error();
     mScene = std::move(*scene);
+    // A world read whole from a store saves back to it incrementally.
+    if (fs::path store = engine::scene::storeOfScene(mScene); !store.empty())
+        mSaver.worldLoaded(mScene, store);
     if (!mOptions.camera.empty()) {
         bool found =
             std::any_of(mScene.cameras.begin(), mScene.cameras.end(),
@@ -261,7 +275,8 @@ engine::Status Sandbox::init() {
     mPresenter = std::make_unique<engine::gpu::Presenter>(*mCtx, mWindow->framebufferSize(), true);
     mRenderer = std::make_unique<engine::render::Renderer>(*mCtx);
     mHud.visible = mOptions.hud;
-    auto lighting = engine::scene::lightingFor(&mScene, mOptions.lighting);
+    auto lighting =
+        engine::scene::lightingFor(&mScene, mOptions.lighting, engine::scene::playerDefaults());
     if (!lighting) return lighting.error();
     mLighting = *lighting;
 
@@ -298,6 +313,9 @@ int Sandbox::run() {
     mLastFrameStart = std::chrono::steady_clock::now();
     while (!mQuit) frame();
     int exitCode = 0;
+    // Saves still being written finish before the process ends, and say how they went.
+    mSaver.waitIdle();
+    if (!pollSaves()) exitCode = 1;
     for (auto [log, file] :
          {std::pair{mFrameLog, &mFrameLogFile}, std::pair{mWalkLog, &mWalkLogFile}}) {
         if (!log) continue;
@@ -402,7 +420,7 @@ void Sandbox::applyHudActions(const HudActions& actions) {
     if (actions.quitSave || actions.quitDiscard || actions.quitCancel) {
         mQuitPrompt = false;
         if (actions.quitSave) {
-            if (engine::Status st = save(mSavePath, false); !st) {
+            if (engine::Status st = save(mSavePath, false, /*wait=*/true); !st) {
                 message("save failed: " + st.error().message);
             } else {
                 mQuit = true;
@@ -437,6 +455,9 @@ Sandbox::RenderedFrame Sandbox::renderFrame(glm::uvec2 framebuffer) {
     glm::uvec2 size = renderSize(framebuffer);
     settings.width = size.x;
     settings.height = size.y;
+    // A reconstructing display (--display upsampled or denoised) resolves to the window's size.
+    settings.displayWidth = framebuffer.x;
+    settings.displayHeight = framebuffer.y;
     settings.exposure = mExposure;
     settings.timeSeconds =
         mTime;  // dynamic objects: the script clock when scripted, else wall clock
@@ -608,7 +629,7 @@ void Sandbox::handleToolKeys(bool hudMouse, bool clickCaptured) {
 void Sandbox::handleQuitPrompt() {
     if (mInput.pressed(GLFW_KEY_Y) || mInput.pressed(GLFW_KEY_ENTER)) {
         mQuitPrompt = false;
-        if (engine::Status st = save(mSavePath, false); !st) {
+        if (engine::Status st = save(mSavePath, false, /*wait=*/true); !st) {
             message("save failed: " + st.error().message);
         } else {
             mQuit = true;
@@ -711,7 +732,7 @@ void Sandbox::redo() {
     message("redo: " + label);
 }
 
-engine::Status Sandbox::save(const fs::path& path, bool autosave) {
+engine::Status Sandbox::save(const fs::path& path, bool autosave, bool wait) {
     // The current view becomes the first camera preset, so reopening the save resumes here.
     std::vector<world::CameraPreset> presets = mScene.cameras;
     world::CameraPreset view = mCamera.preset();
@@ -721,16 +742,43 @@ engine::Status Sandbox::save(const fs::path& path, bool autosave) {
     std::erase_if(mScene.cameras,
                   [](const world::CameraPreset& c) { return c.name == kSavedViewName; });
     mScene.cameras.insert(mScene.cameras.begin(), view);
-    engine::Status s = mStore->save(mScene, path);
+    // In the frame: a copy of the regions edited since the last save to this file; the worker
+    // writes them.
+    auto regions = mSaver.request(mScene, path, autosave, mWorldVersion);
     mScene.cameras = std::move(presets);
-    if (!s) return s;
+    if (!regions) return regions.error();
     mAutosave.written(mTime, mWorldVersion);
-    if (!autosave) mSavedVersion = mWorldVersion;
+    if (!autosave) mPendingSaveVersion = mWorldVersion;
     if (mEditLog)
         mEditLog << fmt::format("{} {} {}\n", autosave ? "autosave" : "save", mFrame, path.string())
                  << std::flush;
-    message(fmt::format("{} {}", autosave ? "autosaved to" : "saved", path.string()));
+    if (wait) {
+        mSaver.waitIdle();
+        return pollSaves(/*quiet=*/true);
+    }
     return {};
+}
+
+engine::Status Sandbox::pollSaves(bool quiet) {
+    engine::Status last;
+    for (BackgroundSaver::Done& d : mSaver.poll(mScene)) {
+        if (!d.autosave && mPendingSaveVersion == d.worldVersion) mPendingSaveVersion.reset();
+        if (!d.status) {
+            if (!quiet || d.autosave)
+                message(fmt::format("{} failed: {}", d.autosave ? "autosave" : "save",
+                                    d.status.error().message));
+            if (d.autosave) mAutosave.postpone(mTime);  // try again after another interval
+            last = d.status;
+            continue;
+        }
+        if (!d.autosave) mSavedVersion = d.worldVersion;
+        message(fmt::format("{} {} ({}{} region(s), {:.1f} MiB stored, {:.0f} ms on the worker)",
+                            d.autosave ? "autosaved to" : "saved", d.savePath.string(),
+                            d.whole ? "whole world: " : "",
+                            d.report.regionsWritten + d.report.regionsErased,
+                            double(d.report.storedBytes) / (1 << 20), d.workerMs));
+    }
+    return last;
 }
 
 void Sandbox::logView(const char* what, const fs::path& path) {
@@ -750,14 +798,15 @@ void Sandbox::writeRenderImage(const fs::path& path) {
     engine::render::FrameImages images = mRenderer->readback();
     std::error_code ec;
     if (path.has_parent_path()) fs::create_directories(path.parent_path(), ec);
-    engine::Status s = engine::io::writePng(path, images.width, images.height, images.rgba8);
+    engine::Status s =
+        engine::io::writePng(path, images.displayWidth, images.displayHeight, images.rgba8);
     if (!s) {
         message("screenshot failed: " + s.error().message);
         return;
     }
     logView("screenshot", path);
-    message(fmt::format("screenshot {} ({}x{}, rendered image)", path.string(), images.width,
-                        images.height));
+    message(fmt::format("screenshot {} ({}x{}, rendered image)", path.string(), images.displayWidth,
+                        images.displayHeight));
 }
 
 void Sandbox::writeWindowCapture(const fs::path& path) {
@@ -799,6 +848,7 @@ void Sandbox::afterFrame(const engine::render::FrameResult& result, bool present
         mPendingRenderPath.clear();
     }
     if (mScript) runScriptActions();
+    (void)pollSaves();  // reported by message()
     if (mAutosave.due(mTime, mWorldVersion)) {
         engine::Status s = save(autosavePath(mSavePath), true);
         if (!s) {

@@ -9,7 +9,9 @@
 #include "io/vox_import.h"
 #include "scene/generators/vdb_keys.h"
 #include "scene/scene_file.h"
+#include "scene/store_world.h"
 #include "scene/world_pair.h"
+#include "world/region_store.h"
 
 namespace game {
 
@@ -61,26 +63,11 @@ public:
         // rule "ids": our own file's material grid, mapped by name onto the palette listed above
         // it, which is the same palette in the same order; so every id comes back unchanged.
         // Everything else (objects with their generators, [indirect], [path]) is written as loaded.
-        // Each object's model goes to a payload of its own, STEM.object-HASH.vdb (same layout and
-        // rule), written with the pair (scene/world_pair.h); named by content, an unchanged model
-        // is not rewritten.
-        const std::string stem = engine::scene::payloadStem(sceneFile);
-        std::vector<std::vector<engine::world::GeneratorRecord>> objectGenerators;
+        ObjectPayloads objects = objectPayloads(scene, sceneFile);
+        std::vector<std::vector<engine::world::GeneratorRecord>>& objectGenerators =
+            objects.generators;
         engine::scene::WorldPairOptions options{.beforeCommit = mFaults.beforeCommit};
-        for (const engine::world::DynamicObject& o : scene.objects) {
-            const std::string name =
-                fmt::format("{}.object-{:016x}.vdb", stem, modelHash(o, scene.palette));
-            auto write = [&scene, &o](const fs::path& file) {
-                engine::world::Scene model;
-                model.name = o.name;
-                model.voxelSize = scene.voxelSize;
-                model.palette = scene.palette;
-                model.grid = *o.model;
-                return engine::io::exportVdb(model, file);
-            };
-            options.extraPayloads.push_back({name, write});
-            objectGenerators.push_back({engine::scene::vdbPayloadGenerator(name, /*ids=*/true)});
-        }
+        options.extraPayloads = std::move(objects.files);
         auto text = [&](const std::string& payloadName) {
             std::vector<engine::world::GeneratorRecord> generators{
                 engine::scene::vdbPayloadGenerator(payloadName, /*ids=*/true)};
@@ -96,10 +83,12 @@ public:
         // vox render X.vdb); Ctrl+S then saves it as a world under saves/.
         if (sceneFile.extension() == ".vdb") return engine::io::importVdb(sceneFile);
         if (sceneFile.extension() == ".vox") return engine::io::importVox(sceneFile);
+        if (sceneFile.extension() == ".db") return engine::scene::loadWorldStore(sceneFile);
         return engine::scene::loadSceneFile(sceneFile);
     }
 
     bool isSave(const fs::path& sceneFile) const override {
+        if (sceneFile.extension() == ".db") return engine::world::RegionStore::isStore(sceneFile);
         return engine::scene::sceneFileMarked(sceneFile, engine::scene::kSaveMarker);
     }
 
@@ -108,6 +97,30 @@ private:
 };
 
 }  // namespace
+
+ObjectPayloads objectPayloads(const engine::world::Scene& scene, const fs::path& sceneFile) {
+    // Each object's model goes to a payload of its own, STEM.object-HASH.vdb (same layout, rule
+    // "ids"); named by content, an unchanged model is not rewritten. The writers hold what they
+    // need by value (the model is shared, never copied), so they may run on another thread.
+    ObjectPayloads out;
+    const std::string stem = engine::scene::payloadStem(sceneFile);
+    for (const engine::world::DynamicObject& o : scene.objects) {
+        const std::string name =
+            fmt::format("{}.object-{:016x}.vdb", stem, modelHash(o, scene.palette));
+        auto write = [model = o.model, objectName = o.name, voxelSize = scene.voxelSize,
+                      palette = scene.palette](const fs::path& file) {
+            engine::world::Scene m;
+            m.name = objectName;
+            m.voxelSize = voxelSize;
+            m.palette = palette;
+            m.grid = *model;
+            return engine::io::exportVdb(m, file);
+        };
+        out.files.push_back({name, write});
+        out.generators.push_back({engine::scene::vdbPayloadGenerator(name, /*ids=*/true)});
+    }
+    return out;
+}
 
 fs::path defaultSavePath(std::string_view worldName) {
     return fs::path("saves") / (worldFileStem(worldName) + ".toml");

@@ -17,6 +17,7 @@
 #include <string_view>
 
 #include "core/error.h"
+#include "scene/world_pair.h"
 #include "world/scene.h"
 
 namespace game {
@@ -33,6 +34,7 @@ public:
     virtual ~WorldStore() = default;
     virtual engine::Status save(const engine::world::Scene& scene,
                                 const std::filesystem::path& sceneFile) = 0;
+    // A scene file, a world store (.db), or a .vdb / .vox standing for itself.
     virtual engine::Result<engine::world::Scene> load(const std::filesystem::path& sceneFile) = 0;
     // True if `sceneFile` is a save this store wrote (and may overwrite); false for hand-written
     // scene files, which a save must never replace.
@@ -40,6 +42,15 @@ public:
 };
 
 std::unique_ptr<WorldStore> makeWorldStore(SaveFaults faults = {});
+
+// The dynamic objects' models as payloads beside a save (`STEM.object-HASH.vdb`, rule "ids"), and
+// the generators naming them, one list per object in scene order (SceneWriteOptions).
+struct ObjectPayloads {
+    std::vector<engine::scene::PayloadFile> files;
+    std::vector<std::vector<engine::world::GeneratorRecord>> generators;
+};
+ObjectPayloads objectPayloads(const engine::world::Scene& scene,
+                              const std::filesystem::path& sceneFile);
 
 // Where a world saves by default: saves/NAME.toml, NAME from the scene file's `name` by
 // game/world_file_stem.h, so a hostile name like "../../x" or "/etc/x" cannot save outside

@@ -1,8 +1,13 @@
 #!/usr/bin/env python3
-"""Charts a `vox bench sweep` CSV: per scene, error (MAE and MSE, log) against GPU milliseconds
-per frame, one marker style per method, the Pareto front (no other point is both faster and
-more accurate) joined. MAE shows bias best, MSE punishes fireflies: both are drawn, and the mean
+"""Charts a `vox bench sweep` CSV: per scene, error (MAE and MSE, log) against the cost per frame,
+one marker style per method, the Pareto front (no other point is both cheaper and more accurate,
+by medians) joined. MAE shows bias best, MSE punishes fireflies: both are drawn, and the mean
 ratio (mean of non-emitting pixels over the reference's) shows bias at a glance.
+
+The cost (sweeps with the cost model: cost_ms) is the counted work at per-kind costs fitted to the
+sweep's interleaved rounds, in ms of the scene's first point; its horizontal bar is the rounds'
+interval, the vertical bar the errors' min-max over the seeds. Older sweeps (no cost_ms) are drawn
+against their median GPU time without bars.
 
 Rows measured against the multi-bounce reference (reference_bounces > 0: the indirect-light
 series none / cache-K / path tracer) get their own chart per scene: their errors are against
@@ -45,11 +50,32 @@ def read(path):
     with open(path, newline="") as f:
         for row in csv.DictReader(f):
             kind, group, bounces = series(row)
-            scenes[row["scene"]][kind].append({"group": group, "setting": row["setting"], "bounces": bounces,
-                                               "ms": float(row["total_ms"]), "mae": float(row["mae"]),
-                                               "mse": float(row["mse"]),
-                                               "ratio": float(row.get("mean_ratio") or "nan")})
+            point = {"group": group, "setting": row["setting"], "bounces": bounces,
+                     "ms": float(row["total_ms"]), "mae": float(row["mae"]), "mse": float(row["mse"]),
+                     "ratio": float(row.get("mean_ratio") or "nan"), "costed": False}
+            if row.get("cost_ms"):
+                point.update(ms=float(row["cost_ms"]), ms_low=float(row["cost_low"]),
+                             ms_high=float(row["cost_high"]), costed=True)
+                for key in ("mae", "mse"):
+                    point[key + "_low"] = float(row[key + "_low"])
+                    point[key + "_high"] = float(row[key + "_high"])
+            scenes[row["scene"]][kind].append(point)
     return scenes
+
+
+def bars(points, key):
+    """Error bars (lower, upper distances) for x (cost) and y (error), or None without them."""
+    if not all(p["costed"] for p in points):
+        return None, None
+    xerr = [[max(p["ms"] - p["ms_low"], 0) for p in points], [max(p["ms_high"] - p["ms"], 0) for p in points]]
+    yerr = [[max(p[key] - p[key + "_low"], 0) for p in points], [max(p[key + "_high"] - p[key], 0) for p in points]]
+    return xerr, yerr
+
+
+def xlabel(points):
+    if all(p["costed"] for p in points):
+        return "cost per frame, ms (counted work x fitted per-kind cost; bar: interval over rounds)"
+    return "GPU ms per frame (lavapipe)"
 
 
 def chart(scene, points, markers, title, out):
@@ -57,15 +83,20 @@ def chart(scene, points, markers, title, out):
     for ax, key in zip(axes, ("mae", "mse")):
         for group in sorted({p["group"] for p in points}):
             mine = [p for p in points if p["group"] == group]
-            ax.scatter([p["ms"] for p in mine], [p[key] for p in mine], marker=markers.get(group, "x"), label=group)
+            sc = ax.scatter([p["ms"] for p in mine], [p[key] for p in mine], marker=markers.get(group, "x"),
+                            label=group)
+            xerr, yerr = bars(mine, key)
+            if xerr:
+                ax.errorbar([p["ms"] for p in mine], [p[key] for p in mine], xerr=xerr, yerr=yerr, fmt="none",
+                            ecolor=sc.get_facecolor()[0], elinewidth=0.7, capsize=1.5)
         front = pareto(points, key)
         ax.plot([p["ms"] for p in front], [p[key] for p in front], "k--", linewidth=1, label="Pareto front")
         for p in front:
             ax.annotate(p["setting"], (p["ms"], p[key]), fontsize=6, xytext=(3, 3), textcoords="offset points")
         ax.set_yscale("log")
-        ax.set_xlabel("GPU ms per frame (lavapipe)")
-        ax.set_ylabel(f"{key.upper()} vs {title} (log)")
-        ax.set_title(f"{scene}: {key.upper()} against time")
+        ax.set_xlabel(xlabel(points), fontsize=8)
+        ax.set_ylabel(f"{key.upper()} vs {title} (log; bar: seeds' min-max)")
+        ax.set_title(f"{scene}: {key.upper()} against cost")
         ax.grid(True, which="both", linewidth=0.3)
         ax.legend(fontsize=7)
     # Bias at a glance: mean of the non-emitting pixels over the reference's (1 = no bias).
@@ -74,9 +105,9 @@ def chart(scene, points, markers, title, out):
         mine = [p for p in points if p["group"] == group]
         ax.scatter([p["ms"] for p in mine], [p["ratio"] for p in mine], marker=markers.get(group, "x"), label=group)
     ax.axhline(1.0, color="k", linewidth=0.8)
-    ax.set_xlabel("GPU ms per frame (lavapipe)")
+    ax.set_xlabel(xlabel(points), fontsize=8)
     ax.set_ylabel(f"mean / {title}")
-    ax.set_title(f"{scene}: mean ratio (bias) against time")
+    ax.set_title(f"{scene}: mean ratio (bias) against cost")
     ax.grid(True, linewidth=0.3)
     fig.tight_layout()
     fig.savefig(out, dpi=110)

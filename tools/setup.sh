@@ -12,6 +12,7 @@ packages=(
   libglfw3-dev libglm-dev libopenvdb-dev libopenvdb-tools libblosc-dev zlib1g-dev time
   libgtest-dev libgmock-dev libbenchmark-dev
   libstb-dev libopenexr-dev libtomlplusplus-dev libcli11-dev libfmt-dev libspdlog-dev libimgui-dev
+  libsqlite3-dev libzstd-dev  # the world store (docs/WORLD_STORE.md)
   python3 python3-matplotlib xvfb xauth clang clang-format
   ffmpeg  # optional: vox capture writes an MP4 when it is on PATH
   slurm-wlm munge parallel  # capture and sweep jobs (--scheduler slurm|parallel); the test starts a one-node Slurm

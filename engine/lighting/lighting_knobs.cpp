@@ -121,6 +121,8 @@ constexpr std::array<std::string_view, 5> kIndirect{"none", "cache", "path", "re
 constexpr std::array<std::string_view, 2> kModes{"point", "area"};
 constexpr std::array<std::string_view, 3> kSampling{"uniform", "power", "regir"};
 constexpr std::array<std::string_view, 2> kPixelFilters{"box", "centre"};
+// In the order of enum Display.
+constexpr std::array<std::string_view, 3> kDisplays{"raw", "upsampled", "denoised"};
 
 using S = LightingSettings;
 using C = IrradianceCacheSettings;
@@ -533,6 +535,50 @@ const Knob kExposure[] = {
      .relevant = usesAutoExposure},
 };
 
+// The displayed image's reconstruction (render/denoiser/, render/upsampling/).
+using D = DisplaySettings;
+const Knob kDisplay[] = {
+    {.name = "display",
+     .help = "The image shown: raw (as shaded, one sample per pixel at the render size) | "
+             "upsampled (jittered primary rays resolved over frames to the display size) | "
+             "denoised (the lighting denoised first; vox play, render and capture default to it)",
+     .kind = KnobKind::Choice,
+     .choices = kDisplays,
+     .get = getPartField<&S::display, &D::mode>,
+     .set = setPartField<&S::display, &D::mode>},
+    {.name = "denoise_history",
+     .help = "denoised: frames the denoiser's temporal mean holds at most",
+     .kind = KnobKind::Count,
+     .min = 1,
+     .max = 1024,
+     .get = getPartField<&S::display, &D::denoiseHistory>,
+     .set = setPartField<&S::display, &D::denoiseHistory>,
+     .relevant = denoises},
+    {.name = "denoise_passes",
+     .help = "denoised: edge-stopped a-trous passes (taps 1, 2, 4, ... pixels apart)",
+     .kind = KnobKind::Count,
+     .min = 1,
+     .max = 6,
+     .get = getPartField<&S::display, &D::denoisePasses>,
+     .set = setPartField<&S::display, &D::denoisePasses>,
+     .relevant = denoises},
+    {.name = "resolve_history",
+     .help = "upsampled, denoised: frames of display history the resolve holds at most",
+     .kind = KnobKind::Count,
+     .min = 1,
+     .max = 1024,
+     .get = getPartField<&S::display, &D::resolveHistory>,
+     .set = setPartField<&S::display, &D::resolveHistory>,
+     .relevant = reconstructs},
+    {.name = "jitter",
+     .help = "upsampled, denoised: a sub-pixel jitter of the primary rays per frame, which the "
+             "resolve turns into anti-aliasing (off: pixel centres)",
+     .kind = KnobKind::Switch,
+     .get = getPartField<&S::display, &D::jitter>,
+     .set = setPartField<&S::display, &D::jitter>,
+     .relevant = reconstructs},
+};
+
 const KnobGroup kGroups[] = {
     {"lighting", "", kLighting},
     {"emitters", "", kEmitters},
@@ -545,6 +591,7 @@ const KnobGroup kGroups[] = {
     {"vct", "", kVct},
     {"accumulation", "", kAccumulation},
     {"exposure", "", kExposure},
+    {"display", "", kDisplay},
 };
 
 // Rules between knobs that no single range expresses.

@@ -49,6 +49,12 @@ bool usesVct(const LightingSettings& s) {
     return s.indirect == Indirect::Vct && s.method != Method::Reference;
 }
 bool usesAutoExposure(const LightingSettings& s) { return s.exposure.automatic; }
+bool reconstructs(const LightingSettings& s) {
+    return s.display.mode != Display::Raw && s.method != Method::Reference;
+}
+bool denoises(const LightingSettings& s) {
+    return s.display.mode == Display::Denoised && reconstructs(s) && s.method != Method::Preview;
+}
 bool accumulates(const LightingSettings& s) {
     return s.accumulation.enabled && s.method != Method::Reference && s.method != Method::Preview;
 }

@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "lighting/accumulation_settings.h"
+#include "lighting/display_settings.h"
 #include "lighting/exposure_settings.h"
 #include "lighting/irradiance_cache_settings.h"
 #include "lighting/path_indirect_settings.h"
@@ -66,6 +67,7 @@ struct LightingSettings {
     Sky sky = Sky::None;
     AccumulationSettings accumulation;
     ExposureSettings exposure;  // the display's: fixed or metered from the lit image
+    DisplaySettings display;    // raw, or reconstructed to the display's size
 
     bool operator==(const LightingSettings&) const = default;
 };
@@ -82,6 +84,11 @@ bool usesVct(const LightingSettings& s);
 // noise-free preview.
 bool accumulates(const LightingSettings& s);
 bool usesAutoExposure(const LightingSettings& s);
+// The image resolved over frames to the display's size (jittered primary rays): every method but
+// the reference (its own pixel filter and running mean).
+bool reconstructs(const LightingSettings& s);
+// The lighting denoised before that: not the noise-free preview.
+bool denoises(const LightingSettings& s);
 bool usesRegir(const LightingSettings& s);  // ReSTIR and RIS with sampling regir
 // Lights drawn by power from the alias table: ReSTIR/RIS candidates and the cache's bounce.
 bool drawsLightsByPower(const LightingSettings& s);

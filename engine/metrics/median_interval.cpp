@@ -59,10 +59,10 @@ MedianInterval productInterval(const MedianInterval& a, const MedianInterval& b)
     return out;
 }
 
-Verdict verdictOf(const MedianInterval& ratio, double confidence) {
+Verdict verdictOf(const MedianInterval& ratio, double confidence, double noise) {
     if (ratio.count == 0 || ratio.covered < confidence) return Verdict::Unresolved;
-    if (ratio.low > 1.0) return Verdict::Above;
-    if (ratio.high < 1.0) return Verdict::Below;
+    if (ratio.low > 1.0 + noise) return Verdict::Above;
+    if (ratio.high < 1.0 / (1.0 + noise)) return Verdict::Below;
     return Verdict::Unresolved;
 }
 

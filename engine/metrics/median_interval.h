@@ -30,7 +30,10 @@ MedianInterval productInterval(const MedianInterval& a, const MedianInterval& b)
 // What a ratio's interval allows one to say against 1: above (every plausible value > 1),
 // below, or unresolved (the interval contains 1, or is too wide to have its confidence).
 enum class Verdict { Above, Below, Unresolved };
-Verdict verdictOf(const MedianInterval& ratio, double confidence = 0.95);
+// `noise`: the smallest difference worth a verdict (criterion.rs's noise threshold): the interval
+// must also exclude [1 / (1 + noise), 1 + noise], so a ratio whose interval ends at 1.00 in one
+// run and 1.04 in the next is "unresolved" in both rather than flipping.
+Verdict verdictOf(const MedianInterval& ratio, double confidence = 0.95, double noise = 0.0);
 std::string_view verdictName(Verdict v);  // "> 1", "< 1", "unresolved"
 
 }  // namespace engine::metrics

@@ -24,11 +24,12 @@ shared::FrameParams makeFrameParams(const world::CameraPreset& camera, const wor
     f.skyRadiance = glm::vec4(sky.skyRadiance, 0.0f);
     f.imageSize = glm::uvec4(settings.width, settings.height, 0u, 0u);
     f.exposure = glm::vec4(settings.exposure, 0.0f, 0.0f, 0.0f);
+    f.displaySize = glm::uvec4(settings.width, settings.height, 0u, 0u);
     return f;
 }
 
 glm::vec3 cameraRayDirection(const shared::FrameParams& f, glm::uvec2 pixel) {
-    return cameraRayDirectionAt(f, glm::vec2(pixel) + 0.5f);
+    return cameraRayDirectionAt(f, glm::vec2(pixel) + 0.5f + glm::vec2(f.jitter));
 }
 
 glm::vec3 cameraRayDirectionAt(const shared::FrameParams& f, glm::vec2 imagePosition) {

@@ -30,6 +30,7 @@ FramePlan planFrame(const lighting::LightingSettings& lighting, const SceneShape
         if (!step.plan.runs) continue;
         for (const auto& [feature, value] : step.plan.features) plan.features[feature] = value;
         plan.addsIndirect = plan.addsIndirect || step.plan.addsIndirect;
+        plan.writesDisplay = plan.writesDisplay || step.plan.writesDisplay;
     }
     return plan;
 }

@@ -22,7 +22,8 @@ struct FramePlan {
     std::vector<Step> steps;  // every registered technique, in registry order, running or not
     // The frame's: the emitters' sampling and the dynamic grid, then each running technique's.
     ShaderFeatures features{};
-    bool addsIndirect = false;  // a running technique writes the indirect term
+    bool addsIndirect = false;   // a running technique writes the indirect term
+    bool writesDisplay = false;  // a running technique writes the display image
 
     bool runs(std::string_view technique) const;
 };

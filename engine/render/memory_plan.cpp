@@ -18,7 +18,7 @@ double mib(std::uint64_t bytes) { return double(bytes) / double(1 << 20); }
 }  // namespace
 
 MemoryPlan planMemory(const world::Scene& scene, glm::uvec2 frameSize,
-                      const lighting::LightingSettings& lighting) {
+                      const lighting::LightingSettings& lighting, glm::uvec2 displaySize) {
     // From the grid's own counts: cheap enough for every new world the renderer meets.
     const world::GridMemory grid = scene.grid.memory();
     const std::uint64_t palette = scene.palette.size() * sizeof(shared::GpuMaterial);
@@ -38,7 +38,12 @@ MemoryPlan planMemory(const world::Scene& scene, glm::uvec2 frameSize,
     plan.upload = std::min<std::uint64_t>(gpu::Uploader::kChunkBytes,
                                           std::bit_ceil(plan.gpuWorld));  // one chunk at most
     plan.frame = std::uint64_t(frameSize.x) * frameSize.y * Renderer::frameBytesPerPixel();
-    for (const FramePlan::Step& step : planFrame(lighting, sceneShape(scene), frameSize).steps) {
+    const FramePlan frame = planFrame(lighting, sceneShape(scene), frameSize);
+    if (frame.writesDisplay) {
+        const glm::uvec2 display = displaySize.x != 0 ? displaySize : frameSize;
+        plan.frame += std::uint64_t(display.x) * display.y * Renderer::displayBytesPerPixel();
+    }
+    for (const FramePlan::Step& step : frame.steps) {
         if (step.plan.runs && step.plan.deviceBytes)
             plan.techniques.emplace_back(step.technique->name, step.plan.deviceBytes);
     }

@@ -32,8 +32,9 @@ struct MemoryPlan {
     std::uint64_t total() const { return world + gpuWorld + upload + frame + techniqueBytes(); }
 };
 
+// `displaySize`: the displayed image's when the lighting resolves to it (0: the frame's size).
 MemoryPlan planMemory(const world::Scene& scene, glm::uvec2 frameSize,
-                      const lighting::LightingSettings& lighting);
+                      const lighting::LightingSettings& lighting, glm::uvec2 displaySize = {0, 0});
 
 // "peak   N MiB to show at WxH: world …, gpu world …, …; budget B MiB"
 std::string formatMemoryPlan(const MemoryPlan& plan, std::uint64_t budgetBytes);

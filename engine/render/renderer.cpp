@@ -82,6 +82,24 @@ std::uint64_t Renderer::frameBytesPerPixel() {
            sizeof(glm::uvec4);
 }
 
+std::uint64_t Renderer::displayBytesPerPixel() {
+    // resizeDisplay's buffers, the LDR image at that size and the resolve's keys (two of each).
+    return 2 * sizeof(glm::vec4) + sizeof(std::uint32_t) + 2 * sizeof(std::uint32_t);
+}
+
+void Renderer::resizeDisplay(glm::uvec2 size, bool written) {
+    if (mDisplaySize == size && (mDisplay[0].size() != 0) == written) return;
+    mDisplaySize = size;
+    const std::uint64_t pixels = std::uint64_t(size.x) * size.y;
+    for (int i = 0; i < 2; ++i) {
+        mDisplay[i] = written
+                          ? gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(glm::vec4),
+                                        i ? "frame.display1" : "frame.display0")
+                          : gpu::Buffer();
+    }
+    mLdr = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(std::uint32_t), "frame.ldr");
+}
+
 void Renderer::resize(glm::uvec2 size) {
     if (mSize == size) return;
     mSize = size;
@@ -96,7 +114,6 @@ void Renderer::resize(glm::uvec2 size) {
     }
     mRadiance =
         gpu::Buffer(mCtx, BufferKind::Storage, pixels * sizeof(glm::vec4), "frame.radiance");
-    mLdr = gpu::Buffer(mCtx, BufferKind::Storage, pixels * sizeof(std::uint32_t), "frame.ldr");
     mRayStats =
         gpu::Buffer(mCtx, BufferKind::Storage, pixels * sizeof(glm::uvec4), "frame.rayStats");
     mIndirect =
@@ -109,14 +126,16 @@ void Renderer::resetHistory() {
     mPrevTime.reset();
 }
 
-void Renderer::checkMemory(const world::Scene& scene, glm::uvec2 size,
+void Renderer::checkMemory(const world::Scene& scene, glm::uvec2 size, glm::uvec2 displaySize,
                            const lighting::LightingSettings& lighting) {
-    if (mSize == size && !mWorld.needsFullUpload(scene.grid)) return;
+    if (mSize == size && mRequestedDisplay == displaySize && !mWorld.needsFullUpload(scene.grid))
+        return;
     // About to allocate the frame's buffers or the world's GPU copy: refuse, with the plan, what
     // would not fit, before allocating any of it.
-    const MemoryPlan memory = planMemory(scene, size, lighting);
+    const MemoryPlan memory = planMemory(scene, size, lighting, displaySize);
     if (Status s = checkMemoryPlan(memory, memoryBudgetBytes(), "world '" + scene.name + "'"); !s)
         throw MemoryBudgetExceeded(s.error().message);
+    mRequestedDisplay = displaySize;
 }
 
 void Renderer::updateScene(world::Scene& scene, const FrameSettings& settings,
@@ -146,6 +165,7 @@ void Renderer::prepareFrame(gpu::CommandList& cmd, world::Scene& scene, const Fr
     scene.grid.clearDirty();  // every consumer has seen them (changes.editedCells)
 
     shared::FrameParams params = makeFrameParams(in.camera, scene.sky, in.settings);
+    params.displaySize = glm::uvec4(in.displaySize, 0u, 0u);
     const shared::FrameParams prev =
         makeFrameParams(changes.previousCamera, scene.sky, in.settings);
     params.prevCameraPosition = prev.cameraPosition;
@@ -169,17 +189,24 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
                              const lighting::LightingSettings& lighting,
                              gpu::Presenter* presenter) {
     const glm::uvec2 size(settings.width, settings.height);
-    checkMemory(scene, size, lighting);
+    // The display's size if a technique resolves to it (the memory plan asks the frame plan).
+    const glm::uvec2 requestedDisplay =
+        settings.displayWidth != 0 ? glm::uvec2(settings.displayWidth, settings.displayHeight)
+                                   : size;
+    checkMemory(scene, size, requestedDisplay, lighting);
+    // Before the scene's update: a new size forgets the last frame's time, which the objects'
+    // previous poses must not see after the update.
     resize(size);
     FrameResult result;
     updateScene(scene, settings, lighting, result);
     const FramePlan frame = planFrame(lighting, sceneShape(scene), size);
+    resizeDisplay(frame.writesDisplay ? requestedDisplay : size, frame.writesDisplay);
     // Every pass compiled without the code of the features this frame does not use.
     const std::span<const std::uint32_t> specialization =
         mSpecializeShaders ? std::span<const std::uint32_t>(frame.features)
                            : std::span<const std::uint32_t>();
     FrameCommands commands(mCtx, mTimer, mLateTimer, specialization);
-    const FrameInput in{scene, camera, settings, lighting, mSize, mFrameIndex};
+    const FrameInput in{scene, camera, settings, lighting, mSize, mDisplaySize, mFrameIndex};
     prepareFrame(commands.current(), scene, in, frame, result);
 
     gpu::Buffer& gbuffer = mGBuffers[mCurrent];
@@ -192,12 +219,16 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
                                mIndirect,
                                mRayStats,
                                mExposure,
+                               mDisplay[mCurrent],
+                               mDisplay[mCurrent ^ 1u],
                                mSize,
+                               mDisplaySize,
                                mCurrent};
     for (std::size_t i = 0; i < mTechniques.size(); ++i) {
         if (frame.steps[i].plan.runs) mTechniques[i]->record(commands, buffers);
     }
-    mTonemap.record(commands.current(), {mFrameParams, mRadiance, mLdr, mExposure}, mSize);
+    const gpu::Buffer& shown = frame.writesDisplay ? mDisplay[mCurrent] : mRadiance;
+    mTonemap.record(commands.current(), {mFrameParams, shown, mLdr, mExposure}, mDisplaySize);
     commands.finish();
     result.passMs = commands.passMs();
     for (std::size_t i = 0; i < mTechniques.size(); ++i) {
@@ -215,7 +246,7 @@ void Renderer::present(gpu::Presenter& presenter, FrameResult& result) {
     // ends the frame's submission orders the LDR writes before the copy.
     gpu::CommandList cmd(mCtx, &mPresentTimer);
     cmd.begin();
-    presenter.record(cmd, mLdr, mSize);
+    presenter.record(cmd, mLdr, mDisplaySize);
     cmd.submitAndWait(presenter.submitSync());
     presenter.endFrame();
     for (const auto& pass : mPresentTimer.results()) result.passMs.push_back(pass);
@@ -226,7 +257,9 @@ FrameImages Renderer::readback() {
     images.width = mSize.x;
     images.height = mSize.y;
     const gpu::Buffer& gbuffer = mGBuffers[mCurrent ^ 1u];  // the last rendered frame's
-    const gpu::Buffer* sources[] = {&mRadiance, &mLdr, &gbuffer, &mRayStats, &mIndirect};
+    const bool resolved = mDisplay[0].size() != 0;
+    const gpu::Buffer& display = resolved ? mDisplay[mCurrent ^ 1u] : mRadiance;
+    const gpu::Buffer* sources[] = {&mRadiance, &mLdr, &gbuffer, &mRayStats, &mIndirect, &display};
     std::uint64_t total = 0;
     for (const gpu::Buffer* b : sources) total += b->size();
     gpu::Buffer readback(mCtx, gpu::BufferKind::Readback, total, "frame.readback");
@@ -251,6 +284,9 @@ FrameImages Renderer::readback() {
     take(images.gbuffer, gbuffer, at);
     take(images.rayStats, mRayStats, at);
     take(images.indirect, mIndirect, at);
+    take(images.display, display, at);
+    images.displayWidth = mDisplaySize.x;
+    images.displayHeight = mDisplaySize.y;
     return images;
 }
 

@@ -55,6 +55,10 @@ struct FrameImages {
     std::vector<glm::uvec4> rayStats;  // preview only: x primary steps, y shadow steps, z rays
     std::vector<glm::vec4>
         indirect;  // the indirect term alone: the cache's or the path tracer's (zero without one)
+    // What the display shows, at its size: `rgba8` (tonemapped) and `display` (linear, before
+    // exposure). Without a reconstruction the render size, and `display` is `radiance`.
+    std::uint32_t displayWidth = 0, displayHeight = 0;
+    std::vector<glm::vec4> display;
 };
 
 class Renderer {
@@ -64,9 +68,13 @@ public:
     // Device bytes of the buffers the frame itself keeps per pixel (G-buffers, radiance, …); each
     // technique's own are in its plan (TechniquePlan::deviceBytes).
     static std::uint64_t frameBytesPerPixel();
+    // The same per display pixel when a technique resolves the image to the display's size.
+    static std::uint64_t displayBytesPerPixel();
 
     // `presenter`, when given, must have begun its frame (Presenter::beginFrame); the frame is
     // presented before this returns.
+    // `settings.displayWidth/Height` size the displayed image when the lighting reconstructs it
+    // (lighting::reconstructs); the LDR image and the presented one are at that size.
     FrameResult render(world::Scene& scene, const world::CameraPreset& camera,
                        const FrameSettings& settings,
                        const lighting::LightingSettings& lighting = {},
@@ -93,9 +101,11 @@ public:
 
 private:
     // Refuses, before allocating any of it, a frame whose buffers or world would not fit.
-    void checkMemory(const world::Scene& scene, glm::uvec2 size,
+    void checkMemory(const world::Scene& scene, glm::uvec2 size, glm::uvec2 displaySize,
                      const lighting::LightingSettings& lighting);
     void resize(glm::uvec2 size);
+    // The display image's buffers: at `size` when a technique writes it, else none.
+    void resizeDisplay(glm::uvec2 size, bool written);
     // The emitter list and the dynamic objects brought up to this frame, on the host.
     void updateScene(world::Scene& scene, const FrameSettings& settings,
                      const lighting::LightingSettings& lighting, FrameResult& result);
@@ -124,6 +134,9 @@ private:
     gpu::Buffer mFrameParams, mRadiance, mLdr, mRayStats, mIndirect;
     gpu::Buffer mExposure;  // shared::ExposureState: the tonemap's exposure when it is automatic
     gpu::Buffer mGBuffers[2];
+    glm::uvec2 mDisplaySize{0};
+    glm::uvec2 mRequestedDisplay{0};  // the display size the memory was last checked for
+    gpu::Buffer mDisplay[2];     // the display image and last frame's, when a technique writes it
     std::uint32_t mCurrent = 0;  // which of the ping-pong pair is this frame's
     std::uint32_t mFrameIndex = 0;
     bool mSpecializeShaders = true;

@@ -48,6 +48,9 @@ struct TechniquePlan {
     bool runs = false;
     std::uint64_t deviceBytes = 0;  // device memory it holds at the frame's size when it runs
     bool addsIndirect = false;  // it writes the frame's indirect term (else the frame clears it)
+    // It writes the display image (FrameBuffers::display), which the tonemap then shows instead
+    // of the radiance.
+    bool writesDisplay = false;
     // The shader features it decides (FEATURE_*, value); they are 0 in a frame that does not run
     // it.
     std::vector<std::pair<std::uint32_t, std::uint32_t>> features;
@@ -60,6 +63,7 @@ struct FrameInput {
     const FrameSettings& settings;
     const lighting::LightingSettings& lighting;
     glm::uvec2 size;
+    glm::uvec2 displaySize;  // the displayed image's (size, unless a technique writes the display)
     std::uint32_t frameIndex;
 };
 
@@ -73,7 +77,10 @@ struct FrameBuffers {
     gpu::Buffer& indirect;           // the indirect term alone
     gpu::Buffer& rayStats;           // preview: steps and rays per pixel
     gpu::Buffer& exposure;           // the display's ExposureState: auto exposure writes it
+    gpu::Buffer& display;            // the display image at displaySize, when one is planned
+    const gpu::Buffer& prevDisplay;  // last frame's
     glm::uvec2 size;
+    glm::uvec2 displaySize;
     std::uint32_t parity;  // which of a ping-pong pair is this frame's (0 or 1)
 };
 

@@ -2,6 +2,7 @@
 
 #include "render/accumulation/accumulation.h"
 #include "render/baselines/light_sampling.h"
+#include "render/denoiser/denoiser.h"
 #include "render/dvf_sky/dvf_sky.h"
 #include "render/exposure/auto_exposure.h"
 #include "render/irradiance_cache/irradiance_cache.h"
@@ -11,6 +12,7 @@
 #include "render/reference/reference.h"
 #include "render/regir/regir_grid.h"
 #include "render/restir/restir.h"
+#include "render/upsampling/temporal_upsampling.h"
 #include "render/vct/voxel_cone_tracing.h"
 
 namespace engine::render {
@@ -30,8 +32,10 @@ const TechniqueEntry kTechniques[] = {
     techniqueEntry<PathIndirect>("path"),
     techniqueEntry<VoxelConeTracing>("vct"),
     techniqueEntry<IrradianceCache>("cache"),
-    techniqueEntry<Accumulation>("accumulation"),  // the mean of every term
-    techniqueEntry<AutoExposure>("exposure"),      // last: meters what the display shows
+    techniqueEntry<Denoiser>("denoiser"),              // the lighting of every term, denoised
+    techniqueEntry<Accumulation>("accumulation"),      // the mean of every term
+    techniqueEntry<AutoExposure>("exposure"),          // meters what the display shows
+    techniqueEntry<TemporalUpsampling>("upsampling"),  // last: resolves it to the display
 };
 
 }  // namespace

@@ -25,7 +25,8 @@ namespace engine::scene {
     X(Apartment)                \
     X(Bridge)                   \
     X(Vdb)                      \
-    X(Vox)
+    X(Vox)                      \
+    X(Store)
 
 #define VOX_DECLARE_GENERATOR(Name) extern const GeneratorEntry k##Name##Generator;
 #define VOX_LIST_GENERATOR(Name) &k##Name##Generator,

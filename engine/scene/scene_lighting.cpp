@@ -22,12 +22,22 @@ std::vector<lighting::KnobValue> sceneLightingValues(const world::Scene& scene) 
     return values;
 }
 
-Result<lighting::LightingSettings> lightingFor(const world::Scene* scene,
-                                               std::span<const lighting::KnobValue> overrides) {
+Result<lighting::LightingSettings> lightingFor(
+    const world::Scene* scene, std::span<const lighting::KnobValue> overrides,
+    std::span<const lighting::KnobValue> commandDefaults) {
     std::vector<std::vector<lighting::KnobValue>> layers;
+    layers.emplace_back(commandDefaults.begin(), commandDefaults.end());
     if (scene) layers.push_back(sceneLightingValues(*scene));
     layers.emplace_back(overrides.begin(), overrides.end());
     return lighting::mergeLighting(layers);
+}
+
+std::vector<lighting::KnobValue> playerDefaults(bool autoExposure) {
+    const char* where = "the player's defaults";
+    std::vector<lighting::KnobValue> values{
+        {lighting::knobForOption("display"), "denoised", where}};
+    if (autoExposure) values.push_back({lighting::knobForOption("auto-exposure"), "on", where});
+    return values;
 }
 
 }  // namespace engine::scene

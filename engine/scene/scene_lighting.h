@@ -14,8 +14,15 @@ namespace engine::scene {
 
 // The scene's settings as knob values (its [indirect] mode and cache knobs).
 std::vector<lighting::KnobValue> sceneLightingValues(const world::Scene& scene);
-// Defaults, then the scene's values (when given), then `overrides`; normalised and validated.
-Result<lighting::LightingSettings> lightingFor(const world::Scene* scene,
-                                               std::span<const lighting::KnobValue> overrides);
+// Defaults, then the entry point's own defaults (`commandDefaults`), then the scene's values
+// (when given), then `overrides`; normalised and validated.
+Result<lighting::LightingSettings> lightingFor(
+    const world::Scene* scene, std::span<const lighting::KnobValue> overrides,
+    std::span<const lighting::KnobValue> commandDefaults = {});
+
+// What a player is shown unless the scene or the command line say otherwise (`vox play`,
+// `vox render`): the image reconstructed at the display's size and denoised, the exposure
+// metered. Without `autoExposure` (a fixed --exposure was given) the exposure stays fixed.
+std::vector<lighting::KnobValue> playerDefaults(bool autoExposure = true);
 
 }  // namespace engine::scene

@@ -27,6 +27,8 @@ BrickGrid::BrickGrid(glm::ivec3 sizeInVoxels) {
     mSuperCells.assign(supers, shared::SUPER_SKIP_MAX);  // all air
     mSuperCounts.assign(supers, 0);
     mSuperDirty.assign(supers, 0);
+    mRegionCount = regionCount(mSizeInCells);
+    mRegionStamp.assign(std::size_t(mRegionCount.x) * mRegionCount.y * mRegionCount.z, 0);
 }
 
 MaterialId BrickGrid::get(glm::ivec3 p) const {
@@ -141,11 +143,11 @@ GridMemory BrickGrid::memory() const {
     m.superGridBytes = mSuperCells.size() * sizeof(std::uint32_t) + mSuperCounts.size();
     m.brickPoolBytes = mBrickVoxels.size() * kBrickBytes;
     m.liveBrickBytes = liveBricks() * kBrickBytes;
-    m.bookkeepingBytes = mFreeBricks.size() * sizeof(std::uint32_t) + mBrickDirty.size() +
-                         mCellDirty.size() + mSuperDirty.size() + mCellTouched.size() +
-                         mTouchedCells.size() * sizeof(std::uint32_t) +
-                         (mDirtyBricks.size() + mDirtyCells.size() + mDirtySuperCells.size()) *
-                             sizeof(std::uint32_t);
+    m.bookkeepingBytes =
+        mFreeBricks.size() * sizeof(std::uint32_t) + mBrickDirty.size() + mCellDirty.size() +
+        mSuperDirty.size() + mCellTouched.size() + mTouchedCells.size() * sizeof(std::uint32_t) +
+        (mDirtyBricks.size() + mDirtyCells.size() + mDirtySuperCells.size() + mRegionStamp.size()) *
+            sizeof(std::uint32_t);
     return m;
 }
 
@@ -244,7 +246,38 @@ void BrickGrid::setSuperCell(std::size_t index, std::uint32_t value) {
     }
 }
 
+std::vector<RegionKey> BrickGrid::regionsEditedAfter(std::uint32_t epoch) const {
+    std::vector<RegionKey> keys;
+    for (std::size_t i = 0; i < mRegionStamp.size(); ++i) {
+        if (mRegionStamp[i] <= epoch) continue;
+        const int x = int(i % mRegionCount.x), yz = int(i / mRegionCount.x);
+        keys.push_back({x, yz % mRegionCount.y, yz / mRegionCount.y});
+    }
+    return keys;
+}
+
+void BrickGrid::markRegionsEdited(std::span<const RegionKey> keys) {
+    for (const RegionKey& k : keys) {
+        if (glm::any(glm::lessThan(k.vec(), glm::ivec3(0))) ||
+            glm::any(glm::greaterThanEqual(k.vec(), mRegionCount)))
+            continue;
+        mRegionStamp[std::size_t(k.x) + std::size_t(mRegionCount.x) *
+                                            (k.y + std::size_t(mRegionCount.y) * k.z)] = mEditEpoch;
+    }
+}
+
 void BrickGrid::touchCell(std::size_t index) {
+    // Stamped on every touch: touchedCells() is cleared each frame by the GPU mirror, the stamps
+    // only by a save.
+    {
+        const std::size_t x = index % mSizeInCells.x, yz = index / mSizeInCells.x;
+        const std::size_t y = yz % mSizeInCells.y, z = yz / mSizeInCells.y;
+        const std::size_t r =
+            (x >> kRegionCellsShift) +
+            std::size_t(mRegionCount.x) *
+                ((y >> kRegionCellsShift) + std::size_t(mRegionCount.y) * (z >> kRegionCellsShift));
+        mRegionStamp[r] = mEditEpoch;
+    }
     if (mCellTouched[index]) return;
     mCellTouched[index] = 1;
     mTouchedCells.push_back(static_cast<std::uint32_t>(index));

@@ -14,6 +14,7 @@
 
 #include "world/brick.h"
 #include "world/paged_pool.h"
+#include "world/region.h"
 
 namespace engine::world {
 
@@ -119,6 +120,17 @@ public:
     std::span<const std::uint32_t> touchedCells() const { return mTouchedCells; }
     void clearDirty();
 
+    // Edits by region, for incremental saves (world/region.h): every change to a cell stamps its
+    // region with the current edit epoch, never cleared by clearDirty(). A saver keeps the epoch
+    // it last saved at: the regions edited since are those stamped later. Several savers (a save
+    // and an autosave to another file) each keep their own.
+    std::uint32_t editEpoch() const { return mEditEpoch; }
+    // Ends the current epoch and returns it: edits from now on are stamped later.
+    std::uint32_t closeEditEpoch() { return mEditEpoch++; }
+    std::vector<RegionKey> regionsEditedAfter(std::uint32_t epoch) const;
+    // Stamps regions with the current epoch again (the regions of a save that failed).
+    void markRegionsEdited(std::span<const RegionKey> keys);
+
     GridMemory memory() const;
     bool operator==(const BrickGrid& other) const;  // same voxels, regardless of pool layout
 
@@ -149,6 +161,9 @@ private:
     std::vector<std::uint32_t> mDirtyCells;
     std::vector<std::uint8_t> mCellTouched;
     std::vector<std::uint32_t> mTouchedCells;
+    glm::ivec3 mRegionCount;
+    std::vector<std::uint32_t> mRegionStamp;  // edit epoch of each region's last change
+    std::uint32_t mEditEpoch = 1;
 };
 
 }  // namespace engine::world

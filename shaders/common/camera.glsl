@@ -14,7 +14,7 @@ vec3 cameraRayDirectionAt(FrameParams f, vec2 imagePosition) {
     return normalize(d);
 }
 
-// Unit direction through the centre of `pixel`.
-vec3 cameraRayDirection(FrameParams f, uvec2 pixel) { return cameraRayDirectionAt(f, vec2(pixel) + 0.5); }
+// Unit direction through `pixel`'s sample: its centre, moved by the frame's jitter.
+vec3 cameraRayDirection(FrameParams f, uvec2 pixel) { return cameraRayDirectionAt(f, vec2(pixel) + 0.5 + f.jitter.xy); }
 
 #endif

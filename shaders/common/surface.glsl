@@ -4,17 +4,8 @@
 
 #include "common/emitters.glsl"
 #include "shared/frame_params.h"
+#include "common/gbuffer_load.glsl"
 #include "shared/gbuffer.h"
-
-// A GBufferTexel from an R32G32B32A32_UINT view of the G-buffer, four texels per pixel. The passes
-// that only read the G-buffer bind it so: a texel fetch is one gather for the SIMD batch on llvmpipe,
-// a storage-buffer read at a lane-varying index a loop over the lanes (docs/PERFORMANCE.md). Fields
-// a caller does not use cost no fetch (the compiler drops it).
-GBufferTexel loadGBuffer(usamplerBuffer texels, uint i) {
-    int t = int(i) * 4;
-    return GBufferTexel(ivec4(texelFetch(texels, t)), texelFetch(texels, t + 1), uintBitsToFloat(texelFetch(texels, t + 2)),
-                        uintBitsToFloat(texelFetch(texels, t + 3)));
-}
 
 Surface surfaceFrom(GBufferTexel g) {
     Surface s;

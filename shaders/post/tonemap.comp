@@ -23,8 +23,9 @@ vec3 linearToSrgb(vec3 c) {
 
 void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;
-    if (any(greaterThanEqual(pixel, gFrame.imageSize.xy))) return;
-    uint index = pixel.x + pixel.y * gFrame.imageSize.x;
+    // The displayed image's size: the render size, or the resolve's (render/upsampling/).
+    if (any(greaterThanEqual(pixel, gFrame.displaySize.xy))) return;
+    uint index = pixel.x + pixel.y * gFrame.displaySize.x;
     // Fixed, or metered by auto exposure (shaders/exposure/) this frame.
     float exposure = gFrame.exposure.y != 0.0 ? gExposure.value.x : gFrame.exposure.x;
     vec3 c = linearToSrgb(acesFilm(max(gRadiance[index].rgb, vec3(0.0)) * exposure));

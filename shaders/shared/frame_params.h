@@ -26,8 +26,13 @@ struct FrameParams {
     // This frame's ReGIR grid (shared/regir.h): xy its buffer's device address, 0 when the frame
     // filled none; zw unused.
     uvec4 regirGrid;
+    // The reconstruction's (render/upsampling/): xy this frame's sub-pixel offset of the primary
+    // rays in pixels, in (-0.5, 0.5); zw the previous frame's. 0 without it.
+    vec4 jitter;
+    // xy the size of the displayed image (the resolve's output; imageSize without it), zw unused.
+    uvec4 displaySize;
 };
-SHARED_ASSERT_SIZE(FrameParams, 240);
+SHARED_ASSERT_SIZE(FrameParams, 272);
 
 SHARED_END
 

@@ -22,10 +22,10 @@ world=$("$vox" info sandbox --json >/dev/null 2>&1 && echo sandbox)
 [ -n "$world" ] || { echo "FAIL: vox info sandbox"; exit 1; }
 
 # Render 128x72 (window 768x432 at scale 1/6); autosave every 0.03 minutes of the script's
-# clock (54 frames). Preview lighting: deterministic, so the screenshot can be compared pixel
-# for pixel with a headless render.
+# clock (54 frames). Preview lighting and the raw display at a fixed exposure: deterministic and
+# at the render size, so the screenshot can be compared pixel for pixel with a headless render.
 "$vox" play sandbox --script "$script" --size 768x432 \
-    --render-scale 0.1667 --method preview --save saved.toml --edit-log edits.log --autosave-minutes 0.03 \
+    --render-scale 0.1667 --method preview --display raw --auto-exposure off --save saved.toml --edit-log edits.log --autosave-minutes 0.03 \
     >play.out 2>play.err
 rc=$?
 cat play.out
@@ -45,13 +45,14 @@ grep -q "saved saved.toml" play.out || fail "no save"
 grep -q "autosaved to saved.autosave.toml" play.out || fail "no autosave"
 "$vox" info saved.autosave.toml >/dev/null 2>&1 || fail "the autosave does not open"
 grep -q "^# Saved by vox play" saved.toml || fail "saved.toml is not a save"
-# The voxels went to an OpenVDB payload the save names (one generation left), which opens on
-# its own as our own VDB layout.
-payload=$(ls saved.[0-9]*.vdb 2>/dev/null)
-[ "$(echo "$payload" | grep -c .)" -eq 1 ] || fail "expected one saved.N.vdb payload, found: $payload"
-grep -q "source = \"$payload\"" saved.toml || fail "saved.toml does not name $payload"
-ls ./*.bricks >/dev/null 2>&1 && fail "a .bricks payload was written"
-"$vox" info "$payload" 2>&1 | grep -q "voxengine world" || fail "$payload is not a voxengine VDB world"
+# The voxels went to the world store the save names (docs/WORLD_STORE.md), which opens on its
+# own; the first save wrote the whole world, later ones only the regions edited since.
+[ -f saved.db ] || fail "no saved.db store"
+grep -q 'type = "store"' saved.toml && grep -q 'source = "saved.db"' saved.toml ||
+    fail "saved.toml does not name saved.db"
+ls saved.[0-9]*.vdb >/dev/null 2>&1 && fail "a VDB payload was written for the voxels"
+"$vox" info saved.db 2>&1 | grep -q "^store .*region(s) stored" || fail "saved.db is not a world store"
+grep -q "saved saved.toml (whole world: " play.out || fail "the first save did not write the whole world"
 
 # Edit latency: every edit frame was presented with at most one brick and one cell uploaded
 # per changed cell (the renderer's upload counter).

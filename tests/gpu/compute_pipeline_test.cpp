@@ -114,6 +114,7 @@ TEST_F(ComputePipelineBindings, IndirectDispatchRunsTheWorkgroupsItsArgumentsNam
     const std::uint32_t pixels = size.x * size.y;
     shared::FrameParams frame{};
     frame.imageSize = glm::uvec4(size, 0u, 0u);
+    frame.displaySize = frame.imageSize;  // the tonemap covers the displayed image
     frame.exposure = glm::vec4(1.0f);
     const std::vector<glm::vec4> radiance(pixels, glm::vec4(1.0f));
     Buffer params(ctx, BufferKind::Storage, sizeof(frame), "test.frame");

@@ -57,6 +57,18 @@ TEST(MedianInterval, VerdictNeedsTheWholeIntervalOnOneSide) {
     EXPECT_EQ(verdictName(Verdict::Unresolved), "unresolved");
 }
 
+TEST(MedianInterval, ANoiseThresholdKeepsBorderlineIntervalsUnresolved) {
+    MedianInterval edge{1.01, 1.10, 1.17, 0.95, 7};  // the lower end just above 1
+    EXPECT_EQ(verdictOf(edge, 0.9), Verdict::Above);
+    EXPECT_EQ(verdictOf(edge, 0.9, 0.05), Verdict::Unresolved);
+    MedianInterval clear{1.06, 1.3, 1.5, 0.95, 7};
+    EXPECT_EQ(verdictOf(clear, 0.9, 0.05), Verdict::Above);
+    MedianInterval below{0.5, 0.8, 0.96, 0.95, 7};  // 0.96 > 1 / 1.05: within the noise
+    EXPECT_EQ(verdictOf(below, 0.9, 0.05), Verdict::Unresolved);
+    below.high = 0.94;
+    EXPECT_EQ(verdictOf(below, 0.9, 0.05), Verdict::Below);
+}
+
 TEST(MedianInterval, ProductMultipliesTheEnds) {
     MedianInterval a{0.5, 1.0, 2.0, 0.96, 6}, b{1.1, 1.2, 1.3, 0.98, 8};
     MedianInterval p = productInterval(a, b);

@@ -1,7 +1,7 @@
 // The frame plan (render/frame_plan.h): for every combination of method, indirect mode, sky,
-// sampling and light tiles, the memory plan reserves memory for exactly the techniques the
-// frame runs, the shader features of a technique are on only when it runs, and both agree with
-// the settings' own answers to "is X on?" (lighting/lighting_settings.h).
+// sampling, light tiles, accumulation, exposure and display, the memory plan reserves memory for
+// exactly the techniques the frame runs, the shader features of a technique are on only when it
+// runs, and both agree with the settings' own answers to "is X on?" (lighting/lighting_settings.h).
 #include "render/frame_plan.h"
 
 #include <algorithm>
@@ -47,6 +47,8 @@ bool settingsSayRuns(std::string_view technique, const LightingSettings& l) {
     if (technique == "cache") return usesCache(l);
     if (technique == "accumulation") return accumulates(l);
     if (technique == "exposure") return usesAutoExposure(l);
+    if (technique == "denoiser") return denoises(l);
+    if (technique == "upsampling") return reconstructs(l);
     ADD_FAILURE() << "a technique the test does not know: " << technique;
     return false;
 }
@@ -90,6 +92,7 @@ TEST(FramePlan, MemoryPlanAndShaderFeaturesAgreeForEveryCombination) {
         {"light-tiles", {"off", "on"}},
         {"accumulate", {"off", "on"}},
         {"auto-exposure", {"off", "on"}},
+        {"display", {"raw", "upsampled", "denoised"}},
     };
     std::vector<std::size_t> pick(knobs.size(), 0);  // an odometer over the knobs' values
     int combinations = 0;
@@ -107,7 +110,7 @@ TEST(FramePlan, MemoryPlanAndShaderFeaturesAgreeForEveryCombination) {
             more = pick[k] != 0;
         }
     }
-    EXPECT_EQ(combinations, 7 * 5 * 3 * 3 * 2 * 2 * 2);
+    EXPECT_EQ(combinations, 7 * 5 * 3 * 3 * 2 * 2 * 2 * 3);
 }
 
 // Exactly one technique lights the frame directly, whatever the settings.

@@ -151,9 +151,10 @@ const GeneratorTable kGenerators[] = {
      "[\"lamp\"]\n"},
     {"bridge", "min = [2, 2, 2]\nmax = [20, 4, 8]\ndeck = \"stone\"\n"},
 };
-// Types this test cannot run: vdb and vox need a payload file (their keys:
-// tests/io/vdb_bad_input_test.cpp, tests/io/vox_import_test.cpp).
-const std::set<std::string> kNotHere = {"vdb", "vox"};
+// Types this test cannot run: vdb, vox and store need a payload file (their keys:
+// tests/io/vdb_bad_input_test.cpp, tests/io/vox_import_test.cpp,
+// tests/world/region_store_test.cpp).
+const std::set<std::string> kNotHere = {"vdb", "vox", "store"};
 
 // A step into the TOML tree: a key of a table or an index of an array.
 using Step = std::variant<std::string, std::size_t>;

@@ -48,7 +48,7 @@ TEST(SceneFile, ErrorsNameTheFileAndLine) {
     EXPECT_EQ(e,
               "test.toml:7: unknown generator 'terain' (known: terrain, box, sphere, cornell, "
               "buildings, lamps, "
-              "mountain, scattered_lights, text, menger, apartment, bridge, vdb, vox)");
+              "mountain, scattered_lights, text, menger, apartment, bridge, vdb, vox, store)");
     // Saves from before .vdb payloads are refused by name, not as a typo.
     e = errorOf(std::string(kMinimal) +
                 "\n[[generator]]\ntype = \"bricks\"\nfile = \"old.1.bricks\"\n");
@@ -187,7 +187,7 @@ TEST(SceneFile, ObjectErrorsNameTheLine) {
     EXPECT_EQ(with("type = \"box\"", "type = \"cube\""),
               "test.toml:9: unknown generator 'cube' (known: terrain, box, sphere, cornell, "
               "buildings, lamps, "
-              "mountain, scattered_lights, text, menger, apartment, bridge, vdb, vox)");
+              "mountain, scattered_lights, text, menger, apartment, bridge, vdb, vox, store)");
     EXPECT_EQ(with("size = [4, 4, 4]", "size = [4, 0, 4]"),
               "test.toml:7: 'size' y must be positive, not 0; allowed: 1..256 voxels");
     EXPECT_EQ(with("rotation = [90, 0, 0]", "rotation = [90, 0, 0]\nangle = 4"),

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # vox bench restir on a tiny run (one scene, 32x32, 2 seeds): every row has per-seed values and
-# their median and spread for MSE, MAE and the mean ratio, the baselines got an equal-time count,
+# their median and spread for MSE, MAE and the mean ratio, the baselines got an equal-cost count,
 # the ratios to ReSTIR are there, a --variant row made of lighting options is measured like the
 # default rows, the markdown table has a line per row, progress goes to stderr, and bad rows give
 # one line and a non-zero exit before any rendering.
@@ -16,7 +16,12 @@ import json, math, sys
 d = json.load(open(sys.argv[1]))
 assert d["seeds"] == 2 and d["size"] == [32, 32], d
 (scene,) = d["scenes"]
-assert scene["scene"] == "cornell" and scene["emitters"] > 0 and scene["equal_time_ms"] > 0, scene
+assert scene["scene"] == "cornell" and scene["emitters"] > 0 and scene["yardstick_ms"] > 0, scene
+# The cost model: five kinds, the rows and each scaled row at two counts, one time per round.
+model = scene["cost_model"]
+assert list(model["kinds"]) == ["pixels", "light samples", "candidates", "shadow rays", "reuse taps"], model["kinds"]
+assert len(model["points"]) == 8 and model["points"][0]["label"] == "restir", model["points"]  # + restir-point
+assert all(len(p["work"]) == 5 and len(p["round_ms"]) >= 10 for p in model["points"]), model["points"]
 rows = {r["name"]: r for r in scene["rows"]}
 assert list(rows) == ["restir", "restir-unbiased", "ris", "uniform", "restir-point"], list(rows)
 for name, r in rows.items():
@@ -36,17 +41,20 @@ assert rows["restir"]["equal_time"] is None and rows["restir-point"]["equal_time
 assert "--mode point" in rows["restir-point"]["settings"], rows["restir-point"]
 assert "--method uniform" in rows["uniform"]["settings"] and "--shadow-rays" in rows["uniform"]["settings"], rows["uniform"]
 assert rows["restir"]["versus"]["restir"]["mse_ratio"]["median"] == 1.0
-# MSE x time over ReSTIR's: the seeds' MSE ratio interval times the interleaved rounds' time ratio
-# interval; two seeds cannot reach 90 %, so no verdict.
+# MSE x cost over ReSTIR's: the seeds' MSE ratio interval times the cost model's ratio interval
+# over its rounds; two seeds cannot reach 90 %, so no verdict.
 for name, r in rows.items():
     v = r["versus"]["restir"]
-    w, t, m = v["mse_time_ratio"], v["time_ratio"], v["mse_ratio"]
-    assert t["low"] <= t["median"] <= t["high"] and t["coverage"] >= 0.97, (name, t)
-    assert math.isclose(w["low"], m["min"] * t["low"]) and math.isclose(w["high"], m["max"] * t["high"]), (name, w, m, t)
-    assert math.isclose(w["median"], m["median"] * t["median"]), (name, w)
-    assert math.isclose(w["coverage"], 0.5 * t["coverage"]), (name, w)
+    w, c, m = v["mse_cost_ratio"], v["cost_ratio"], v["mse_ratio"]
+    assert c["low"] <= c["median"] <= c["high"] and c["coverage"] >= 0.97, (name, c)
+    assert math.isclose(w["low"], m["min"] * c["low"]) and math.isclose(w["high"], m["max"] * c["high"]), (name, w, m, c)
+    assert math.isclose(w["median"], m["median"] * c["median"]), (name, w)
+    assert math.isclose(w["coverage"], 0.5 * c["coverage"]), (name, w)
     assert w["verdict"] == "unresolved", (name, w)
-assert rows["restir"]["versus"]["restir"]["time_ratio"]["median"] == 1.0
+    assert v["time_ratio"]["low"] <= v["time_ratio"]["median"] <= v["time_ratio"]["high"], (name, v["time_ratio"])
+    if r["equal_time"]:  # not pinned: rendered at this run's own count
+        assert list(r["equal_time"].values()) == [r["fitted_count"]], r
+assert rows["restir"]["versus"]["restir"]["cost_ratio"]["median"] == 1.0
 PY
 
 # A point depends on its settings and seed alone: ReSTIR's per-seed errors are the same in a run
@@ -60,8 +68,21 @@ for name in ("restir", "restir-unbiased"):
     assert a[name]["per_seed"]["mse"] == b[name]["per_seed"]["mse"], (name, a[name]["per_seed"], b[name]["per_seed"])
 PY
 
+# --counts-from: the scaled rows rendered at the first run's counts, so with the same seeds every
+# row's per-seed errors are the first run's, whatever this run's cost model fits.
+"$vox" bench restir cornell --size 32x32 --seeds 2 --frames 4 --ref-spp 16 --counts-from "$tmp/r.json" \
+    --variant "restir-point:--mode point" -o "$tmp/pinned.json" >/dev/null 2>&1 || fail "pinned run"
+/usr/bin/python3 - "$tmp/r.json" "$tmp/pinned.json" <<'PY' || fail "--counts-from did not render the first run's counts"
+import json, sys
+a, b = ({r["name"]: r for r in json.load(open(f))["scenes"][0]["rows"]} for f in sys.argv[1:3])
+for name in ("ris", "uniform"):
+    assert a[name]["equal_time"] == b[name]["equal_time"], (name, a[name]["equal_time"], b[name]["equal_time"])
+for name in a:
+    assert a[name]["per_seed"]["mse"] == b[name]["per_seed"]["mse"], (name, a[name]["per_seed"], b[name]["per_seed"])
+PY
+
 # The table: a header naming the ratio columns, one line per row.
-grep -q "^| scene | emitters | row | equal time | ms (÷ restir) | MSE | MAE | mean ratio | MSE ÷ restir | MAE ÷ restir | MSE×time ÷ restir \[90 % interval\] |$" "$tmp/r.md" \
+grep -q "^| scene | emitters | row | equal cost | cost ÷ restir | ms (÷ restir) | MSE | MAE | mean ratio | MSE ÷ restir | MAE ÷ restir | MSE×cost ÷ restir \[90 % interval\] |$" "$tmp/r.md" \
     || fail "markdown header: $(head -1 "$tmp/r.md")"
 [ "$(grep -c '^| cornell |' "$tmp/r.md")" -eq 5 ] || fail "markdown rows: $(cat "$tmp/r.md")"
 grep -q "^| cornell | [0-9]* | uniform | [0-9]* rays | " "$tmp/r.md" || fail "uniform's ray count: $(cat "$tmp/r.md")"
@@ -83,5 +104,7 @@ check_refused "expected NAME:--knob value" --variant "nocolon"
 check_refused "'bogus' is not restir" --rows restir,bogus
 check_refused "no row named 'nope'" --versus nope
 check_refused "sampling" --sampling power,sideways
+echo '{"size": [1, 1]}' > "$tmp/other.json"
+check_refused "no equal-cost counts" --counts-from "$tmp/other.json"
 [ -e "$tmp/x.json" ] && fail "a refused run wrote its JSON"
 exit $((failures > 0))

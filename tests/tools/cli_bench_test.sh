@@ -22,7 +22,8 @@ cornell,reference,"indirect reference 3 bounces 1 spp",256,50,2,47,0.080,9e-2,0.
 CSV
 fail=0
 out=$("$vox" bench recommend cornell --target-mae 0.015 --sweep "$tmp/sweep.csv"); rc=$?
-if [ $rc -ne 0 ] || ! grep -q "'ris area M=32' (MAE 1.200e-02, 25.00 ms" <<<"$out"; then echo "FAIL: $out"; fail=1; else echo "ok: $out"; fi
+if [ $rc -ne 0 ] || ! grep -q "'ris area M=32' (MAE 1.200e-02, 25.00 ms" <<<"$out" \
+    || ! grep -q "meets the target: not resolved at this budget (one measurement per setting)" <<<"$out"; then echo "FAIL: $out"; fail=1; else echo "ok: $out"; fi
 out=$("$vox" bench recommend cornell --target-mae 0.001 --sweep "$tmp/sweep.csv"); rc=$?
 if [ $rc -eq 0 ] || ! grep -q "no swept setting reaches" <<<"$out"; then echo "FAIL: $out"; fail=1; else echo "ok: $out"; fi
 err=$("$vox" bench recommend cornell --target-mae 0.1 --sweep "$tmp/missing.csv" 2>&1 >/dev/null); rc=$?
@@ -35,6 +36,23 @@ out=$("$vox" bench recommend cornell --indirect --target-mae 0.025 --sweep "$tmp
 if [ $rc -ne 0 ] || ! grep -q "'indirect cache K=128' (MAE 2.000e-02, 60.00 ms" <<<"$out"; then echo "FAIL: $out"; fail=1; else echo "ok: $out"; fi
 err=$("$vox" bench recommend letters --indirect --target-mae 0.1 --sweep "$tmp/sweep.csv" 2>&1 >/dev/null); rc=$?
 if [ $rc -eq 0 ] || ! grep -q "no indirect-light rows for scene 'letters'" <<<"$err"; then echo "FAIL: $err"; fail=1; else echo "ok: $err"; fi
+# A sweep with the cost model's columns: the cost decides (not total_ms), and the verdicts say
+# whether every seed met the target and whether the choice is cheaper beyond the intervals.
+mkdir -p "$tmp/costed"
+cat > "$tmp/costed/sweep.csv" <<'CSV'
+scene,method,setting,emitters,total_ms,primary_ms,lighting_ms,mae,mse,rmae,indirect,reference_bounces,mean_ratio,seeds,cost_ms,cost_low,cost_high,mae_low,mae_high,mse_low,mse_high
+cornell,restir,"restir area M=32",256,30,2,27,0.010,1e-3,0.1,none,0,1,5,10,9,11,0.009,0.011,1e-3,1e-3
+cornell,ris,"ris area M=32",256,25,2,22,0.012,1e-3,0.1,none,0,1,5,8,7.5,8.5,0.011,0.016,1e-3,1e-3
+cornell,uniform,"uniform area 4 rays",256,2,1,1,0.014,9e-3,0.5,none,0,1,5,8.2,7,9,0.013,0.014,8e-3,1e-2
+CSV
+out=$("$vox" bench recommend cornell --target-mae 0.015 --sweep "$tmp/costed/sweep.csv"); rc=$?
+if [ $rc -ne 0 ] || ! grep -q "'ris area M=32' (MAE 1.200e-02, 8.00 ms per frame \[7.50–8.50\]" <<<"$out" \
+    || ! grep -q "meets the target: not resolved at this budget (the seeds' worst MAE 1.600e-02)" <<<"$out" \
+    || ! grep -q "cheaper than 'uniform area 4 rays' (8.20 ms \[7.00–9.00\]): not resolved at this budget" <<<"$out"; then
+    echo "FAIL: costed: $out"; fail=1; else echo "ok: $out"; fi
+out=$("$vox" bench recommend cornell --target-mae 0.011 --sweep "$tmp/costed/sweep.csv"); rc=$?
+if [ $rc -ne 0 ] || ! grep -q "meets the target: yes, every seed" <<<"$out" || grep -q "cheaper than" <<<"$out"; then
+    echo "FAIL: costed 0.011: $out"; fail=1; else echo "ok: $out"; fi
 # --sampling: ReSTIR's candidate sampling per scene from vox bench restir's medians over seeds,
 # among the rows that differ only by sampling (not the unbiased or point-light rows), scenes by
 # emitter count; overlapping spreads are said.
@@ -66,6 +84,9 @@ if [ -x /usr/bin/python3 ] && /usr/bin/python3 -c 'import matplotlib' 2>/dev/nul
         if [ ! -s "$tmp/$f" ]; then echo "FAIL: plot_sweep.py did not write $f: $out"; fail=1; else echo "ok: $f"; fi
     done
     if [ -e "$tmp/sweep_indirect_letters.png" ]; then echo "FAIL: an indirect chart for a scene without indirect rows"; fail=1; fi
+    # With the cost model's columns: drawn against the cost, with the intervals as bars.
+    out=$(/usr/bin/python3 "$(dirname "$0")/../../tools/plot_sweep.py" "$tmp/costed/sweep.csv" "$tmp/costed" 2>&1)
+    if [ ! -s "$tmp/costed/sweep_cornell.png" ]; then echo "FAIL: costed chart: $out"; fail=1; else echo "ok: costed chart"; fi
 else
     echo "skip: no matplotlib for the chart check"
 fi

@@ -7,7 +7,8 @@ source "$(dirname "$0")/test_setup.sh"
 cp "$(dirname "$0")/../../worlds/cornell.toml" "$tmp/lit.toml"
 printf '\n[indirect]\nmode = "cache"\nalpha = 0.1\n' >> "$tmp/lit.toml"
 
-flags=(--cache-rays 8 --candidates 12 --spatial 3,20)
+# The display's knobs given too: each command has its own defaults for them (docs/DISPLAY.md).
+flags=(--cache-rays 8 --candidates 12 --spatial 3,20 --display denoised --auto-exposure on)
 render=$("$vox" render "$tmp/lit.toml" "${flags[@]}" --show-settings) || fail "render --show-settings exited $?"
 play=$("$vox" play "$tmp/lit.toml" "${flags[@]}" --show-settings) || fail "play --show-settings exited $?"
 capture=$("$vox" capture "$tmp/lit.toml" "${flags[@]}" --show-settings --out "$tmp/cap") || fail "capture --show-settings exited $?"

@@ -8,7 +8,7 @@
 #  2. a truncated and a deleted frame are found by --status and --join; re-running the command
 #     submits only their tasks and renders only them; a task cancelled with scancel cancels the
 #     join, and the next re-run renders only that task's frames;
-#  3. a sweep of 8 points as 4 array tasks gives one run's CSV (timings aside) and charts.
+#  3. a sweep of 8 points as 4 array tasks gives one run's CSV (timings and costs aside) and charts.
 # The tasks stop at their first manifest update while this script holds the job's lock (flock on
 # DIR/job/job.lock, which vox takes for every update): that is how a task is caught mid-slice
 # without any timing. Skips (77) only where Slurm cannot run: not root, or not installed.
@@ -157,7 +157,9 @@ sweep=(bench sweep cornell --methods restir,ris --candidates 1,8 --modes point,a
 ids
 wait_for "the sweep's join $join" ended "$join"
 [ "$(state_of "$join")" = COMPLETED ] || { fail "sweep join: $(state_of "$join")"; cat "$tmp/sweep4/job/join.log"; }
-untimed_sweep() { cut -d, -f1-4,8- "$1"; }  # without total_ms, primary_ms, lighting_ms
+# Without the timings: total_ms, primary_ms, lighting_ms and the cost model's cost_ms, cost_low,
+# cost_high (fitted to each task's own rounds); errors and their spreads must match exactly.
+untimed_sweep() { cut -d, -f1-4,8-14,18- "$1"; }
 [ "$(grep -c '' "$tmp/sweep4/sweep.csv")" -eq 9 ] || fail "the sweep job's CSV should have 8 points"
 diff <(untimed_sweep "$tmp/sweep1/sweep.csv") <(untimed_sweep "$tmp/sweep4/sweep.csv") >/dev/null ||
     { fail "sweep CSVs differ outside timings:"; diff <(untimed_sweep "$tmp/sweep1/sweep.csv") <(untimed_sweep "$tmp/sweep4/sweep.csv"); }

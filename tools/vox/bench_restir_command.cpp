@@ -35,12 +35,11 @@ void printFooter(const RestirBenchOptions& o, double seconds, const std::filesys
         "\nratio = row / versus row per seed, median (min–max): above 1 favours the versus row "
         "(ReSTIR)\n");
     std::printf(
-        "MSE×time: the work-normalised ratio; its interval: the sign test's over seeds (MSE) times "
-        "over %u+ "
-        "interleaved rounds (time); \"> 1\" (the versus row wins) or \"< 1\" only when it excludes "
-        "1 with %.0f %% "
-        "coverage, else unresolved\n",
-        kCostRounds.minRounds, 100.0 * o.confidence);
+        "MSE×cost: the work-normalised ratio, cost = counted work at per-kind costs calibrated "
+        "in %u+ interleaved rounds; its interval: the sign test's over seeds (MSE) times over the "
+        "rounds' fits (cost); \"> 1\" (the versus row wins) or \"< 1\" only when it excludes 1 "
+        "(by %.0f %%) with %.0f %% coverage, else unresolved\n",
+        kCostRounds.minRounds, 100.0 * o.noise, 100.0 * o.confidence);
     std::printf("wall time %.0f s (references included; cached ones are read back)\n", seconds);
     std::printf("wrote    %s\nwrote    %s\n", json.string().c_str(), csv.string().c_str());
 }
@@ -66,6 +65,12 @@ int runRestirBench(RestirBenchOptions o) {
     if (!rows) return fail(rows.error());
     auto versus = versusOf(o, *rows);
     if (!versus) return fail(versus.error());
+    PinnedCounts pinned;
+    if (!o.countsFrom.empty()) {
+        auto read = readPinnedCounts(o.countsFrom);
+        if (!read) return fail(read.error());
+        pinned = std::move(*read);
+    }
     auto scenes = loadWorlds(o.worlds);
     if (!scenes) return fail(scenes.error());
     auto ctx = createBenchGpu();
@@ -83,7 +88,14 @@ int runRestirBench(RestirBenchOptions o) {
     const auto started = std::chrono::steady_clock::now();
 
     const std::filesystem::path out(o.output);
-    const RestirSetup setup{o, *rows, *versus, gpu, *frame, cpuClock, out.parent_path() / "cache"};
+    const RestirSetup setup{o,
+                            *rows,
+                            *versus,
+                            gpu,
+                            *frame,
+                            cpuClock,
+                            out.parent_path() / "cache",
+                            o.countsFrom.empty() ? nullptr : &pinned};
     RestirReport report(setup);
     if (engine::Status s = report.open(out, gpu.info().name); !s) return fail(s.error());
     RestirProgress progress{0, scenes->size() * rows->size() * o.seeds};
@@ -148,6 +160,16 @@ void addBenchRestirCommand(CLI::App& bench, int& exitCode) {
                     "%: 0.95 needs 6)")
         ->capture_default_str()
         ->check(numberIn(engine::closedRange(0.5, 0.999)));
+    cmd->add_option("--noise", o->noise,
+                    "A verdict needs its interval to exclude 1 by this fraction (a smaller "
+                    "difference is within the cost model's own error)")
+        ->capture_default_str()
+        ->check(numberIn(engine::closedRange(0.0, 1.0)));
+    cmd->add_option("--counts-from", o->countsFrom,
+                    "Render the scaled rows at an earlier run's equal-cost counts (its JSON): "
+                    "repeated runs then compare the same settings, and only this run's cost "
+                    "model moves MSE×cost")
+        ->check(CLI::ExistingFile);
     cmd->add_flag(
         "--quick", o->quick,
         "A first look: 64x40, 8 frames, 256 spp reference (over --size, --frames, --ref-spp)");

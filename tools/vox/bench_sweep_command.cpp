@@ -173,14 +173,18 @@ int runRecommend(const RecommendOptions& o) {
                                       o.sweep, o.world));
     std::string line;
     std::getline(in, line);  // header
+    // A setting's cost and MAE with their spreads; sweeps before the cost model have only the
+    // time and one MAE (no spread: nothing is resolved).
     struct Candidate {
         std::string setting;
-        double ms, mae;
+        double ms, mae, costLow, costHigh, maeHigh;
+        bool spread;  // seeds and intervals measured
     };
     std::vector<Candidate> rows;
     while (std::getline(in, line)) {
-        // scene,method,"setting",emitters,total_ms,primary_ms,lighting_ms,mae,mse,rmae[,indirect,reference_bounces[,mean_ratio]]
-        // (sweeps from before the indirect series have no last two columns: all direct)
+        // scene,method,"setting",emitters,total_ms,primary_ms,lighting_ms,mae,mse,rmae[,indirect,
+        // reference_bounces[,mean_ratio[,seeds,cost_ms,cost_low,cost_high,mae_low,mae_high,...]]]
+        // (sweeps from before the indirect series have no indirect columns: all direct)
         std::size_t q1 = line.find('"'), q2 = line.find('"', q1 + 1);
         if (q1 == std::string::npos || q2 == std::string::npos) continue;
         if (line.substr(0, line.find(',')) != scene->name) continue;
@@ -188,16 +192,37 @@ int runRecommend(const RecommendOptions& o) {
         if (rest.size() < 5) continue;
         const bool againstIndirect = rest.size() >= 9 && std::atoi(rest[8].c_str()) > 0;
         if (againstIndirect != o.indirect) continue;
-        rows.push_back({line.substr(q1 + 1, q2 - q1 - 1), std::atof(rest[1].c_str()),
-                        std::atof(rest[4].c_str())});
+        Candidate c{line.substr(q1 + 1, q2 - q1 - 1),
+                    std::atof(rest[1].c_str()),
+                    std::atof(rest[4].c_str()),
+                    0.0,
+                    0.0,
+                    0.0,
+                    rest.size() >= 16};
+        c.costLow = c.costHigh = c.ms;
+        c.maeHigh = c.mae;
+        if (rest.size() >= 16) {
+            c.ms = std::atof(rest[11].c_str());
+            c.costLow = std::atof(rest[12].c_str());
+            c.costHigh = std::atof(rest[13].c_str());
+            c.maeHigh = std::atof(rest[15].c_str());
+        }
+        rows.push_back(c);
     }
     if (rows.empty())
         return fail(engine::makeError("{}: no {}rows for scene '{}'; run `vox bench sweep {}`",
                                       o.sweep, o.indirect ? "indirect-light " : "", scene->name,
                                       o.world));
-    const Candidate* best = nullptr;
+    // The cheapest by median cost among those whose median MAE meets the target.
+    const Candidate *best = nullptr, *next = nullptr;
     for (const Candidate& c : rows) {
-        if (c.mae <= o.targetMae && (!best || c.ms < best->ms)) best = &c;
+        if (c.mae > o.targetMae) continue;
+        if (!best || c.ms < best->ms) {
+            next = best;
+            best = &c;
+        } else if (!next || c.ms < next->ms) {
+            next = &c;
+        }
     }
     if (!best) {
         auto closest =
@@ -210,9 +235,30 @@ int runRecommend(const RecommendOptions& o) {
         return 1;
     }
     std::printf(
-        "%s: cheapest setting with MAE <= %.3e: '%s' (MAE %.3e, %.2f ms per frame; %zu settings "
-        "swept)\n",
-        scene->name.c_str(), o.targetMae, best->setting.c_str(), best->mae, best->ms, rows.size());
+        "%s: cheapest setting with MAE <= %.3e: '%s' (MAE %.3e, %.2f ms per frame [%.2f–%.2f]; "
+        "%zu settings swept)\n",
+        scene->name.c_str(), o.targetMae, best->setting.c_str(), best->mae, best->ms, best->costLow,
+        best->costHigh, rows.size());
+    // Verdicts: the target met by every seed, and cheaper than the runner-up beyond the cost
+    // intervals; else not resolved at the sweep's budget (more --seeds).
+    if (!best->spread) {  // one measurement: nothing to resolve with
+        std::printf(
+            "  meets the target: not resolved at this budget (one measurement per "
+            "setting)\n");
+        return 0;
+    }
+    std::printf("  meets the target: %s\n",
+                best->maeHigh <= o.targetMae
+                    ? "yes, every seed"
+                    : fmt::format("not resolved at this budget (the seeds' worst MAE {:.3e})",
+                                  best->maeHigh)
+                          .c_str());
+    if (next) {
+        std::printf("  cheaper than '%s' (%.2f ms [%.2f–%.2f]): %s\n", next->setting.c_str(),
+                    next->ms, next->costLow, next->costHigh,
+                    best->costHigh < next->costLow ? "yes, the intervals do not overlap"
+                                                   : "not resolved at this budget");
+    }
     return 0;
 }
 
@@ -234,6 +280,11 @@ void addBenchSweepCommand(CLI::App& bench, int& exitCode) {
     cmd->add_option("--frames", o->frames, "Frames per setting (the last half are measured)")
         ->capture_default_str()
         ->check(numberIn(engine::wholeRange(2, 1000, "frames")));
+    cmd->add_option("--seeds", o->seeds,
+                    "Interleaved rounds per world, one seed each: the errors' spread and the "
+                    "cost model's intervals")
+        ->capture_default_str()
+        ->check(numberIn(engine::wholeRange(1, 1000, "seeds")));
     cmd->add_option("--ref-spp", o->referenceSpp, "Reference samples per pixel (cached on disk)")
         ->capture_default_str()
         ->check(numberIn(kSamplesRange));

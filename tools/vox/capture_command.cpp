@@ -25,6 +25,7 @@
 #include "lighting_options.h"
 #include "number_options.h"
 #include "render/frame_plan.h"
+#include "scene/scene_lighting.h"
 #include "tool_gpu.h"
 
 namespace vox {
@@ -74,7 +75,7 @@ int runCapture(const CaptureOptions& o) {
                           dir,   o.exr, o.exposure};
     auto seconds =
         renderCapture(**ctx, *setup, request, [&](const CapturedFrame& f) -> engine::Status {
-            sheet.place(f.index, f.images.rgba8, f.images.width, f.images.height);
+            sheet.place(f.index, f.images.rgba8, f.images.displayWidth, f.images.displayHeight);
             rows.push_back(f.row);
             return {};
         });

@@ -146,7 +146,7 @@ engine::Status recordFrame(const CapturedFrame& f, const FrameMaker& who, const 
     const fs::path png = dir / framePng(f.index);
     auto back = engine::io::readPng(png);
     if (!back) return back.error();
-    if (back->width != f.images.width || back->height != f.images.height ||
+    if (back->width != f.images.displayWidth || back->height != f.images.displayHeight ||
         back->rgba8 != f.images.rgba8)
         return engine::makeError("{}: reads back other pixels than were rendered", png.string());
     engine::Json record;

@@ -146,6 +146,8 @@ engine::Result<double> renderCapture(
     engine::render::FrameSettings settings;
     settings.width = setup.size.x;
     settings.height = setup.size.y;
+    settings.displayWidth = setup.size.x;
+    settings.displayHeight = setup.size.y;
     settings.exposure = request.exposure;
     ProgressLine progress(request.progressLabel, request.to - request.from + 1);
     for (std::uint32_t i = request.from; i <= request.to; ++i) {
@@ -155,11 +157,11 @@ engine::Result<double> renderCapture(
         if (written) {
             engine::render::FrameImages images = renderer.readback();
             CaptureCsvRow row = csvRow(frame, images, setup);
-            engine::Status s = engine::io::writePng(request.dir / framePng(i), images.width,
-                                                    images.height, images.rgba8);
+            engine::Status s = engine::io::writePng(request.dir / framePng(i), images.displayWidth,
+                                                    images.displayHeight, images.rgba8);
             if (s && request.exr)
-                s = engine::io::writeExr(request.dir / frameExr(i), images.width, images.height,
-                                         images.radiance);
+                s = engine::io::writeExr(request.dir / frameExr(i), images.displayWidth,
+                                         images.displayHeight, images.display);
             if (!s) return s.error();
             row.wallMs =
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)

@@ -44,7 +44,8 @@ struct RenderOptions {
     std::string exr;
     float exposure = 1.0f;
     std::uint32_t frames = 1;
-    double time = 0.0;  // scene time in seconds: poses dynamic objects
+    float renderScale = 1.0f;  // render size as a fraction of --size (the display's)
+    double time = 0.0;         // scene time in seconds: poses dynamic objects
     std::uint32_t spp = 64;
     std::string timings;
     LightingOptions lighting;

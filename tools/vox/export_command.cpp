@@ -1,10 +1,12 @@
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include "command_files.h"
 #include "commands.h"
 #include "io/vdb_export.h"
 #include "io/vox_export.h"
+#include "scene/store_world.h"
 
 namespace vox {
 
@@ -46,12 +48,17 @@ void addExportCommand(CLI::App& app, int& exitCode) {
     auto world = std::make_shared<std::string>();
     auto output = std::make_shared<std::string>();
     auto idsOnly = std::make_shared<bool>(false);
-    cmd->add_option("world", *world, "World name (worlds/NAME.toml), scene file or .vdb")
+    cmd->add_option("world", *world,
+                    "World name (worlds/NAME.toml), scene file, world store (.db) or .vdb")
         ->required();
     cmd->add_option("-o,--output", *output,
                     "Output .vdb or .vox file (the extension decides the format)")
         ->required();
     auto tool = std::make_shared<std::string>();
+    auto box = std::make_shared<std::string>();
+    cmd->add_option("--box", *box,
+                    "x0,y0,z0,x1,y1,z1: export only this box of a world store (.db), reading only "
+                    "the regions that meet it (rounded out to whole 8^3 cells)");
     cmd->add_flag("--ids-only", *idsOnly,
                   "Write only the material grid (no albedo/emission grids for other tools)");
     cmd->add_option("--for", *tool,
@@ -70,7 +77,30 @@ void addExportCommand(CLI::App& app, int& exitCode) {
             exitCode = fail(s.error());
             return;
         }
-        auto scene = loadWorld(*world);
+        std::optional<engine::world::Box> exportBox;
+        if (!box->empty()) {
+            int v[6];
+            char extra;
+            if (std::sscanf(box->c_str(), "%d,%d,%d,%d,%d,%d%c", &v[0], &v[1], &v[2], &v[3], &v[4],
+                            &v[5], &extra) != 6) {
+                exitCode =
+                    fail(engine::makeError("--box: expected x0,y0,z0,x1,y1,z1, got '{}'", *box));
+                return;
+            }
+            exportBox = engine::world::Box{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
+            if (exportBox->empty()) {
+                exitCode = fail(engine::makeError(
+                    "--box: the max corner must exceed the min corner on every axis"));
+                return;
+            }
+            if (std::filesystem::path(*world).extension() != ".db") {
+                exitCode =
+                    fail(engine::makeError("--box: needs a world store (.db), not {}", *world));
+                return;
+            }
+        }
+        auto scene =
+            exportBox ? engine::scene::loadWorldStore(*world, exportBox) : loadWorld(*world);
         if (!scene) {
             exitCode = fail(scene.error());
             return;

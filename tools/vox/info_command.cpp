@@ -10,9 +10,39 @@
 #include "scene/scene_lighting.h"
 #include "shared/brick_grid.h"
 #include "vdb_options.h"
+#include "world/region_store.h"
 #include "world/world_info.h"
 
 namespace vox {
+
+namespace {
+
+// The store's own figures: regions, compression, size on disk (docs/WORLD_STORE.md).
+engine::Status printStoreInfo(const std::string& path) {
+    auto store = engine::world::RegionStore::open(path, /*writable=*/false);
+    if (!store) return store.error();
+    auto rows = store->listRegions();
+    if (!rows) return rows.error();
+    std::uint64_t raw = 0, stored = 0, largest = 0;
+    for (const engine::world::RegionRow& r : *rows) {
+        raw += r.rawBytes;
+        stored += r.storedBytes;
+        largest = std::max(largest, r.storedBytes);
+    }
+    const engine::world::RegionStoreInfo& i = store->info();
+    const glm::ivec3 count =
+        engine::world::regionCount((i.worldSizeInVoxels + 7) / 8, i.regionCells);
+    std::printf(
+        "store        %s: %zu of %d region(s) stored (%d^3 cells, %d voxels a side); %.2f MiB "
+        "raw, %.2f MiB zstd (%.1fx), largest region %.1f KiB; %.2f MiB on disk; %llu commit(s)\n",
+        path.c_str(), rows->size(), count.x * count.y * count.z, i.regionCells, i.regionCells * 8,
+        double(raw) / (1 << 20), double(stored) / (1 << 20),
+        stored ? double(raw) / double(stored) : 0.0, double(largest) / 1024.0,
+        double(store->fileBytes()) / (1 << 20), static_cast<unsigned long long>(i.commits));
+    return {};
+}
+
+}  // namespace
 
 void addInfoCommand(CLI::App& app, int& exitCode) {
     auto* cmd = app.add_subcommand("info",
@@ -23,7 +53,8 @@ void addInfoCommand(CLI::App& app, int& exitCode) {
     auto vdbOptions = std::make_shared<VdbCliOptions>();
     cmd->add_option(
         "world", *world,
-        "World name (worlds/NAME.toml), scene file, .vdb or .vox file; default: sandbox");
+        "World name (worlds/NAME.toml), scene file, world store (.db), .vdb or .vox file; "
+        "default: sandbox");
     cmd->add_flag("--json", *json, "Print JSON instead of text (worlds)");
     addVdbImportOptions(*cmd, *vdbOptions);
     cmd->callback([=, &exitCode] {
@@ -70,6 +101,12 @@ void addInfoCommand(CLI::App& app, int& exitCode) {
             return;
         }
         engine::world::WorldInfo info = engine::world::describeWorld(*scene);
+        if (std::filesystem::path(*world).extension() == ".db" && !*json) {
+            if (engine::Status s = printStoreInfo(*world); !s) {
+                exitCode = fail(s.error());
+                return;
+            }
+        }
         if (*json) {
             std::printf("%s\n", engine::world::worldInfoJson(info).c_str());
             return;

@@ -73,7 +73,7 @@ std::vector<KnobValue> lightingOverrides(const LightingOptions& o) {
 
 engine::Result<LightingSettings> lightingSettings(const LightingOptions& o,
                                                   const engine::world::Scene* scene) {
-    return engine::scene::lightingFor(scene, lightingOverrides(o));
+    return engine::scene::lightingFor(scene, lightingOverrides(o), o.commandDefaults);
 }
 
 std::string settingsText(const LightingSettings& s) {

@@ -18,6 +18,8 @@ struct LightingOptions {
     // One slot per knob, in knobGroups() order; set when the option was given.
     std::vector<std::optional<std::string>> given;
     bool showSettings = false;  // --show-settings: print the merged settings and stop
+    // The command's own defaults, under the scene's settings (scene::playerDefaults).
+    std::vector<engine::lighting::KnobValue> commandDefaults;
 };
 
 void addLightingOptions(CLI::App& cmd, LightingOptions& o);

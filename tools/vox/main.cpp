@@ -14,6 +14,7 @@
 #include "io/vox_import.h"
 #include "number_options.h"
 #include "scene/scene_file.h"
+#include "scene/store_world.h"
 
 namespace vox {
 
@@ -42,6 +43,8 @@ engine::Result<engine::world::Scene> loadWorld(const std::string& nameOrPath) {
     const std::string ext = std::filesystem::path(nameOrPath).extension().string();
     if (ext == ".vdb") return engine::io::importVdb(nameOrPath);
     if (ext == ".vox") return engine::io::importVox(nameOrPath);
+    // A world store is a whole world (docs/WORLD_STORE.md).
+    if (ext == ".db") return engine::scene::loadWorldStore(nameOrPath);
     auto path = engine::scene::resolveWorldPath(nameOrPath.empty() ? "sandbox" : nameOrPath);
     if (!path) return path.error();
     // Anything else must be a scene file: say so for a binary file rather than report its bytes.
@@ -51,7 +54,7 @@ engine::Result<engine::world::Scene> loadWorld(const std::string& nameOrPath) {
 
 std::filesystem::path worldFileOf(const std::string& nameOrPath) {
     const std::string ext = std::filesystem::path(nameOrPath).extension().string();
-    if (ext == ".vdb" || ext == ".vox") return nameOrPath;
+    if (ext == ".vdb" || ext == ".vox" || ext == ".db") return nameOrPath;
     auto path = engine::scene::resolveWorldPath(nameOrPath.empty() ? "sandbox" : nameOrPath);
     return path ? *path : std::filesystem::path();
 }

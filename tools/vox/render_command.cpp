@@ -13,6 +13,7 @@
 #include "number_options.h"
 #include "render/frame_plan.h"
 #include "render/renderer.h"
+#include "scene/scene_lighting.h"
 #include "tool_gpu.h"
 
 namespace vox {
@@ -121,12 +122,12 @@ engine::Status writeImages(const RenderOptions& o, const engine::render::FrameIm
     if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path(), ec);
     engine::Status s =
         out.extension() == ".png"
-            ? engine::io::writePng(out, images.width, images.height, images.rgba8)
-            : engine::io::writeExr(out, images.width, images.height, images.radiance);
+            ? engine::io::writePng(out, images.displayWidth, images.displayHeight, images.rgba8)
+            : engine::io::writeExr(out, images.displayWidth, images.displayHeight, images.display);
     if (!s) return s;
     std::printf("wrote    %s\n", out.string().c_str());
     if (!o.exr.empty()) {
-        s = engine::io::writeExr(o.exr, images.width, images.height, images.radiance);
+        s = engine::io::writeExr(o.exr, images.displayWidth, images.displayHeight, images.display);
         if (!s) return s;
         std::printf("wrote    %s (linear)\n", o.exr.c_str());
     }
@@ -169,8 +170,10 @@ int runRender(const RenderOptions& o) {
 
     engine::render::Renderer renderer(**ctx);
     engine::render::FrameSettings settings;
-    settings.width = (*size).x;
-    settings.height = (*size).y;
+    settings.width = std::max(1u, std::uint32_t(std::lround((*size).x * o.renderScale)));
+    settings.height = std::max(1u, std::uint32_t(std::lround((*size).y * o.renderScale)));
+    settings.displayWidth = (*size).x;
+    settings.displayHeight = (*size).y;
     settings.exposure = o.exposure;
     settings.timeSeconds = o.time;  // every frame at the same scene time: a still
     if (!scene->objects.empty())
@@ -235,8 +238,17 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
         ->check(numberIn(kSamplesRange));
     cmd->add_option("--timings", o->timings,
                     "Write per-frame, per-pass GPU milliseconds to this JSON file");
+    cmd->add_option("--render-scale", o->renderScale,
+                    "Render resolution as a fraction of --size; the display's reconstruction "
+                    "(--display) resolves it to --size")
+        ->capture_default_str()
+        ->check(numberIn(engine::closedRange(1.0 / 16.0, 1.0)));
     addLightingOptions(*cmd, o->lighting);
-    cmd->callback([o, &exitCode] { exitCode = runRender(*o); });
+    cmd->callback([o, cmd, &exitCode] {
+        // A fixed --exposure is the exposure: not metered.
+        o->lighting.commandDefaults = engine::scene::playerDefaults(cmd->count("--exposure") == 0);
+        exitCode = runRender(*o);
+    });
 }
 
 }  // namespace vox

@@ -6,13 +6,16 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "core/error.h"
 #include "lighting/lighting_settings.h"
+#include "metrics/cost_model.h"
 #include "metrics/interleaved_rounds.h"
+#include "render/frame_work.h"
 #include "render/renderer.h"
 #include "thesis_scenes.h"
 #include "world/scene.h"
@@ -32,17 +35,24 @@ struct RestirBenchOptions {
     std::string rows = "restir,restir-unbiased,ris,uniform";
     std::string sampling;  // empty: the sampling knob's default
     std::vector<std::string> variants;
-    std::string versus;          // empty: every ReSTIR row at defaults (one per --sampling value)
-    double confidence = 0.9;     // of the verdicts' intervals; 5 seeds' min-max covers 93.75 %
+    std::string versus;       // empty: every ReSTIR row at defaults (one per --sampling value)
+    double confidence = 0.9;  // of the verdicts' intervals; 5 seeds' min-max covers 93.75 %
+    double noise = 0.05;      // a verdict's interval must exclude 1 by this much (criterion.rs's
+                              // noise threshold): the cost model's own fit is 1-3 % off its points
     std::string clock = "auto";  // gpu: fastest frame's GPU timestamps; cpu: the process's CPU
                                  // time; auto: cpu on a CPU device
     bool quick = false;
     std::string output =
         "out/bench_restir.json";  // and the summary CSV beside it (.csv), for vox bench recommend
     std::string markdown;
+    std::string countsFrom;  // an earlier run's JSON: its equal-cost counts instead of this run's
 };
 
-// Which knob a row scales to ReSTIR's frame time.
+// Equal-cost counts by (scene, row name), from --counts-from.
+using PinnedCounts = std::map<std::pair<std::string, std::string>, std::uint32_t>;
+engine::Result<PinnedCounts> readPinnedCounts(const std::string& path);
+
+// Which knob a row scales to ReSTIR's cost (the cost model's, from counted work).
 enum class EqualTime { None, ShadowRays, Candidates };
 
 struct Row {
@@ -55,13 +65,23 @@ struct Row {
 struct RowResult {
     std::vector<double> ms, mse, mae, meanRatio;  // one per seed
     std::uint32_t scaledTo = 0;                   // shadow rays or candidates (scaled rows)
-    std::vector<double> roundMs;  // the interleaved timing's rounds, at the fitted settings
+    std::uint32_t fittedTo = 0;      // what this run's model gave (differs when pinned)
+    engine::render::FrameWork work;  // one frame's, at the fitted settings
 };
 
-// The interleaved timing of all rows at their fitted settings: enough rounds that a time ratio's
-// interval covers 97 %, so that with 5 seeds' min-max of error ratios (93.75 %) the product still
-// covers 90 %.
+// The cost model's calibration: every calibration point timed in interleaved rounds (at least
+// 10, so that a cost ratio's interval covers 97 % and, with 5 seeds' min-max of error ratios at
+// 93.75 %, the product still covers 90 %).
 constexpr engine::metrics::RoundsPlan kCostRounds{1, 10, 16, 0.97, 0.03};
+
+// A setting timed to calibrate the cost model: each row as given, and each scaled row at two
+// counts of its scaled knob (so the model sees that knob's slope).
+struct CalibrationPoint {
+    std::string label;
+    engine::lighting::LightingSettings lighting;
+    engine::render::FrameWork work;
+    std::vector<double> roundMs;  // its time in each interleaved round
+};
 
 // The rows: the default rows (per --sampling value for those that resample), then the variants.
 engine::Result<std::vector<Row>> rowsOf(const RestirBenchOptions& o);
@@ -85,23 +105,29 @@ struct RestirSetup {
     const std::vector<std::size_t>& versus;
     engine::gpu::Context& gpu;
     engine::render::FrameSettings frame;
-    bool cpuClock;                   // a frame's time: CPU time, else the fastest GPU frame's
-    std::filesystem::path cacheDir;  // the references, cached on disk
+    bool cpuClock;                         // a frame's time: CPU time, else the fastest GPU frame's
+    std::filesystem::path cacheDir;        // the references, cached on disk
+    const PinnedCounts* pinned = nullptr;  // --counts-from: counts that replace the fitted ones
 };
 
 struct SceneResults {
     std::vector<RowResult> rows;
     std::uint32_t emitters = 0;
-    double targetMs = 0.0;  // the yardstick's median time: the equal time
+    double targetMs = 0.0;                      // the yardstick's median time
+    std::vector<CalibrationPoint> calibration;  // the first is the yardstick: the cost unit
+    engine::metrics::CostModel model;           // per-kind costs, in the yardstick's time
 };
+
+// Row i's cost over row v's under the scene's model, with the calibration rounds' interval.
+engine::metrics::MedianInterval costRatio(const SceneResults& s, std::size_t i, std::size_t v);
 
 // Progress over all scenes, rows and seeds, for the lines on stderr.
 struct RestirProgress {
     std::size_t done = 0, total = 0;
 };
 
-// One scene: the scaled rows fitted to the yardstick's time, every row timed in interleaved
-// rounds, then every row per seed.
+// One scene: the cost model calibrated in interleaved rounds, the scaled rows set to the
+// yardstick's cost under it, then every row per seed.
 engine::Result<SceneResults> measureScene(const RestirSetup& setup, engine::world::Scene& scene,
                                           RestirProgress& progress);
 

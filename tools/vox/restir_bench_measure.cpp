@@ -1,7 +1,9 @@
-// vox bench restir's measurement of one scene. Equal time first: each scaled row's count is
-// fitted to the yardstick's time (the first versus row), the two measured back to back so that
-// other work on the machine slows both; then all rows at their fitted settings in interleaved
-// rounds (the verdicts' time ratios); then the seeds, every row of a seed back to back.
+// vox bench restir's measurement of one scene. Equal cost first: the cost model
+// (metrics/cost_model.h) is calibrated on the rows and on each scaled row at two counts, all
+// timed in interleaved rounds relative to the yardstick (the first versus row), so that a machine
+// that slows down during a round slows every point of it alike; each scaled row's count is then
+// the one whose counted work (render/frame_work.h) costs what the yardstick's does under the
+// model: a count, not a clock reading. Then the seeds, every row of a seed back to back.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -15,6 +17,7 @@ namespace vox {
 namespace {
 
 using engine::lighting::LightingSettings;
+using engine::render::FrameWork;
 
 // One scene's renderer, view and reference, shared by all its measurements.
 struct SceneBench {
@@ -24,62 +27,128 @@ struct SceneBench {
     const std::vector<glm::vec4>& reference;
     engine::render::Renderer renderer;       // one per scene: pipelines built once
     std::vector<LightingSettings> settings;  // the rows', the scaled ones at their fitted counts
+    std::uint32_t emitters = 0;
 
     // A frame's time. On lavapipe the device is this process's threads on cores other sessions
     // share: its CPU time is the work done, where GPU timestamps also count the waits for a core.
     double timeOf(const SweepPoint& p) const { return setup.cpuClock ? p.cpuMs : p.fastestMs; }
     SweepPoint measure(const LightingSettings& l, std::string label) {
-        return measureSetting(renderer, scene, camera, setup.frame, l, setup.options.frames,
-                              reference, std::move(label));
+        SweepPoint p = measureSetting(renderer, scene, camera, setup.frame, l, setup.options.frames,
+                                      reference, std::move(label));
+        emitters = p.emitters;
+        return p;
     }
     double timeOf(const LightingSettings& l) { return timeOf(measure(l, "")); }
+    FrameWork workOf(const LightingSettings& l) const {
+        return engine::render::frameWork(l, {setup.frame.width, setup.frame.height}, emitters);
+    }
 };
 
-// A setting's time as a ratio to the yardstick's: the median of per-round ratios over
-// interleaved rounds, so a machine that slows down during the fit slows both.
-engine::metrics::MedianInterval ratioToYardstick(SceneBench& b, const LightingSettings& l) {
-    const engine::metrics::RoundsPlan fitRounds{1, 6, 10, 0.95, 0.05};
-    const LightingSettings* pair[2] = {&b.settings[b.setup.versus[0]], &l};
-    auto t = engine::metrics::measureInterleaved(
-        2, [&](std::size_t k) { return b.timeOf(*pair[k]); }, fitRounds);
-    return t.ratioToFirst[1];
+std::uint32_t& scaledKnob(LightingSettings& l, EqualTime scale) {
+    return scale == EqualTime::ShadowRays ? l.shadowRays : l.restir.candidates;
 }
 
-// Fits row i's scaled count to the yardstick's time; returns the count.
-std::uint32_t fitEqualTime(SceneBench& b, std::size_t i) {
-    const Row& row = b.setup.rows[i];
-    const std::string& yardstick = b.setup.rows[b.setup.versus[0]].name;
-    LightingSettings& l = b.settings[i];
-    std::uint32_t& n = row.scale == EqualTime::ShadowRays ? l.shadowRays : l.restir.candidates;
-    const std::uint32_t maxN =
-        row.scale == EqualTime::ShadowRays ? 4096u : 1024u;  // the knobs' ranges
-    std::fprintf(stderr, "  %s: %s: fitting its time to %s's\n", b.scene.name.c_str(),
-                 row.name.c_str(), yardstick.c_str());
-    // Fit ratio = base + slope x n from n = 1 and 16 (in units of the yardstick's time),
-    // pick n for a ratio of 1, then up to three correction steps until within 10 %
-    // (timings are not quite linear).
-    n = 1;
-    const double r1 = ratioToYardstick(b, l).median;
-    n = 16;
-    const double r16 = ratioToYardstick(b, l).median;
-    const double slope = std::max((r16 - r1) / 15.0, 1e-3 * std::max(r1, 1e-3));
-    const double base = r1 - slope;
-    auto countFor = [&](double perUnit) {  // at least 1: the yardstick may be below the fitted base
-        return std::uint32_t(std::clamp(std::round((1.0 - base) / perUnit), 1.0, double(maxN)));
+// The two counts a scaled knob is calibrated at: about the range equal cost lands in (uniform
+// 4-12 rays, RIS 60-110 candidates in the runs of 2026-12-02/04).
+std::pair<std::uint32_t, std::uint32_t> calibrationCounts(EqualTime scale) {
+    return scale == EqualTime::ShadowRays ? std::pair{1u, 16u} : std::pair{8u, 128u};
+}
+
+// The points: the yardstick first (the cost unit), the other rows as given, the scaled rows at
+// their two calibration counts; each setting once.
+std::vector<CalibrationPoint> calibrationPoints(const SceneBench& b) {
+    const std::vector<Row>& rows = b.setup.rows;
+    std::vector<CalibrationPoint> points;
+    auto add = [&](std::string label, const LightingSettings& l) {
+        for (const CalibrationPoint& p : points) {
+            if (p.lighting == l) return;
+        }
+        points.push_back({std::move(label), l, b.workOf(l), {}});
     };
-    std::fprintf(stderr, "    %s: time / %s's: %.3f at 1, %.3f at 16\n", row.name.c_str(),
-                 yardstick.c_str(), r1, r16);
-    n = countFor(slope);
-    for (int step = 0; step < 3; ++step) {
-        const engine::metrics::MedianInterval rn = ratioToYardstick(b, l);
-        std::fprintf(stderr, "    %s: %u: %.3f (%.3f–%.3f) of %s's time\n", row.name.c_str(), n,
-                     rn.median, rn.low, rn.high, yardstick.c_str());
-        if (std::abs(rn.median - 1.0) < 0.1) break;
-        std::uint32_t next = countFor(std::max((rn.median - base) / double(n), 1e-6));
-        if (next == n) break;
-        n = next;
+    add(rows[b.setup.versus[0]].name, rows[b.setup.versus[0]].lighting);
+    for (const Row& row : rows) {
+        add(row.name, row.lighting);
+        if (row.scale == EqualTime::None) continue;
+        const auto [low, high] = calibrationCounts(row.scale);
+        for (std::uint32_t n : {low, high}) {
+            LightingSettings l = row.lighting;
+            scaledKnob(l, row.scale) = n;
+            add(fmt::format("{} {}={}", row.name, row.scale == EqualTime::ShadowRays ? "rays" : "M",
+                            n),
+                l);
+        }
     }
-    return n;
+    return points;
+}
+
+// The count of row i's scaled knob whose modelled cost is the yardstick's: cost is linear in it.
+std::uint32_t equalCostCount(const SceneBench& b, const engine::metrics::CostModel& model,
+                             std::size_t i) {
+    const Row& row = b.setup.rows[i];
+    LightingSettings l = row.lighting;
+    auto costAt = [&](std::uint32_t n) {
+        scaledKnob(l, row.scale) = n;
+        return model.cost(b.workOf(l).count);
+    };
+    const double target = model.cost(b.workOf(b.setup.rows[b.setup.versus[0]].lighting).count);
+    const double slope = costAt(2) - costAt(1);
+    const double base = costAt(1) - slope;
+    const double maxN = row.scale == EqualTime::ShadowRays ? 4096.0 : 1024.0;  // the knobs' ranges
+    if (!(slope > 0.0)) return std::uint32_t(maxN);
+    return std::uint32_t(std::clamp(std::round((target - base) / slope), 1.0, maxN));
+}
+
+void printModel(const SceneBench& b, const SceneResults& r) {
+    using engine::render::WorkKind;
+    const std::string& unit = b.setup.rows[b.setup.versus[0]].name;
+    std::fprintf(
+        stderr, "  %s: cost per million of each kind, in %s's frame time (%u rounds):\n",
+        b.scene.name.c_str(), unit.c_str(),
+        r.calibration[0].roundMs.size() > 0 ? unsigned(r.calibration[0].roundMs.size()) : 0u);
+    for (std::size_t k = 0; k < engine::render::kWorkKinds; ++k) {
+        const engine::metrics::MedianInterval& m = r.model.perKindInterval[k];
+        std::fprintf(stderr, "    %-14s %.4f [%.4f–%.4f]\n",
+                     std::string(engine::render::workKindName(WorkKind(k))).c_str(),
+                     1e6 * r.model.perKind[k], 1e6 * m.low, 1e6 * m.high);
+    }
+    std::fprintf(stderr, "    worst point off the model by %.0f %%\n",
+                 100.0 * r.model.worstResidual);
+}
+
+// Calibrates the model and sets the scaled rows' counts.
+void fitEqualCost(SceneBench& b, SceneResults& results) {
+    results.calibration = calibrationPoints(b);
+    std::vector<CalibrationPoint>& points = results.calibration;
+    std::fprintf(stderr, "  %s: calibrating the cost model on %zu settings, interleaved\n",
+                 b.scene.name.c_str(), points.size());
+    b.timeOf(points[0].lighting);  // the emitter count, for the counts
+    for (CalibrationPoint& p : points) p.work = b.workOf(p.lighting);
+    const engine::metrics::InterleavedTimes t = engine::metrics::measureInterleaved(
+        points.size(), [&](std::size_t k) { return b.timeOf(points[k].lighting); }, kCostRounds);
+    std::vector<std::vector<double>> counts;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        points[k].roundMs = t.times[k];
+        counts.emplace_back(points[k].work.count.begin(), points[k].work.count.end());
+    }
+    results.model = engine::metrics::fitCostModel(counts, t.times, 0, kCostRounds.confidence);
+    printModel(b, results);
+    for (std::size_t i = 0; i < b.setup.rows.size(); ++i) {
+        const Row& row = b.setup.rows[i];
+        if (row.scale == EqualTime::None) continue;
+        const std::uint32_t fitted = equalCostCount(b, results.model, i);
+        std::uint32_t n = fitted;
+        if (b.setup.pinned) {
+            auto it = b.setup.pinned->find({b.scene.name, row.name});
+            if (it != b.setup.pinned->end()) n = it->second;
+        }
+        scaledKnob(b.settings[i], row.scale) = n;
+        results.rows[i].scaledTo = n;
+        results.rows[i].fittedTo = fitted;
+        std::fprintf(stderr, "    %s: %u %s cost what %s does%s\n", row.name.c_str(), fitted,
+                     row.scale == EqualTime::ShadowRays ? "rays" : "candidates",
+                     b.setup.rows[b.setup.versus[0]].name.c_str(),
+                     n == fitted ? "" : fmt::format("; rendered at {} (--counts-from)", n).c_str());
+    }
 }
 
 // Every seed renders every row back to back, the order reversed on every other seed.
@@ -110,6 +179,10 @@ void measureSeeds(SceneBench& b, SceneResults& results, RestirProgress& progress
 
 }  // namespace
 
+engine::metrics::MedianInterval costRatio(const SceneResults& s, std::size_t i, std::size_t v) {
+    return s.model.ratio(s.rows[i].work.count, s.rows[v].work.count, kCostRounds.confidence);
+}
+
 engine::Result<SceneResults> measureScene(const RestirSetup& setup, engine::world::Scene& scene,
                                           RestirProgress& progress) {
     engine::world::CameraPreset camera = scene.camera();
@@ -120,15 +193,9 @@ engine::Result<SceneResults> measureScene(const RestirSetup& setup, engine::worl
     for (const Row& row : setup.rows) b.settings.push_back(row.lighting);
     SceneResults results;
     results.rows.resize(setup.rows.size());
-    for (std::size_t i = 0; i < setup.rows.size(); ++i) {
-        if (setup.rows[i].scale != EqualTime::None) results.rows[i].scaledTo = fitEqualTime(b, i);
-    }
-    // The time ratios the verdicts use: all rows at their fitted settings, interleaved.
-    std::fprintf(stderr, "  %s: timing every row in interleaved rounds\n", scene.name.c_str());
-    const engine::metrics::InterleavedTimes rounds = engine::metrics::measureInterleaved(
-        setup.rows.size(), [&](std::size_t i) { return b.timeOf(b.settings[i]); }, kCostRounds);
-    for (std::size_t i = 0; i < setup.rows.size(); ++i) results.rows[i].roundMs = rounds.times[i];
-    // Then the seeds: the per-seed time ratios compare measurements close in time.
+    fitEqualCost(b, results);
+    for (std::size_t i = 0; i < setup.rows.size(); ++i)
+        results.rows[i].work = b.workOf(b.settings[i]);
     measureSeeds(b, results, progress);
     results.targetMs = engine::metrics::summarize(results.rows[setup.versus[0]].ms).median;
     return results;

@@ -37,23 +37,46 @@ std::string cell(const SeedSummary& s, const char* format) {
                        fmt::format(fmt::runtime(format), s.max));
 }
 
-// A row's MSE x time over the versus row's: the work-normalised error ratio (inverse relative
-// efficiency), which an imperfect equal-time fit barely moves (MSE ~ 1 / samples). The MSE ratio's
+// A row's MSE x cost over the versus row's: the work-normalised error ratio (inverse relative
+// efficiency), which an imperfect equal-cost count barely moves (MSE ~ 1 / samples). The cost is
+// the model's (counted work at calibrated per-kind costs), not a clock reading. The MSE ratio's
 // interval over seeds (the renders are deterministic: seeds are the only randomness) times the
-// time ratio's over the interleaved rounds; its coverage is the product of the two.
-engine::metrics::MedianInterval workNormalisedRatio(const RowResult& r, const RowResult& versus,
-                                                    double confidence) {
+// cost ratio's over the calibration rounds; its coverage is the product of the two.
+engine::metrics::MedianInterval workNormalisedRatio(const SceneResults& s, std::size_t i,
+                                                    std::size_t v, double confidence) {
     using namespace engine::metrics;
-    return productInterval(
-        medianInterval(perSeedRatios(r.mse, versus.mse), confidence),
-        medianInterval(perSeedRatios(r.roundMs, versus.roundMs), kCostRounds.confidence));
+    return productInterval(medianInterval(perSeedRatios(s.rows[i].mse, s.rows[v].mse), confidence),
+                           costRatio(s, i, v));
 }
 
-std::string jsonInterval(const engine::metrics::MedianInterval& m, double confidence) {
+std::string jsonInterval(const engine::metrics::MedianInterval& m, double confidence,
+                         double noise = 0.0) {
     return fmt::format(
         "{{\"median\": {}, \"low\": {}, \"high\": {}, \"coverage\": {}, \"verdict\": \"{}\"}}",
         m.median, m.low, m.high, m.covered,
-        engine::metrics::verdictName(engine::metrics::verdictOf(m, confidence)));
+        engine::metrics::verdictName(engine::metrics::verdictOf(m, confidence, noise)));
+}
+
+// The calibration: per-kind costs (in the yardstick's frame time) with the rounds' intervals,
+// and every point's counted work and times.
+std::string jsonModel(const SceneResults& r) {
+    std::string kinds;
+    for (std::size_t k = 0; k < engine::render::kWorkKinds; ++k) {
+        const engine::metrics::MedianInterval& m = r.model.perKindInterval[k];
+        kinds += fmt::format(
+            "{}{}: {{\"cost\": {}, \"low\": {}, \"high\": {}}}", k ? ", " : "",
+            jsonString(std::string(engine::render::workKindName(engine::render::WorkKind(k)))),
+            r.model.perKind[k], m.low, m.high);
+    }
+    std::string points;
+    for (const CalibrationPoint& p : r.calibration) {
+        points += fmt::format("{}{{\"label\": {}, \"work\": {}, \"round_ms\": {}}}",
+                              points.empty() ? "" : ", ", jsonString(p.label),
+                              jsonArray({p.work.count.begin(), p.work.count.end()}),
+                              jsonArray(p.roundMs));
+    }
+    return fmt::format("{{\"kinds\": {{{}}}, \"worst_residual\": {}, \"points\": [{}]}}", kinds,
+                       r.model.worstResidual, points);
 }
 
 std::string scaledText(const Row& row, const RowResult& r) {
@@ -100,12 +123,13 @@ engine::Status RestirReport::open(const std::filesystem::path& out, const std::s
         << "scene,emitters,row,method,sampling,base,equal_time,ms,mse,mse_min,mse_max,mae,mae_min,"
            "mae_max,mean_ratio\n";
 
-    mTable =
-        fmt::format("| scene | emitters | row | equal time | ms (÷ {}) | MSE | MAE | mean ratio |",
-                    mSetup.rows[mSetup.versus[0]].name);
-    std::string rule = "| --- | ---: | --- | ---: | ---: | ---: | ---: | ---: |";
+    mTable = fmt::format(
+        "| scene | emitters | row | equal cost | cost ÷ {0} | ms (÷ {0}) | MSE | MAE | "
+        "mean ratio |",
+        mSetup.rows[mSetup.versus[0]].name);
+    std::string rule = "| --- | ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: |";
     for (std::size_t v : mSetup.versus) {
-        mTable += fmt::format(" MSE ÷ {0} | MAE ÷ {0} | MSE×time ÷ {0} [{1:.0f} % interval] |",
+        mTable += fmt::format(" MSE ÷ {0} | MAE ÷ {0} | MSE×cost ÷ {0} [{1:.0f} % interval] |",
                               mSetup.rows[v].name, 100.0 * o.confidence);
         rule += " ---: | ---: | ---: |";
     }
@@ -115,8 +139,9 @@ engine::Status RestirReport::open(const std::filesystem::path& out, const std::s
 
 void RestirReport::addScene(const std::string& scene, const SceneResults& results, bool last) {
     mJson.stream() << fmt::format(
-        "  {{\"scene\": {}, \"emitters\": {}, \"equal_time_ms\": {}, \"rows\": [\n",
-        jsonString(scene), results.emitters, results.targetMs);
+        "  {{\"scene\": {}, \"emitters\": {}, \"yardstick_ms\": {}, \"cost_model\": {}, "
+        "\"rows\": [\n",
+        jsonString(scene), results.emitters, results.targetMs, jsonModel(results));
     std::printf("\n%s (%u emitters; median over %u seeds, min–max in brackets)\n", scene.c_str(),
                 results.emitters, mSetup.options.seeds);
     for (std::size_t i = 0; i < mSetup.rows.size(); ++i) addRow(scene, results, i);
@@ -133,7 +158,7 @@ void RestirReport::addRow(const std::string& scene, const SceneResults& results,
     const LightingSettings shown = shownSettings(row, r);
     mJson.stream() << fmt::format(
         "    {{\"name\": {}, \"settings\": {}, \"sampling\": {}, \"equal_time\": {}, "
-        "\"ms\": {}, \"mse\": {}, "
+        "\"fitted_count\": {}, \"ms\": {}, \"mse\": {}, "
         "\"mae\": {}, \"mean_ratio\": {}, \"per_seed\": {{\"ms\": {}, \"mse\": {}, "
         "\"mae\": {}, \"mean_ratio\": {}}}, "
         "\"versus\": {{",
@@ -141,8 +166,9 @@ void RestirReport::addRow(const std::string& scene, const SceneResults& results,
         jsonString(row.sampling),
         row.scale == EqualTime::None ? "null"
                                      : fmt::format("{{\"{}\": {}}}", scaledKnob(row), r.scaledTo),
-        jsonSummary(ms), jsonSummary(mse), jsonSummary(mae), jsonSummary(mean), jsonArray(r.ms),
-        jsonArray(r.mse), jsonArray(r.mae), jsonArray(r.meanRatio));
+        row.scale == EqualTime::None ? "null" : fmt::format("{}", r.fittedTo), jsonSummary(ms),
+        jsonSummary(mse), jsonSummary(mae), jsonSummary(mean), jsonArray(r.ms), jsonArray(r.mse),
+        jsonArray(r.mae), jsonArray(r.meanRatio));
     // The scaled knob is no part of what the row is.
     const std::string base =
         row.scale == EqualTime::None ? settingsText(withDefaultSampling(shown)) : "";
@@ -157,17 +183,20 @@ void RestirReport::addRow(const std::string& scene, const SceneResults& results,
         engine::metrics::summarize(
             engine::metrics::perSeedRatios(r.ms, results.rows[mSetup.versus[0]].ms))
             .median;
-    mTable += fmt::format("| {} | {} | {} | {} | {:.2f} ({:.2f}×) | {} | {} | {} |", scene,
-                          emitters, row.name, scaledText(row, r), ms.median, timeRatio,
-                          cell(mse, "{:.2e}"), cell(mae, "{:.2e}"), cell(mean, "{:.2f}"));
+    const engine::metrics::MedianInterval cost = costRatio(results, i, mSetup.versus[0]);
+    mTable += fmt::format(
+        "| {} | {} | {} | {} | {:.2f} [{:.2f}–{:.2f}] | {:.2f} ({:.2f}×) | {} | "
+        "{} | {} |",
+        scene, emitters, row.name, scaledText(row, r), cost.median, cost.low, cost.high, ms.median,
+        timeRatio, cell(mse, "{:.2e}"), cell(mae, "{:.2e}"), cell(mean, "{:.2f}"));
     addVersus(r, i, results);
     std::printf("\n");
     mTable += "\n";
     mJson.stream() << "}}" << (i + 1 < mSetup.rows.size() ? "," : "") << "\n";
 }
 
-// Row i against each versus row: error ratios per seed, the time ratio over the interleaved
-// rounds and the verdict of their product.
+// Row i against each versus row: error ratios per seed, the cost ratio under the model and the
+// verdict of their product; the time ratio per seed beside them.
 void RestirReport::addVersus(const RowResult& r, std::size_t i, const SceneResults& results) {
     const double confidence = mSetup.options.confidence;
     for (std::size_t k = 0; k < mSetup.versus.size(); ++k) {
@@ -179,18 +208,21 @@ void RestirReport::addVersus(const RowResult& r, std::size_t i, const SceneResul
             engine::metrics::summarize(engine::metrics::perSeedRatios(r.mae, d.mae));
         SeedSummary msRatio =
             engine::metrics::summarize(engine::metrics::perSeedRatios(r.ms, d.ms));
-        const engine::metrics::MedianInterval work = workNormalisedRatio(r, d, confidence);
-        const std::string_view verdict =
-            engine::metrics::verdictName(engine::metrics::verdictOf(work, confidence));
-        const engine::metrics::MedianInterval time = engine::metrics::medianInterval(
-            engine::metrics::perSeedRatios(r.roundMs, d.roundMs), kCostRounds.confidence);
+        const engine::metrics::MedianInterval work = workNormalisedRatio(results, i, v, confidence);
+        const std::string_view verdict = engine::metrics::verdictName(
+            engine::metrics::verdictOf(work, confidence, mSetup.options.noise));
+        // The clock's view beside the model's: time per seed (rows interleaved A B .., .. B A).
+        const engine::metrics::MedianInterval time =
+            engine::metrics::medianInterval(engine::metrics::perSeedRatios(r.ms, d.ms), confidence);
+        const engine::metrics::MedianInterval cost = costRatio(results, i, v);
         mJson.stream() << fmt::format(
             "{}{}: {{\"mse_ratio\": {}, \"mae_ratio\": {}, \"ms_ratio\": {}, "
-            "\"time_ratio\": {}, "
-            "\"mse_time_ratio\": {}}}",
+            "\"time_ratio\": {}, \"cost_ratio\": {}, "
+            "\"mse_cost_ratio\": {}}}",
             k ? ", " : "", jsonString(mSetup.rows[v].name), jsonSummary(mseRatio),
-            jsonSummary(maeRatio), jsonSummary(msRatio), jsonInterval(time, kCostRounds.confidence),
-            jsonInterval(work, confidence));
+            jsonSummary(maeRatio), jsonSummary(msRatio), jsonInterval(time, confidence),
+            jsonInterval(cost, kCostRounds.confidence),
+            jsonInterval(work, confidence, mSetup.options.noise));
         if (v == i) {
             mTable += " — | — | — |";
             continue;
@@ -200,7 +232,7 @@ void RestirReport::addVersus(const RowResult& r, std::size_t i, const SceneResul
             "[{:.2f}–{:.2f}] {} |",
             mseRatio.median, mseRatio.min, mseRatio.max, maeRatio.median, maeRatio.min,
             maeRatio.max, work.median, work.low, work.high, verdict);
-        std::printf("  ÷%s MSE %.2fx MAE %.2fx MSE×time %.2fx [%.2f–%.2f] %s",
+        std::printf("  ÷%s MSE %.2fx MAE %.2fx MSE×cost %.2fx [%.2f–%.2f] %s",
                     mSetup.rows[v].name.c_str(), mseRatio.median, maeRatio.median, work.median,
                     work.low, work.high, std::string(verdict).c_str());
     }

@@ -7,14 +7,20 @@
 #include <sstream>
 
 #include "commands.h"
+#include "gpu/context.h"
 #include "lighting/emitter_list.h"
 #include "lighting/lighting_knobs.h"
+#include "metrics/cost_model.h"
+#include "metrics/seed_statistics.h"
+#include "render/frame_work.h"
+#include "render/renderer.h"
 #include "sweep_runner.h"
 
 namespace vox {
 
 using engine::lighting::LightingSettings;
 using engine::lighting::Method;
+using engine::metrics::MedianInterval;
 
 std::vector<std::string> splitList(const std::string& s) {
     std::vector<std::string> out;
@@ -142,14 +148,122 @@ const char* indirectColumn(const LightingSettings& l) {
         l.method == Method::Reference ? engine::lighting::Indirect::Reference : l.indirect);
 }
 
-// A point's line, as the sweep has always written it.
-std::string pointLine(const SweepPoint& p, const LightingSettings& l,
-                      std::uint32_t referenceBounces) {
-    double primary = p.passMs.count("primary_rays") ? p.passMs.at("primary_rays") : 0.0;
-    double tonemap = p.passMs.count("tonemap") ? p.passMs.at("tonemap") : 0.0;
-    return fmt::format("{},{},\"{}\",{},{},{},{},{},{},{},{},{},{}\n", p.scene, p.method, p.label,
-                       p.emitters, p.totalMs, primary, p.totalMs - primary - tonemap, p.mae, p.mse,
-                       p.rmae, indirectColumn(l), referenceBounces, p.meanRatio);
+// One point of a world measured over the rounds.
+struct RoundsOfPoint {
+    std::uint32_t index = 0;
+    const std::string* label = nullptr;
+    LightingSettings lighting;
+    bool direct = true;
+    std::vector<SweepPoint> rounds;
+    std::vector<double> ms;  // the chosen clock's time per round
+    MedianInterval cost;     // ms: the model's for a direct point, the clock's otherwise
+    engine::render::FrameWork work;
+};
+
+double medianOf(const std::vector<SweepPoint>& v, double SweepPoint::*field) {
+    std::vector<double> x;
+    for (const SweepPoint& p : v) x.push_back(p.*field);
+    return engine::metrics::summarize(x).median;
+}
+
+double passMedian(const std::vector<SweepPoint>& v, const char* pass) {
+    std::vector<double> x;
+    for (const SweepPoint& p : v) x.push_back(p.passMs.count(pass) ? p.passMs.at(pass) : 0.0);
+    return engine::metrics::summarize(x).median;
+}
+
+// A point's line: the columns the sweep has always written (medians over the rounds), then the
+// rounds, the cost with its interval and the errors' min-max over the seeds.
+std::string pointLine(const RoundsOfPoint& r, std::uint32_t referenceBounces) {
+    const SweepPoint& first = r.rounds.front();
+    std::vector<double> mae, mse;
+    for (const SweepPoint& p : r.rounds) {
+        mae.push_back(p.mae);
+        mse.push_back(p.mse);
+    }
+    const auto a = engine::metrics::summarize(mae), e = engine::metrics::summarize(mse);
+    const double total = medianOf(r.rounds, &SweepPoint::totalMs);
+    const double primary = passMedian(r.rounds, "primary_rays");
+    const double tonemap = passMedian(r.rounds, "tonemap");
+    return fmt::format(
+        "{},{},\"{}\",{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", first.scene,
+        first.method, first.label, first.emitters, total, primary, total - primary - tonemap,
+        a.median, e.median, medianOf(r.rounds, &SweepPoint::rmae), indirectColumn(r.lighting),
+        referenceBounces, medianOf(r.rounds, &SweepPoint::meanRatio), r.rounds.size(),
+        r.cost.median, r.cost.low, r.cost.high, a.min, a.max, e.min, e.max);
+}
+
+// The cost of every point: the direct-light ones under the model fitted to their rounds, in ms of
+// the first one's median time; the indirect series (whose cache, cone and path work the counts
+// do not cover) keep their time's median and interval over the rounds.
+engine::metrics::CostModel costPoints(std::vector<RoundsOfPoint>& points, double confidence) {
+    std::vector<std::vector<double>> counts, times;
+    std::vector<RoundsOfPoint*> direct;
+    for (RoundsOfPoint& r : points) {
+        if (!r.direct) {
+            r.cost = engine::metrics::medianInterval(r.ms, confidence);
+            continue;
+        }
+        direct.push_back(&r);
+        counts.emplace_back(r.work.count.begin(), r.work.count.end());
+        times.push_back(r.ms);
+    }
+    if (direct.empty()) return {};
+    engine::metrics::CostModel model = engine::metrics::fitCostModel(counts, times, 0, confidence);
+    const double unitMs = engine::metrics::summarize(direct[0]->ms).median;
+    for (std::size_t i = 0; i < direct.size(); ++i) {
+        MedianInterval c = model.ratio(counts[i], counts[0], confidence);
+        direct[i]->cost = {c.low * unitMs, c.median * unitMs, c.high * unitMs, c.covered, c.count};
+    }
+    std::fprintf(stderr, "\n  cost model (%zu points, %zu rounds): worst point %.0f %% off it\n",
+                 direct.size(), times[0].size(), 100.0 * model.worstResidual);
+    return model;
+}
+
+// The direct-light Pareto front by MAE (no other point both cheaper and more accurate, medians),
+// and between neighbours on it whether the seeds and the rounds separate them.
+void printFront(const std::string& scene, const std::vector<RoundsOfPoint>& points,
+                const engine::metrics::CostModel& model) {
+    struct Entry {
+        const RoundsOfPoint* p;
+        engine::metrics::SeedSummary mae;
+    };
+    std::vector<Entry> all;
+    for (const RoundsOfPoint& r : points) {
+        if (!r.direct) continue;
+        std::vector<double> mae;
+        for (const SweepPoint& p : r.rounds) mae.push_back(p.mae);
+        all.push_back({&r, engine::metrics::summarize(mae)});
+    }
+    std::sort(all.begin(), all.end(), [](const Entry& a, const Entry& b) {
+        return a.p->cost.median != b.p->cost.median ? a.p->cost.median < b.p->cost.median
+                                                    : a.mae.median < b.mae.median;
+    });
+    std::vector<const Entry*> front;
+    for (const Entry& e : all) {
+        if (front.empty() || e.mae.median < front.back()->mae.median) front.push_back(&e);
+    }
+    std::printf("%s: Pareto front (cost ms [interval], MAE median [seeds' min–max]):\n",
+                scene.c_str());
+    for (std::size_t i = 0; i < front.size(); ++i) {
+        const Entry& e = *front[i];
+        std::string verdict;
+        if (i > 0) {  // against the cheaper neighbour: more accurate for more cost?
+            const Entry& c = *front[i - 1];
+            // The two points' cost ratio over the rounds' fits, not their separate intervals
+            // (both move with the unit's time alike).
+            const MedianInterval ratio = model.ratio(e.p->work.count, c.p->work.count, 0.9);
+            // Dearer beyond the noise threshold vox bench restir's verdicts use (5 %).
+            const bool cost =
+                engine::metrics::verdictOf(ratio, 0.9, 0.05) == engine::metrics::Verdict::Above;
+            const bool error = e.mae.max < c.mae.min;
+            verdict = cost && error ? "  more accurate and dearer than the previous: resolved"
+                                    : "  against the previous: not resolved at this budget";
+        }
+        std::printf("  %-34s %8.2f [%.2f–%.2f]  %.3e [%.3e–%.3e]%s\n", e.p->label->c_str(),
+                    e.p->cost.median, e.p->cost.low, e.p->cost.high, e.mae.median, e.mae.min,
+                    e.mae.max, verdict.c_str());
+    }
 }
 
 }  // namespace
@@ -196,6 +310,8 @@ engine::Status measureSweepPoints(
             hasBrickLights |= e.minCorner.w == 8 && (e.info.w & 1u);
         std::optional<std::vector<glm::vec4>> reference,
             withBounces;  // rendered or read when needed
+        std::vector<RoundsOfPoint> points;
+        std::vector<std::uint32_t> skipped;
         for (std::uint32_t k = std::max(first, worldFirst); k <= std::min(last, worldLast); ++k) {
             if (wanted && !wanted(k)) continue;
             const std::uint32_t j = k - worldFirst;
@@ -203,7 +319,7 @@ engine::Status measureSweepPoints(
             const auto& [label, l] =
                 direct ? plan.direct[j] : plan.indirect[j - plan.direct.size()];
             if (direct && !l.brickLights && !hasBrickLights) {
-                if (engine::Status s = onPoint(k, ""); !s) return s;
+                skipped.push_back(k);
                 continue;
             }
             std::optional<std::vector<glm::vec4>>& ref = direct ? reference : withBounces;
@@ -214,11 +330,46 @@ engine::Status measureSweepPoints(
                 if (!r) return r.error();
                 ref = std::move(*r);
             }
-            std::fprintf(stderr, "\r  [%u/%zu] %s: %-40s", k + 1, total, scene->name.c_str(),
-                         label.c_str());
-            const SweepPoint p = measureSetting(gpu, *scene, camera, fs, l, o.frames, *ref, label);
-            if (engine::Status s = onPoint(k, pointLine(p, l, direct ? 0 : o.indirectBounces)); !s)
-                return s;
+            RoundsOfPoint r;
+            r.index = k;
+            r.label = &label;
+            r.lighting = l;
+            r.direct = direct;
+            points.push_back(std::move(r));
+        }
+        // One renderer per world (its pipelines built once), its frame counter restarted for
+        // every point; rounds interleaved, the order reversed every other round.
+        engine::render::Renderer renderer(gpu);
+        const bool cpuClock = gpu.info().type == "CPU";  // as vox bench restir's --clock auto
+        for (std::uint32_t round = 0; round < o.seeds; ++round) {
+            for (std::size_t n = 0; n < points.size(); ++n) {
+                RoundsOfPoint& r = points[round % 2 == 0 ? n : points.size() - 1 - n];
+                LightingSettings l = r.lighting;
+                l.seed += round * 104729u;
+                std::fprintf(stderr, "\r  [%u/%zu] %s: round %u/%u: %-40s", r.index + 1, total,
+                             scene->name.c_str(), round + 1, o.seeds, r.label->c_str());
+                renderer.setFrameIndex(0);
+                SweepPoint p = measureSetting(renderer, *scene, camera, fs, l, o.frames,
+                                              r.direct ? *reference : *withBounces, *r.label);
+                r.ms.push_back(cpuClock ? p.cpuMs : p.fastestMs);
+                r.work = engine::render::frameWork(l, plan.size, p.emitters);
+                r.rounds.push_back(std::move(p));
+            }
+        }
+        const engine::metrics::CostModel model = costPoints(points, 0.9);
+        printFront(scene->name, points, model);
+        std::fflush(stdout);  // before the chart script's lines
+        std::size_t next = 0, nextSkipped = 0;
+        for (std::uint32_t k = std::max(first, worldFirst); k <= std::min(last, worldLast); ++k) {
+            if (nextSkipped < skipped.size() && skipped[nextSkipped] == k) {
+                ++nextSkipped;
+                if (engine::Status s = onPoint(k, ""); !s) return s;
+            } else if (next < points.size() && points[next].index == k) {
+                const RoundsOfPoint& r = points[next++];
+                if (engine::Status s = onPoint(k, pointLine(r, r.direct ? 0 : o.indirectBounces));
+                    !s)
+                    return s;
+            }
         }
     }
     std::fprintf(stderr, "\n");

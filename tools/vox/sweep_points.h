@@ -1,7 +1,11 @@
 // The points of `vox bench sweep`: every world × (the direct-light settings, then the indirect-
-// light series), numbered in that order from 0, each measured on a fresh renderer against its
-// world's cached reference — so a point's errors do not depend on which points ran before it, in
-// this process or another, and a job's tasks (sweep_job.h) give the same rows as one process.
+// light series), numbered in that order from 0, each measured against its world's cached
+// reference with its frame counter restarted — so a point's errors do not depend on which points
+// ran before it, in this process or another, and a job's tasks (sweep_job.h) give the same rows
+// as one process. A world's points are measured in --seeds interleaved rounds (round r: every
+// point with seed r, the order reversed every other round); the direct-light points' cost is the
+// cost model's (counted work at per-kind costs fitted to the rounds, metrics/cost_model.h), with
+// the rounds' interval, and their errors have the seeds' min-max.
 #pragma once
 
 #include <cstdint>
@@ -33,6 +37,7 @@ struct SweepOptions {
     std::string size = "128x72";
     std::uint32_t frames = 12;
     std::uint32_t referenceSpp = 1024;
+    std::uint32_t seeds = 3;  // interleaved rounds per world: error spreads and cost intervals
     // Indirect-light series (docs/ACCURACY.md): ReSTIR's defaults for the direct light plus
     // none | cache-K | reference, measured against a multi-bounce reference.
     std::string indirect = "none,cache-32,cache-128,reference,vct";
@@ -59,7 +64,7 @@ engine::Result<SweepPlan> planSweep(const SweepOptions& o);
 inline constexpr const char* kSweepCsvHeader =
     "scene,method,setting,emitters,total_ms,primary_ms,lighting_ms,mae,mse,rmae,indirect,reference_"
     "bounces,"
-    "mean_ratio\n";
+    "mean_ratio,seeds,cost_ms,cost_low,cost_high,mae_low,mae_high,mse_low,mse_high\n";
 
 // Measures the points first..last that `wanted` accepts (all when it is empty), calling
 // onPoint(point, line) for each in order; `line` is empty for a point that does not apply (brick

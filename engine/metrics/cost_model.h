@@ -1,0 +1,45 @@
+// A cost per kind of work (rays, candidates, ...), fitted to measured times, so that benchmarks
+// compare methods by the work they issue (counted, render/frame_work.h) rather than by one
+// clock reading each. Times are taken in interleaved rounds (interleaved_rounds.h) and made
+// relative to one point of each round (the unit: every cost is a fraction of its time), so a
+// machine that slows down during a round scales the whole round and the fit does not see it;
+// only the kinds' relative costs matter. The fit is a non-negative least squares over relative
+// residuals (Lawson & Hanson, "Solving Least Squares Problems", ch. 23, in its simplest form:
+// a negative cost leaves the active set and the rest is refitted): on the per-point medians over
+// rounds for the estimate, and per round for the intervals.
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include "metrics/median_interval.h"
+
+namespace engine::metrics {
+
+struct CostModel {
+    std::vector<double> perKind;  // cost of one unit of each kind, in the unit point's time
+    std::vector<std::vector<double>> perRound;    // [round][kind]: each round's own fit
+    std::vector<MedianInterval> perKindInterval;  // over the rounds' fits
+    double worstResidual = 0.0;  // largest |model - median time| / median time over the points
+
+    // The cost of `counts` (one per kind) under the medians' fit.
+    double cost(std::span<const double> counts) const;
+    // cost(a) / cost(b): the estimate as median, the rounds' fits' sign-test interval around it.
+    MedianInterval ratio(std::span<const double> a, std::span<const double> b,
+                         double confidence) const;
+};
+
+// counts[point][kind]: the work each measured point issues; times[point][round]: its time in
+// each interleaved round (every point measured once per round, all > 0); `unit`: the point
+// whose time is 1 in every round.
+CostModel fitCostModel(const std::vector<std::vector<double>>& counts,
+                       const std::vector<std::vector<double>>& times, std::size_t unit,
+                       double confidence = 0.95);
+
+// Non-negative least squares of relative residuals: x >= 0 minimising sum_p ((A x)_p / y_p - 1)^2.
+// Kinds no point uses get 0.
+std::vector<double> fitRelative(const std::vector<std::vector<double>>& counts,
+                                std::span<const double> y);
+
+}  // namespace engine::metrics

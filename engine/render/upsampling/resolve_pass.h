@@ -1,0 +1,37 @@
+// Temporal upsampling's one dispatch over the display: this frame's jittered samples and the
+// display history resolved into the display image. Shader: shaders/upsampling/resolve.comp
+#pragma once
+
+#include "render/passes/compute_pass.h"
+#include "shared/upsampling.h"
+
+namespace engine::render {
+
+struct ResolveIo {
+    const gpu::Buffer& frameParams;  // read
+    const gpu::Buffer& params;       // read: UpsamplingParams
+    const gpu::Buffer& gbuffer;      // read (render size)
+    const gpu::Buffer& radiance;     // read (render size)
+    const gpu::Buffer& prevDisplay;  // read
+    gpu::Buffer& display;            // write
+    const gpu::Buffer& prevKeys;     // read
+    gpu::Buffer& keys;               // write
+    auto bindings() const {
+        return std::to_array<PassBinding>({{shared::UPSAMPLING_BINDING_FRAME, &frameParams},
+                                           {shared::UPSAMPLING_BINDING_PARAMS, &params},
+                                           {shared::UPSAMPLING_BINDING_GBUFFER, &gbuffer},
+                                           {shared::UPSAMPLING_BINDING_RADIANCE, &radiance},
+                                           {shared::UPSAMPLING_BINDING_PREV_DISPLAY, &prevDisplay},
+                                           {shared::UPSAMPLING_BINDING_DISPLAY, &display},
+                                           {shared::UPSAMPLING_BINDING_PREV_KEYS, &prevKeys},
+                                           {shared::UPSAMPLING_BINDING_KEYS, &keys}});
+    }
+};
+
+class ResolvePass : public ScreenPass<ResolveIo> {
+public:
+    using Io = ResolveIo;
+    explicit ResolvePass(gpu::Context& ctx) : ScreenPass(ctx, "resolve", "upsampling/resolve") {}
+};
+
+}  // namespace engine::render

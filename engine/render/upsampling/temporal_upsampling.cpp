@@ -1,0 +1,83 @@
+#include "render/upsampling/temporal_upsampling.h"
+
+#include <fmt/format.h>
+
+#include "gpu/uploader.h"
+#include "render/frame_commands.h"
+
+namespace engine::render {
+
+namespace {
+
+float radicalInverse(std::uint32_t index, std::uint32_t base) {
+    float result = 0.0f, digit = 1.0f / float(base);
+    for (; index > 0; index /= base, digit /= float(base)) result += float(index % base) * digit;
+    return result;
+}
+
+}  // namespace
+
+glm::vec2 jitterOffset(std::uint32_t index) {
+    return glm::vec2(radicalInverse(index, 2), radicalInverse(index, 3)) - 0.5f;
+}
+
+TemporalUpsampling::TemporalUpsampling(gpu::Context& ctx) : mCtx(ctx), mPass(ctx) {
+    mParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::UpsamplingParams),
+                          "resolve.params");
+}
+
+TechniquePlan TemporalUpsampling::plan(const lighting::LightingSettings& l, const SceneShape&,
+                                       glm::uvec2) {
+    TechniquePlan p;
+    p.runs = lighting::reconstructs(l);
+    p.writesDisplay = true;
+    // Its keys are per display pixel: the renderer's memory plan counts them with the display
+    // image (Renderer::displayBytesPerPixel).
+    p.deviceBytes = sizeof(shared::UpsamplingParams);
+    return p;
+}
+
+std::string TemporalUpsampling::describe(const lighting::LightingSettings& l) {
+    return fmt::format("resolved to the display over up to {} frames", l.display.resolveHistory);
+}
+
+void TemporalUpsampling::skip() {
+    mRestart = true;
+    mPrevJitter = glm::vec2(0.0f);
+}
+
+void TemporalUpsampling::prepare(const FrameChanges& changes, const FrameInput& in,
+                                 gpu::Uploader& uploader, shared::FrameParams& params) {
+    if (in.displaySize != mDisplaySize) {
+        mDisplaySize = in.displaySize;
+        const std::uint64_t pixels = std::uint64_t(mDisplaySize.x) * mDisplaySize.y;
+        for (auto& keys : mKeys)
+            keys = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(std::uint32_t),
+                               "resolve.keys");
+        mRestart = true;
+    }
+    const glm::vec2 jitter = in.lighting.display.jitter
+                                 ? jitterOffset(in.frameIndex % kJitterPhases + 1)
+                                 : glm::vec2(0.0f);
+    params.jitter = glm::vec4(jitter, mPrevJitter);
+    mPrevJitter = jitter;
+
+    shared::UpsamplingParams p{};
+    // A new world or new settings start over; a new render size does not (the display is kept).
+    p.flags =
+        mRestart || changes.newWorld || changes.settingsChanged ? shared::UPSAMPLING_RESTART : 0u;
+    p.maxHistory = float(std::max(in.lighting.display.resolveHistory, 1u));
+    p.clipGamma = 1.25f;
+    uploader.write(mParams, 0, &p, sizeof(p));
+    mRestart = false;
+}
+
+void TemporalUpsampling::record(FrameCommands& commands, const FrameBuffers& frame) {
+    const std::uint32_t now = frame.parity, then = now ^ 1u;
+    mPass.record(commands.current(),
+                 {frame.frameParams, mParams, frame.gbuffer, frame.radiance, frame.prevDisplay,
+                  frame.display, mKeys[then], mKeys[now]},
+                 frame.displaySize);
+}
+
+}  // namespace engine::render

@@ -1,0 +1,49 @@
+// TemporalUpsampling: the displayed image at the display's size from the lighting at the render
+// size (`--display upsampled` or `denoised`). Each frame moves the primary rays by a sub-pixel
+// jitter (Halton 2,3: 16 offsets that cover a pixel evenly); the resolve
+// (shaders/upsampling/resolve.comp) blends this frame's samples into last frame's display image,
+// reprojected by the G-buffer's exact motion (the camera, and each object's own transform),
+// dropped where its voxel-face plane is not among this frame's nearby ones and clipped to their
+// colour spread elsewhere. A still camera converges to an anti-aliased image; a change of render
+// size keeps the display's history. The display image is the renderer's (FrameBuffers::display):
+// the tonemap and the readback take it from there.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "gpu/buffer.h"
+#include "render/technique.h"
+#include "render/upsampling/resolve_pass.h"
+
+namespace engine::render {
+
+// Halton (2, 3) point `index` (from 1) minus 0.5: a sub-pixel offset in (-0.5, 0.5)^2.
+glm::vec2 jitterOffset(std::uint32_t index);
+
+class TemporalUpsampling : public Technique {
+public:
+    // Jitter offsets in a cycle; a still camera's history covers them all.
+    static constexpr std::uint32_t kJitterPhases = 16;
+
+    explicit TemporalUpsampling(gpu::Context& ctx);
+    static TechniquePlan plan(const lighting::LightingSettings& l, const SceneShape& scene,
+                              glm::uvec2 size);
+    static std::string describe(const lighting::LightingSettings& l);
+
+    void prepare(const FrameChanges& changes, const FrameInput& in, gpu::Uploader& uploader,
+                 shared::FrameParams& params) override;
+    void record(FrameCommands& commands, const FrameBuffers& frame) override;
+    void skip() override;
+
+private:
+    gpu::Context& mCtx;
+    ResolvePass mPass;
+    gpu::Buffer mParams;
+    gpu::Buffer mKeys[2];
+    glm::uvec2 mDisplaySize{0};
+    glm::vec2 mPrevJitter{0.0f};  // the last frame's jitter (its G-buffer's samples)
+    bool mRestart = true;
+};
+
+}  // namespace engine::render

@@ -1,0 +1,32 @@
+// Temporal upsampling's parameters and bindings (shaders/upsampling/resolve.comp). Packed on the
+// host by engine/render/upsampling/temporal_upsampling.cpp.
+#ifndef SHARED_UPSAMPLING_H
+#define SHARED_UPSAMPLING_H
+#include "interop.h"
+
+SHARED_BEGIN
+
+// UpsamplingParams.flags
+SHARED_CONST uint UPSAMPLING_RESTART = 1u;  // no history: the first frame, or a new display size
+
+struct UpsamplingParams {
+    uint flags;        // UPSAMPLING_*
+    float maxHistory;  // the weight the display history holds at most (frames)
+    float clipGamma;   // history clipped to the neighbourhood's mean +- gamma standard deviations
+    uint pad0;
+};
+SHARED_ASSERT_SIZE(UpsamplingParams, 16);
+
+SHARED_CONST uint UPSAMPLING_BINDING_FRAME = 0u;     // FrameParams
+SHARED_CONST uint UPSAMPLING_BINDING_PARAMS = 1u;    // UpsamplingParams
+SHARED_CONST uint UPSAMPLING_BINDING_GBUFFER = 2u;   // this frame's G-buffer (render size)
+SHARED_CONST uint UPSAMPLING_BINDING_RADIANCE = 3u;  // vec4 per render pixel
+SHARED_CONST uint UPSAMPLING_BINDING_PREV_DISPLAY =
+    4u;                                               // vec4 per display pixel: rgb, history weight
+SHARED_CONST uint UPSAMPLING_BINDING_DISPLAY = 5u;    // the same, written
+SHARED_CONST uint UPSAMPLING_BINDING_PREV_KEYS = 6u;  // uint per display pixel: its surface's key
+SHARED_CONST uint UPSAMPLING_BINDING_KEYS = 7u;       // the same, written
+
+SHARED_END
+
+#endif

@@ -1,0 +1,125 @@
+#version 460
+// Temporal upsampling's resolve (after Karis 2014, "High Quality Temporal Supersampling", and
+// AMD FSR 2's accumulation): per display pixel, this frame's jittered render samples near it and
+// last frame's display image at the point the pixel's surface was then, blended by how close the
+// samples fell. Over a jitter cycle the samples cover every display pixel, so a still camera
+// converges to an anti-aliased image at the display's size from a quarter of its pixels or fewer.
+// History is dropped where its surface is not among this frame's nearby surfaces (the exact
+// surface keys of common/surface_key.glsl: a disocclusion) and clipped to the neighbourhood's
+// colour spread elsewhere (lighting that changed).
+#extension GL_GOOGLE_include_directive : require
+
+#include "common/gbuffer_load.glsl"
+#include "common/surface_key.glsl"
+#include "shared/frame_params.h"
+#include "shared/upsampling.h"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(set = 0, binding = UPSAMPLING_BINDING_FRAME, std430) readonly buffer Frame { FrameParams gFrame; };
+layout(set = 0, binding = UPSAMPLING_BINDING_PARAMS, std430) readonly buffer Params { UpsamplingParams gParams; };
+layout(set = 0, binding = UPSAMPLING_BINDING_GBUFFER) uniform usamplerBuffer gGBuffer;
+layout(set = 0, binding = UPSAMPLING_BINDING_RADIANCE, std430) readonly buffer Radiance { vec4 gRadiance[]; };
+layout(set = 0, binding = UPSAMPLING_BINDING_PREV_DISPLAY, std430) readonly buffer PrevDisplay { vec4 gPrevDisplay[]; };
+layout(set = 0, binding = UPSAMPLING_BINDING_DISPLAY, std430) writeonly buffer Display { vec4 gDisplay[]; };
+layout(set = 0, binding = UPSAMPLING_BINDING_PREV_KEYS, std430) readonly buffer PrevKeys { uint gPrevKeys[]; };
+layout(set = 0, binding = UPSAMPLING_BINDING_KEYS, std430) writeonly buffer Keys { uint gKeys[]; };
+
+vec3 toYCoCg(vec3 c) {
+    return vec3(dot(c, vec3(0.25, 0.5, 0.25)), dot(c, vec3(0.5, 0.0, -0.5)), dot(c, vec3(-0.25, 0.5, -0.25)));
+}
+vec3 fromYCoCg(vec3 c) { return vec3(c.x + c.y - c.z, c.x + c.z, c.x - c.y - c.z); }
+
+// exp(-kSharpness d^2): a standard deviation of 0.3 display pixels.
+const float kSharpness = 1.0 / (2.0 * 0.3 * 0.3);
+
+void main() {
+    uvec2 pixel = gl_GlobalInvocationID.xy;
+    uvec2 display = gFrame.displaySize.xy;
+    if (any(greaterThanEqual(pixel, display))) return;
+    uint index = pixel.x + pixel.y * display.x;
+    ivec2 render = ivec2(gFrame.imageSize.xy);
+    vec2 scale = vec2(render) / vec2(display);  // render pixels per display pixel
+    vec2 centre = (vec2(pixel) + 0.5) * scale;  // this pixel's centre in render pixels
+    vec2 jitter = gFrame.jitter.xy;
+    ivec2 nearest = ivec2(floor(centre - jitter));  // the render sample closest to it
+
+    // The 3x3 samples around it: what they add to this display pixel (a Gaussian of 0.3 display
+    // pixels around its centre, near a box: over a jitter cycle the samples that fall in it), an
+    // interpolated colour for when nothing else is known (a Gaussian of half a render pixel), the
+    // colour spread for clipping, and the surfaces seen.
+    vec3 added = vec3(0.0), colour = vec3(0.0), m1 = vec3(0.0), m2 = vec3(0.0);
+    float addedWeight = 0.0, colourWeight = 0.0;
+    uint keys[9];
+    uint nearestKey = SURFACE_KEY_SKY;
+    vec4 nearestMotion = vec4(0.0);
+    vec2 nearestSample = vec2(0.0);
+    for (int k = 0; k < 9; ++k) {
+        ivec2 q = clamp(nearest + ivec2(k % 3 - 1, k / 3 - 1), ivec2(0), render - 1);
+        uint qi = uint(q.x) + uint(q.y) * uint(render.x);
+        vec3 c = max(gRadiance[qi].rgb, vec3(0.0));
+        vec2 samplePosition = vec2(q) + 0.5 + jitter;
+        vec2 d = samplePosition - centre;
+        float w = exp(-2.0 * dot(d, d));
+        colour += c * w;
+        colourWeight += w;
+        vec2 dd = d / scale;
+        float wd = exp(-kSharpness * dot(dd, dd));
+        added += c * wd;
+        addedWeight += wd;
+        vec3 y = toYCoCg(c);
+        m1 += y;
+        m2 += y * y;
+        GBufferTexel g = loadGBuffer(gGBuffer, qi);
+        keys[k] = surfaceKey(g);
+        if (k == 4) {
+            nearestKey = keys[k];
+            nearestMotion = g.motion;
+            nearestSample = samplePosition;
+        }
+    }
+    colour /= colourWeight;
+
+    // Last frame's display where this pixel's surface was: the nearest sample's motion, from its
+    // render position to the display's.
+    vec4 history = vec4(0.0);
+    if ((gParams.flags & UPSAMPLING_RESTART) == 0u) {
+        vec2 previous = vec2(pixel) + 0.5;
+        if (nearestMotion.w > 0.0) previous += (nearestMotion.xy - nearestSample) / scale;
+        ivec2 keyTexel = ivec2(floor(previous));
+        if (all(greaterThanEqual(previous, vec2(0.0))) && all(lessThan(previous, vec2(display)))) {
+            uint previousKey = gPrevKeys[uint(keyTexel.x) + uint(keyTexel.y) * display.x];
+            bool seen = false;
+            for (int k = 0; k < 9; ++k) seen = seen || keys[k] == previousKey;
+            if (seen) {
+                // Bilinear, the taps clamped to the image.
+                vec2 p = previous - 0.5;
+                ivec2 base = ivec2(floor(p));
+                vec2 f = p - vec2(base);
+                ivec2 last = ivec2(display) - 1;
+                ivec2 a = clamp(base, ivec2(0), last), b = clamp(base + 1, ivec2(0), last);
+                vec4 h00 = gPrevDisplay[uint(a.x) + uint(a.y) * display.x];
+                vec4 h10 = gPrevDisplay[uint(b.x) + uint(a.y) * display.x];
+                vec4 h01 = gPrevDisplay[uint(a.x) + uint(b.y) * display.x];
+                vec4 h11 = gPrevDisplay[uint(b.x) + uint(b.y) * display.x];
+                history = mix(mix(h00, h10, f.x), mix(h01, h11, f.x), f.y);
+            }
+        }
+    }
+
+    // Without history: what the samples add, or where none fell near, the interpolation.
+    vec3 result = addedWeight > 0.05 ? added / addedWeight : colour;
+    float weight = addedWeight;
+    if (history.w > 0.0) {
+        // Clip the history to the neighbourhood's spread (in YCoCg): what moved or changed light
+        // is pulled to what this frame sees.
+        vec3 mean = m1 / 9.0;
+        vec3 sigma = sqrt(max(m2 / 9.0 - mean * mean, vec3(0.0)));
+        vec3 h = toYCoCg(history.rgb);
+        h = clamp(h, mean - gParams.clipGamma * sigma, mean + gParams.clipGamma * sigma);
+        result = (fromYCoCg(h) * history.w + added) / (history.w + addedWeight);
+        weight = min(history.w + addedWeight, gParams.maxHistory);
+    }
+    gDisplay[index] = vec4(max(result, vec3(0.0)), weight);
+    gKeys[index] = nearestKey;
+}
