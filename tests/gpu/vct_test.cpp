@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "gpu/gpu_test_setup.h"
+#include "render/vct/voxel_cone_tracing.h"
 #include "world/world_edits.h"
 
 using namespace engine::world;
@@ -229,6 +230,41 @@ TEST_F(Vct, IndirectMeanAgainstThePathTracerOnShippedWorlds) {
             "%s: path tracer indirect mean %.5f (1 bounce), %.5f (3); vct %.5f (%.3f of 1 bounce), "
             "with its extra bounce %.5f (%.3f of 3)\n",
             name, one, three, vct, vct / one, vctBounce, vctBounce / three);
-        EXPECT_GT(vct, 0.0) << name;
+        // Issue 38's acceptance: at least 0.8 of the path tracer's mean, and not far above it.
+        // Cornell gave 1.68 while its camera, 380 voxels before the box, left the box out of the
+        // camera-centred clipmap (the cones saw only sky, unoccluded).
+        EXPECT_GT(vct / one, 0.8) << name;
+        EXPECT_LT(vct / one, 1.25) << name;
     }
+}
+
+// The clipmap's levels (VoxelConeTracing::levelOrigin): a camera deep inside a large world gets
+// levels centred on it, as before; one inside a small world stays inside every level; one far
+// outside the world (Cornell's preset) gets a coarsest level that covers the whole world — the
+// camera-centred levels held none of it.
+TEST(VctClipmap, LevelsStayOverTheWorld) {
+    using engine::render::VoxelConeTracing;
+    const auto covers = [](glm::ivec3 origin, std::uint32_t level, glm::vec3 p) {
+        const float extent = float(::shared::VCT_RES * (::shared::VCT_BASE_TEXEL << level));
+        return glm::all(glm::greaterThanEqual(p, glm::vec3(origin))) &&
+               glm::all(glm::lessThan(p, glm::vec3(origin) + extent));
+    };
+    const glm::vec3 deep(1000.5f, 700.25f, 1200.0f);
+    for (std::uint32_t l = 0; l < ::shared::VCT_MAX_LEVELS; ++l) {
+        const int texel = int(::shared::VCT_BASE_TEXEL << l);
+        const glm::ivec3 cameraCentred =
+            (glm::ivec3(glm::floor(deep / float(texel))) - int(::shared::VCT_RES / 2)) * texel;
+        EXPECT_EQ(
+            VoxelConeTracing::levelOrigin(deep, l, glm::ivec3(0), glm::ivec3(2048, 2048, 2048)),
+            cameraCentred);
+        for (const glm::vec3 inside : {glm::vec3(4, 14, 3), glm::vec3(47.5f, 0, 20), glm::vec3(0)})
+            EXPECT_TRUE(
+                covers(VoxelConeTracing::levelOrigin(inside, l, glm::ivec3(0), glm::ivec3(48)), l,
+                       inside));
+    }
+    const glm::vec3 cornellCamera(136, 136, -380);
+    const glm::ivec3 coarsest =
+        VoxelConeTracing::levelOrigin(cornellCamera, 3, glm::ivec3(0), glm::ivec3(272));
+    EXPECT_TRUE(covers(coarsest, 3, glm::vec3(0.0f)));
+    EXPECT_TRUE(covers(coarsest, 3, glm::vec3(271.9f)));
 }

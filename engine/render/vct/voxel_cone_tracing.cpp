@@ -32,10 +32,20 @@ std::uint64_t VoxelConeTracing::volumeBytes() {
            shared::VCT_SLOTS * sizeof(glm::vec4);
 }
 
-glm::ivec3 VoxelConeTracing::levelOrigin(glm::vec3 position, std::uint32_t level) {
+glm::ivec3 VoxelConeTracing::levelOrigin(glm::vec3 position, std::uint32_t level,
+                                         glm::ivec3 worldMin, glm::ivec3 worldMax) {
     const int texel = int(shared::VCT_BASE_TEXEL << level);
-    const glm::ivec3 cameraTexel(glm::floor(position / float(texel)));
-    return (cameraTexel - int(shared::VCT_RES / 2)) * texel;
+    const float half = float(shared::VCT_RES / 2 * std::uint32_t(texel));
+    // Texels outside the world are empty, as the sky past the clipmap is: moving the level over
+    // the world loses nothing and gains the surfaces a camera-centred level would leave out.
+    glm::vec3 centre = position;
+    for (int a = 0; a < 3; ++a) {
+        const float lo = float(worldMin[a]) + half, hi = float(worldMax[a]) - half;
+        centre[a] =
+            lo <= hi ? std::clamp(position[a], lo, hi) : 0.5f * float(worldMin[a] + worldMax[a]);
+    }
+    const glm::ivec3 centreTexel(glm::floor(centre / float(texel)));
+    return (centreTexel - int(shared::VCT_RES / 2)) * texel;
 }
 
 TechniquePlan VoxelConeTracing::plan(const lighting::LightingSettings& l, const SceneShape&,
@@ -73,10 +83,13 @@ void VoxelConeTracing::prepare(const FrameChanges& changes, const FrameInput& in
     const bool changed = changes.newWorld || changes.staticWorldChanged || changes.lightsUploaded ||
                          changes.skyChanged;
     const std::uint32_t levels = std::clamp(lighting.vct.levels, 1u, shared::VCT_MAX_LEVELS);
+    // The box the clipmap keeps over: the static world and the objects.
+    const auto [worldMin, worldMax] =
+        unionOf(glm::ivec3(0), in.scene.grid.sizeInVoxels(), objectsMin, objectsMax);
     shared::VctParams p{};
     for (std::uint32_t l = 0; l < shared::VCT_MAX_LEVELS; ++l) {
-        p.levelOrigin[l] =
-            glm::ivec4(levelOrigin(in.camera.position, l), int(shared::VCT_BASE_TEXEL << l));
+        p.levelOrigin[l] = glm::ivec4(levelOrigin(in.camera.position, l, worldMin, worldMax),
+                                      int(shared::VCT_BASE_TEXEL << l));
         p.prevOrigin[l] = mPrevOrigins[l];
     }
     p.levels = levels;

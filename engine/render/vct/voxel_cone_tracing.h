@@ -1,8 +1,8 @@
 // VoxelConeTracing: the leaky indirect term meant to be cheap (`--indirect vct`; the Wicked
-// Engine's voxel GI, after Crassin et al. 2011). A camera-centred clipmap of up to four 32^3
-// levels, texels 2-16 voxels wide, injected from direct light (those that stay in view in
-// turn, and only those with an occupied cell: shaders/vct/classify_texels.comp lists them for
-// inject_radiance.comp), then six diffuse cones per pixel from the G-buffer's
+// Engine's voxel GI, after Crassin et al. 2011). A clipmap centred on the camera (kept over the
+// world) of up to four 32^3 levels, texels 2-16 voxels wide, injected from direct light (those that
+// stay in view in turn, and only those with an occupied cell: shaders/vct/classify_texels.comp
+// lists them for inject_radiance.comp), then six diffuse cones per pixel from the G-buffer's
 // surface (trace_cones.comp). A clipmap rather than sparse bricks: its memory is fixed (4 x 32^3
 // texels x 6 directions x 16 bytes = 12 MiB per volume, two with the extra bounce's previous frame)
 // whatever the world's size, and a cone reads it with plain index arithmetic — no page table
@@ -38,9 +38,14 @@ public:
                  shared::FrameParams& params) override;
     void record(FrameCommands& commands, const FrameBuffers& frame) override;
 
-    // Level l's minimum corner (voxels) for a camera at `position`: the camera's texel, snapped,
-    // minus half the level; its texel is VCT_BASE_TEXEL << l voxels.
-    static glm::ivec3 levelOrigin(glm::vec3 position, std::uint32_t level);
+    // Level l's minimum corner (voxels) for a camera at `position` in a world whose solid part
+    // lies in [worldMin, worldMax): centred on the camera, moved along each axis the least way
+    // that covers as much of that box as the level holds (the whole box where the level is
+    // wider), then snapped to its texel of VCT_BASE_TEXEL << l voxels. A camera inside the box
+    // stays inside every level; one outside it (Cornell's, 380 voxels before the box) no longer
+    // leaves the world out of the clipmap.
+    static glm::ivec3 levelOrigin(glm::vec3 position, std::uint32_t level, glm::ivec3 worldMin,
+                                  glm::ivec3 worldMax);
     static std::uint64_t volumeBytes();
 
 private:
