@@ -5,6 +5,7 @@
 #include <cstring>
 #include <vector>
 
+#include "core/check.h"
 #include "gpu/context.h"
 #include "gpu/texel_buffer_limit.h"
 #include "gpu/uploader.h"
@@ -40,6 +41,12 @@ std::uint64_t GpuDynamicGrid::sync(const world::DynamicGrid& grid, gpu::Uploader
     h.sizeInCells = glm::ivec4(g.sizeInCells(), 0);
     h.sizeInVoxels = glm::ivec4(g.sizeInVoxels(), 0);
     h.sizeInSuperCells = glm::ivec4(g.sizeInSuperCells(), 0);
+    CHECK(grid.occupancy.size() <= shared::DYNAMIC_OCCUPANCY_BOXES);
+    h.objects.y = std::uint32_t(grid.occupancy.size());
+    for (std::size_t i = 0; i < grid.occupancy.size(); ++i) {
+        h.occupiedMin[i] = glm::ivec4(grid.occupancy[i].min, 0);
+        h.occupiedMax[i] = glm::ivec4(grid.occupancy[i].max, 0);
+    }
     std::size_t words =
         shared::DYNAMIC_HEADER_TEXELS;   // offsets count texels from the buffer's start
     h.offsets.x = std::uint32_t(words);  // right after the header: shaders take that for granted

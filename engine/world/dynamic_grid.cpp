@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
+#include "shared/dynamic_grid.h"
 #include "world/solid_voxels.h"
 
 namespace engine::world {
@@ -55,7 +57,7 @@ private:
 // (by an earlier object) stay.
 void voxelizeModelCell(const DynamicObject& o, glm::ivec3 c, const glm::dmat4& worldFromModel,
                        const glm::dmat4& modelFromWorld, const DynamicGrid& out,
-                       ScratchBricks& scratch) {
+                       ScratchBricks& scratch, Box& written) {
     const int dim = kBrickDim;
     const Box cellBox = Box{c * dim, c * dim + dim}.intersect(Box{glm::ivec3(0), o.modelSize});
     if (cellBox.empty()) return;
@@ -81,7 +83,10 @@ void voxelizeModelCell(const DynamicObject& o, glm::ivec3 c, const glm::dmat4& w
                 glm::ivec3 local = glm::ivec3(x, y, z) - out.origin;
                 if (!out.grid.contains(local)) continue;  // rounding at the very edge
                 MaterialId& dst = scratch.voxel(local);
-                if (dst == kEmpty) dst = material;
+                if (dst != kEmpty) continue;
+                dst = material;
+                written.min = glm::min(written.min, local);
+                written.max = glm::max(written.max, local + 1);
             }
 }
 
@@ -108,14 +113,26 @@ DynamicGrid voxelizeObjects(std::span<const DynamicObject> objects) {
     out.grid = BrickGrid((extent + 31) / 32 * 32);
 
     ScratchBricks scratch(out.grid);
-    for (const DynamicObject& o : objects) {
+    // The coarse occupancy: the cells each object wrote voxels into, object i in box i mod N.
+    constexpr std::size_t kBoxes = shared::DYNAMIC_OCCUPANCY_BOXES;
+    std::vector<Box> written(std::min(objects.size(), kBoxes),
+                             Box{glm::ivec3(std::numeric_limits<int>::max()),
+                                 glm::ivec3(std::numeric_limits<int>::min())});
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+        const DynamicObject& o = objects[i];
         const glm::dmat4 worldFromModel = o.worldFromModel(o.current);
         const glm::dmat4 modelFromWorld = glm::inverse(worldFromModel);
         forEachOccupiedCell(*o.model, [&](glm::ivec3 c) {
-            voxelizeModelCell(o, c, worldFromModel, modelFromWorld, out, scratch);
+            voxelizeModelCell(o, c, worldFromModel, modelFromWorld, out, scratch,
+                              written[i % kBoxes]);
         });
     }
     scratch.writeInto(out.grid);
+    for (const Box& b : written) {
+        if (b.empty()) continue;  // objects that wrote no voxel
+        const glm::ivec3 cellMin = b.min / dim * dim, cellMax = (b.max + dim - 1) / dim * dim;
+        out.occupancy.push_back(Box{cellMin + out.origin, cellMax + out.origin});
+    }
     out.grid.clearDirty();
     return out;
 }

@@ -31,7 +31,13 @@ struct DynamicGrid {
     BrickGrid grid{glm::ivec3(8)};
     glm::ivec3 origin{0};                    // world voxel of grid voxel (0,0,0); brick-aligned
     std::vector<DynamicInstance> instances;  // one per object, in scene order
-    std::uint64_t revision = 0;              // changes whenever the grid is rebuilt
+    // The coarse occupancy: at most shared::DYNAMIC_OCCUPANCY_BOXES boxes of whole cells (world
+    // voxels, max exclusive) that together hold every voxel of the grid — the cells each object
+    // wrote into, object i in box i mod that count. A ray that comes within a voxel of none of
+    // them skips the dynamic traversal (traceDynamic), so a ray far from every object pays one
+    // box test per object rather than a traversal of the grid over their union.
+    std::vector<Box> occupancy;
+    std::uint64_t revision = 0;  // changes whenever the grid is rebuilt
 
     bool present() const { return !instances.empty(); }
     // Material at a world voxel (kEmpty outside).

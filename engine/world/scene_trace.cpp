@@ -2,6 +2,7 @@
 
 #include <limits>
 
+#include "shared/dynamic_grid.h"
 #include "world/ray_traversal.h"
 
 namespace engine::world {
@@ -25,8 +26,14 @@ float faceHitT(glm::vec3 o, glm::vec3 d, glm::ivec3 voxel, std::uint32_t face) {
     return (plane - o[axis]) * inv;
 }
 
+bool nearsOccupancy(const DynamicGrid& dyn, glm::vec3 o, glm::vec3 d, float tMax) {
+    for (const Box& b : dyn.occupancy)
+        if (shared::segmentNearsBox(o, d, tMax, b.min, b.max)) return true;
+    return false;
+}
+
 SceneHit traceDynamic(const DynamicGrid& dyn, glm::vec3 o, glm::vec3 d, float tMax) {
-    if (!dyn.present()) return SceneHit{};
+    if (!dyn.present() || !nearsOccupancy(dyn, o, d, tMax)) return SceneHit{};
     const glm::vec3 local = o - glm::vec3(dyn.origin);
     return fromRayHit(traceRay(dyn.grid, Ray{local, d, tMax}), dyn.origin, true);
 }

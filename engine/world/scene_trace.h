@@ -30,7 +30,12 @@ struct SceneHit {
 // FACE_NONE). Used to compare hits.
 float faceHitT(glm::vec3 o, glm::vec3 d, glm::ivec3 voxel, std::uint32_t face);
 
-// Dynamic grid only; voxel in world coordinates (grid-local + origin).
+// Whether the segment [0, tMax] comes within a voxel of a box of dyn.occupancy (the test the
+// shaders make with the same code, shared::segmentNearsBox).
+bool nearsOccupancy(const DynamicGrid& dyn, glm::vec3 o, glm::vec3 d, float tMax);
+
+// Dynamic grid only; voxel in world coordinates (grid-local + origin). A miss with no steps when
+// the segment nears no occupied box.
 SceneHit traceDynamic(const DynamicGrid& dyn, glm::vec3 o, glm::vec3 d, float tMax);
 
 // Static first; ts = faceHitT(static hit) (tMax if none); then dynamic with tMax = ts; the

@@ -32,13 +32,36 @@ float faceHitT(vec3 o, vec3 d, ivec3 voxel, uint face) {
     return t;
 }
 
-// Dynamic grid only; voxel in world coordinates (grid-local + origin).
+// The coarse occupancy (shared/dynamic_grid.h): whether the segment comes near a box of cells
+// that hold an object this frame. One test per box, read from the header's texels.
+bool dynamicOccupancyNear(vec3 o, vec3 d, float tMax) {
+    uint boxes = dynamicTexel(21u);  // header.objects.y
+    bool near = false;
+    for (uint i = 0u; i < boxes; ++i) {
+        ivec3 lo = dynamicTexels3(DYNAMIC_HEADER_OCCUPIED_MIN + 4u * i);
+        ivec3 hi = dynamicTexels3(DYNAMIC_HEADER_OCCUPIED_MAX + 4u * i);
+        near = near || segmentNearsBox(o, d, tMax, lo, hi);
+    }
+    return near;
+}
+
+// Dynamic grid only; voxel in world coordinates (grid-local + origin). A ray that nears no
+// occupied box misses without a traversal (world/scene_trace.cpp does the same). Where a SIMD
+// batch or warp skips a branch none of its lanes take (GPUs; later lavapipes, whose gallivm skips
+// such branches: lp_build_skip_branch), a batch of rays far from every object skips the
+// traversal's code. The lavapipe of docs/PERFORMANCE.md (Mesa 22.3) runs every branch and one
+// pass of every loop under an empty mask, so there the test saves nothing (docs/PERFORMANCE.md, "A small object far from
+// the camera").
 SceneHit traceDynamic(vec3 o, vec3 d, float tMax) {
-    if (!dynamicGridPresent()) return sceneHitFrom(traceMiss(0u), ivec3(0), false);
-    loadDynamicGrid();
-    ivec3 origin = gDynHeader.origin.xyz;
-    precise vec3 local = o - vec3(origin);
-    return sceneHitFrom(traceGrid(local, d, tMax, true, true), origin, true);
+    SceneHit h = sceneHitFrom(traceMiss(0u), ivec3(0), false);
+    if (!dynamicGridPresent()) return h;
+    if (dynamicOccupancyNear(o, d, tMax)) {
+        loadDynamicGrid();
+        ivec3 origin = gDynHeader.origin.xyz;
+        precise vec3 local = o - vec3(origin);
+        h = sceneHitFrom(traceGrid(local, d, tMax, true, true), origin, true);
+    }
+    return h;
 }
 
 // Static first; ts = faceHitT(static hit) (tMax if none); then dynamic with tMax = ts; the

@@ -34,6 +34,9 @@ SHARED_CONST uint VCT_EXTRA_BOUNCE = 2u;
 // The last frame's volume is valid (same levels, settings, world and lights): texels that stay in
 // the clipmap keep their values unless refreshed, and the extra bounce reads it.
 SHARED_CONST uint VCT_PREVIOUS_VALID = 4u;
+// The volume is updated in place (no extra bounce, so nothing reads last frame's values while
+// this frame's are written): texels that keep their values are left as they are, not copied.
+SHARED_CONST uint VCT_IN_PLACE = 8u;
 
 struct VctParams {
     ivec4 levelOrigin[4];  // per level: xyz its minimum corner in voxels, w its texel size in voxels
@@ -52,11 +55,20 @@ struct VctParams {
 };
 SHARED_ASSERT_SIZE(VctParams, 192);
 
-// inject_radiance.comp: world + lights, then
+// The injection's texel list (VCT_INJECT_BINDING_LIST): VCT_LIST_HEADER words — the count of
+// listed texels, then the indirect dispatch's three workgroup counts — then one texel index per
+// listed texel (x + VCT_RES * (y + VCT_RES * (z + VCT_RES * level))).
+SHARED_CONST uint VCT_LIST_COUNT = 0u;
+SHARED_CONST uint VCT_LIST_ARGS = 1u;
+SHARED_CONST uint VCT_LIST_HEADER = 4u;
+SHARED_CONST uint VCT_INJECT_GROUP_SIZE = 64u;  // inject_radiance.comp's workgroup
+
+// classify_texels.comp, list_dispatch.comp and inject_radiance.comp: world + lights, then
 SHARED_CONST uint VCT_INJECT_BINDING_FRAME = LIT_PASS_BINDING_FIRST + 0u;     // FrameParams
 SHARED_CONST uint VCT_INJECT_BINDING_PARAMS = LIT_PASS_BINDING_FIRST + 1u;    // VctParams
 SHARED_CONST uint VCT_INJECT_BINDING_PREVIOUS = LIT_PASS_BINDING_FIRST + 2u;  // vec4 volume, last frame's
 SHARED_CONST uint VCT_INJECT_BINDING_VOLUME = LIT_PASS_BINDING_FIRST + 3u;    // vec4 volume, written
+SHARED_CONST uint VCT_INJECT_BINDING_LIST = LIT_PASS_BINDING_FIRST + 4u;      // uint: the texel list
 // trace_cones.comp: world + lights, then
 SHARED_CONST uint VCT_CONES_BINDING_FRAME = LIT_PASS_BINDING_FIRST + 0u;     // FrameParams
 SHARED_CONST uint VCT_CONES_BINDING_PARAMS = LIT_PASS_BINDING_FIRST + 1u;    // VctParams

@@ -45,8 +45,13 @@ vec4 vctTexel(uint level, ivec3 c, vec3 w, uvec3 slot) {
     return vec4(w.x * x.rgb + w.y * y.rgb + w.z * z.rgb, max(x.a, max(y.a, z.a)));
 }
 
-// Trilinear over the level's texel centres.
-vec4 vctSample(uint level, vec3 pos, vec3 dir) {
+// Trilinear over the level's texel centres, leaving out the texels not wholly in front of the
+// plane the cones start from (point `p0`, normal `n0`, an axis) and renormalising over the rest.
+// Those texels hold the cone's own surface: the hemisphere above a face never sees it, but a cone
+// that grazes the face's plane (the five tilted ones: 60 degrees off the normal, 30 wide) takes
+// it into every trilinear footprint, as an occluder as opaque as a wall — the cones met their
+// own surface and an open floor gathered half its sky (Vct.OpenFloorGathersItsSky).
+vec4 vctSample(uint level, vec3 pos, vec3 dir, vec3 p0, vec3 n0) {
     ivec4 o = VCT_ORIGIN(level);
     vec3 u = (pos - vec3(o.xyz)) / float(o.w) - 0.5;
     ivec3 c0 = ivec3(floor(u));
@@ -54,12 +59,17 @@ vec4 vctSample(uint level, vec3 pos, vec3 dir) {
     vec3 w = dir * dir;
     uvec3 slot = uvec3(0u, 2u, 4u) + uvec3(greaterThan(dir, vec3(0.0)));
     vec4 s = vec4(0.0);
+    float weight = 0.0;
     for (int i = 0; i < 8; ++i) {
         ivec3 d = ivec3(i & 1, (i >> 1) & 1, i >> 2);
+        vec3 centre = vec3(o.xyz) + (vec3(c0 + d) + 0.5) * float(o.w);
+        if (dot(centre - p0, n0) < 0.5 * float(o.w) - 1.0e-3) continue;
         vec3 t = mix(1.0 - f, f, vec3(d));
-        s += t.x * t.y * t.z * vctTexel(level, c0 + d, w, slot);
+        float tw = t.x * t.y * t.z;
+        s += tw * vctTexel(level, c0 + d, w, slot);
+        weight += tw;
     }
-    return s;
+    return weight > 0.0 ? s / weight : vec4(0.0);
 }
 
 // Inside the level, half a texel from its border (so the trilinear footprint is in it).
@@ -72,7 +82,7 @@ bool vctInside(uint level, vec3 pos) {
 // Radiance arriving at `origin` from within the cone about `dir`: front-to-back accumulation of
 // the texels' premultiplied radiance and opacity (opacity corrected to the step length), level
 // chosen by the cone's diameter; what is left sees `sky`.
-vec3 vctTraceCone(vec3 origin, vec3 dir, vec3 sky) {
+vec3 vctTraceCone(vec3 origin, vec3 dir, vec3 sky, vec3 p0, vec3 n0) {
     const float s0 = float(VCT_BASE_TEXEL);
     const uint levels = clamp(gVct.levels, 1u, VCT_MAX_LEVELS);
     float t = s0;
@@ -88,7 +98,7 @@ vec3 vctTraceCone(vec3 origin, vec3 dir, vec3 sky) {
         // One level per step (the finer one that holds the cone), stepped by a cone diameter:
         // a quarter of the reads of blending two levels at half-diameter steps, which on a CPU
         // device cost more than the rest of the frame.
-        vec4 s = vctSample(level, pos, dir);
+        vec4 s = vctSample(level, pos, dir, p0, n0);
         float stepLength = diameter;
         if (s.a > 1.0e-6) {
             float texel = float(VCT_ORIGIN(level).w);
@@ -108,7 +118,7 @@ vec3 vctGather(vec3 p, vec3 n, float offset, FrameParams frame) {
     vec3 sum = vec3(0.0);
     for (uint i = 0u; i < kVctCones; ++i) {
         vec3 dir = vctConeDirection(n, i);
-        sum += vctConeWeight(i) * vctTraceCone(origin, dir, skyBackground(frame, dir));
+        sum += vctConeWeight(i) * vctTraceCone(origin, dir, skyBackground(frame, dir), p, n);
     }
     return sum;
 }

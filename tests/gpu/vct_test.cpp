@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "gpu/gpu_test_setup.h"
+#include "render/vct/voxel_cone_tracing.h"
 #include "world/world_edits.h"
 
 using namespace engine::world;
@@ -95,10 +96,10 @@ std::vector<glm::vec4> referenceIndirect(Scene& scene, const CameraPreset& camer
 class Vct : public GpuTest {};
 
 // On an open courtyard the cones' mean is between 0.5 and 1.5 times the path tracer's one-bounce
-// indirect mean (measured 0.66: the cones are dark, docs/ACCURACY.md). Loose on purpose: the
-// cones see the world through 2..16-voxel texels and wide cones occlude themselves on the
-// surface they start from; what the test pins is that the term has the right size (a lost
-// factor of pi, a missing sky or no occlusion at all would be far outside it).
+// indirect mean (measured 0.88; 0.66 while the cones met their own surface, docs/ACCURACY.md).
+// Loose on purpose: the cones see the world through 2..16-voxel texels; what the test pins is that
+// the term has the right size (a lost factor of pi, a missing sky or no occlusion at all would be
+// far outside it).
 TEST_F(Vct, MeanNearPathTracerOnAnOpenScene) {
     Scene scene = courtyard();
     const std::uint32_t size = 24;  // small and 128 spp: the test stays within seconds
@@ -118,8 +119,8 @@ TEST_F(Vct, MeanNearPathTracerOnAnOpenScene) {
 // VCT leaks: texels 2..16 voxels wide hold both sides of the wall, and a cone's trilinear samples
 // reach past a wall before its opacity adds up. With the mitigation (directional texels, the
 // largest axis coverage as opacity, cones started off the surface) the inside's mean indirect
-// light stays under 45 % of the lit side's (measured 38 %); without it, it is over 2.5 times
-// that (measured 3.6 times).
+// light stays under 45 % of the lit side's (measured 34 %); without it, it is over 2.5 times
+// that (measured 3.2 times).
 TEST_F(Vct, ThinWallLeakIsBoundedWithMitigationOnly) {
     Scene scene = thinWallRoom();
     auto indirectFrom = [&](const char* camera, bool mitigation) {
@@ -153,4 +154,117 @@ TEST_F(Vct, DeterministicAndStillFramesAreIdentical) {
     EXPECT_EQ(first, other);
     l.seed = 2;  // and the seed matters
     EXPECT_NE(renderFrames(b, scene, l, frame(24), 1).indirect, first);
+}
+
+// An open floor under the sky alone (no sun, no lamp): every direction above it sees the sky, so
+// its indirect light is exactly albedo × the sky's cosine-weighted mean, skyRadiance × (1 + 0.4 ×
+// 2/3) for the gradient of surface.glsl's skyBackground (radiance × (1 + 0.4 cos θ) about the
+// vertical). The six cones' estimate of that mean is skyRadiance × (0.25 × 1.4 + 0.75 × 1.2) =
+// 1.25 × skyRadiance, 0.987 of it: the cone approximation's share, seen alone where the floor is
+// outside the clipmap (one level, 64 voxels, about a camera 200 voxels up), so no cone meets
+// anything. Where the floor is in the clipmap the cones must still see only sky — they used to
+// meet their own floor in the texels that hold it (0.36 of the sky's light).
+TEST_F(Vct, OpenFloorGathersItsSky) {
+    Scene scene = makeScene({128, 16, 128});
+    fillBox(scene.grid, Box{{0, 0, 0}, {128, 2, 128}}, kWhite);
+    scene.sky.sunRadiance = glm::vec3(0.0f);
+    // Low and steep: every pixel sees the floor (no sky pixels, whose indirect term is 0).
+    scene.cameras.push_back(
+        CameraPreset{"low", {64.0f, 20.0f, 50.0f}, {64.0f, 2.0f, 64.0f}, 60.0f});
+    scene.cameras.push_back(
+        CameraPreset{"high", {64.0f, 200.0f, 64.0f}, {64.0f, 2.0f, 64.5f}, 20.0f});
+    scene.grid.clearDirty();
+    const glm::vec3 exact = 0.75f * scene.sky.skyRadiance * (1.0f + 0.4f * 2.0f / 3.0f);
+    const double exactMean = (exact.x + exact.y + exact.z) / 3.0;
+    auto ratioFrom = [&](const char* camera, std::uint32_t levels) {
+        LightingSettings l = vctLighting();
+        l.vct.levels = levels;
+        Renderer r(gpu_testing::context());
+        r.render(scene, scene.camera(camera), frame(24), l);
+        return meanOf(r.readback().indirect) / exactMean;
+    };
+    const double outside = ratioFrom("high", 1), inside = ratioFrom("low", 4);
+    std::printf(
+        "open floor under the sky: cones / exact %.4f with the floor outside the clipmap (the "
+        "cones' "
+        "own share: 1.25 / 1.2667 = 0.987), %.4f inside it\n",
+        outside, inside);
+    EXPECT_NEAR(outside, 1.25 / (1.0 + 0.4 * 2.0 / 3.0), 0.005);
+    EXPECT_GT(inside, 0.95);
+    EXPECT_LT(inside, 1.01);
+}
+
+// The indirect mean against the path tracer's on shipped worlds, printed for docs/ACCURACY.md
+// (`ctest -R Vct.ShippedWorlds --output-on-failure`): one bounce and three, the cones with and
+// without their extra bounce. Bounds loose enough for the method (its own limits are measured by
+// the tests above); what they pin is that the cones reach the rooms at all.
+TEST_F(Vct, IndirectMeanAgainstThePathTracerOnShippedWorlds) {
+    constexpr std::uint32_t kSize = 32, kSpp = 256;
+    for (const char* name : {"cornell", "apartments"}) {
+        Scene scene = loadWorld(name);
+        auto reference = [&](std::uint32_t bounces) {
+            auto run = [&](std::uint32_t b) {
+                Renderer r(gpu_testing::context());
+                LightingSettings l;
+                l.method = Method::Reference;
+                l.referenceFilter = engine::lighting::ReferenceFilter::PixelCentre;
+                l.bounces = b;
+                l.samplesPerFrame = 32;
+                for (std::uint32_t i = 0; i < kSpp / 32; ++i)
+                    r.render(scene, scene.camera(), frame(kSize), l);
+                return r.readback().radiance;
+            };
+            std::vector<glm::vec4> with = run(bounces), without = run(0);
+            for (std::size_t i = 0; i < with.size(); ++i) with[i] -= without[i];
+            return meanOf(with);
+        };
+        auto cones = [&](bool bounce) {
+            LightingSettings l = vctLighting();
+            l.vct.extraBounce = bounce;
+            Renderer r(gpu_testing::context());
+            return meanOf(renderFrames(r, scene, l, frame(kSize), bounce ? 4 : 1).indirect);
+        };
+        const double one = reference(1), three = reference(3);
+        const double vct = cones(false), vctBounce = cones(true);
+        std::printf(
+            "%s: path tracer indirect mean %.5f (1 bounce), %.5f (3); vct %.5f (%.3f of 1 bounce), "
+            "with its extra bounce %.5f (%.3f of 3)\n",
+            name, one, three, vct, vct / one, vctBounce, vctBounce / three);
+        // Issue 38's acceptance: at least 0.8 of the path tracer's mean, and not far above it.
+        // Cornell gave 1.68 while its camera, 380 voxels before the box, left the box out of the
+        // camera-centred clipmap (the cones saw only sky, unoccluded).
+        EXPECT_GT(vct / one, 0.8) << name;
+        EXPECT_LT(vct / one, 1.25) << name;
+    }
+}
+
+// The clipmap's levels (VoxelConeTracing::levelOrigin): a camera deep inside a large world gets
+// levels centred on it, as before; one inside a small world stays inside every level; one far
+// outside the world (Cornell's preset) gets a coarsest level that covers the whole world — the
+// camera-centred levels held none of it.
+TEST(VctClipmap, LevelsStayOverTheWorld) {
+    using engine::render::VoxelConeTracing;
+    const auto covers = [](glm::ivec3 origin, std::uint32_t level, glm::vec3 p) {
+        const float extent = float(::shared::VCT_RES * (::shared::VCT_BASE_TEXEL << level));
+        return glm::all(glm::greaterThanEqual(p, glm::vec3(origin))) &&
+               glm::all(glm::lessThan(p, glm::vec3(origin) + extent));
+    };
+    const glm::vec3 deep(1000.5f, 700.25f, 1200.0f);
+    for (std::uint32_t l = 0; l < ::shared::VCT_MAX_LEVELS; ++l) {
+        const int texel = int(::shared::VCT_BASE_TEXEL << l);
+        const glm::ivec3 cameraCentred =
+            (glm::ivec3(glm::floor(deep / float(texel))) - int(::shared::VCT_RES / 2)) * texel;
+        EXPECT_EQ(
+            VoxelConeTracing::levelOrigin(deep, l, glm::ivec3(0), glm::ivec3(2048, 2048, 2048)),
+            cameraCentred);
+        for (const glm::vec3 inside : {glm::vec3(4, 14, 3), glm::vec3(47.5f, 0, 20), glm::vec3(0)})
+            EXPECT_TRUE(
+                covers(VoxelConeTracing::levelOrigin(inside, l, glm::ivec3(0), glm::ivec3(48)), l,
+                       inside));
+    }
+    const glm::vec3 cornellCamera(136, 136, -380);
+    const glm::ivec3 coarsest =
+        VoxelConeTracing::levelOrigin(cornellCamera, 3, glm::ivec3(0), glm::ivec3(272));
+    EXPECT_TRUE(covers(coarsest, 3, glm::vec3(0.0f)));
+    EXPECT_TRUE(covers(coarsest, 3, glm::vec3(271.9f)));
 }

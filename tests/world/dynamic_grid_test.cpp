@@ -1,7 +1,10 @@
 // Re-voxelisation of dynamic objects into the world-aligned dynamic grid.
 #include "world/dynamic_grid.h"
 
+#include <algorithm>
 #include <gtest/gtest.h>
+
+#include "shared/dynamic_grid.h"
 
 using namespace engine::world;
 
@@ -136,4 +139,38 @@ TEST(DynamicGrid, FirstObjectWinsWhereObjectsOverlap) {
     DynamicGrid g = voxelizeObjects(objects);
     EXPECT_EQ(g.get({2, 0, 0}), objects[0].model->get({2, 0, 0}));
     EXPECT_EQ(g.get({7, 0, 0}), objects[1].model->get({5, 0, 0}));
+}
+
+// The coarse occupancy holds every voxel of the grid in at most DYNAMIC_OCCUPANCY_BOXES boxes of
+// whole cells, and stays near the objects: six small objects spread over a large union, more
+// objects than boxes, so some boxes hold two.
+TEST(DynamicGrid, OccupancyBoxesHoldEveryVoxelInFewCells) {
+    std::vector<DynamicObject> objects(6, asymmetricObject());
+    for (std::size_t i = 0; i < objects.size(); ++i)
+        objects[i].current = {{7.0 + 50.0 * double(i), 3.0 + 9.0 * double(i % 2), -30.0}, {}};
+    DynamicGrid g = voxelizeObjects(objects);
+    ASSERT_TRUE(g.present());
+    ASSERT_EQ(g.occupancy.size(), std::size_t(shared::DYNAMIC_OCCUPANCY_BOXES));
+    for (std::size_t i = 0; i < g.occupancy.size(); ++i) {
+        const Box& b = g.occupancy[i];
+        EXPECT_EQ(b.min % 8, glm::ivec3(0));
+        EXPECT_EQ(b.max % 8, glm::ivec3(0));
+        EXPECT_FALSE(b.empty());
+        // Objects 2 and 3 have a box each (0 and 1 share theirs with 4 and 5): the cells of one
+        // 6x4x2 object, at most 2 per axis.
+        if (i >= 2) EXPECT_TRUE(glm::all(glm::lessThanEqual(b.size(), glm::ivec3(16)))) << i;
+    }
+    const glm::ivec3 s = g.grid.sizeInVoxels();
+    std::size_t solid = 0;
+    for (int z = 0; z < s.z; ++z)
+        for (int y = 0; y < s.y; ++y)
+            for (int x = 0; x < s.x; ++x) {
+                const glm::ivec3 w = glm::ivec3(x, y, z) + g.origin;
+                if (g.get(w) == kEmpty) continue;
+                ++solid;
+                EXPECT_TRUE(std::any_of(g.occupancy.begin(), g.occupancy.end(),
+                                        [&](const Box& b) { return b.contains(w); }))
+                    << w.x << "," << w.y << "," << w.z;
+            }
+    EXPECT_EQ(solid, 6 * objects[0].model->solidVoxels());
 }

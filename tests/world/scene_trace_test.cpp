@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/hash.h"
 #include "random_worlds.h"
 #include "world/ray_traversal.h"
 
@@ -119,4 +120,44 @@ TEST(SceneTrace, AgreesWithTheMergedGridOnRandomRays) {
     }
     EXPECT_GT(dynamicHits, rays / 50) << "the objects are actually in the way";
     EXPECT_LT(mismatches, rays / 1000);
+}
+
+// Two small objects far apart make a large dynamic grid; a ray that passes between them comes
+// near no occupied box and skips the dynamic traversal (no steps), while rays that reach an
+// object find the same hit as a traversal of the whole grid.
+TEST(SceneTrace, RaysFarFromEveryObjectSkipTheDynamicTraversal) {
+    std::vector<DynamicObject> objects = rotatedObjects();
+    objects[1].current.position = {180.5, 30.0, 140.0};  // far from the first
+    const DynamicGrid dyn = voxelizeObjects(objects);
+    ASSERT_EQ(dyn.occupancy.size(), 2u);
+    const glm::vec3 o(100.5f, 80.5f, 90.5f), d = glm::normalize(glm::vec3(0.1f, -1.0f, 0.2f));
+    const Box objectsUnion{dyn.origin, dyn.origin + dyn.grid.sizeInVoxels()};
+    ASSERT_TRUE(objectsUnion.contains(glm::ivec3(o + 60.0f * d)))
+        << "the ray crosses the objects' union";
+    SceneHit h = traceDynamic(dyn, o, d, 1e30f);
+    EXPECT_FALSE(h.hit);
+    EXPECT_EQ(h.steps, 0u) << "no traversal for a ray far from the objects";
+    EXPECT_FALSE(nearsOccupancy(dyn, o, d, 1e30f));
+    // Rays from everywhere at the objects: the same hits as the whole grid's traversal.
+    engine::Rng rng(9);
+    int hits = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const glm::vec3 lo(dyn.origin), hi(dyn.origin + dyn.grid.sizeInVoxels());
+        const glm::vec3 target(rng.uniform(lo.x, hi.x), rng.uniform(lo.y, hi.y),
+                               rng.uniform(lo.z, hi.z));
+        const glm::vec3 from(rng.uniform(lo.x - 20, hi.x + 20), rng.uniform(lo.y - 20, hi.y + 20),
+                             rng.uniform(lo.z - 20, hi.z + 20));
+        if (glm::length(target - from) < 1e-3f) continue;
+        const glm::vec3 dir = glm::normalize(target - from);
+        const float tMax = i % 5 == 0 ? rng.uniform(1.0f, 80.0f) : 1e30f;
+        SceneHit skipped = traceDynamic(dyn, from, dir, tMax);
+        RayHit whole = traceRay(dyn.grid, Ray{from - glm::vec3(dyn.origin), dir, tMax});
+        ASSERT_EQ(skipped.hit, whole.hit) << "ray " << i;
+        if (!whole.hit) continue;
+        ++hits;
+        EXPECT_EQ(skipped.voxel, whole.voxel + dyn.origin) << "ray " << i;
+        EXPECT_EQ(skipped.t, whole.t) << "ray " << i;
+        EXPECT_EQ(skipped.steps, whole.steps) << "ray " << i;
+    }
+    EXPECT_GT(hits, 100);
 }

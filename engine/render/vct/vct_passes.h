@@ -1,6 +1,9 @@
-// Voxel cone tracing's two dispatches: the injection of the radiance clipmap (one invocation per
-// texel, every level; shaders/vct/inject_radiance.comp) and the per-pixel cone gather
-// (shaders/vct/trace_cones.comp), which writes the indirect term and adds it to the radiance.
+// Voxel cone tracing's dispatches: the injection of the radiance clipmap — vct.classify (one
+// invocation per texel, every level: copies kept texels, zeroes empty ones, lists the rest;
+// shaders/vct/classify_texels.comp), vct.list_dispatch (the list's workgroup count) and vct.inject
+// (indirect, one invocation per listed texel; inject_radiance.comp) — and the per-pixel cone
+// gather (shaders/vct/trace_cones.comp), which writes the indirect term and adds it to the
+// radiance.
 #pragma once
 
 #include "render/passes/lit_pass.h"
@@ -11,29 +14,42 @@ namespace engine::render {
 struct VctInjectIo {
     const gpu::Buffer& frameParams;  // read
     const gpu::Buffer& params;       // read: VctParams
-    const gpu::Buffer& previous;     // read: the last frame's volume (the extra bounce)
+    const gpu::Buffer& previous;     // read: the last frame's volume (kept texels, extra bounce)
     gpu::Buffer& volume;             // write
+    gpu::Buffer& list;               // read and write: the texels to inject (shared/vct.h)
     auto bindings() const {
         return std::to_array<PassBinding>({{shared::VCT_INJECT_BINDING_FRAME, &frameParams},
                                            {shared::VCT_INJECT_BINDING_PARAMS, &params},
                                            {shared::VCT_INJECT_BINDING_PREVIOUS, &previous},
-                                           {shared::VCT_INJECT_BINDING_VOLUME, &volume}});
+                                           {shared::VCT_INJECT_BINDING_VOLUME, &volume},
+                                           {shared::VCT_INJECT_BINDING_LIST, &list}});
     }
 };
 
 class VctInjectPass {
 public:
     explicit VctInjectPass(gpu::Context& ctx)
-        : mPass(ctx, "vct.inject", "vct/inject_radiance", bindingCount<VctInjectIo>()) {}
-    // Texels as a 2D grid: x, then y + RES * (z + RES * level).
+        : mClassify(ctx, "vct.classify", "vct/classify_texels", bindingCount<VctInjectIo>()),
+          mListDispatch(ctx, "vct.list_dispatch", "vct/list_dispatch", bindingCount<VctInjectIo>()),
+          mInject(ctx, "vct.inject", "vct/inject_radiance", bindingCount<VctInjectIo>()) {}
+    // The list's bytes: its header and one index per texel of every level.
+    static std::uint64_t listBytes() {
+        return (shared::VCT_LIST_HEADER +
+                std::uint64_t(shared::VCT_MAX_LEVELS) * shared::VCT_TEXELS_PER_LEVEL) *
+               4u;
+    }
+    // The list's count must be 0 (the caller clears the list first).
     void record(gpu::CommandList& cmd, const SceneBindings& scene, const VctInjectIo& io,
                 std::uint32_t levels) {
-        mPass.record(cmd, scene, io.bindings(),
-                     screenGroups({shared::VCT_RES, shared::VCT_RES * shared::VCT_RES * levels}));
+        const auto bindings = io.bindings();
+        const std::uint32_t texels = levels * shared::VCT_TEXELS_PER_LEVEL;
+        mClassify.record(cmd, scene, bindings, {(texels + 63u) / 64u, 1u});
+        mListDispatch.record(cmd, scene, bindings, {1u, 1u});
+        mInject.recordIndirect(cmd, scene, bindings, io.list, shared::VCT_LIST_ARGS * 4u);
     }
 
 private:
-    LitPass mPass;
+    LitPass mClassify, mListDispatch, mInject;
 };
 
 struct VctConesIo {

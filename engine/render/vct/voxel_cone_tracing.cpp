@@ -24,6 +24,7 @@ std::pair<glm::ivec3, glm::ivec3> unionOf(glm::ivec3 aMin, glm::ivec3 aMax, glm:
 
 VoxelConeTracing::VoxelConeTracing(gpu::Context& ctx) : mCtx(ctx), mInject(ctx), mCones(ctx) {
     mParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::VctParams), "vct.params");
+    mList = gpu::Buffer(ctx, gpu::BufferKind::Storage, VctInjectPass::listBytes(), "vct.list");
 }
 
 std::uint64_t VoxelConeTracing::volumeBytes() {
@@ -31,10 +32,20 @@ std::uint64_t VoxelConeTracing::volumeBytes() {
            shared::VCT_SLOTS * sizeof(glm::vec4);
 }
 
-glm::ivec3 VoxelConeTracing::levelOrigin(glm::vec3 position, std::uint32_t level) {
+glm::ivec3 VoxelConeTracing::levelOrigin(glm::vec3 position, std::uint32_t level,
+                                         glm::ivec3 worldMin, glm::ivec3 worldMax) {
     const int texel = int(shared::VCT_BASE_TEXEL << level);
-    const glm::ivec3 cameraTexel(glm::floor(position / float(texel)));
-    return (cameraTexel - int(shared::VCT_RES / 2)) * texel;
+    const float half = float(shared::VCT_RES / 2 * std::uint32_t(texel));
+    // Texels outside the world are empty, as the sky past the clipmap is: moving the level over
+    // the world loses nothing and gains the surfaces a camera-centred level would leave out.
+    glm::vec3 centre = position;
+    for (int a = 0; a < 3; ++a) {
+        const float lo = float(worldMin[a]) + half, hi = float(worldMax[a]) - half;
+        centre[a] =
+            lo <= hi ? std::clamp(position[a], lo, hi) : 0.5f * float(worldMin[a] + worldMax[a]);
+    }
+    const glm::ivec3 centreTexel(glm::floor(centre / float(texel)));
+    return (centreTexel - int(shared::VCT_RES / 2)) * texel;
 }
 
 TechniquePlan VoxelConeTracing::plan(const lighting::LightingSettings& l, const SceneShape&,
@@ -42,7 +53,8 @@ TechniquePlan VoxelConeTracing::plan(const lighting::LightingSettings& l, const 
     TechniquePlan p;
     p.runs = lighting::usesVct(l);
     p.addsIndirect = true;
-    p.deviceBytes = sizeof(shared::VctParams) + 2 * volumeBytes();  // fixed: two volumes
+    p.deviceBytes = sizeof(shared::VctParams) + 2 * volumeBytes() +  // fixed: two volumes
+                    VctInjectPass::listBytes();
     return p;
 }
 
@@ -71,10 +83,13 @@ void VoxelConeTracing::prepare(const FrameChanges& changes, const FrameInput& in
     const bool changed = changes.newWorld || changes.staticWorldChanged || changes.lightsUploaded ||
                          changes.skyChanged;
     const std::uint32_t levels = std::clamp(lighting.vct.levels, 1u, shared::VCT_MAX_LEVELS);
+    // The box the clipmap keeps over: the static world and the objects.
+    const auto [worldMin, worldMax] =
+        unionOf(glm::ivec3(0), in.scene.grid.sizeInVoxels(), objectsMin, objectsMax);
     shared::VctParams p{};
     for (std::uint32_t l = 0; l < shared::VCT_MAX_LEVELS; ++l) {
-        p.levelOrigin[l] =
-            glm::ivec4(levelOrigin(in.camera.position, l), int(shared::VCT_BASE_TEXEL << l));
+        p.levelOrigin[l] = glm::ivec4(levelOrigin(in.camera.position, l, worldMin, worldMax),
+                                      int(shared::VCT_BASE_TEXEL << l));
         p.prevOrigin[l] = mPrevOrigins[l];
     }
     p.levels = levels;
@@ -83,7 +98,8 @@ void VoxelConeTracing::prepare(const FrameChanges& changes, const FrameInput& in
                                mPrevSettings == lighting.vct && mPrevSeed == lighting.seed;
     p.flags = (lighting.vct.leakMitigation ? shared::VCT_LEAK_MITIGATION : 0u) |
               (lighting.vct.extraBounce ? shared::VCT_EXTRA_BOUNCE : 0u) |
-              (previousValid ? shared::VCT_PREVIOUS_VALID : 0u);
+              (previousValid ? shared::VCT_PREVIOUS_VALID : 0u) |
+              (lighting.vct.extraBounce ? 0u : shared::VCT_IN_PLACE);
     p.seed = lighting.seed;
     p.startOffset = lighting.vct.startOffset;
     // The objects' bounds now and last frame: where they are and where they left.
@@ -100,14 +116,20 @@ void VoxelConeTracing::prepare(const FrameChanges& changes, const FrameInput& in
     mPrevSettings = lighting.vct;
     mPrevSeed = lighting.seed;
     mLevels = levels;
+    mExtraBounce = lighting.vct.extraBounce;
     mLastFrame = in.frameIndex;
     mPrepared = true;
 }
 
 void VoxelConeTracing::record(FrameCommands& commands, const FrameBuffers& frame) {
     gpu::CommandList& cmd = commands.current();
+    // Without the extra bounce nothing reads last frame's volume while this one is written: one
+    // volume, updated in place (VCT_IN_PLACE), so the texels that keep their values cost no copy.
+    if (!mExtraBounce) mCurrent = 0;
     gpu::Buffer& volume = mVolumes[mCurrent];
-    mInject.record(cmd, frame.scene, {frame.frameParams, mParams, mVolumes[mCurrent ^ 1u], volume},
+    const gpu::Buffer& previous = mExtraBounce ? mVolumes[mCurrent ^ 1u] : volume;
+    cmd.fillBuffer(mList, 0);  // the injection list's count
+    mInject.record(cmd, frame.scene, {frame.frameParams, mParams, previous, volume, mList},
                    mLevels);
     mCones.record(
         cmd, frame.scene,

@@ -1,12 +1,14 @@
 // VoxelConeTracing: the leaky indirect term meant to be cheap (`--indirect vct`; the Wicked
-// Engine's voxel GI, after Crassin et al. 2011). A camera-centred clipmap of up to four 32^3
-// levels, texels 2-16 voxels wide, injected from direct light (those that stay in view in
-// turn; shaders/vct/inject_radiance.comp), then six diffuse cones per pixel from the G-buffer's
+// Engine's voxel GI, after Crassin et al. 2011). A clipmap centred on the camera (kept over the
+// world) of up to four 32^3 levels, texels 2-16 voxels wide, injected from direct light (those that
+// stay in view in turn, and only those with an occupied cell: shaders/vct/classify_texels.comp
+// lists them for inject_radiance.comp), then six diffuse cones per pixel from the G-buffer's
 // surface (trace_cones.comp). A clipmap rather than sparse bricks: its memory is fixed (4 x 32^3
 // texels x 6 directions x 16 bytes = 12 MiB per volume, two with the extra bounce's previous frame)
 // whatever the world's size, and a cone reads it with plain index arithmetic — no page table
 // walk per sample; the price is resolution far from the camera, which is where cones are wide.
-// Owns the volumes (ping-ponged: unchanged texels and the extra bounce read the last frame's).
+// Owns the volumes: one updated in place, or with the extra bounce two ping-ponged (the bounce
+// reads the last frame's while this frame's is written, and unchanged texels are copied across).
 #pragma once
 
 #include <array>
@@ -36,9 +38,14 @@ public:
                  shared::FrameParams& params) override;
     void record(FrameCommands& commands, const FrameBuffers& frame) override;
 
-    // Level l's minimum corner (voxels) for a camera at `position`: the camera's texel, snapped,
-    // minus half the level; its texel is VCT_BASE_TEXEL << l voxels.
-    static glm::ivec3 levelOrigin(glm::vec3 position, std::uint32_t level);
+    // Level l's minimum corner (voxels) for a camera at `position` in a world whose solid part
+    // lies in [worldMin, worldMax): centred on the camera, moved along each axis the least way
+    // that covers as much of that box as the level holds (the whole box where the level is
+    // wider), then snapped to its texel of VCT_BASE_TEXEL << l voxels. A camera inside the box
+    // stays inside every level; one outside it (Cornell's, 380 voxels before the box) no longer
+    // leaves the world out of the clipmap.
+    static glm::ivec3 levelOrigin(glm::vec3 position, std::uint32_t level, glm::ivec3 worldMin,
+                                  glm::ivec3 worldMax);
     static std::uint64_t volumeBytes();
 
 private:
@@ -46,9 +53,11 @@ private:
     VctInjectPass mInject;
     VctConesPass mCones;
     gpu::Buffer mParams;
+    gpu::Buffer mList;  // the texels vct.inject lights this frame (VctInjectPass)
     std::array<gpu::Buffer, 2> mVolumes;
     std::uint32_t mCurrent = 0, mLevels = 0;
-    bool mPrepared = false;  // a volume was injected, in frame mLastFrame
+    bool mExtraBounce = false;  // this frame's: the volumes ping-pong only with the extra bounce
+    bool mPrepared = false;     // a volume was injected, in frame mLastFrame
     std::uint32_t mLastFrame = 0;
     lighting::VctSettings mPrevSettings;
     std::uint32_t mPrevSeed = 0;

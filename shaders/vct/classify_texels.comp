@@ -1,0 +1,31 @@
+#version 460
+// Voxel cone tracing's injection, first dispatch: one invocation per texel of every level, which
+// settles the texels that need no light — those that keep last frame's values stay (or are
+// copied, when the extra bounce reads last frame's volume), empty ones (no occupied 8^3 cell) are
+// zeroed — and lists the rest for vct.inject, dispatched over the
+// list (vct.list_dispatch sizes it). Dispatched over every texel instead, the injection cost what
+// the clipmap holds, not what it contains: on lavapipe a SIMD batch runs all the code it holds,
+// rays and shading included, for every batch, though nearly every texel is empty or kept.
+#extension GL_GOOGLE_include_directive : require
+
+#include "vct/inject_common.glsl"
+
+layout(local_size_x = 64) in;
+
+void main() {
+    uint index = gl_GlobalInvocationID.x;
+    if (index >= vctLevels() * VCT_TEXELS_PER_LEVEL) return;
+    VctInjectTexel t = vctInjectTexel(index);
+    if (vctKeepsPrevious(t)) {
+        if ((gVct.flags & VCT_IN_PLACE) == 0u) {
+            for (uint d = 0u; d < VCT_SLOTS; ++d) gVolume[t.base + d] = gPrevious[t.base + d];
+        }
+        return;
+    }
+    // Most texels are empty: their 8^3 cells first (one cell read for texels up to 8 voxels).
+    if (!anyCellOccupied(t.minVoxel, t.size)) {
+        for (uint d = 0u; d < VCT_SLOTS; ++d) gVolume[t.base + d] = vec4(0.0);
+        return;
+    }
+    gList[VCT_LIST_HEADER + atomicAdd(gList[VCT_LIST_COUNT], 1u)] = index;
+}
