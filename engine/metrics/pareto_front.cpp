@@ -6,9 +6,12 @@ namespace engine::metrics {
 
 std::string_view frontStatusName(FrontStatus s) {
     switch (s) {
-        case FrontStatus::Member: return "member";
-        case FrontStatus::Unresolved: return "unresolved";
-        case FrontStatus::Dominated: return "dominated";
+        case FrontStatus::Member:
+            return "member";
+        case FrontStatus::Unresolved:
+            return "unresolved";
+        case FrontStatus::Dominated:
+            return "dominated";
     }
     return "?";
 }
@@ -21,9 +24,9 @@ std::vector<FrontStatus> paretoFront(const FrontInput& in) {
             if (q == p) continue;
             const MedianInterval cost = in.costRatio(q, p);
             const Verdict costVerdict = verdictOf(cost, in.confidence, in.noise);
-            const Verdict errorVerdict = verdictOf(
-                medianInterval(perSeedRatios(in.errors[q], in.errors[p]), in.confidence),
-                in.confidence, in.noise);
+            const Verdict errorVerdict =
+                verdictOf(medianInterval(perSeedRatios(in.errors[q], in.errors[p]), in.confidence),
+                          in.confidence, in.noise);
             // Surely: q costs no more in every plausible case (its interval's top at most 1, as
             // for the same work) and is more accurate beyond the noise.
             const bool noDearer = cost.high <= 1.0 || costVerdict == Verdict::Below;

@@ -25,9 +25,7 @@ FrontInput inputOf(const std::vector<double>& cost, double spread,
 }
 
 // Five paired seeds of an error around `e`, each seed the same factor off (seeds are paired).
-std::vector<double> seeds(double e) {
-    return {e * 0.8, e * 0.9, e, e * 1.1, e * 1.3};
-}
+std::vector<double> seeds(double e) { return {e * 0.8, e * 0.9, e, e * 1.1, e * 1.3}; }
 
 }  // namespace
 
