@@ -77,6 +77,14 @@ for name in ("ris", "uniform"):
 assert rows["restir"]["versus"]["restir"]["cost_ratio"]["median"] == 1.0
 # The drift and the noise threshold behind the verdicts are recorded.
 assert d["cost_drift"] == 0.15 and d["noise"] == 0.05, d
+# A row timed as it is in the calibration (unbiased ReSTIR) gets its measured cost ratio: the
+# median of its per-round time ratios to ReSTIR's, not the model's.
+points = {p["label"]: p for p in model["points"]}
+per_round = sorted(a / b for a, b in zip(points["restir-unbiased"]["round_ms"], points["restir"]["round_ms"]))
+c = rows["restir-unbiased"]["versus"]["restir"]["cost_ratio"]
+n = len(per_round)
+want = per_round[n // 2] if n % 2 else 0.5 * (per_round[n // 2 - 1] + per_round[n // 2])
+assert math.isclose(c["median"], want, rel_tol=1e-9), (c, per_round)
 PY
 
 # A point depends on its settings and seed alone: ReSTIR's per-seed errors are the same in a run

@@ -130,9 +130,11 @@ struct SceneResults {
     std::vector<CalibrationPoint> calibration;  // the first is the yardstick: the cost unit
     engine::metrics::CostModel model;           // per-kind costs, in the yardstick's time
     double costDrift = 0.0;                     // widens cost ratios (CostModel::ratio)
+    std::vector<int> timedAs;  // per row: its calibration point when timed as it is, else -1
 };
 
-// Row i's cost over row v's under the scene's model, with the calibration rounds' interval.
+// Row i's cost over row v's with its interval, widened by the drift: measured in the calibration
+// rounds when both were timed as they are (the unscaled rows), else under the scene's model.
 engine::metrics::MedianInterval costRatio(const SceneResults& s, std::size_t i, std::size_t v);
 
 // Progress over all scenes, rows and seeds, for the lines on stderr.
