@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """Charts a `vox bench sweep` CSV: per scene, error (MAE and MSE, log) against the cost per frame,
-one marker style per method, the Pareto front (no other point is both cheaper and more accurate,
-by medians) joined. MAE shows bias best, MSE punishes fireflies: both are drawn, and the mean
+one marker style per method, the Pareto front joined. Sweeps with the front's verdicts (columns
+front_mae, front_mse: metrics/pareto_front.h) join every point no other point surely dominates and
+ring the members whose place is not resolved at the sweep's budget; older sweeps join the front of
+the medians (no other point both cheaper and more accurate). MAE shows bias best, MSE punishes fireflies: both are drawn, and the mean
 ratio (mean of non-emitting pixels over the reference's) shows bias at a glance.
 
 The cost (sweeps with the cost model: cost_ms) is the counted work at per-kind costs fitted to the
@@ -28,6 +30,8 @@ INDIRECT_MARKERS = {"none": "o", "cache": "s", "reference": "*"}
 
 
 def pareto(points, key):
+    if all(p.get("front_" + key) for p in points):
+        return sorted((p for p in points if p["front_" + key] != "dominated"), key=lambda p: p["ms"])
     front, best = [], float("inf")
     for p in sorted(points, key=lambda p: (p["ms"], p[key])):
         if p[key] < best:
@@ -59,6 +63,7 @@ def read(path):
                 for key in ("mae", "mse"):
                     point[key + "_low"] = float(row[key + "_low"])
                     point[key + "_high"] = float(row[key + "_high"])
+                    point["front_" + key] = row.get("front_" + key) or ""
             scenes[row["scene"]][kind].append(point)
     return scenes
 
@@ -74,7 +79,7 @@ def bars(points, key):
 
 def xlabel(points):
     if all(p["costed"] for p in points):
-        return "cost per frame, ms (counted work x fitted per-kind cost; bar: interval over rounds)"
+        return "cost per frame, ms (counted work x fitted per-kind cost; bar: rounds' interval and drift)"
     return "GPU ms per frame (lavapipe)"
 
 
@@ -91,6 +96,10 @@ def chart(scene, points, markers, title, out):
                             ecolor=sc.get_facecolor()[0], elinewidth=0.7, capsize=1.5)
         front = pareto(points, key)
         ax.plot([p["ms"] for p in front], [p[key] for p in front], "k--", linewidth=1, label="Pareto front")
+        unresolved = [p for p in front if p.get("front_" + key) == "unresolved"]
+        if unresolved:
+            ax.scatter([p["ms"] for p in unresolved], [p[key] for p in unresolved], s=160, facecolors="none",
+                       edgecolors="k", linewidths=0.8, label="member, not resolved at this budget")
         for p in front:
             ax.annotate(p["setting"], (p["ms"], p[key]), fontsize=6, xytext=(3, 3), textcoords="offset points")
         ax.set_yscale("log")

@@ -98,8 +98,29 @@ double CostModel::cost(std::span<const double> counts) const {
     return c;
 }
 
+std::pair<double, double> CostModel::driftRange(std::span<const double> a,
+                                                std::span<const double> b, double drift) const {
+    const std::size_t kinds = perKind.size();
+    double lowest = 0.0, highest = 0.0;
+    bool any = false;
+    for (std::size_t corner = 0; corner < (std::size_t(1) << kinds); ++corner) {
+        double ca = 0.0, cb = 0.0;
+        for (std::size_t k = 0; k < kinds; ++k) {
+            const double x = perKind[k] * ((corner >> k) & 1 ? 1.0 + drift : 1.0 / (1.0 + drift));
+            if (k < a.size()) ca += x * a[k];
+            if (k < b.size()) cb += x * b[k];
+        }
+        if (!(cb > 0.0)) continue;
+        const double r = ca / cb;
+        lowest = any ? std::min(lowest, r) : r;
+        highest = any ? std::max(highest, r) : r;
+        any = true;
+    }
+    return {lowest, highest};
+}
+
 MedianInterval CostModel::ratio(std::span<const double> a, std::span<const double> b,
-                                double confidence) const {
+                                double confidence, double drift) const {
     auto costOf = [](const std::vector<double>& x, std::span<const double> counts) {
         double c = 0.0;
         for (std::size_t k = 0; k < x.size() && k < counts.size(); ++k) c += x[k] * counts[k];
@@ -115,6 +136,11 @@ MedianInterval CostModel::ratio(std::span<const double> a, std::span<const doubl
     out.median = cost(a) / cost(b);
     out.low = std::min(out.low, out.median);
     out.high = std::max(out.high, out.median);
+    if (drift > 0.0 && out.median > 0.0) {
+        const auto [lowest, highest] = driftRange(a, b, drift);
+        out.low *= lowest / out.median;
+        out.high *= highest / out.median;
+    }
     return out;
 }
 

@@ -11,11 +11,20 @@
 
 #include <cstddef>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "metrics/median_interval.h"
 
 namespace engine::metrics {
+
+// The drift (CostModel::ratio) the benches assume by default: the largest between-run movement of
+// a kind's relative cost in the eight `vox bench restir` runs of 2026-12-05 on the project's
+// shared two-core machine (a light sample on the apartments 12.8-16.5 millionths of ReSTIR's
+// frame, 1.29x max / min, so +-14 % around the middle; RIS's equal-cost M 82-136 over the scenes,
+// at most 1.26x within one). A measured reproducibility, not a fitted knob: docs/ACCURACY.md
+// checks it against every new set of runs.
+inline constexpr double kDefaultCostDrift = 0.15;
 
 struct CostModel {
     std::vector<double> perKind;  // cost of one unit of each kind, in the unit point's time
@@ -26,8 +35,17 @@ struct CostModel {
     // The cost of `counts` (one per kind) under the medians' fit.
     double cost(std::span<const double> counts) const;
     // cost(a) / cost(b): the estimate as median, the rounds' fits' sign-test interval around it.
-    MedianInterval ratio(std::span<const double> a, std::span<const double> b,
-                         double confidence) const;
+    // `drift` widens that interval for what the rounds cannot see: the kinds' relative costs
+    // differ between runs with what else runs on the cores (a light sample's cost moved 1.29x
+    // between runs that each fitted it to a few per cent). Each kind's cost may then be off this
+    // run's fit by a factor up to (1 + drift) either way, independently; the ratio's extremes over
+    // that box are at its corners (a ratio of two linear forms is monotone along every axis), and
+    // they scale the interval's ends. Two points with the same work keep a ratio of exactly 1.
+    MedianInterval ratio(std::span<const double> a, std::span<const double> b, double confidence,
+                         double drift = 0.0) const;
+    // The extremes of cost(a) / cost(b) over that box alone: {lowest, highest}.
+    std::pair<double, double> driftRange(std::span<const double> a, std::span<const double> b,
+                                         double drift) const;
 };
 
 // counts[point][kind]: the work each measured point issues; times[point][round]: its time in

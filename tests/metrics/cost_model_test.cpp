@@ -116,3 +116,31 @@ TEST(CostModel, MoreKindsThanPointsStillGivesEveryPointItsTime) {
     EXPECT_NEAR(m.ratio(counts[1], counts[0], 0.5).median, 1.1, 1e-6);
     for (double c : m.perKind) EXPECT_GE(c, 0.0);
 }
+
+TEST(CostModel, DriftWidensARatioByItsKindsRelativeCostsOnly) {
+    CostModel m;
+    m.perKind = {1.0, 1.0, 0.0};
+    m.perRound = {{1.0, 1.0, 0.0}, {1.0, 1.0, 0.0}};
+    // Same work: exactly 1 whatever the drift.
+    const std::vector<double> a = {1.0, 1.0, 5.0};
+    auto same = m.ratio(a, a, 0.5, 0.2);
+    EXPECT_DOUBLE_EQ(same.low, 1.0);
+    EXPECT_DOUBLE_EQ(same.high, 1.0);
+    // Kind 1 only against kind 0 only: the ratio of the two costs, each off by up to 1.2x, so
+    // (1/1.2)/1.2 .. 1.2*1.2 around 1.
+    const std::vector<double> k0 = {1.0, 0.0, 0.0}, k1 = {0.0, 1.0, 0.0};
+    auto both = m.ratio(k1, k0, 0.5, 0.2);
+    EXPECT_DOUBLE_EQ(both.median, 1.0);
+    EXPECT_NEAR(both.low, 1.0 / 1.44, 1e-12);
+    EXPECT_NEAR(both.high, 1.44, 1e-12);
+    // A point with 10 % more of kind 1 than the yardstick's mix: (1 + 1.1) / 2 = 1.05, and its
+    // extremes put kind 1 at 1.2^2 relative to kind 0: (1 + 1.1 * 1.44) / (1 + 1.44).
+    const std::vector<double> mix = {1.0, 1.0, 0.0}, more = {1.0, 1.1, 0.0};
+    auto near = m.ratio(more, mix, 0.5, 0.2);
+    EXPECT_NEAR(near.median, 1.05, 1e-12);
+    EXPECT_NEAR(near.high, (1.0 + 1.1 * 1.44) / (1.0 + 1.44), 1e-12);
+    EXPECT_NEAR(near.low, (1.0 + 1.1 / 1.44) / (1.0 + 1.0 / 1.44), 1e-12);
+    // No drift: the rounds' interval as before.
+    auto none = m.ratio(more, mix, 0.5);
+    EXPECT_DOUBLE_EQ(none.low, none.high);
+}

@@ -52,9 +52,39 @@ for name, r in rows.items():
     assert math.isclose(w["coverage"], 0.5 * c["coverage"]), (name, w)
     assert w["verdict"] == "unresolved", (name, w)
     assert v["time_ratio"]["low"] <= v["time_ratio"]["median"] <= v["time_ratio"]["high"], (name, v["time_ratio"])
-    if r["equal_time"]:  # not pinned: rendered at this run's own count
-        assert list(r["equal_time"].values()) == [r["fitted_count"]], r
+    if r["equal_time"]:  # not pinned: this run's own count, rounded in equal_time
+        assert r["equal_count"] == r["fitted_count"], r
+        assert list(r["equal_time"].values()) == [round(r["equal_count"])], r
+# The count ladder: a scaled row is rendered at the powers of two around its equal-cost count,
+# every seed at each, and its per-seed values are interpolated between them (errors log-log).
+for name in ("ris", "uniform"):
+    r = rows[name]
+    n, rungs = r["equal_count"], r["ladder"]
+    lo = rungs[0]["count"]
+    assert lo & (lo - 1) == 0 and lo <= n, (name, n, rungs)
+    if len(rungs) == 1:
+        assert lo == n or lo == 1, (name, n, rungs)
+        assert r["per_seed"]["mse"] == rungs[0]["mse"], (name, r)
+        continue
+    hi = rungs[1]["count"]
+    assert hi == 2 * lo and n < hi, (name, n, rungs)
+    w = math.log(n / lo) / math.log(2)
+    for s in range(2):
+        want = math.exp((1 - w) * math.log(rungs[0]["mse"][s]) + w * math.log(rungs[1]["mse"][s]))
+        assert math.isclose(r["per_seed"]["mse"][s], want, rel_tol=1e-9), (name, s, r["per_seed"], rungs)
+        want_ms = rungs[0]["ms"][s] + (n - lo) / (hi - lo) * (rungs[1]["ms"][s] - rungs[0]["ms"][s])
+        assert math.isclose(r["per_seed"]["ms"][s], want_ms, rel_tol=1e-9), (name, s)
 assert rows["restir"]["versus"]["restir"]["cost_ratio"]["median"] == 1.0
+# The drift and the noise threshold behind the verdicts are recorded.
+assert d["cost_drift"] == 0.15 and d["noise"] == 0.05, d
+# A row timed as it is in the calibration (unbiased ReSTIR) gets its measured cost ratio: the
+# median of its per-round time ratios to ReSTIR's, not the model's.
+points = {p["label"]: p for p in model["points"]}
+per_round = sorted(a / b for a, b in zip(points["restir-unbiased"]["round_ms"], points["restir"]["round_ms"]))
+c = rows["restir-unbiased"]["versus"]["restir"]["cost_ratio"]
+n = len(per_round)
+want = per_round[n // 2] if n % 2 else 0.5 * (per_round[n // 2 - 1] + per_round[n // 2])
+assert math.isclose(c["median"], want, rel_tol=1e-9), (c, per_round)
 PY
 
 # A point depends on its settings and seed alone: ReSTIR's per-seed errors are the same in a run
@@ -85,7 +115,7 @@ PY
 grep -q "^| scene | emitters | row | equal cost | cost ÷ restir | ms (÷ restir) | MSE | MAE | mean ratio | MSE ÷ restir | MAE ÷ restir | MSE×cost ÷ restir \[90 % interval\] |$" "$tmp/r.md" \
     || fail "markdown header: $(head -1 "$tmp/r.md")"
 [ "$(grep -c '^| cornell |' "$tmp/r.md")" -eq 5 ] || fail "markdown rows: $(cat "$tmp/r.md")"
-grep -q "^| cornell | [0-9]* | uniform | [0-9]* rays | " "$tmp/r.md" || fail "uniform's ray count: $(cat "$tmp/r.md")"
+grep -q "^| cornell | [0-9]* | uniform | [0-9.]* rays\( ([0-9]*–[0-9]*)\)\? | " "$tmp/r.md" || fail "uniform's ray count: $(cat "$tmp/r.md")"
 
 # Bad rows: one line naming the problem, before the GPU is touched.
 check_refused() {  # check_refused TEXT args...

@@ -36,14 +36,15 @@ out=$("$vox" bench recommend cornell --indirect --target-mae 0.025 --sweep "$tmp
 if [ $rc -ne 0 ] || ! grep -q "'indirect cache K=128' (MAE 2.000e-02, 60.00 ms" <<<"$out"; then echo "FAIL: $out"; fail=1; else echo "ok: $out"; fi
 err=$("$vox" bench recommend letters --indirect --target-mae 0.1 --sweep "$tmp/sweep.csv" 2>&1 >/dev/null); rc=$?
 if [ $rc -eq 0 ] || ! grep -q "no indirect-light rows for scene 'letters'" <<<"$err"; then echo "FAIL: $err"; fail=1; else echo "ok: $err"; fi
-# A sweep with the cost model's columns: the cost decides (not total_ms), and the verdicts say
-# whether every seed met the target and whether the choice is cheaper beyond the intervals.
+# A sweep with the cost model's columns (and the front's, which recommend does not read): the cost
+# decides (not total_ms), and the verdicts say whether every seed met the target and whether the
+# choice is cheaper beyond the intervals.
 mkdir -p "$tmp/costed"
 cat > "$tmp/costed/sweep.csv" <<'CSV'
-scene,method,setting,emitters,total_ms,primary_ms,lighting_ms,mae,mse,rmae,indirect,reference_bounces,mean_ratio,seeds,cost_ms,cost_low,cost_high,mae_low,mae_high,mse_low,mse_high
-cornell,restir,"restir area M=32",256,30,2,27,0.010,1e-3,0.1,none,0,1,5,10,9,11,0.009,0.011,1e-3,1e-3
-cornell,ris,"ris area M=32",256,25,2,22,0.012,1e-3,0.1,none,0,1,5,8,7.5,8.5,0.011,0.016,1e-3,1e-3
-cornell,uniform,"uniform area 4 rays",256,2,1,1,0.014,9e-3,0.5,none,0,1,5,8.2,7,9,0.013,0.014,8e-3,1e-2
+scene,method,setting,emitters,total_ms,primary_ms,lighting_ms,mae,mse,rmae,indirect,reference_bounces,mean_ratio,seeds,cost_ms,cost_low,cost_high,mae_low,mae_high,mse_low,mse_high,front_mae,front_mse
+cornell,restir,"restir area M=32",256,30,2,27,0.010,1e-3,0.1,none,0,1,5,10,9,11,0.009,0.011,1e-3,1e-3,member,unresolved
+cornell,ris,"ris area M=32",256,25,2,22,0.012,1e-3,0.1,none,0,1,5,8,7.5,8.5,0.011,0.016,1e-3,1e-3,unresolved,unresolved
+cornell,uniform,"uniform area 4 rays",256,2,1,1,0.014,9e-3,0.5,none,0,1,5,8.2,7,9,0.013,0.014,8e-3,1e-2,unresolved,dominated
 CSV
 out=$("$vox" bench recommend cornell --target-mae 0.015 --sweep "$tmp/costed/sweep.csv"); rc=$?
 if [ $rc -ne 0 ] || ! grep -q "'ris area M=32' (MAE 1.200e-02, 8.00 ms per frame \[7.50–8.50\]" <<<"$out" \

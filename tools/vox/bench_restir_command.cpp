@@ -37,9 +37,13 @@ void printFooter(const RestirBenchOptions& o, double seconds, const std::filesys
     std::printf(
         "MSE×cost: the work-normalised ratio, cost = counted work at per-kind costs calibrated "
         "in %u+ interleaved rounds; its interval: the sign test's over seeds (MSE) times over the "
-        "rounds' fits (cost); \"> 1\" (the versus row wins) or \"< 1\" only when it excludes 1 "
-        "(by %.0f %%) with %.0f %% coverage, else unresolved\n",
-        kCostRounds.minRounds, 100.0 * o.noise, 100.0 * o.confidence);
+        "rounds' fits, widened by each kind's cost drifting %.0f %% between runs (cost); \"> 1\" "
+        "(the versus row wins) or \"< 1\" only when it excludes 1 (by %.0f %%) with %.0f %% "
+        "coverage, else unresolved\n",
+        kCostRounds.minRounds, 100.0 * o.costDrift, 100.0 * o.noise, 100.0 * o.confidence);
+    std::printf(
+        "equal cost: scaled rows rendered at the powers of two around their equal-cost count, "
+        "errors interpolated in log-log, time linearly\n");
     std::printf("wall time %.0f s (references included; cached ones are read back)\n", seconds);
     std::printf("wrote    %s\nwrote    %s\n", json.string().c_str(), csv.string().c_str());
 }
@@ -98,7 +102,10 @@ int runRestirBench(RestirBenchOptions o) {
                             o.countsFrom.empty() ? nullptr : &pinned};
     RestirReport report(setup);
     if (engine::Status s = report.open(out, gpu.info().name); !s) return fail(s.error());
-    RestirProgress progress{0, scenes->size() * rows->size() * o.seeds};
+    // A scaled row renders at two rungs of its count ladder (at most).
+    std::size_t renders = 0;
+    for (const Row& row : *rows) renders += row.scale == EqualTime::None ? 1 : 2;
+    RestirProgress progress{0, scenes->size() * renders * o.seeds};
     for (std::size_t w = 0; w < scenes->size(); ++w) {
         auto results = measureScene(setup, (*scenes)[w], progress);
         if (!results) return fail(results.error());
@@ -163,6 +170,11 @@ void addBenchRestirCommand(CLI::App& bench, int& exitCode) {
     cmd->add_option("--noise", o->noise,
                     "A verdict needs its interval to exclude 1 by this fraction (a smaller "
                     "difference is within the cost model's own error)")
+        ->capture_default_str()
+        ->check(numberIn(engine::closedRange(0.0, 1.0)));
+    cmd->add_option("--cost-drift", o->costDrift,
+                    "How far each kind's relative cost may differ between runs (a factor 1 + "
+                    "this either way): cost ratios' intervals, and so the verdicts, include it")
         ->capture_default_str()
         ->check(numberIn(engine::closedRange(0.0, 1.0)));
     cmd->add_option("--counts-from", o->countsFrom,

@@ -285,6 +285,11 @@ void addBenchSweepCommand(CLI::App& bench, int& exitCode) {
                     "cost model's intervals")
         ->capture_default_str()
         ->check(numberIn(engine::wholeRange(1, 1000, "seeds")));
+    cmd->add_option("--cost-drift", o->costDrift,
+                    "How far each kind's relative cost may differ between runs (a factor 1 + "
+                    "this either way); the cost intervals and the front's verdicts include it")
+        ->capture_default_str()
+        ->check(numberIn(engine::closedRange(0.0, 1.0)));
     cmd->add_option("--ref-spp", o->referenceSpp, "Reference samples per pixel (cached on disk)")
         ->capture_default_str()
         ->check(numberIn(kSamplesRange));

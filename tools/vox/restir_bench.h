@@ -14,6 +14,7 @@
 #include "core/error.h"
 #include "lighting/lighting_settings.h"
 #include "metrics/cost_model.h"
+#include "metrics/count_ladder.h"
 #include "metrics/interleaved_rounds.h"
 #include "render/frame_work.h"
 #include "render/renderer.h"
@@ -39,6 +40,8 @@ struct RestirBenchOptions {
     double confidence = 0.9;  // of the verdicts' intervals; 5 seeds' min-max covers 93.75 %
     double noise = 0.05;      // a verdict's interval must exclude 1 by this much (criterion.rs's
                               // noise threshold): the cost model's own fit is 1-3 % off its points
+    double costDrift = engine::metrics::kDefaultCostDrift;  // between-run movement of the kinds'
+                                                            // relative costs (cost_model.h)
     std::string clock = "auto";  // gpu: fastest frame's GPU timestamps; cpu: the process's CPU
                                  // time; auto: cpu on a CPU device
     bool quick = false;
@@ -49,7 +52,7 @@ struct RestirBenchOptions {
 };
 
 // Equal-cost counts by (scene, row name), from --counts-from.
-using PinnedCounts = std::map<std::pair<std::string, std::string>, std::uint32_t>;
+using PinnedCounts = std::map<std::pair<std::string, std::string>, double>;
 engine::Result<PinnedCounts> readPinnedCounts(const std::string& path);
 
 // Which knob a row scales to ReSTIR's cost (the cost model's, from counted work).
@@ -62,11 +65,21 @@ struct Row {
     std::string sampling;  // the sampling knob's value, for the recommendation
 };
 
+// A row's measurements at one count, per seed.
+struct RungResult {
+    std::vector<double> ms, mse, mae, meanRatio;
+};
+
 struct RowResult {
-    std::vector<double> ms, mse, mae, meanRatio;  // one per seed
-    std::uint32_t scaledTo = 0;                   // shadow rays or candidates (scaled rows)
-    std::uint32_t fittedTo = 0;      // what this run's model gave (differs when pinned)
-    engine::render::FrameWork work;  // one frame's, at the fitted settings
+    // One per seed; a scaled row's are interpolated to its equal-cost count between the ladder's
+    // two rungs (metrics/count_ladder.h): errors in log-log, time linearly.
+    std::vector<double> ms, mse, mae, meanRatio;
+    double equalCount = 0.0;                // shadow rays or candidates at equal cost (scaled rows)
+    double fittedCount = 0.0;               // what this run's model gave (differs when pinned)
+    std::uint32_t scaledTo = 0;             // equalCount rounded, for the tables
+    engine::metrics::LadderBracket ladder;  // the rungs rendered
+    RungResult rungs[2];                    // at ladder.low, ladder.high (scaled rows)
+    engine::render::FrameWork work;         // one frame's, at equalCount (work is linear in it)
 };
 
 // The cost model's calibration: every calibration point timed in interleaved rounds (at least
@@ -116,9 +129,12 @@ struct SceneResults {
     double targetMs = 0.0;                      // the yardstick's median time
     std::vector<CalibrationPoint> calibration;  // the first is the yardstick: the cost unit
     engine::metrics::CostModel model;           // per-kind costs, in the yardstick's time
+    double costDrift = 0.0;                     // widens cost ratios (CostModel::ratio)
+    std::vector<int> timedAs;  // per row: its calibration point when timed as it is, else -1
 };
 
-// Row i's cost over row v's under the scene's model, with the calibration rounds' interval.
+// Row i's cost over row v's with its interval, widened by the drift: measured in the calibration
+// rounds when both were timed as they are (the unscaled rows), else under the scene's model.
 engine::metrics::MedianInterval costRatio(const SceneResults& s, std::size_t i, std::size_t v);
 
 // Progress over all scenes, rows and seeds, for the lines on stderr.

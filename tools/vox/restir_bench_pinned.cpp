@@ -19,9 +19,11 @@ engine::Result<PinnedCounts> readPinnedCounts(const std::string& path) {
     PinnedCounts out;
     for (const engine::Json& scene : json->get("scenes").items()) {
         for (const engine::Json& row : scene.get("rows").items()) {
+            const std::pair key{scene.get("scene").string(), row.get("name").string()};
             for (const auto& [knob, count] : row.get("equal_time").members())
-                out[{scene.get("scene").string(), row.get("name").string()}] =
-                    std::uint32_t(count.number());
+                out[key] = count.number();
+            // Since the count ladder: the exact count, not its rounding.
+            if (row.get("equal_count").isNumber()) out[key] = row.get("equal_count").number();
         }
     }
     if (out.empty())

@@ -79,10 +79,28 @@ std::string jsonModel(const SceneResults& r) {
                        r.model.worstResidual, points);
 }
 
+// "M = 98.3 (64–128)": the equal-cost count and the rungs it is interpolated between.
 std::string scaledText(const Row& row, const RowResult& r) {
-    if (row.scale == EqualTime::ShadowRays) return fmt::format("{} rays", r.scaledTo);
-    if (row.scale == EqualTime::Candidates) return fmt::format("M = {}", r.scaledTo);
+    const std::string rungs =
+        r.ladder.high > r.ladder.low ? fmt::format(" ({}–{})", r.ladder.low, r.ladder.high) : "";
+    if (row.scale == EqualTime::ShadowRays)
+        return fmt::format("{:.1f} rays{}", r.equalCount, rungs);
+    if (row.scale == EqualTime::Candidates) return fmt::format("M = {:.1f}{}", r.equalCount, rungs);
     return "";
+}
+
+// The rungs' per-seed measurements, for a scaled row.
+std::string jsonRungs(const RowResult& r) {
+    std::string out;
+    const std::uint32_t counts[2] = {r.ladder.low, r.ladder.high};
+    for (int k = 0; k < (r.ladder.high > r.ladder.low ? 2 : 1); ++k) {
+        const RungResult& g = r.rungs[k];
+        out += fmt::format(
+            "{}{{\"count\": {}, \"ms\": {}, \"mse\": {}, \"mae\": {}, \"mean_ratio\": {}}}",
+            k ? ", " : "", counts[k], jsonArray(g.ms), jsonArray(g.mse), jsonArray(g.mae),
+            jsonArray(g.meanRatio));
+    }
+    return "[" + out + "]";
 }
 
 // The scaled knob's name in the JSON, empty for an unscaled row.
@@ -107,12 +125,12 @@ engine::Status RestirReport::open(const std::filesystem::path& out, const std::s
     if (engine::Status s = openOutputFile(mJson, out); !s) return s;
     mJson.stream() << fmt::format(
         "{{\"size\": [{}, {}], \"device\": {}, \"clock\": \"{}\", \"reference_spp\": {}, "
-        "\"frames\": {}, \"seeds\": {}, "
+        "\"frames\": {}, \"seeds\": {}, \"noise\": {}, \"cost_drift\": {}, "
         "\"statistics\": \"median, quartiles (type 7) and min-max over seeds; ratios: per-seed "
         "ratio row / versus row, "
         "then their median and spread\", \"scenes\": [\n",
         mSetup.frame.width, mSetup.frame.height, jsonString(device),
-        mSetup.cpuClock ? "cpu" : "gpu", o.referenceSpp, o.frames, o.seeds);
+        mSetup.cpuClock ? "cpu" : "gpu", o.referenceSpp, o.frames, o.seeds, o.noise, o.costDrift);
 
     mCsvPath = std::filesystem::path(out).replace_extension(".csv");
     if (engine::Status s = mCsv.open(mCsvPath); !s) return s;
@@ -158,7 +176,7 @@ void RestirReport::addRow(const std::string& scene, const SceneResults& results,
     const LightingSettings shown = shownSettings(row, r);
     mJson.stream() << fmt::format(
         "    {{\"name\": {}, \"settings\": {}, \"sampling\": {}, \"equal_time\": {}, "
-        "\"fitted_count\": {}, \"ms\": {}, \"mse\": {}, "
+        "\"equal_count\": {}, \"fitted_count\": {}, \"ladder\": {}, \"ms\": {}, \"mse\": {}, "
         "\"mae\": {}, \"mean_ratio\": {}, \"per_seed\": {{\"ms\": {}, \"mse\": {}, "
         "\"mae\": {}, \"mean_ratio\": {}}}, "
         "\"versus\": {{",
@@ -166,9 +184,11 @@ void RestirReport::addRow(const std::string& scene, const SceneResults& results,
         jsonString(row.sampling),
         row.scale == EqualTime::None ? "null"
                                      : fmt::format("{{\"{}\": {}}}", scaledKnob(row), r.scaledTo),
-        row.scale == EqualTime::None ? "null" : fmt::format("{}", r.fittedTo), jsonSummary(ms),
-        jsonSummary(mse), jsonSummary(mae), jsonSummary(mean), jsonArray(r.ms), jsonArray(r.mse),
-        jsonArray(r.mae), jsonArray(r.meanRatio));
+        row.scale == EqualTime::None ? "null" : fmt::format("{}", r.equalCount),
+        row.scale == EqualTime::None ? "null" : fmt::format("{}", r.fittedCount),
+        row.scale == EqualTime::None ? "null" : jsonRungs(r), jsonSummary(ms), jsonSummary(mse),
+        jsonSummary(mae), jsonSummary(mean), jsonArray(r.ms), jsonArray(r.mse), jsonArray(r.mae),
+        jsonArray(r.meanRatio));
     // The scaled knob is no part of what the row is.
     const std::string base =
         row.scale == EqualTime::None ? settingsText(withDefaultSampling(shown)) : "";
@@ -176,7 +196,7 @@ void RestirReport::addRow(const std::string& scene, const SceneResults& results,
                                  emitters, row.name, methodName(shown), row.sampling, base,
                                  r.scaledTo, ms.median, mse.median, mse.min, mse.max, mae.median,
                                  mae.min, mae.max, mean.median);
-    std::printf("  %-28s %-9s %7.2f ms  MSE %s  MAE %s  mean %s", row.name.c_str(),
+    std::printf("  %-28s %-20s %7.2f ms  MSE %s  MAE %s  mean %s", row.name.c_str(),
                 scaledText(row, r).c_str(), ms.median, cell(mse, "{:.2e}").c_str(),
                 cell(mae, "{:.2e}").c_str(), cell(mean, "{:.2f}").c_str());
     const double timeRatio =

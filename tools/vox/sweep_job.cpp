@@ -102,6 +102,8 @@ int submitSweepJob(const SweepOptions& o) {
              {"--rays", o.rays},
              {"--size", o.size},
              {"--frames", std::to_string(o.frames)},
+             {"--seeds", std::to_string(o.seeds)},
+             {"--cost-drift", std::to_string(o.costDrift)},
              {"--ref-spp", std::to_string(o.referenceSpp)},
              {"--indirect", o.indirect},
              {"--indirect-bounces", std::to_string(o.indirectBounces)},

@@ -11,6 +11,7 @@
 #include "lighting/emitter_list.h"
 #include "lighting/lighting_knobs.h"
 #include "metrics/cost_model.h"
+#include "metrics/pareto_front.h"
 #include "metrics/seed_statistics.h"
 #include "render/frame_work.h"
 #include "render/renderer.h"
@@ -33,6 +34,11 @@ std::vector<std::string> splitList(const std::string& s) {
 }
 
 namespace {
+
+// The front's verdicts as vox bench restir's: 90 % (5 seeds' min-max covers 93.75 %), and a
+// difference below 5 % in cost or error is none.
+constexpr double kFrontConfidence = 0.9;
+constexpr double kFrontNoise = 0.05;
 
 engine::Result<std::vector<std::uint32_t>> numbers(const std::string& s, const char* option) {
     std::vector<std::uint32_t> out;
@@ -155,8 +161,9 @@ struct RoundsOfPoint {
     LightingSettings lighting;
     bool direct = true;
     std::vector<SweepPoint> rounds;
-    std::vector<double> ms;  // the chosen clock's time per round
-    MedianInterval cost;     // ms: the model's for a direct point, the clock's otherwise
+    std::vector<double> ms;          // the chosen clock's time per round
+    MedianInterval cost;             // ms: the model's for a direct point, the clock's otherwise
+    std::string frontMae, frontMse;  // metrics/pareto_front.h's status; empty for indirect points
     engine::render::FrameWork work;
 };
 
@@ -186,17 +193,18 @@ std::string pointLine(const RoundsOfPoint& r, std::uint32_t referenceBounces) {
     const double primary = passMedian(r.rounds, "primary_rays");
     const double tonemap = passMedian(r.rounds, "tonemap");
     return fmt::format(
-        "{},{},\"{}\",{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", first.scene,
+        "{},{},\"{}\",{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", first.scene,
         first.method, first.label, first.emitters, total, primary, total - primary - tonemap,
         a.median, e.median, medianOf(r.rounds, &SweepPoint::rmae), indirectColumn(r.lighting),
         referenceBounces, medianOf(r.rounds, &SweepPoint::meanRatio), r.rounds.size(),
-        r.cost.median, r.cost.low, r.cost.high, a.min, a.max, e.min, e.max);
+        r.cost.median, r.cost.low, r.cost.high, a.min, a.max, e.min, e.max, r.frontMae, r.frontMse);
 }
 
 // The cost of every point: the direct-light ones under the model fitted to their rounds, in ms of
 // the first one's median time; the indirect series (whose cache, cone and path work the counts
 // do not cover) keep their time's median and interval over the rounds.
-engine::metrics::CostModel costPoints(std::vector<RoundsOfPoint>& points, double confidence) {
+engine::metrics::CostModel costPoints(std::vector<RoundsOfPoint>& points, double confidence,
+                                      double drift) {
     std::vector<std::vector<double>> counts, times;
     std::vector<RoundsOfPoint*> direct;
     for (RoundsOfPoint& r : points) {
@@ -212,7 +220,7 @@ engine::metrics::CostModel costPoints(std::vector<RoundsOfPoint>& points, double
     engine::metrics::CostModel model = engine::metrics::fitCostModel(counts, times, 0, confidence);
     const double unitMs = engine::metrics::summarize(direct[0]->ms).median;
     for (std::size_t i = 0; i < direct.size(); ++i) {
-        MedianInterval c = model.ratio(counts[i], counts[0], confidence);
+        MedianInterval c = model.ratio(counts[i], counts[0], confidence, drift);
         direct[i]->cost = {c.low * unitMs, c.median * unitMs, c.high * unitMs, c.covered, c.count};
     }
     std::fprintf(stderr, "\n  cost model (%zu points, %zu rounds): worst point %.0f %% off it\n",
@@ -220,49 +228,55 @@ engine::metrics::CostModel costPoints(std::vector<RoundsOfPoint>& points, double
     return model;
 }
 
-// The direct-light Pareto front by MAE (no other point both cheaper and more accurate, medians),
-// and between neighbours on it whether the seeds and the rounds separate them.
-void printFront(const std::string& scene, const std::vector<RoundsOfPoint>& points,
-                const engine::metrics::CostModel& model) {
-    struct Entry {
-        const RoundsOfPoint* p;
-        engine::metrics::SeedSummary mae;
+// The direct-light Pareto fronts by MAE and by MSE with their verdicts (metrics/pareto_front.h):
+// a point leaves a front only when another is surely no dearer (the pair's cost ratio over the
+// rounds' fits, widened by the drift) and surely more accurate (per-seed error ratios, the seeds
+// paired); members that another point may still dominate are "not resolved at this budget".
+// Each point's status goes to its CSV line (front_mae, front_mse).
+void classifyFronts(const std::string& scene, std::vector<RoundsOfPoint>& points,
+                    const engine::metrics::CostModel& model, double drift) {
+    std::vector<RoundsOfPoint*> direct;
+    for (RoundsOfPoint& r : points) {
+        if (r.direct) direct.push_back(&r);
+    }
+    if (direct.empty()) return;
+    engine::metrics::FrontInput in;
+    in.confidence = kFrontConfidence;
+    in.noise = kFrontNoise;
+    in.costRatio = [&](std::size_t q, std::size_t p) {
+        return model.ratio(direct[q]->work.count, direct[p]->work.count, kFrontConfidence, drift);
     };
-    std::vector<Entry> all;
-    for (const RoundsOfPoint& r : points) {
-        if (!r.direct) continue;
-        std::vector<double> mae;
-        for (const SweepPoint& p : r.rounds) mae.push_back(p.mae);
-        all.push_back({&r, engine::metrics::summarize(mae)});
-    }
-    std::sort(all.begin(), all.end(), [](const Entry& a, const Entry& b) {
-        return a.p->cost.median != b.p->cost.median ? a.p->cost.median < b.p->cost.median
-                                                    : a.mae.median < b.mae.median;
-    });
-    std::vector<const Entry*> front;
-    for (const Entry& e : all) {
-        if (front.empty() || e.mae.median < front.back()->mae.median) front.push_back(&e);
-    }
-    std::printf("%s: Pareto front (cost ms [interval], MAE median [seeds' min–max]):\n",
-                scene.c_str());
-    for (std::size_t i = 0; i < front.size(); ++i) {
-        const Entry& e = *front[i];
-        std::string verdict;
-        if (i > 0) {  // against the cheaper neighbour: more accurate for more cost?
-            const Entry& c = *front[i - 1];
-            // The two points' cost ratio over the rounds' fits, not their separate intervals
-            // (both move with the unit's time alike).
-            const MedianInterval ratio = model.ratio(e.p->work.count, c.p->work.count, 0.9);
-            // Dearer beyond the noise threshold vox bench restir's verdicts use (5 %).
-            const bool cost =
-                engine::metrics::verdictOf(ratio, 0.9, 0.05) == engine::metrics::Verdict::Above;
-            const bool error = e.mae.max < c.mae.min;
-            verdict = cost && error ? "  more accurate and dearer than the previous: resolved"
-                                    : "  against the previous: not resolved at this budget";
+    for (const char* key : {"MAE", "MSE"}) {
+        const bool mae = key[1] == 'A';
+        in.errors.clear();
+        for (const RoundsOfPoint* r : direct) {
+            std::vector<double> e;
+            for (const SweepPoint& p : r->rounds) e.push_back(mae ? p.mae : p.mse);
+            in.errors.push_back(std::move(e));
         }
-        std::printf("  %-34s %8.2f [%.2f–%.2f]  %.3e [%.3e–%.3e]%s\n", e.p->label->c_str(),
-                    e.p->cost.median, e.p->cost.low, e.p->cost.high, e.mae.median, e.mae.min,
-                    e.mae.max, verdict.c_str());
+        const std::vector<engine::metrics::FrontStatus> status = engine::metrics::paretoFront(in);
+        std::vector<std::size_t> front;
+        for (std::size_t i = 0; i < direct.size(); ++i) {
+            (mae ? direct[i]->frontMae : direct[i]->frontMse) =
+                engine::metrics::frontStatusName(status[i]);
+            if (status[i] != engine::metrics::FrontStatus::Dominated) front.push_back(i);
+        }
+        std::sort(front.begin(), front.end(), [&](std::size_t a, std::size_t b) {
+            return direct[a]->cost.median < direct[b]->cost.median;
+        });
+        std::printf(
+            "%s: %s Pareto front (every point no other surely dominates; cost ms [interval], %s "
+            "median [seeds' min–max]):\n",
+            scene.c_str(), key, key);
+        for (std::size_t i : front) {
+            const RoundsOfPoint& r = *direct[i];
+            const engine::metrics::SeedSummary e = engine::metrics::summarize(in.errors[i]);
+            std::printf("  %-34s %8.2f [%.2f–%.2f]  %.3e [%.3e–%.3e]  %s\n", r.label->c_str(),
+                        r.cost.median, r.cost.low, r.cost.high, e.median, e.min, e.max,
+                        status[i] == engine::metrics::FrontStatus::Member
+                            ? "member: resolved"
+                            : "member: not resolved at this budget");
+        }
     }
 }
 
@@ -356,8 +370,8 @@ engine::Status measureSweepPoints(
                 r.rounds.push_back(std::move(p));
             }
         }
-        const engine::metrics::CostModel model = costPoints(points, 0.9);
-        printFront(scene->name, points, model);
+        const engine::metrics::CostModel model = costPoints(points, kFrontConfidence, o.costDrift);
+        classifyFronts(scene->name, points, model, o.costDrift);
         std::fflush(stdout);  // before the chart script's lines
         std::size_t next = 0, nextSkipped = 0;
         for (std::uint32_t k = std::max(first, worldFirst); k <= std::min(last, worldLast); ++k) {

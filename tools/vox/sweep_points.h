@@ -19,6 +19,7 @@
 #include "core/error.h"
 #include "job_scheduler.h"
 #include "lighting/lighting_settings.h"
+#include "metrics/cost_model.h"
 #include "thesis_scenes.h"
 
 namespace engine::gpu {
@@ -38,6 +39,10 @@ struct SweepOptions {
     std::uint32_t frames = 12;
     std::uint32_t referenceSpp = 1024;
     std::uint32_t seeds = 3;  // interleaved rounds per world: error spreads and cost intervals
+    double costDrift =
+        engine::metrics::kDefaultCostDrift;  // kinds' relative costs may differ between runs by
+                                             // this factor (metrics/cost_model.h
+                                             // kDefaultCostDrift): cost intervals include it
     // Indirect-light series (docs/ACCURACY.md): ReSTIR's defaults for the direct light plus
     // none | cache-K | reference, measured against a multi-bounce reference.
     std::string indirect = "none,cache-32,cache-128,reference,vct";
@@ -64,7 +69,8 @@ engine::Result<SweepPlan> planSweep(const SweepOptions& o);
 inline constexpr const char* kSweepCsvHeader =
     "scene,method,setting,emitters,total_ms,primary_ms,lighting_ms,mae,mse,rmae,indirect,reference_"
     "bounces,"
-    "mean_ratio,seeds,cost_ms,cost_low,cost_high,mae_low,mae_high,mse_low,mse_high\n";
+    "mean_ratio,seeds,cost_ms,cost_low,cost_high,mae_low,mae_high,mse_low,mse_high,front_mae,front_"
+    "mse\n";
 
 // Measures the points first..last that `wanted` accepts (all when it is empty), calling
 // onPoint(point, line) for each in order; `line` is empty for a point that does not apply (brick
