@@ -41,9 +41,9 @@ struct ResidencySettings {
 enum class RegionState : std::uint8_t { Absent, Requested, Resident, Failed };
 
 struct ResidencyReport {
-    std::size_t loaded = 0;   // regions taken in by this update
-    std::size_t evicted = 0;  // regions evicted by this update
-    std::size_t pending = 0;  // regions asked for and not yet loaded
+    std::size_t loaded = 0;           // regions taken in by this update
+    std::size_t evicted = 0;          // regions evicted by this update
+    std::size_t pending = 0;          // regions asked for and not yet loaded
     std::vector<std::string> errors;  // regions that failed to load (seen as empty), one line each
 };
 
@@ -84,8 +84,8 @@ private:
         std::string error;
     };
     std::size_t index(RegionKey k) const {
-        return std::size_t(k.x) +
-               std::size_t(mRegionCounts.x) * (std::size_t(k.y) + std::size_t(mRegionCounts.y) * k.z);
+        return std::size_t(k.x) + std::size_t(mRegionCounts.x) *
+                                      (std::size_t(k.y) + std::size_t(mRegionCounts.y) * k.z);
     }
     float distance(RegionKey key, glm::vec3 eye) const;  // eye to the region's box, voxels
     void take(Loaded loaded, std::vector<std::string>* errors);
@@ -100,7 +100,7 @@ private:
     std::vector<RegionState> mState;
     std::vector<RegionKey> mResident;
     std::uint64_t mResidentBytes = 0;
-    float mReach = 0.0f;  // how far requests go: the radius, less while the budget is full
+    float mReach = 0.0f;        // how far requests go: the radius, less while the budget is full
     glm::vec3 mReachEye{0.0f};  // where the budget last shrank mReach
 
     // Shared with the loader thread, under mMutex.

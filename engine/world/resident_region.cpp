@@ -5,8 +5,7 @@
 namespace engine::world {
 
 ResidentRegion::ResidentRegion(RegionSnapshot voxels)
-    : mVoxels(std::move(voxels)),
-      mOriginVoxel(mVoxels.key.vec() * (kRegionCells * kBrickDim)) {
+    : mVoxels(std::move(voxels)), mOriginVoxel(mVoxels.key.vec() * (kRegionCells * kBrickDim)) {
     mMasks.reserve(mVoxels.bricks.size());
     for (const BrickVoxels& b : mVoxels.bricks) mMasks.push_back(BrickMask::build(b));
 }
@@ -17,10 +16,12 @@ MaterialId ResidentRegion::get(glm::ivec3 p) const {
     DCHECK(glm::all(glm::greaterThanEqual(local, glm::ivec3(0))) &&
            glm::all(glm::lessThan(c, mVoxels.size)));
     const std::uint32_t cell =
-        mVoxels.cells[std::size_t(c.x) +
-                      std::size_t(mVoxels.size.x) * (std::size_t(c.y) + std::size_t(mVoxels.size.y) * c.z)];
+        mVoxels
+            .cells[std::size_t(c.x) + std::size_t(mVoxels.size.x) *
+                                          (std::size_t(c.y) + std::size_t(mVoxels.size.y) * c.z)];
     if (cell == shared::CELL_EMPTY) return kEmpty;
-    if (cell & shared::CELL_HOMOGENEOUS) return static_cast<MaterialId>(cell & shared::CELL_MATERIAL_MASK);
+    if (cell & shared::CELL_HOMOGENEOUS)
+        return static_cast<MaterialId>(cell & shared::CELL_MATERIAL_MASK);
     return mVoxels.bricks[cell - 1][brickVoxelIndex(local - c * kBrickDim)];
 }
 

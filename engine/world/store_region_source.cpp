@@ -33,9 +33,9 @@ Result<RegionSnapshot> StoreRegionSource::load(RegionKey key) {
         empty.cells.assign(range.count(), shared::CELL_EMPTY);
         return empty;
     }
-    return decodeRegion(key, **blob, range.size(), mPaletteSize,
-                        fmt::format("{}: region ({}, {}, {})", mStore.path().string(), key.x,
-                                    key.y, key.z));
+    return decodeRegion(
+        key, **blob, range.size(), mPaletteSize,
+        fmt::format("{}: region ({}, {}, {})", mStore.path().string(), key.x, key.y, key.z));
 }
 
 }  // namespace engine::world

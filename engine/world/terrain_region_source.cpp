@@ -14,8 +14,8 @@ Result<RegionSnapshot> TerrainRegionSource::load(RegionKey key) {
     // A grid of the region alone (a few MiB at most, freed on return), then its snapshot.
     BrickGrid local(range.size() * kBrickDim);
     fillHeightFieldAt(
-        local, [&](int x, int z) { return terrainHeight(mParams, x, z); },
-        terrainColumns(mParams), range.min);
+        local, [&](int x, int z) { return terrainHeight(mParams, x, z); }, terrainColumns(mParams),
+        range.min);
     RegionSnapshot s = snapshotRegion(local, RegionKey{}, kRegionCells);
     s.key = key;
     return s;

@@ -4,6 +4,8 @@
 #include "world/region_residency.h"
 
 #include <algorithm>
+#include <chrono>
+#include <cstdio>
 #include <gtest/gtest.h>
 
 #include "core/hash.h"
@@ -55,10 +57,10 @@ std::vector<RegionKey> allKeys() {
 void expectSameRegion(const RegionSnapshot& a, const RegionSnapshot& b) {
     ASSERT_EQ(a.key, b.key);
     ASSERT_EQ(a.size, b.size);
-    EXPECT_TRUE(a.cells == b.cells) << "region (" << a.key.x << ", " << a.key.y << ", " << a.key.z
-                                    << ") cells differ";
-    EXPECT_TRUE(a.bricks == b.bricks) << "region (" << a.key.x << ", " << a.key.y << ", "
-                                      << a.key.z << ") bricks differ";
+    EXPECT_TRUE(a.cells == b.cells)
+        << "region (" << a.key.x << ", " << a.key.y << ", " << a.key.z << ") cells differ";
+    EXPECT_TRUE(a.bricks == b.bricks)
+        << "region (" << a.key.x << ", " << a.key.y << ", " << a.key.z << ") bricks differ";
 }
 
 // Every resident region equals the whole-world generator's, and get() agrees voxel by voxel at
@@ -205,6 +207,45 @@ TEST(RegionResidency, ADamagedRowLoadsAsEmptyWithOneLine) {
     EXPECT_EQ(r.state({1, 0, 1}), RegionState::Failed);
     EXPECT_EQ(r.get({200, 60, 200}), kEmpty);
     EXPECT_EQ(r.residentRegions(), keys.size() - 1);
+}
+
+}  // namespace
+
+namespace {
+
+// Not a test: the figures in docs/WORLD_STORE.md ("Streaming: the CPU side"). A walk of 8 km
+// across a 16 384 x 512 x 16 384 terrain generated region by region, 64 voxels a step, the loader
+// drained after each step. Run with
+//   store_tests --gtest_also_run_disabled_tests --gtest_filter='*MeasureTerrainWalk*'
+TEST(RegionResidency, DISABLED_MeasureTerrainWalk) {
+    const glm::ivec3 world{16384, 512, 16384};
+    TerrainParams p = terrain();
+    p.wavelength = 300;
+    p.octaves = 5;
+    for (float radius : {512.0f, 1024.0f, 2048.0f}) {
+        const ResidencySettings settings{radius, std::uint64_t(3) << 29};  // 1.5 GiB
+        RegionResidency r(std::make_unique<TerrainRegionSource>(world, p), settings);
+        std::uint64_t peakBytes = 0;
+        std::size_t peakRegions = 0, loaded = 0, evicted = 0;
+        const auto t0 = std::chrono::steady_clock::now();
+        for (int step = 0; step <= 8192 / 64; ++step) {
+            const glm::vec3 eye(4096.0f + 64.0f * step, 150.0f, 8192.0f);
+            auto report = r.update(eye);
+            loaded += r.waitIdle();
+            evicted += report.evicted;
+            evicted += r.update(eye).evicted;
+            peakBytes = std::max(peakBytes, r.residentBytes());
+            peakRegions = std::max(peakRegions, r.residentRegions());
+        }
+        const double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        std::printf(
+            "radius %.0f: %zu regions loaded (%.1f ms each, loader and frame together), %zu "
+            "evicted; peak %zu resident, %.1f MiB (budget %.0f MiB); table %.1f KiB\n",
+            double(radius), loaded, 1000.0 * seconds / double(std::max<std::size_t>(loaded, 1)),
+            evicted, peakRegions, double(peakBytes) / (1 << 20),
+            double(settings.budgetBytes) / (1 << 20), double(r.tableBytes()) / 1024.0);
+    }
 }
 
 }  // namespace
