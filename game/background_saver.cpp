@@ -1,6 +1,8 @@
 #include "game/background_saver.h"
 
 #include <chrono>
+#include <fmt/format.h>
+#include <sys/stat.h>
 
 #include "core/atomic_file.h"
 #include "game/world_store.h"
@@ -18,6 +20,24 @@ fs::path storePathFor(const fs::path& savePath) {
     fs::path p = savePath;
     p.replace_extension(".db");
     return p;
+}
+
+StoreStatus readStoreStatus(const fs::path& store) {
+    StoreStatus status;
+    if (!engine::world::RegionStore::isStore(store)) return status;
+    auto s = engine::world::RegionStore::open(store, /*writable=*/false);
+    if (!s) return status;
+    auto rows = s->regionRows();
+    status.exists = true;
+    status.regions = rows ? *rows : 0;
+    status.fileBytes = s->fileBytes();
+    return status;
+}
+
+std::string describeStore(const fs::path& store, const StoreStatus& status) {
+    if (!status.exists) return fmt::format("store {}: not written yet", store.filename().string());
+    return fmt::format("store {}: {} region(s), {:.1f} MiB on disk", store.filename().string(),
+                       status.regions, double(status.fileBytes) / (1 << 20));
 }
 
 BackgroundSaver::BackgroundSaver() : mWorker([this] { run(); }) {}
@@ -47,6 +67,7 @@ engine::Result<std::size_t> BackgroundSaver::request(engine::world::Scene& scene
         !engine::scene::sceneFileMarked(savePath, engine::scene::kSaveMarker))
         return engine::makeError("{}: not a save written by vox play; refusing to overwrite it",
                                  savePath.string());
+    const auto start = std::chrono::steady_clock::now();
     Job job;
     job.savePath = savePath;
     job.store = fs::absolute(storePathFor(savePath));
@@ -68,6 +89,8 @@ engine::Result<std::size_t> BackgroundSaver::request(engine::world::Scene& scene
                                              .objectGenerators = &objects.generators});
     }
     const std::size_t regions = job.snapshot.regions.size();
+    job.frameMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     {
         std::lock_guard lock(mMutex);
         mQueue.push_back(std::move(job));
@@ -105,6 +128,37 @@ bool BackgroundSaver::busy() const {
     return !mQueue.empty() || mWorking;
 }
 
+namespace {
+std::optional<std::pair<std::uint64_t, std::uint64_t>> fileIdentity(const fs::path& path) {
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0) return std::nullopt;
+    return std::pair{std::uint64_t(st.st_dev), std::uint64_t(st.st_ino)};
+}
+}  // namespace
+
+engine::Result<engine::scene::StoreWriteReport> BackgroundSaver::commit(
+    const Job& job, std::optional<std::uint64_t> expected) {
+    auto it = mOpenStores.find(job.store);
+    if (it != mOpenStores.end() &&
+        fileIdentity(job.store) != std::pair{it->second.device, it->second.inode}) {
+        it->second.store.abandon();
+        mOpenStores.erase(it);
+        it = mOpenStores.end();
+    }
+    if (it == mOpenStores.end()) {
+        auto opened =
+            engine::world::RegionStore::openOrCreate(job.store, job.snapshot.worldSizeInVoxels);
+        if (!opened) return opened.error();
+        const auto id = fileIdentity(job.store);
+        if (!id) return engine::makeError("{}: cannot stat the store", job.store.string());
+        it = mOpenStores.emplace(job.store, OpenStore{std::move(*opened), id->first, id->second})
+                 .first;
+    }
+    auto report = engine::scene::commitSnapshot(job.snapshot, it->second.store, expected);
+    if (!report) mOpenStores.erase(it);  // opened afresh next time
+    return report;
+}
+
 void BackgroundSaver::run() {
     std::unique_lock lock(mMutex);
     for (;;) {
@@ -123,6 +177,7 @@ void BackgroundSaver::run() {
         d.autosave = job.autosave;
         d.worldVersion = job.worldVersion;
         d.whole = job.snapshot.whole;
+        d.frameMs = job.frameMs;
         std::error_code ec;
         if (job.store.has_parent_path()) fs::create_directories(job.store.parent_path(), ec);
         if (!d.whole && !expected) {
@@ -139,8 +194,7 @@ void BackgroundSaver::run() {
             d.status = p.write(file);
         }
         if (d.status) {
-            auto report = engine::scene::commitSnapshot(job.snapshot, job.store,
-                                                        d.whole ? std::nullopt : expected);
+            auto report = commit(job, d.whole ? std::nullopt : expected);
             if (report) {
                 d.report = *report;
                 expected = report->commits;

@@ -31,6 +31,15 @@ namespace game {
 // The store a save path writes: itself for `.db`, else `STEM.db` beside it.
 std::filesystem::path storePathFor(const std::filesystem::path& savePath);
 
+// What the HUD says about a store: its regions and size on disk (absent: not written yet).
+struct StoreStatus {
+    bool exists = false;
+    std::uint64_t regions = 0, fileBytes = 0;
+};
+StoreStatus readStoreStatus(const std::filesystem::path& store);  // opens it read-only
+// "store w.db: 2048 regions, 412.3 MiB on disk" or "store w.db: not written yet".
+std::string describeStore(const std::filesystem::path& store, const StoreStatus& status);
+
 class BackgroundSaver {
 public:
     BackgroundSaver();
@@ -50,6 +59,7 @@ public:
         engine::Status status;
         engine::scene::StoreWriteReport report;
         double workerMs = 0.0;  // encode + commit + scene file, on the worker
+        double frameMs = 0.0;   // the snapshot request() took in the frame
         bool resync = false;    // the store's history is unknown now: the next save is whole
     };
 
@@ -75,6 +85,7 @@ private:
         std::string sceneText;                             // for a .toml save path
         std::vector<engine::scene::PayloadFile> payloads;  // object models beside the save
         std::vector<engine::world::RegionKey> keys;
+        double frameMs = 0.0;
     };
     void run();
 
@@ -89,6 +100,16 @@ private:
     std::map<std::filesystem::path, std::uint64_t> mCommits;
     bool mWorking = false;
     bool mStop = false;
+    // Worker only: the stores saved to, kept open — closing the last connection checkpoints the
+    // write-ahead log, which cost a one-region save more than its encode and commit. A store
+    // whose file was replaced since (another inode) is opened again.
+    struct OpenStore {
+        engine::world::RegionStore store;
+        std::uint64_t device = 0, inode = 0;
+    };
+    std::map<std::filesystem::path, OpenStore> mOpenStores;
+    engine::Result<engine::scene::StoreWriteReport> commit(const Job& job,
+                                                           std::optional<std::uint64_t> expected);
     std::thread mWorker;
 };
 

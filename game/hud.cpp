@@ -352,6 +352,7 @@ void Hud::drawStats(const HudStats& stats, HudControls& controls, HudActions& ac
     if (ImGui::Button("Save")) actions.save = true;
     ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + width);
     ImGui::Text("%s%s", stats.savePath.c_str(), stats.unsaved ? " (unsaved changes)" : "");
+    ImGui::TextUnformatted(stats.store.c_str());
     ImGui::PopTextWrapPos();
     engine::lighting::LightingSettings& l = controls.lighting;
     if (!ImGui::CollapsingHeader(

@@ -43,6 +43,7 @@ struct HudStats {
     engine::render::DvfSkyStats sky;
     UndoStats undo;
     std::string worldName, savePath;
+    std::string store;  // the save's store: regions and size on disk (game/background_saver.h)
     bool unsaved = false;
     bool mouseLook = false;
     Pick target;

@@ -164,6 +164,7 @@ private:
     // Edits applied this frame, reported with the upload counter once the frame is presented.
     std::size_t mFrameEdits = 0, mFrameChangedCells = 0;
     std::string mMessage;
+    StoreStatus mStoreStatus;  // the save's store, for the HUD: read at start, then from saves
     double mMessageTime = -1e9;
     bool mCaptureRequested = false;
     fs::path mPendingCapturePath, mPendingRenderPath;
@@ -235,6 +236,7 @@ engine::Status Sandbox::init() {
     } else {
         mSavePath = defaultSavePath(mScene.name);
     }
+    mStoreStatus = readStoreStatus(storePathFor(mSavePath));
     if (!mOptions.editLogPath.empty()) {
         mEditLog.open(mOptions.editLogPath);
         if (!mEditLog)
@@ -771,12 +773,17 @@ engine::Status Sandbox::pollSaves(bool quiet) {
             last = d.status;
             continue;
         }
-        if (!d.autosave) mSavedVersion = d.worldVersion;
-        message(fmt::format("{} {} ({}{} region(s), {:.1f} MiB stored, {:.0f} ms on the worker)",
-                            d.autosave ? "autosaved to" : "saved", d.savePath.string(),
-                            d.whole ? "whole world: " : "",
-                            d.report.regionsWritten + d.report.regionsErased,
-                            double(d.report.storedBytes) / (1 << 20), d.workerMs));
+        if (!d.autosave) {
+            mSavedVersion = d.worldVersion;
+            mStoreStatus = {true, d.report.regionRows, d.report.fileBytes};
+        }
+        message(fmt::format(
+            "{} {} ({}{} region(s), {:.1f} MiB stored; {:.1f} ms in the frame, {:.0f} ms on the "
+            "worker: encode {:.0f}, commit {:.0f})",
+            d.autosave ? "autosaved to" : "saved", d.savePath.string(),
+            d.whole ? "whole world: " : "", d.report.regionsWritten + d.report.regionsErased,
+            double(d.report.storedBytes) / (1 << 20), d.frameMs, d.workerMs, d.report.encodeMs,
+            d.report.commitMs));
     }
     return last;
 }
@@ -907,6 +914,7 @@ HudStats Sandbox::hudStats() {
     s.undo = mUndo.stats();
     s.worldName = mScene.name;
     s.savePath = mSavePath.string();
+    s.store = describeStore(storePathFor(mSavePath), mStoreStatus);
     s.unsaved = unsaved();
     s.mouseLook = mMouseLook;
     s.target = mTarget;

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "core/atomic_file.h"
+#include "core/progress.h"
 #include "io/vdb_layout.h"
 #include "io/vdb_reader.h"
 
@@ -128,8 +129,11 @@ public:
 
     void writeBuffers(std::ostream& os) const override {
         vdb::io::setGridBackgroundValuePtr(os, &mBackground);
+        mProgressTask = "writing VDB grid '" + this->getName() + "' (128^3 nodes)";
+        mWrittenInt4 = 0;
         for (const glm::ivec3& node : mRootChildren)
             writeInternal5(os, node * kCells5, /*topology=*/false);
+        reportProgress(mProgressTask, mInt4, mInt4);
     }
 
 private:
@@ -193,8 +197,11 @@ private:
             vdb::io::writeCompressedValues(os, values.get(), Int5T::NUM_VALUES, valueMask,
                                            childMask, false);
         }
-        for (auto it = childMask.beginOn(); it; ++it)
+        for (auto it = childMask.beginOn(); it; ++it) {
             writeInternal4(os, first + childCell<Int5T>(it.pos(), kCells4), topology);
+            if (!topology && ++mWrittenInt4 < mInt4)
+                reportProgress(mProgressTask, mWrittenInt4, mInt4);
+        }
     }
 
     void writeInternal4(std::ostream& os, glm::ivec3 first, bool topology) const {
@@ -267,6 +274,7 @@ private:
             for (vdb::Index pos = 0; pos < Int5T::NUM_VALUES; ++pos)
                 int4 += anyContent(node * kCells5 + childCell<Int5T>(pos, kCells4), kCells4);
         }
+        mInt4 = int4;
         if (mActive == 0) lo = hi = glm::ivec3(0);
         this->insertMeta(vdb::GridBase::META_FILE_BBOX_MIN,
                          vdb::Vec3IMetadata(vdb::Vec3i(lo.x, lo.y, lo.z)));
@@ -285,6 +293,9 @@ private:
     ValueT mBackground;
     std::vector<glm::ivec3> mRootChildren;
     std::uint64_t mTiles = 0, mLeaves = 0, mActive = 0;
+    std::uint64_t mInt4 = 0;  // Internal4 nodes (128^3 voxels): the unit of export progress
+    mutable std::uint64_t mWrittenInt4 = 0;
+    mutable std::string mProgressTask;
 };
 
 template <typename GridT>

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "core/atomic_file.h"
+#include "core/progress.h"
 #include "scene/generators/store_keys.h"
 #include "scene/scene_file.h"
 #include "world/region_store.h"
@@ -32,13 +33,26 @@ bool keyInside(world::RegionKey k, glm::ivec3 count) {
            glm::all(glm::lessThan(k.vec(), count));
 }
 
-// Every region of a grid, in key order.
+// Every region of a grid, in key order, reporting progress as `task` (core/progress.h).
 template <typename F>
-void forEachRegionKey(glm::ivec3 sizeInCells, int regionCells, F&& f) {
+void forEachRegionKey(glm::ivec3 sizeInCells, int regionCells, std::string_view task, F&& f) {
     const glm::ivec3 n = world::regionCount(sizeInCells, regionCells);
+    const std::uint64_t total = std::uint64_t(n.x) * n.y * n.z;
+    std::uint64_t done = 0;
     for (int z = 0; z < n.z; ++z)
         for (int y = 0; y < n.y; ++y)
-            for (int x = 0; x < n.x; ++x) f(world::RegionKey{x, y, z});
+            for (int x = 0; x < n.x; ++x) {
+                f(world::RegionKey{x, y, z});
+                reportProgress(task, ++done, total);
+            }
+}
+
+// Progress through a store's rows, which RegionStore::forEachRegion gives in z, y, x order: the
+// position of the row's key among all the world's regions in that order.
+void reportRowProgress(std::string_view task, world::RegionKey k, glm::ivec3 count) {
+    const std::uint64_t total = std::uint64_t(count.x) * count.y * count.z;
+    const std::uint64_t at = (std::uint64_t(k.z) * count.y + k.y) * count.x + k.x;
+    if (at + 1 < total) reportProgress(task, at + 1, total);  // the end is reported once, after
 }
 
 }  // namespace
@@ -98,10 +112,11 @@ StoreSnapshot snapshotStore(
     s.worldSizeInVoxels = scene.grid.sizeInVoxels();
     s.sceneKeys = sceneKeysOf(scene, objectGenerators);
     if (whole) {
-        forEachRegionKey(scene.grid.sizeInCells(), world::kRegionCells, [&](world::RegionKey k) {
-            world::RegionSnapshot r = world::snapshotRegion(scene.grid, k);
-            if (!r.empty()) s.regions.push_back(std::move(r));
-        });
+        forEachRegionKey(scene.grid.sizeInCells(), world::kRegionCells, "copying world regions",
+                         [&](world::RegionKey k) {
+                             world::RegionSnapshot r = world::snapshotRegion(scene.grid, k);
+                             if (!r.empty()) s.regions.push_back(std::move(r));
+                         });
     } else {
         for (const world::RegionKey& k : regions)
             s.regions.push_back(world::snapshotRegion(scene.grid, k));
@@ -111,6 +126,14 @@ StoreSnapshot snapshotStore(
 
 Result<StoreWriteReport> commitSnapshot(const StoreSnapshot& snapshot, const fs::path& path,
                                         std::optional<std::uint64_t> expectedCommits) {
+    auto store = world::RegionStore::openOrCreate(path, snapshot.worldSizeInVoxels);
+    if (!store) return store.error();
+    return commitSnapshot(snapshot, *store, expectedCommits);
+}
+
+Result<StoreWriteReport> commitSnapshot(const StoreSnapshot& snapshot, world::RegionStore& store,
+                                        std::optional<std::uint64_t> expectedCommits) {
+    const fs::path& path = store.path();
     StoreWriteReport report;
     const auto t0 = Clock::now();
     world::StoreCommit change;
@@ -128,22 +151,19 @@ Result<StoreWriteReport> commitSnapshot(const StoreSnapshot& snapshot, const fs:
     }
     report.encodeMs = msSince(t0);
     const auto t1 = Clock::now();
-    auto store = world::RegionStore::openOrCreate(path, snapshot.worldSizeInVoxels);
-    if (!store) return store.error();
-    if (!snapshot.whole && store->info().regionCells != world::kRegionCells)
+    if (!snapshot.whole && store.info().regionCells != world::kRegionCells)
         return makeError("{}: regions of {} cells, saves write {}: save the whole world",
-                         path.string(), store->info().regionCells, world::kRegionCells);
-    if (!snapshot.whole && expectedCommits && store->info().commits != *expectedCommits)
-        return makeError(
-            "{}: changed by another writer since this world was loaded or saved; not saved "
-            "(the next save writes the whole world)",
-            path.string());
-    if (Status s = store->commit(change); !s) return s.error();
+                         path.string(), store.info().regionCells, world::kRegionCells);
+    // The counter is checked inside the transaction (RegionStore::commit), so a writer that
+    // commits between our check and our write cannot slip through.
+    if (!snapshot.whole) change.expectedCommits = expectedCommits;
+    if (Status s = store.commit(change); !s) return s.error();
     report.commitMs = msSince(t1);
-    report.commits = store->info().commits;
+    report.commits = store.info().commits;
     report.regionsWritten = change.put.size();
     report.regionsErased = change.erase.size();
-    report.fileBytes = store->fileBytes();
+    report.fileBytes = store.fileBytes();
+    if (auto rows = store.regionRows()) report.regionRows = *rows;
     return report;
 }
 
@@ -168,16 +188,18 @@ Result<StoreWriteReport> writeWorldStore(const world::Scene& scene, const fs::pa
             world::RegionStore::openOrCreate(target, scene.grid.sizeInVoxels(), regionCells);
         if (!store) return store.error();
         status = store->begin(/*replaceAll=*/true, regionCells);
-        forEachRegionKey(scene.grid.sizeInCells(), regionCells, [&](world::RegionKey k) {
-            if (!status) return;
-            const world::RegionSnapshot r = world::snapshotRegion(scene.grid, k, regionCells);
-            if (r.empty()) return;
-            const world::EncodedRegion e = world::encodeRegion(r);
-            report.rawBytes += e.rawBytes;
-            report.storedBytes += e.blob.size();
-            ++report.regionsWritten;
-            status = store->put(e);
-        });
+        forEachRegionKey(scene.grid.sizeInCells(), regionCells, "writing store regions",
+                         [&](world::RegionKey k) {
+                             if (!status) return;
+                             const world::RegionSnapshot r =
+                                 world::snapshotRegion(scene.grid, k, regionCells);
+                             if (r.empty()) return;
+                             const world::EncodedRegion e = world::encodeRegion(r);
+                             report.rawBytes += e.rawBytes;
+                             report.storedBytes += e.blob.size();
+                             ++report.regionsWritten;
+                             status = store->put(e);
+                         });
         for (const auto& [name, text] : sceneKeysOf(scene)) {
             if (!status) break;
             status = store->putSceneKey(name, text);
@@ -185,6 +207,7 @@ Result<StoreWriteReport> writeWorldStore(const world::Scene& scene, const fs::pa
         if (status) status = store->commitTransaction(scene.grid.sizeInVoxels());
         report.encodeMs = msSince(t0);
         report.fileBytes = store->fileBytes();
+        report.regionRows = report.regionsWritten;
     }  // closed: SQLite folds the write-ahead log into the file and removes it
     if (!status) {
         if (!exists)
@@ -239,10 +262,13 @@ Result<world::Scene> loadWorldStore(const fs::path& path, std::optional<world::B
     };
     if (!box) {
         if (Status s = store->forEachRegion([&](world::RegionKey key, auto blob) {
+                if (keyInside(key, count)) reportRowProgress("reading store regions", key, count);
                 return readOne(key, blob, scene->grid, glm::ivec3(0));
             });
             !s)
             return s.error();
+        const std::uint64_t total = std::uint64_t(count.x) * count.y * count.z;
+        reportProgress("reading store regions", total, total);
     } else {
         const world::Box b = box->intersect(scene->grid.bounds());
         if (b.empty())
@@ -296,7 +322,8 @@ Status readStoreInto(world::Scene& scene, const fs::path& path) {
     const int rc = store->info().regionCells;
     const glm::ivec3 cells = (store->info().worldSizeInVoxels + 7) / 8;
     const glm::ivec3 count = world::regionCount(cells, rc);
-    return store->forEachRegion([&](world::RegionKey key, auto blob) -> Status {
+    const std::uint64_t total = std::uint64_t(count.x) * count.y * count.z;
+    Status read = store->forEachRegion([&](world::RegionKey key, auto blob) -> Status {
         const std::string where = regionWhere(path, key);
         if (!keyInside(key, count))
             return makeError("{}: outside the world's {}x{}x{} regions", where, count.x, count.y,
@@ -312,8 +339,11 @@ Status readStoreInto(world::Scene& scene, const fs::path& path) {
                 for (world::MaterialId& m : b) m = remap[m];
         }
         world::writeRegion(*region, scene.grid, rc);
+        reportRowProgress("reading store regions", key, count);
         return {};
     });
+    reportProgress("reading store regions", total, total);
+    return read;
 }
 
 }  // namespace engine::scene

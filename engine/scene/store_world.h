@@ -20,6 +20,7 @@
 
 #include "core/error.h"
 #include "world/region_codec.h"
+#include "world/region_store.h"
 #include "world/scene.h"
 
 namespace engine::scene {
@@ -54,8 +55,9 @@ struct StoreWriteReport {
     std::uint64_t storedBytes = 0;  // compressed
     double encodeMs = 0.0;
     double commitMs = 0.0;
-    std::uint64_t fileBytes = 0;  // the store's size on disk afterwards
-    std::uint64_t commits = 0;    // the store's commit counter afterwards
+    std::uint64_t fileBytes = 0;   // the store's size on disk afterwards
+    std::uint64_t regionRows = 0;  // the store's regions afterwards (its non-empty ones)
+    std::uint64_t commits = 0;     // the store's commit counter afterwards
 };
 
 // Encodes the snapshot's regions and commits them with its scene keys in one transaction; makes
@@ -65,6 +67,11 @@ struct StoreWriteReport {
 // regions would be written over a world they do not belong to.
 Result<StoreWriteReport> commitSnapshot(const StoreSnapshot& snapshot,
                                         const std::filesystem::path& store,
+                                        std::optional<std::uint64_t> expectedCommits = {});
+// The same through a store kept open (vox play's saver): no open, and no close — closing the
+// last connection checkpoints the write-ahead log into the file, which cost a one-region save
+// more than its encode and commit together (docs/WORLD_STORE.md).
+Result<StoreWriteReport> commitSnapshot(const StoreSnapshot& snapshot, world::RegionStore& store,
                                         std::optional<std::uint64_t> expectedCommits = {});
 
 // A whole world as a store at `path` (vox import, convert), region by region — each region is

@@ -23,14 +23,18 @@ int terrainHeight(const TerrainParams& p, int x, int z) {
     return std::max(1, static_cast<int>(std::floor(h)));
 }
 
-void generateTerrain(BrickGrid& grid, const TerrainParams& p) {
+ColumnMaterials terrainColumns(const TerrainParams& p) {
     ColumnMaterials m;
     m.top = p.top;
     m.soil = p.soil;
     m.rock = p.rock;
     m.soilDepth = p.soilDepth;
+    return m;
+}
+
+void generateTerrain(BrickGrid& grid, const TerrainParams& p) {
     fillHeightField(
-        grid, [&](int x, int z) { return terrainHeight(p, x, z); }, m);
+        grid, [&](int x, int z) { return terrainHeight(p, x, z); }, terrainColumns(p));
 }
 
 void generateCornellBox(BrickGrid& grid, const CornellParams& p) {
@@ -102,7 +106,8 @@ void generateLamps(BrickGrid& grid, const LampsParams& p) {
     Rng rng(p.seed);
     const glm::ivec3 size = grid.sizeInVoxels();
     for (int i = 0; i < p.count; ++i) {
-        if ((i & 4095) == 0) reportProgress("lamps", std::uint64_t(i), std::uint64_t(p.count));
+        if ((i & 4095) == 0)
+            reportProgress("generating lamps", std::uint64_t(i), std::uint64_t(p.count));
         int x = rng.uniformInt(p.margin, size.x - 1 - p.margin);
         int z = rng.uniformInt(p.margin, size.z - 1 - p.margin);
         int ground = groundHeight(grid, x, z);
@@ -114,7 +119,7 @@ void generateLamps(BrickGrid& grid, const LampsParams& p) {
                     {x - half + p.lampSize, top + p.lampSize, z - half + p.lampSize}},
                 p.light);
     }
-    reportProgress("lamps", std::uint64_t(p.count), std::uint64_t(p.count));
+    reportProgress("generating lamps", std::uint64_t(p.count), std::uint64_t(p.count));
 }
 
 }  // namespace engine::world

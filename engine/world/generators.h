@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 
 #include "world/brick_grid.h"
+#include "world/height_field.h"
 
 namespace engine::world {
 
@@ -25,6 +26,8 @@ struct TerrainParams {
 void generateTerrain(BrickGrid& grid, const TerrainParams& p);
 // The terrain's column height (first empty y) at (x, z), without looking at the grid.
 int terrainHeight(const TerrainParams& p, int x, int z);
+// The terrain's column materials (for a region generated alone: world/terrain_region_source.h).
+ColumnMaterials terrainColumns(const TerrainParams& p);
 
 struct CornellParams {
     glm::ivec3 origin{0};

@@ -10,26 +10,35 @@ namespace engine::world {
 
 void fillHeightField(BrickGrid& grid, const std::function<int(int, int)>& heightAt,
                      const ColumnMaterials& m) {
+    fillHeightFieldAt(grid, heightAt, m, glm::ivec3(0), true);
+}
+
+void fillHeightFieldAt(BrickGrid& grid, const std::function<int(int, int)>& heightAt,
+                       const ColumnMaterials& m, glm::ivec3 originCell, bool progress) {
+    // Every decision below is made from world coordinates (the grid's cell + originCell), so a
+    // cell comes out the same whether the grid is the whole world or one region of it.
     const glm::ivec3 cells = grid.sizeInCells();
+    const glm::ivec3 o = originCell * kBrickDim;
     const bool cliffs = m.cliff != kEmpty && m.cliffStep < (1 << 30);
     // Heights of one 8x8 column of cells plus a one-voxel border (for the cliff test).
     std::array<int, 10 * 10> heights{};
     auto h = [&](int x, int z) -> int& { return heights[std::size_t(x + 1 + 10 * (z + 1))]; };
     for (int cz = 0; cz < cells.z; ++cz) {
-        reportProgress("height field", std::uint64_t(cz), std::uint64_t(cells.z));
+        if (progress)
+            reportProgress("generating height field", std::uint64_t(cz), std::uint64_t(cells.z));
         for (int cx = 0; cx < cells.x; ++cx) {
             int minH = 1 << 30, maxH = 0;
             for (int z = -1; z <= 8; ++z)
                 for (int x = -1; x <= 8; ++x) {
                     bool inside = x >= 0 && x < 8 && z >= 0 && z < 8;
                     if (!inside && !cliffs) continue;
-                    h(x, z) = heightAt(cx * 8 + x, cz * 8 + z);
+                    h(x, z) = heightAt(o.x + cx * 8 + x, o.z + cz * 8 + z);
                     if (!inside) continue;
                     minH = std::min(minH, h(x, z));
                     maxH = std::max(maxH, h(x, z));
                 }
             for (int cy = 0; cy < cells.y; ++cy) {
-                int y0 = cy * 8;
+                int y0 = o.y + cy * 8;
                 if (y0 >= maxH) break;
                 glm::ivec3 c{cx, cy, cz};
                 if (y0 + 8 <= minH - 1 - m.soilDepth) {
@@ -64,7 +73,8 @@ void fillHeightField(BrickGrid& grid, const std::function<int(int, int)>& height
             }
         }
     }
-    reportProgress("height field", std::uint64_t(cells.z), std::uint64_t(cells.z));
+    if (progress)
+        reportProgress("generating height field", std::uint64_t(cells.z), std::uint64_t(cells.z));
 }
 
 }  // namespace engine::world

@@ -26,5 +26,10 @@ struct ColumnMaterials {
 // grid's whole footprint.
 void fillHeightField(BrickGrid& grid, const std::function<int(int, int)>& heightAt,
                      const ColumnMaterials& m);
+// The same over a grid that stands for the world's cells from `originCell` on (one region, built
+// alone by a region loader): heightAt still takes world columns, and each cell is written exactly
+// as the whole-world fill writes it. `progress` reports to core/progress.h.
+void fillHeightFieldAt(BrickGrid& grid, const std::function<int(int, int)>& heightAt,
+                       const ColumnMaterials& m, glm::ivec3 originCell, bool progress = false);
 
 }  // namespace engine::world

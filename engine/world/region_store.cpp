@@ -293,6 +293,13 @@ Status RegionStore::failTransaction(const char* what) {
 Status RegionStore::begin(bool replaceAll, int regionCells) {
     if (exec(mDb, "BEGIN IMMEDIATE") != SQLITE_OK) return failTransaction("cannot start the save");
     mInTransaction = true;
+    // A connection kept open across saves (vox play's saver) sees other writers' commits here:
+    // the counter this transaction increments is the one on disk now.
+    if (Status s = readMeta(); !s) {
+        exec(mDb, "ROLLBACK");
+        mInTransaction = false;
+        return s;
+    }
     if (!replaceAll) return {};
     const std::string sql = fmt::format(
         "DELETE FROM regions; DELETE FROM scene; "
@@ -349,6 +356,14 @@ Status RegionStore::commitTransaction(std::optional<glm::ivec3> worldSizeInVoxel
 
 Status RegionStore::commit(const StoreCommit& change) {
     if (Status s = begin(change.replaceAll); !s) return s;
+    if (change.expectedCommits && mInfo.commits != *change.expectedCommits) {
+        exec(mDb, "ROLLBACK");
+        mInTransaction = false;
+        return makeError(
+            "{}: changed by another writer since this world was loaded or saved; not saved (the "
+            "next save writes the whole world)",
+            mPath.string());
+    }
     for (const EncodedRegion& r : change.put)
         if (Status s = put(r); !s) return s;
     for (const RegionKey& k : change.erase)
@@ -358,11 +373,21 @@ Status RegionStore::commit(const StoreCommit& change) {
     return commitTransaction(change.worldSizeInVoxels);
 }
 
+Result<std::uint64_t> RegionStore::regionRows() const {
+    Statement s(mDb, "SELECT count(*) FROM regions");
+    if (!s.ok() || s.step() != SQLITE_ROW) return fail("cannot count the regions");
+    return std::uint64_t(s.integer(0));
+}
+
 Result<std::string> RegionStore::integrityCheck() const {
     Statement s(mDb, "PRAGMA integrity_check");
     if (!s.ok() || s.step() != SQLITE_ROW) return fail("integrity check failed");
     const std::string first = s.text(0);
     return first == "ok" ? std::string() : first;
+}
+
+void RegionStore::abandon() {
+    if (mDb) sqlite3_db_config(mDb, SQLITE_DBCONFIG_NO_CKPT_ON_CLOSE, 1, nullptr);
 }
 
 std::uint64_t RegionStore::fileBytes() const {

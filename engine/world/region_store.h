@@ -49,6 +49,9 @@ struct StoreCommit {
     std::vector<RegionKey> erase;                                // regions now empty
     std::vector<std::pair<std::string, std::string>> sceneKeys;  // replaces the keys given
     std::optional<glm::ivec3> worldSizeInVoxels;                 // a new world size
+    // Refused, writing nothing, unless the store's commit counter is this (checked inside the
+    // transaction): an incremental save over a store someone else has written since.
+    std::optional<std::uint64_t> expectedCommits;
 };
 
 class RegionStore {
@@ -78,6 +81,7 @@ public:
     Status forEachRegion(
         const std::function<Status(RegionKey, std::span<const std::uint8_t>)>& visit) const;
     Result<std::vector<RegionRow>> listRegions() const;
+    Result<std::uint64_t> regionRows() const;  // how many regions the store holds
     Result<std::map<std::string, std::string>> sceneKeys() const;
 
     // One transaction: every change in it, or none.
@@ -96,6 +100,9 @@ public:
     Result<std::string> integrityCheck() const;
     // Bytes on disk: the database and its write-ahead log.
     std::uint64_t fileBytes() const;
+    // For a connection whose file was unlinked or replaced under it: closing it must not
+    // checkpoint, nor delete the write-ahead log by name (the new file's log has that name).
+    void abandon();
 
 private:
     RegionStore() = default;

@@ -97,6 +97,37 @@ TEST(BackgroundSaver, StoreChangedByAnotherWriterIsNotPatched) {
     EXPECT_TRUE(engine::scene::loadWorldStore(save)->grid == scene.grid);
 }
 
+// The saver keeps its store open across saves (no WAL checkpoint per save): a store file
+// replaced since (vox import renames a new file into place) must not be written through the old
+// connection into the unlinked file — the save is refused and the next one writes the whole world.
+TEST(BackgroundSaver, StoreFileReplacedSinceIsNotPatched) {
+    vox_test::ScratchDir dir("replaced");
+    Scene scene = sandbox();
+    BackgroundSaver saver;
+    const fs::path save = dir / "w.db";
+    ASSERT_TRUE(saveAndWait(saver, scene, save).status.ok());
+    scene.grid.set({1, 1, 1}, 1);
+    ASSERT_TRUE(saveAndWait(saver, scene, save, 2).status.ok());  // the connection is cached now
+    {
+        // Another store renamed over it; its counter differs from the saver's.
+        const fs::path other = dir / "other.db";
+        auto made = engine::world::RegionStore::openOrCreate(other, scene.grid.sizeInVoxels());
+        ASSERT_TRUE(made.ok());
+    }
+    // As vox import does: no log of the old file may be replayed into the new one.
+    for (const char* suffix : {"-wal", "-shm"}) fs::remove(save.string() + suffix);
+    fs::rename(dir / "other.db", save);
+    scene.grid.set({2, 2, 2}, 1);
+    auto refused = saveAndWait(saver, scene, save, 3);
+    ASSERT_FALSE(refused.status.ok());
+    EXPECT_NE(refused.status.error().message.find("another writer"), std::string::npos)
+        << refused.status.error().message;
+    auto whole = saveAndWait(saver, scene, save, 4);
+    ASSERT_TRUE(whole.status.ok()) << whole.status.error().message;
+    EXPECT_TRUE(whole.whole);
+    EXPECT_TRUE(engine::scene::loadWorldStore(save)->grid == scene.grid);
+}
+
 // Markers: 16 voxels in each of three regions spell the number of the save that wrote them.
 const glm::ivec3 kMarkers[] = {{1, 60, 1}, {130, 60, 1}, {130, 60, 130}};
 constexpr MaterialId kZero = 1, kOne = 2;

@@ -6,9 +6,10 @@ source "$(dirname "$0")/test_setup.sh"
 expect_error() {  # expect_error PATTERN -- command...
     local pattern="$1"; shift 2
     local err rc
-    # Progress lines of long generators ("generating lamps 4096/1000000 …") are not errors.
+    # Progress lines of long work ("generating lamps 4096/1000000 …", "writing store regions …")
+    # are not errors.
     err=$("$@" 2>&1 >/dev/null); rc=$?
-    err=$(printf '%s\n' "$err" | grep -vE '^generating .* [0-9]+/[0-9]+ ')
+    err=$(printf '%s\n' "$err" | grep -vE '^(generating|writing|reading) .* [0-9]+/[0-9]+ ')
     local lines
     lines=$(printf '%s\n' "$err" | grep -c .)
     if [ "$rc" -eq 0 ] || [ "$rc" -ge 128 ]; then

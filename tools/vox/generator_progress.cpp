@@ -23,7 +23,7 @@ void onProgress(std::string_view task, std::uint64_t done, std::uint64_t total) 
     if (gTask.name != task) {
         // The line starts with the task (for its rate and ETA) but prints only after a second.
         gTask = {std::string(task), now,
-                 std::make_unique<ProgressLine>("generating " + std::string(task), total, "step")};
+                 std::make_unique<ProgressLine>(std::string(task), total, "step")};
     }
     const bool shown = now - gTask.start > std::chrono::seconds(1);
     if (shown) gTask.line->update(done);
