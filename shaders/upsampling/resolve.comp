@@ -41,6 +41,8 @@ const float kGaussianIntegral = 2.0 * 3.14159265 * 0.3 * 0.3;
 // switched, a shadow moved), the history counts as at most this many frames, so the display
 // follows a change within about as many.
 const float kChangedHistory = 2.0;
+// The clip's width inside one surface, in standard deviations of the 3x3 samples.
+const float kInsideClipGamma = 3.0;
 
 // Last frame's display at `p` (display pixels), Catmull-Rom over the 4x4 texels around it: a
 // bilinear fetch blurs the history a little every frame the camera moves, and the blur adds up
@@ -124,6 +126,7 @@ void main() {
     // Last frame's display where this pixel's surface was: the nearest sample's motion, from its
     // render position to the display's.
     vec4 history = vec4(0.0);
+    bool inside = false;  // all 3x3 samples on the history's surface: no edge near
     if ((gParams.flags & UPSAMPLING_RESTART) == 0u) {
         vec2 previous = vec2(pixel) + 0.5;
         if (nearestMotion.w > 0.0) previous += (nearestMotion.xy - nearestSample) / scale;
@@ -131,7 +134,11 @@ void main() {
         if (all(greaterThanEqual(previous, vec2(0.0))) && all(lessThan(previous, vec2(display)))) {
             uint previousKey = gPrevKeys[uint(keyTexel.x) + uint(keyTexel.y) * display.x];
             bool seen = false;
-            for (int k = 0; k < 9; ++k) seen = seen || keys[k] == previousKey;
+            inside = true;
+            for (int k = 0; k < 9; ++k) {
+                seen = seen || keys[k] == previousKey;
+                inside = inside && keys[k] == previousKey;
+            }
             if (seen) history = catmullRomHistory(previous, ivec2(display));
         }
     }
@@ -145,7 +152,11 @@ void main() {
         vec3 mean = m1 / 9.0;
         vec3 sigma = sqrt(max(m2 / 9.0 - mean * mean, vec3(0.0)));
         vec3 h = toYCoCg(history.rgb);
-        vec3 clipped = clamp(h, mean - gParams.clipGamma * sigma, mean + gParams.clipGamma * sigma);
+        // Inside one surface the spread is the lighting's noise and its sub-pixel detail (a lit
+        // window on a wall); a tight clip there throws away the history's average of it, and the
+        // image darkens. Only edges get the tight clip.
+        float gamma = inside ? kInsideClipGamma : gParams.clipGamma;
+        vec3 clipped = clamp(h, mean - gamma * sigma, mean + gamma * sigma);
         float frameWeight = scale.x * scale.y * kGaussianIntegral;
         float historyWeight = history.w;
         if ((gParams.flags & UPSAMPLING_LIGHTING_CHANGED) != 0u || abs(clipped.x - h.x) > 0.1 * max(mean.x, 1e-4))
