@@ -6,9 +6,10 @@
 // cells, brick masks (BRICK_MASK_WORDS per brick), brick materials (BRICK_MATERIAL_WORDS per
 // brick) and the object table (GpuDynamicObject per object) — each part at the texel offset the
 // header gives, counted from the buffer's start; the header also holds the coarse occupancy
-// (world/dynamic_grid.h's `occupancy`), which every ray tests before the dynamic traversal; the super cells come first, at
-// DYNAMIC_HEADER_TEXELS (shaders rely on that and on BrickGrid's size rules, common/world.glsl). BrickGridInfo::dynamicGrid.x says whether there
-// is one. Cell encoding as in brick_grid.h; brick indices count from 0 in this buffer alone.
+// (world/dynamic_grid.h's `occupancy`), which every ray tests before the dynamic traversal; the
+// super cells come first, at DYNAMIC_HEADER_TEXELS (shaders rely on that and on BrickGrid's size
+// rules, common/world.glsl). BrickGridInfo::dynamicGrid.x says whether there is one. Cell encoding
+// as in brick_grid.h; brick indices count from 0 in this buffer alone.
 #ifndef SHARED_DYNAMIC_GRID_H
 #define SHARED_DYNAMIC_GRID_H
 #include "interop.h"
@@ -19,27 +20,28 @@ SHARED_BEGIN
 SHARED_CONST uint DYNAMIC_OCCUPANCY_BOXES = 4u;
 
 struct DynamicGridHeader {
-    ivec4 origin;            // xyz: world voxel of grid voxel (0,0,0) (brick-aligned), w: object count
+    ivec4 origin;  // xyz: world voxel of grid voxel (0,0,0) (brick-aligned), w: object count
     ivec4 sizeInCells;
     ivec4 sizeInVoxels;
     ivec4 sizeInSuperCells;
-    uvec4 offsets;           // texel offsets: x super cells, y cells, z masks, w materials
-    uvec4 objects;           // x: texel offset of the object table (a multiple of 4), y: occupancy boxes in use
+    uvec4 offsets;  // texel offsets: x super cells, y cells, z masks, w materials
+    uvec4 objects;  // x: texel offset of the object table (a multiple of 4), y: occupancy boxes in
+                    // use
     // The coarse occupancy: boxes of whole cells (world voxels, max exclusive) that together hold
     // every voxel of the grid; the first objects.y are in use.
     ivec4 occupiedMin[DYNAMIC_OCCUPANCY_BOXES];
     ivec4 occupiedMax[DYNAMIC_OCCUPANCY_BOXES];
 };
 SHARED_ASSERT_SIZE(DynamicGridHeader, 224);
-SHARED_CONST uint DYNAMIC_HEADER_TEXELS = 56u;  // sizeof(DynamicGridHeader) / 4
+SHARED_CONST uint DYNAMIC_HEADER_TEXELS = 56u;        // sizeof(DynamicGridHeader) / 4
 SHARED_CONST uint DYNAMIC_HEADER_OCCUPIED_MIN = 24u;  // texel of occupiedMin[0]; box i at + 4i
 SHARED_CONST uint DYNAMIC_HEADER_OCCUPIED_MAX = 40u;  // texel of occupiedMax[0]
 
 // One object: where it is and how to take a point on it back to last frame, for motion vectors.
 struct GpuDynamicObject {
-    ivec4 boundsMin;      // xyz world voxels the object may cover (inclusive)
-    ivec4 boundsMax;      // xyz (exclusive)
-    mat4 prevFromCurrent; // previous worldFromModel * inverse(current worldFromModel)
+    ivec4 boundsMin;       // xyz world voxels the object may cover (inclusive)
+    ivec4 boundsMax;       // xyz (exclusive)
+    mat4 prevFromCurrent;  // previous worldFromModel * inverse(current worldFromModel)
 };
 SHARED_ASSERT_SIZE(GpuDynamicObject, 96);
 SHARED_CONST uint DYNAMIC_OBJECT_TEXELS = 24u;  // sizeof(GpuDynamicObject) / 4
