@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "metrics/interleaved_rounds.h"
 #include "metrics/median_interval.h"
 
 namespace engine::metrics {
@@ -25,6 +26,11 @@ namespace engine::metrics {
 // at most 1.26x within one). A measured reproducibility, not a fitted knob: docs/ACCURACY.md
 // checks it against every new set of runs.
 inline constexpr double kDefaultCostDrift = 0.15;
+
+// The rounds a bench calibrates its cost model in (vox bench restir, vox bench sweep): at least
+// 10, so that a cost ratio's interval covers 97 % and, with 5 seeds' min-max of error ratios at
+// 93.75 %, the product still covers 90 %; up to 16 while a ratio's half width exceeds 3 %.
+inline constexpr RoundsPlan kCostCalibrationRounds{1, 10, 16, 0.97, 0.03};
 
 struct CostModel {
     std::vector<double> perKind;  // cost of one unit of each kind, in the unit point's time

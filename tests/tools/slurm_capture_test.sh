@@ -151,7 +151,7 @@ same_as_whole "damaged, deleted and cancelled frames resumed"
 
 # --- 3. a sweep of 8 points as 4 array tasks ---
 sweep=(bench sweep cornell --methods restir,ris --candidates 1,8 --modes point,area --brick-lights on --indirect ""
-       --size 32x18 --frames 4 --ref-spp 16)
+       --size 32x18 --frames 4 --ref-spp 16 --seeds 2)
 "$vox" "${sweep[@]}" -o "$tmp/sweep1" >"$tmp/sweep1.log" 2>&1 || { fail "single sweep:"; cat "$tmp/sweep1.log"; }
 "$vox" "${sweep[@]}" -o "$tmp/sweep4" --scheduler slurm --tasks 4 >"$tmp/submit.log" 2>&1 || { fail "sweep job:"; cat "$tmp/submit.log"; }
 ids

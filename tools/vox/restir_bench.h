@@ -82,10 +82,8 @@ struct RowResult {
     engine::render::FrameWork work;         // one frame's, at equalCount (work is linear in it)
 };
 
-// The cost model's calibration: every calibration point timed in interleaved rounds (at least
-// 10, so that a cost ratio's interval covers 97 % and, with 5 seeds' min-max of error ratios at
-// 93.75 %, the product still covers 90 %).
-constexpr engine::metrics::RoundsPlan kCostRounds{1, 10, 16, 0.97, 0.03};
+// The cost model's calibration: every calibration point timed in interleaved rounds.
+constexpr engine::metrics::RoundsPlan kCostRounds = engine::metrics::kCostCalibrationRounds;
 
 // A setting timed to calibrate the cost model: each row as given, and each scaled row at two
 // counts of its scaled knob (so the model sees that knob's slope).

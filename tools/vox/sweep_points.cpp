@@ -39,6 +39,9 @@ namespace {
 // difference below 5 % in cost or error is none.
 constexpr double kFrontConfidence = 0.9;
 constexpr double kFrontNoise = 0.05;
+// Cost intervals at the calibration's 97 %, as vox bench restir's: with the error verdict's, a
+// "surely dominated" still holds at about 90 %.
+constexpr double kCostConfidence = engine::metrics::kCostCalibrationRounds.confidence;
 
 engine::Result<std::vector<std::uint32_t>> numbers(const std::string& s, const char* option) {
     std::vector<std::uint32_t> out;
@@ -200,12 +203,14 @@ std::string pointLine(const RoundsOfPoint& r, std::uint32_t referenceBounces) {
         r.cost.median, r.cost.low, r.cost.high, a.min, a.max, e.min, e.max, r.frontMae, r.frontMse);
 }
 
-// The cost of every point: the direct-light ones under the model fitted to their rounds, in ms of
-// the first one's median time; the indirect series (whose cache, cone and path work the counts
-// do not cover) keep their time's median and interval over the rounds.
-engine::metrics::CostModel costPoints(std::vector<RoundsOfPoint>& points, double confidence,
-                                      double drift) {
-    std::vector<std::vector<double>> counts, times;
+// The cost of every point: the direct-light ones under the model fitted to their calibration
+// rounds (`calibration[i]`: the i-th direct point's times), in ms of the first one's median time
+// there; the indirect series (whose cache, cone and path work the counts do not cover) keep their
+// time's median and interval over the seeds' rounds.
+engine::metrics::CostModel costPoints(std::vector<RoundsOfPoint>& points,
+                                      const std::vector<std::vector<double>>& calibration,
+                                      double confidence, double drift) {
+    std::vector<std::vector<double>> counts;
     std::vector<RoundsOfPoint*> direct;
     for (RoundsOfPoint& r : points) {
         if (!r.direct) {
@@ -214,17 +219,17 @@ engine::metrics::CostModel costPoints(std::vector<RoundsOfPoint>& points, double
         }
         direct.push_back(&r);
         counts.emplace_back(r.work.count.begin(), r.work.count.end());
-        times.push_back(r.ms);
     }
     if (direct.empty()) return {};
-    engine::metrics::CostModel model = engine::metrics::fitCostModel(counts, times, 0, confidence);
-    const double unitMs = engine::metrics::summarize(direct[0]->ms).median;
+    engine::metrics::CostModel model =
+        engine::metrics::fitCostModel(counts, calibration, 0, confidence);
+    const double unitMs = engine::metrics::summarize(calibration[0]).median;
     for (std::size_t i = 0; i < direct.size(); ++i) {
         MedianInterval c = model.ratio(counts[i], counts[0], confidence, drift);
         direct[i]->cost = {c.low * unitMs, c.median * unitMs, c.high * unitMs, c.covered, c.count};
     }
     std::fprintf(stderr, "\n  cost model (%zu points, %zu rounds): worst point %.0f %% off it\n",
-                 direct.size(), times[0].size(), 100.0 * model.worstResidual);
+                 direct.size(), calibration[0].size(), 100.0 * model.worstResidual);
     return model;
 }
 
@@ -244,7 +249,7 @@ void classifyFronts(const std::string& scene, std::vector<RoundsOfPoint>& points
     in.confidence = kFrontConfidence;
     in.noise = kFrontNoise;
     in.costRatio = [&](std::size_t q, std::size_t p) {
-        return model.ratio(direct[q]->work.count, direct[p]->work.count, kFrontConfidence, drift);
+        return model.ratio(direct[q]->work.count, direct[p]->work.count, kCostConfidence, drift);
     };
     for (const char* key : {"MAE", "MSE"}) {
         const bool mae = key[1] == 'A';
@@ -370,7 +375,31 @@ engine::Status measureSweepPoints(
                 r.rounds.push_back(std::move(p));
             }
         }
-        const engine::metrics::CostModel model = costPoints(points, kFrontConfidence, o.costDrift);
+        // The cost model gets rounds of its own, as vox bench restir's does: the seeds' rounds
+        // are few, and a cost interval from 5 of them (their min-max) moved a front member's
+        // verdict between runs of one build (docs/ACCURACY.md, "Four sweeps of one scene").
+        std::vector<std::size_t> directPoints;
+        for (std::size_t n = 0; n < points.size(); ++n) {
+            if (points[n].direct) directPoints.push_back(n);
+        }
+        std::uint32_t calibrated = 0;
+        const engine::metrics::InterleavedTimes calibration = engine::metrics::measureInterleaved(
+            directPoints.size(),
+            [&](std::size_t k) {
+                const RoundsOfPoint& r = points[directPoints[k]];
+                const auto& rounds = engine::metrics::kCostCalibrationRounds;
+                std::fprintf(stderr,
+                             "\r  %s: cost calibration round %zu (%u to %u + warm-up): %-40s",
+                             scene->name.c_str(), calibrated++ / directPoints.size() + 1,
+                             rounds.minRounds, rounds.maxRounds, r.label->c_str());
+                renderer.setFrameIndex(0);
+                SweepPoint p = measureSetting(renderer, *scene, camera, fs, r.lighting, o.frames,
+                                              *reference, *r.label);
+                return cpuClock ? p.cpuMs : p.fastestMs;
+            },
+            engine::metrics::kCostCalibrationRounds);
+        const engine::metrics::CostModel model =
+            costPoints(points, calibration.times, kCostConfidence, o.costDrift);
         classifyFronts(scene->name, points, model, o.costDrift);
         std::fflush(stdout);  // before the chart script's lines
         std::size_t next = 0, nextSkipped = 0;
