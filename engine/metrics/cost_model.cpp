@@ -136,12 +136,17 @@ MedianInterval CostModel::ratio(std::span<const double> a, std::span<const doubl
     out.median = cost(a) / cost(b);
     out.low = std::min(out.low, out.median);
     out.high = std::max(out.high, out.median);
-    if (drift > 0.0 && out.median > 0.0) {
-        const auto [lowest, highest] = driftRange(a, b, drift);
-        out.low *= lowest / out.median;
-        out.high *= highest / out.median;
-    }
-    return out;
+    return widenByDrift(out, a, b, drift);
+}
+
+MedianInterval CostModel::widenByDrift(MedianInterval m, std::span<const double> a,
+                                       std::span<const double> b, double drift) const {
+    const double modelled = cost(b) > 0.0 ? cost(a) / cost(b) : 0.0;
+    if (!(drift > 0.0) || !(modelled > 0.0) || !(m.median > 0.0)) return m;
+    const auto [lowest, highest] = driftRange(a, b, drift);
+    m.low = std::min(m.low, m.median * lowest / modelled);
+    m.high = std::max(m.high, m.median * highest / modelled);
+    return m;
 }
 
 CostModel fitCostModel(const std::vector<std::vector<double>>& counts,

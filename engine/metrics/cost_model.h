@@ -40,15 +40,22 @@ struct CostModel {
 
     // The cost of `counts` (one per kind) under the medians' fit.
     double cost(std::span<const double> counts) const;
-    // cost(a) / cost(b): the estimate as median, the rounds' fits' sign-test interval around it.
-    // `drift` widens that interval for what the rounds cannot see: the kinds' relative costs
-    // differ between runs with what else runs on the cores (a light sample's cost moved 1.29x
-    // between runs that each fitted it to a few per cent). Each kind's cost may then be off this
-    // run's fit by a factor up to (1 + drift) either way, independently; the ratio's extremes over
-    // that box are at its corners (a ratio of two linear forms is monotone along every axis), and
-    // they scale the interval's ends. Two points with the same work keep a ratio of exactly 1.
+    // cost(a) / cost(b): the estimate as median, the rounds' fits' sign-test interval around it,
+    // widened by the drift (widenByDrift).
     MedianInterval ratio(std::span<const double> a, std::span<const double> b, double confidence,
                          double drift = 0.0) const;
+    // `m`, an interval of cost(a) / cost(b) from this run's rounds, widened for what the rounds
+    // cannot see: the kinds' relative costs differ between runs with what else runs on the cores
+    // (a light sample's cost moved 1.29x between runs that each fitted it to a few per cent).
+    // Each kind's cost may be off this run's fit by a factor up to (1 + drift) either way,
+    // independently; the ratio's extremes over that box are at its corners (a ratio of two linear
+    // forms is monotone along every axis), taken relative to m's median. The result spans both:
+    // the rounds' interval and the box. Not their product: the drift is the spread of whole runs'
+    // fits, noise included, and scaling the rounds' ends by it counted that noise twice — and
+    // made an end move with a run's slowest rounds, which flipped a sweep's front between runs
+    // (docs/ACCURACY.md). Two points with the same work keep exactly m.
+    MedianInterval widenByDrift(MedianInterval m, std::span<const double> a,
+                                std::span<const double> b, double drift) const;
     // The extremes of cost(a) / cost(b) over that box alone: {lowest, highest}.
     std::pair<double, double> driftRange(std::span<const double> a, std::span<const double> b,
                                          double drift) const;

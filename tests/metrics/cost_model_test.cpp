@@ -8,6 +8,7 @@
 
 using engine::metrics::CostModel;
 using engine::metrics::fitCostModel;
+using engine::metrics::MedianInterval;
 
 namespace {
 
@@ -143,4 +144,30 @@ TEST(CostModel, DriftWidensARatioByItsKindsRelativeCostsOnly) {
     // No drift: the rounds' interval as before.
     auto none = m.ratio(more, mix, 0.5);
     EXPECT_DOUBLE_EQ(none.low, none.high);
+}
+
+TEST(CostModel, DriftAndTheRoundsIntervalSpanBothNotTheirProduct) {
+    CostModel m;
+    m.perKind = {1.0, 1.0};
+    const std::vector<double> k0 = {1.0, 0.0}, k1 = {0.0, 1.0};
+    // The box puts kind 1 over kind 0 at 1/1.44 .. 1.44 of the fit's ratio (1 here).
+    MedianInterval rounds{0.9, 1.0, 1.1, 0.97, 16};
+    auto w = m.widenByDrift(rounds, k1, k0, 0.2);
+    EXPECT_DOUBLE_EQ(w.median, 1.0);
+    EXPECT_NEAR(w.low, 1.0 / 1.44, 1e-12);  // not 0.9 / 1.44: the drift is the spread of whole
+    EXPECT_NEAR(w.high, 1.44, 1e-12);       // runs' fits, their rounds' noise included
+    // A rounds' interval wider than the box keeps its ends (a noisy run says so).
+    MedianInterval wide{0.5, 1.0, 2.0, 0.97, 16};
+    auto kept = m.widenByDrift(wide, k1, k0, 0.2);
+    EXPECT_DOUBLE_EQ(kept.low, 0.5);
+    EXPECT_DOUBLE_EQ(kept.high, 2.0);
+    // A measured ratio (median 1.1) against the model's 1: the box is taken around the median.
+    MedianInterval measured{1.05, 1.1, 1.15, 0.97, 16};
+    auto around = m.widenByDrift(measured, k1, k0, 0.2);
+    EXPECT_NEAR(around.low, 1.1 / 1.44, 1e-12);
+    EXPECT_NEAR(around.high, 1.1 * 1.44, 1e-12);
+    // Same work: the interval as measured, whatever the drift.
+    auto same = m.widenByDrift(rounds, k0, k0, 0.2);
+    EXPECT_DOUBLE_EQ(same.low, 0.9);
+    EXPECT_DOUBLE_EQ(same.high, 1.1);
 }

@@ -260,13 +260,7 @@ engine::metrics::MedianInterval costRatio(const SceneResults& s, std::size_t i, 
         engine::metrics::perSeedRatios(s.calibration[std::size_t(ta)].roundMs,
                                        s.calibration[std::size_t(tb)].roundMs),
         kCostRounds.confidence);
-    const double modelled = s.model.cost(a) / s.model.cost(b);
-    if (ta != tb && modelled > 0.0) {
-        const auto [lowest, highest] = s.model.driftRange(a, b, s.costDrift);
-        m.low *= lowest / modelled;
-        m.high *= highest / modelled;
-    }
-    return m;
+    return ta == tb ? m : s.model.widenByDrift(m, a, b, s.costDrift);
 }
 
 engine::Result<SceneResults> measureScene(const RestirSetup& setup, engine::world::Scene& scene,
