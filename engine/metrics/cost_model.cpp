@@ -140,12 +140,14 @@ MedianInterval CostModel::ratio(std::span<const double> a, std::span<const doubl
 }
 
 MedianInterval CostModel::widenByDrift(MedianInterval m, std::span<const double> a,
-                                       std::span<const double> b, double drift) const {
+                                       std::span<const double> b, double drift,
+                                       double misfit) const {
     const double modelled = cost(b) > 0.0 ? cost(a) / cost(b) : 0.0;
     if (!(drift > 0.0) || !(modelled > 0.0) || !(m.median > 0.0)) return m;
     const auto [lowest, highest] = driftRange(a, b, drift);
-    m.low = std::min(m.low, m.median * lowest / modelled);
-    m.high = std::max(m.high, m.median * highest / modelled);
+    const double f = 1.0 + std::max(misfit, 0.0);
+    m.low = std::min(m.low, m.median * lowest / modelled / f);
+    m.high = std::max(m.high, m.median * highest / modelled * f);
     return m;
 }
 

@@ -166,6 +166,10 @@ TEST(CostModel, DriftAndTheRoundsIntervalSpanBothNotTheirProduct) {
     auto around = m.widenByDrift(measured, k1, k0, 0.2);
     EXPECT_NEAR(around.low, 1.1 / 1.44, 1e-12);
     EXPECT_NEAR(around.high, 1.1 * 1.44, 1e-12);
+    // A measured ratio's misfit widens the box further, either way.
+    auto misfit = m.widenByDrift(measured, k1, k0, 0.2, 0.05);
+    EXPECT_NEAR(misfit.low, 1.1 / 1.44 / 1.05, 1e-12);
+    EXPECT_NEAR(misfit.high, 1.1 * 1.44 * 1.05, 1e-12);
     // Same work: the interval as measured, whatever the drift.
     auto same = m.widenByDrift(rounds, k0, k0, 0.2);
     EXPECT_DOUBLE_EQ(same.low, 0.9);

@@ -255,12 +255,14 @@ engine::metrics::MedianInterval costRatio(const SceneResults& s, std::size_t i, 
     // Both rows were timed as they are, in the same interleaved rounds: their measured ratio, not
     // the model's, which is fitted to all the points at once and misses single ones by a few per
     // cent each (unbiased ÷ biased ReSTIR on the mountain: 1.17 modelled, 1.06-1.10 measured). The
-    // model is for the counts nobody timed. The drift widens it alike.
+    // model is for the counts nobody timed. The drift widens it alike, and so does the model's
+    // worst residual: how far single points stray from the kinds' costs, which moves a measured
+    // ratio between runs as much as the kinds' drift does.
     engine::metrics::MedianInterval m = engine::metrics::medianInterval(
         engine::metrics::perSeedRatios(s.calibration[std::size_t(ta)].roundMs,
                                        s.calibration[std::size_t(tb)].roundMs),
         kCostRounds.confidence);
-    return ta == tb ? m : s.model.widenByDrift(m, a, b, s.costDrift);
+    return ta == tb ? m : s.model.widenByDrift(m, a, b, s.costDrift, s.model.worstResidual);
 }
 
 engine::Result<SceneResults> measureScene(const RestirSetup& setup, engine::world::Scene& scene,
