@@ -281,8 +281,8 @@ void addBenchSweepCommand(CLI::App& bench, int& exitCode) {
         ->capture_default_str()
         ->check(numberIn(engine::wholeRange(2, 1000, "frames")));
     cmd->add_option("--seeds", o->seeds,
-                    "Interleaved rounds per world, one seed each: the errors' spread and the "
-                    "cost model's intervals")
+                    "Interleaved rounds per world, one seed each: the errors' spread (the cost "
+                    "model is calibrated in rounds of its own after them)")
         ->capture_default_str()
         ->check(numberIn(engine::wholeRange(1, 1000, "seeds")));
     cmd->add_option("--cost-drift", o->costDrift,

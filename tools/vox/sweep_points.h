@@ -3,9 +3,10 @@
 // reference with its frame counter restarted — so a point's errors do not depend on which points
 // ran before it, in this process or another, and a job's tasks (sweep_job.h) give the same rows
 // as one process. A world's points are measured in --seeds interleaved rounds (round r: every
-// point with seed r, the order reversed every other round); the direct-light points' cost is the
-// cost model's (counted work at per-kind costs fitted to the rounds, metrics/cost_model.h), with
-// the rounds' interval, and their errors have the seeds' min-max.
+// point with seed r, the order reversed every other round), which give the errors their seeds'
+// min-max; then the direct-light points are timed again in the cost model's calibration rounds
+// (metrics/cost_model.h kCostCalibrationRounds), and their cost is the model's (counted work at
+// the fitted per-kind costs) with its interval.
 #pragma once
 
 #include <cstdint>
