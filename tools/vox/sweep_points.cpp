@@ -388,10 +388,14 @@ engine::Status measureSweepPoints(
             [&](std::size_t k) {
                 const RoundsOfPoint& r = points[directPoints[k]];
                 const auto& rounds = engine::metrics::kCostCalibrationRounds;
-                std::fprintf(stderr,
-                             "\r  %s: cost calibration round %zu (%u to %u + warm-up): %-40s",
-                             scene->name.c_str(), calibrated++ / directPoints.size() + 1,
-                             rounds.minRounds, rounds.maxRounds, r.label->c_str());
+                const std::size_t round = calibrated++ / directPoints.size();
+                const std::string which =
+                    round < rounds.warmupRounds
+                        ? std::string("warm-up")
+                        : fmt::format("round {} ({} to {})", round + 1 - rounds.warmupRounds,
+                                      rounds.minRounds, rounds.maxRounds);
+                std::fprintf(stderr, "\r  %s: cost calibration %s: %-40s", scene->name.c_str(),
+                             which.c_str(), r.label->c_str());
                 renderer.setFrameIndex(0);
                 SweepPoint p = measureSetting(renderer, *scene, camera, fs, r.lighting, o.frames,
                                               *reference, *r.label);
