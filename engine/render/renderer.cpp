@@ -78,8 +78,8 @@ DvfSky& Renderer::dvfSky() { return technique<DvfSky>("sky"); }
 
 std::uint64_t Renderer::frameBytesPerPixel() {
     // The buffers resize() makes, per pixel; keep the two in step.
-    return 2 * sizeof(shared::GBufferTexel) + 2 * sizeof(glm::vec4) + sizeof(std::uint32_t) +
-           sizeof(glm::uvec4);
+    return 2 * sizeof(shared::GBufferTexel) + 2 * sizeof(std::uint32_t) + 2 * sizeof(glm::vec4) +
+           sizeof(std::uint32_t) + sizeof(glm::uvec4);
 }
 
 std::uint64_t Renderer::displayBytesPerPixel() {
@@ -111,6 +111,9 @@ void Renderer::resize(glm::uvec2 size) {
         // Passes that only read it fetch it as uvec4 texels (loadGBuffer): one gather per 16 B on
         // lavapipe, where a storage-buffer read at a lane-varying index loops over the lanes.
         mGBuffers[i].setTexelFormat(VK_FORMAT_R32G32B32A32_UINT);
+        mSurfaceKeys[i] = gpu::Buffer(mCtx, BufferKind::Storage, pixels * sizeof(std::uint32_t),
+                                      i ? "frame.surfaceKeys1" : "frame.surfaceKeys0");
+        mSurfaceKeys[i].setTexelFormat(VK_FORMAT_R32_UINT);
     }
     mRadiance =
         gpu::Buffer(mCtx, BufferKind::Storage, pixels * sizeof(glm::vec4), "frame.radiance");
@@ -210,11 +213,14 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
     prepareFrame(commands.current(), scene, in, frame, result);
 
     gpu::Buffer& gbuffer = mGBuffers[mCurrent];
-    mPrimary.record(commands.current(), {mWorld, mFrameParams, gbuffer}, mSize);
+    mPrimary.record(commands.current(), {mWorld, mFrameParams, gbuffer, mSurfaceKeys[mCurrent]},
+                    mSize);
     const FrameBuffers buffers{{mWorld, mGpuEmitters},
                                mFrameParams,
                                gbuffer,
                                mGBuffers[mCurrent ^ 1u],
+                               mSurfaceKeys[mCurrent],
+                               mSurfaceKeys[mCurrent ^ 1u],
                                mRadiance,
                                mIndirect,
                                mRayStats,

@@ -3,7 +3,7 @@
 // Filtering"): the lighting with the albedo divided out (so texture is not blurred and comes back
 // sharp), averaged with last frame's mean at the point this pixel's surface was then (the
 // G-buffer's motion vector), over history texels that saw the same surface plane
-// (common/surface_key.glsl). Per pixel it keeps the mean, its frame count and the first two
+// (common/surface_key.glsl; last frame's keys as primary rays wrote them). Per pixel it keeps the mean, its frame count and the first two
 // moments of luminance, and writes the signal with its variance for the a-trous passes.
 #extension GL_GOOGLE_include_directive : require
 
@@ -16,7 +16,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = DENOISER_BINDING_FRAME, std430) readonly buffer Frame { FrameParams gFrame; };
 layout(set = 0, binding = DENOISER_BINDING_PARAMS, std430) readonly buffer Params { DenoiserParams gParams; };
 layout(set = 0, binding = DENOISER_BINDING_GBUFFER) uniform usamplerBuffer gGBuffer;
-layout(set = 0, binding = DENOISER_BINDING_PREV_GBUFFER) uniform usamplerBuffer gPrevGBuffer;
+layout(set = 0, binding = DENOISER_BINDING_PREV_SURFACE_KEYS) uniform usamplerBuffer gPrevSurfaceKeys;
 layout(set = 0, binding = DENOISER_BINDING_RADIANCE, std430) readonly buffer Radiance { vec4 gRadiance[]; };
 layout(set = 0, binding = DENOISER_BINDING_PREV_HISTORY, std430) readonly buffer PrevHistory { vec4 gPrevHistory[]; };
 layout(set = 0, binding = DENOISER_BINDING_HISTORY, std430) writeonly buffer History { vec4 gHistory[]; };
@@ -57,7 +57,7 @@ void main() {
                 ivec2 q = base + ivec2(dx, dy);
                 if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, ivec2(size)))) continue;
                 uint qi = uint(q.x) + uint(q.y) * size.x;
-                if (surfaceKey(loadGBuffer(gPrevGBuffer, qi)) != key) continue;
+                if (texelFetch(gPrevSurfaceKeys, int(qi)).x != key) continue;
                 float w = (dx == 0 ? 1.0 - f.x : f.x) * (dy == 0 ? 1.0 - f.y : f.y);
                 history += gPrevHistory[qi] * w;
                 moments += gPrevMoments[qi] * w;

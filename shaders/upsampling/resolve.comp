@@ -10,7 +10,7 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "common/gbuffer_load.glsl"
-#include "common/surface_key.glsl"
+#include "common/surface_key.glsl"  // SURFACE_KEY_SKY
 #include "shared/frame_params.h"
 #include "shared/upsampling.h"
 
@@ -24,6 +24,7 @@ layout(set = 0, binding = UPSAMPLING_BINDING_PREV_DISPLAY, std430) readonly buff
 layout(set = 0, binding = UPSAMPLING_BINDING_DISPLAY, std430) writeonly buffer Display { vec4 gDisplay[]; };
 layout(set = 0, binding = UPSAMPLING_BINDING_PREV_KEYS, std430) readonly buffer PrevKeys { uint gPrevKeys[]; };
 layout(set = 0, binding = UPSAMPLING_BINDING_KEYS, std430) writeonly buffer Keys { uint gKeys[]; };
+layout(set = 0, binding = UPSAMPLING_BINDING_SURFACE_KEYS) uniform usamplerBuffer gSurfaceKeys;
 
 vec3 toYCoCg(vec3 c) {
     return vec3(dot(c, vec3(0.25, 0.5, 0.25)), dot(c, vec3(0.5, 0.0, -0.5)), dot(c, vec3(-0.25, 0.5, -0.25)));
@@ -94,9 +95,6 @@ void main() {
     vec3 added = vec3(0.0), colour = vec3(0.0), m1 = vec3(0.0), m2 = vec3(0.0);
     float addedWeight = 0.0, colourWeight = 0.0;
     uint keys[9];
-    uint nearestKey = SURFACE_KEY_SKY;
-    vec4 nearestMotion = vec4(0.0);
-    vec2 nearestSample = vec2(0.0);
     for (int k = 0; k < 9; ++k) {
         ivec2 q = clamp(nearest + ivec2(k % 3 - 1, k / 3 - 1), ivec2(0), render - 1);
         uint qi = uint(q.x) + uint(q.y) * uint(render.x);
@@ -113,15 +111,16 @@ void main() {
         vec3 y = toYCoCg(c);
         m1 += y;
         m2 += y * y;
-        GBufferTexel g = loadGBuffer(gGBuffer, qi);
-        keys[k] = surfaceKey(g);
-        if (k == 4) {
-            nearestKey = keys[k];
-            nearestMotion = g.motion;
-            nearestSample = samplePosition;
-        }
+        // The keys primary rays wrote: one uint per tap, where the G-buffer costs two texels and
+        // the key's arithmetic.
+        keys[k] = texelFetch(gSurfaceKeys, int(qi)).x;
     }
     colour /= colourWeight;
+    // The nearest sample (the middle tap): its surface and motion.
+    ivec2 nearestTexel = clamp(nearest, ivec2(0), render - 1);
+    uint nearestKey = keys[4];
+    vec4 nearestMotion = loadGBuffer(gGBuffer, uint(nearestTexel.x) + uint(nearestTexel.y) * uint(render.x)).motion;
+    vec2 nearestSample = vec2(nearestTexel) + 0.5 + jitter;
 
     // Last frame's display where this pixel's surface was: the nearest sample's motion, from its
     // render position to the display's.
