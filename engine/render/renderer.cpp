@@ -96,6 +96,8 @@ void Renderer::resizeDisplay(glm::uvec2 size, bool written) {
                           ? gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(glm::vec4),
                                         i ? "frame.display1" : "frame.display0")
                           : gpu::Buffer();
+        // The resolve reads last frame's at its history taps as texels.
+        if (written) mDisplay[i].setTexelFormat(VK_FORMAT_R32G32B32A32_SFLOAT);
     }
     mLdr = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(std::uint32_t), "frame.ldr");
 }
@@ -117,6 +119,7 @@ void Renderer::resize(glm::uvec2 size) {
     }
     mRadiance =
         gpu::Buffer(mCtx, BufferKind::Storage, pixels * sizeof(glm::vec4), "frame.radiance");
+    mRadiance.setTexelFormat(VK_FORMAT_R32G32B32A32_SFLOAT);  // the resolve's taps
     mRayStats =
         gpu::Buffer(mCtx, BufferKind::Storage, pixels * sizeof(glm::uvec4), "frame.rayStats");
     mIndirect =

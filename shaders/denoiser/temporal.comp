@@ -18,9 +18,11 @@ layout(set = 0, binding = DENOISER_BINDING_PARAMS, std430) readonly buffer Param
 layout(set = 0, binding = DENOISER_BINDING_GBUFFER) uniform usamplerBuffer gGBuffer;
 layout(set = 0, binding = DENOISER_BINDING_PREV_SURFACE_KEYS) uniform usamplerBuffer gPrevSurfaceKeys;
 layout(set = 0, binding = DENOISER_BINDING_RADIANCE, std430) readonly buffer Radiance { vec4 gRadiance[]; };
-layout(set = 0, binding = DENOISER_BINDING_PREV_HISTORY, std430) readonly buffer PrevHistory { vec4 gPrevHistory[]; };
+// Last frame's history is read at other pixels' indices: as texels (one gather per tap on
+// lavapipe, where a storage-buffer read at a lane-varying index is a loop over the lanes).
+layout(set = 0, binding = DENOISER_BINDING_PREV_HISTORY) uniform samplerBuffer gPrevHistory;
 layout(set = 0, binding = DENOISER_BINDING_HISTORY, std430) writeonly buffer History { vec4 gHistory[]; };
-layout(set = 0, binding = DENOISER_BINDING_PREV_MOMENTS, std430) readonly buffer PrevMoments { vec2 gPrevMoments[]; };
+layout(set = 0, binding = DENOISER_BINDING_PREV_MOMENTS) uniform samplerBuffer gPrevMoments;
 layout(set = 0, binding = DENOISER_BINDING_MOMENTS, std430) writeonly buffer Moments { vec2 gMoments[]; };
 layout(set = 0, binding = DENOISER_BINDING_FILTERED, std430) writeonly buffer Filtered { vec4 gFiltered[]; };
 
@@ -59,8 +61,8 @@ void main() {
                 uint qi = uint(q.x) + uint(q.y) * size.x;
                 if (texelFetch(gPrevSurfaceKeys, int(qi)).x != key) continue;
                 float w = (dx == 0 ? 1.0 - f.x : f.x) * (dy == 0 ? 1.0 - f.y : f.y);
-                history += gPrevHistory[qi] * w;
-                moments += gPrevMoments[qi] * w;
+                history += texelFetch(gPrevHistory, int(qi)) * w;
+                moments += texelFetch(gPrevMoments, int(qi)).xy * w;
                 weight += w;
             }
         }

@@ -48,6 +48,10 @@ void Denoiser::prepare(const FrameChanges& changes, const FrameInput& in, gpu::U
                                       "denoise.moments");
             mFiltered[i] = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(glm::vec4),
                                        "denoise.filtered");
+            // The passes read them at their taps as texels (shaders/denoiser/).
+            mHistory[i].setTexelFormat(VK_FORMAT_R32G32B32A32_SFLOAT);
+            mMoments[i].setTexelFormat(VK_FORMAT_R32G32_SFLOAT);
+            mFiltered[i].setTexelFormat(VK_FORMAT_R32G32B32A32_SFLOAT);
         }
         mRestart = true;
     }
