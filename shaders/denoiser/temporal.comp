@@ -3,8 +3,9 @@
 // Filtering"): the lighting with the albedo divided out (so texture is not blurred and comes back
 // sharp), averaged with last frame's mean at the point this pixel's surface was then (the
 // G-buffer's motion vector), over history texels that saw the same surface plane
-// (common/surface_key.glsl; last frame's keys as primary rays wrote them). Per pixel it keeps the mean, its frame count and the first two
-// moments of luminance, and writes the signal with its variance for the a-trous passes.
+// (common/surface_key.glsl; last frame's keys as primary rays wrote them). Per pixel it keeps the
+// mean, its frame count and the first two moments of luminance, and writes the signal with its
+// variance for the a-trous passes.
 #extension GL_GOOGLE_include_directive : require
 
 #include "common/surface.glsl"
