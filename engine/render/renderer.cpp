@@ -78,8 +78,8 @@ DvfSky& Renderer::dvfSky() { return technique<DvfSky>("sky"); }
 
 std::uint64_t Renderer::frameBytesPerPixel() {
     // The buffers resize() makes, per pixel; keep the two in step.
-    return 2 * sizeof(shared::GBufferTexel) + 2 * sizeof(glm::vec4) + sizeof(std::uint32_t) +
-           sizeof(glm::uvec4);
+    return 2 * sizeof(shared::GBufferTexel) + 2 * sizeof(std::uint32_t) + 2 * sizeof(glm::vec4) +
+           sizeof(std::uint32_t) + sizeof(glm::uvec4);
 }
 
 std::uint64_t Renderer::displayBytesPerPixel() {
@@ -96,6 +96,8 @@ void Renderer::resizeDisplay(glm::uvec2 size, bool written) {
                           ? gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(glm::vec4),
                                         i ? "frame.display1" : "frame.display0")
                           : gpu::Buffer();
+        // The resolve reads last frame's at its history taps as texels.
+        if (written) mDisplay[i].setTexelFormat(VK_FORMAT_R32G32B32A32_SFLOAT);
     }
     mLdr = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(std::uint32_t), "frame.ldr");
 }
@@ -111,9 +113,13 @@ void Renderer::resize(glm::uvec2 size) {
         // Passes that only read it fetch it as uvec4 texels (loadGBuffer): one gather per 16 B on
         // lavapipe, where a storage-buffer read at a lane-varying index loops over the lanes.
         mGBuffers[i].setTexelFormat(VK_FORMAT_R32G32B32A32_UINT);
+        mSurfaceKeys[i] = gpu::Buffer(mCtx, BufferKind::Storage, pixels * sizeof(std::uint32_t),
+                                      i ? "frame.surfaceKeys1" : "frame.surfaceKeys0");
+        mSurfaceKeys[i].setTexelFormat(VK_FORMAT_R32_UINT);
     }
     mRadiance =
         gpu::Buffer(mCtx, BufferKind::Storage, pixels * sizeof(glm::vec4), "frame.radiance");
+    mRadiance.setTexelFormat(VK_FORMAT_R32G32B32A32_SFLOAT);  // the resolve's taps
     mRayStats =
         gpu::Buffer(mCtx, BufferKind::Storage, pixels * sizeof(glm::uvec4), "frame.rayStats");
     mIndirect =
@@ -210,11 +216,14 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
     prepareFrame(commands.current(), scene, in, frame, result);
 
     gpu::Buffer& gbuffer = mGBuffers[mCurrent];
-    mPrimary.record(commands.current(), {mWorld, mFrameParams, gbuffer}, mSize);
+    mPrimary.record(commands.current(), {mWorld, mFrameParams, gbuffer, mSurfaceKeys[mCurrent]},
+                    mSize);
     const FrameBuffers buffers{{mWorld, mGpuEmitters},
                                mFrameParams,
                                gbuffer,
                                mGBuffers[mCurrent ^ 1u],
+                               mSurfaceKeys[mCurrent],
+                               mSurfaceKeys[mCurrent ^ 1u],
                                mRadiance,
                                mIndirect,
                                mRayStats,

@@ -134,6 +134,7 @@ private:
     gpu::Buffer mFrameParams, mRadiance, mLdr, mRayStats, mIndirect;
     gpu::Buffer mExposure;  // shared::ExposureState: the tonemap's exposure when it is automatic
     gpu::Buffer mGBuffers[2];
+    gpu::Buffer mSurfaceKeys[2];  // each G-buffer's surface keys (uint per pixel)
     glm::uvec2 mDisplaySize{0};
     glm::uvec2 mRequestedDisplay{0};  // the display size the memory was last checked for
     gpu::Buffer mDisplay[2];     // the display image and last frame's, when a technique writes it

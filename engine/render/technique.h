@@ -69,16 +69,18 @@ struct FrameInput {
 
 // The frame's buffers that the passes of different techniques hand each other.
 struct FrameBuffers {
-    SceneBindings scene;             // the world and the emitter list
-    const gpu::Buffer& frameParams;  // FrameParams
-    const gpu::Buffer& gbuffer;      // this frame's G-buffer (primary rays)
-    const gpu::Buffer& prevGbuffer;  // last frame's
-    gpu::Buffer& radiance;           // the direct light, then every term added to it
-    gpu::Buffer& indirect;           // the indirect term alone
-    gpu::Buffer& rayStats;           // preview: steps and rays per pixel
-    gpu::Buffer& exposure;           // the display's ExposureState: auto exposure writes it
-    gpu::Buffer& display;            // the display image at displaySize, when one is planned
-    const gpu::Buffer& prevDisplay;  // last frame's
+    SceneBindings scene;                 // the world and the emitter list
+    const gpu::Buffer& frameParams;      // FrameParams
+    const gpu::Buffer& gbuffer;          // this frame's G-buffer (primary rays)
+    const gpu::Buffer& prevGbuffer;      // last frame's
+    const gpu::Buffer& surfaceKeys;      // this frame's surface key per pixel (primary rays)
+    const gpu::Buffer& prevSurfaceKeys;  // last frame's
+    gpu::Buffer& radiance;               // the direct light, then every term added to it
+    gpu::Buffer& indirect;               // the indirect term alone
+    gpu::Buffer& rayStats;               // preview: steps and rays per pixel
+    gpu::Buffer& exposure;               // the display's ExposureState: auto exposure writes it
+    gpu::Buffer& display;                // the display image at displaySize, when one is planned
+    const gpu::Buffer& prevDisplay;      // last frame's
     glm::uvec2 size;
     glm::uvec2 displaySize;
     std::uint32_t parity;  // which of a ping-pong pair is this frame's (0 or 1)

@@ -17,8 +17,10 @@ layout(set = 0, binding = DENOISER_ATROUS_BINDING_FRAME, std430) readonly buffer
 layout(set = 0, binding = DENOISER_ATROUS_BINDING_PARAMS, std430) readonly buffer Params { DenoiserParams gParams; };
 layout(set = 0, binding = DENOISER_ATROUS_BINDING_GBUFFER) uniform usamplerBuffer gGBuffer;
 layout(set = 0, binding = DENOISER_ATROUS_BINDING_RADIANCE, std430) buffer Radiance { vec4 gRadiance[]; };
-layout(set = 0, binding = DENOISER_ATROUS_BINDING_INPUT, std430) readonly buffer Input { vec4 gInput[]; };
+// The input is read at the taps' indices: as texels (one gather per tap on lavapipe).
+layout(set = 0, binding = DENOISER_ATROUS_BINDING_INPUT) uniform samplerBuffer gInput;
 layout(set = 0, binding = DENOISER_ATROUS_BINDING_OUTPUT, std430) writeonly buffer Output { vec4 gOutput[]; };
+layout(set = 0, binding = DENOISER_ATROUS_BINDING_SURFACE_KEYS) uniform usamplerBuffer gSurfaceKeys;
 
 
 void main() {
@@ -26,11 +28,11 @@ void main() {
     uvec2 size = gFrame.imageSize.xy;
     if (any(greaterThanEqual(pixel, size))) return;
     uint index = pixel.x + pixel.y * size.x;
-    GBufferTexel g = loadGBuffer(gGBuffer, index);
-    uint key = surfaceKey(g);
+    // The keys primary rays wrote: a uint per tap; the G-buffer only for the remodulation.
+    uint key = texelFetch(gSurfaceKeys, int(index)).x;
     if (key == SURFACE_KEY_SKY) return;  // the radiance keeps the sky
 
-    vec4 centre = gInput[index];
+    vec4 centre = texelFetch(gInput, int(index));
     float lum = luminance(centre.rgb);
     // Luminance edges count in standard deviations of the signal; a converged signal keeps them.
     float sigma = 4.0 * sqrt(max(centre.a, 0.0)) + 1.0e-4;
@@ -43,8 +45,8 @@ void main() {
             ivec2 q = ivec2(pixel) + ivec2(dx, dy) * step;
             if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, ivec2(size)))) continue;
             uint qi = uint(q.x) + uint(q.y) * size.x;
-            vec4 c = gInput[qi];
-            if (qi != index && surfaceKey(loadGBuffer(gGBuffer, qi)) != key) continue;
+            vec4 c = texelFetch(gInput, int(qi));
+            if (qi != index && texelFetch(gSurfaceKeys, int(qi)).x != key) continue;
             float w = kernel[dx + 1] * kernel[dy + 1] * exp(-abs(luminance(c.rgb) - lum) / sigma);
             sum += c.rgb * w;
             weightSum += w;
@@ -54,7 +56,7 @@ void main() {
     vec4 filtered = vec4(sum / weightSum, varianceSum / (weightSum * weightSum));
     gOutput[index] = filtered;
     if ((gParams.flags & DENOISER_LAST) != 0u) {
-        Surface s = surfaceFrom(g);
+        Surface s = surfaceFrom(loadGBuffer(gGBuffer, index));
         gRadiance[index] = vec4(s.emission + max(s.albedo, vec3(DENOISER_MIN_ALBEDO)) * filtered.rgb, 1.0);
     }
 }

@@ -3,8 +3,9 @@
 // Filtering"): the lighting with the albedo divided out (so texture is not blurred and comes back
 // sharp), averaged with last frame's mean at the point this pixel's surface was then (the
 // G-buffer's motion vector), over history texels that saw the same surface plane
-// (common/surface_key.glsl). Per pixel it keeps the mean, its frame count and the first two
-// moments of luminance, and writes the signal with its variance for the a-trous passes.
+// (common/surface_key.glsl; last frame's keys as primary rays wrote them). Per pixel it keeps the
+// mean, its frame count and the first two moments of luminance, and writes the signal with its
+// variance for the a-trous passes.
 #extension GL_GOOGLE_include_directive : require
 
 #include "common/surface.glsl"
@@ -16,11 +17,13 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = DENOISER_BINDING_FRAME, std430) readonly buffer Frame { FrameParams gFrame; };
 layout(set = 0, binding = DENOISER_BINDING_PARAMS, std430) readonly buffer Params { DenoiserParams gParams; };
 layout(set = 0, binding = DENOISER_BINDING_GBUFFER) uniform usamplerBuffer gGBuffer;
-layout(set = 0, binding = DENOISER_BINDING_PREV_GBUFFER) uniform usamplerBuffer gPrevGBuffer;
+layout(set = 0, binding = DENOISER_BINDING_PREV_SURFACE_KEYS) uniform usamplerBuffer gPrevSurfaceKeys;
 layout(set = 0, binding = DENOISER_BINDING_RADIANCE, std430) readonly buffer Radiance { vec4 gRadiance[]; };
-layout(set = 0, binding = DENOISER_BINDING_PREV_HISTORY, std430) readonly buffer PrevHistory { vec4 gPrevHistory[]; };
+// Last frame's history is read at other pixels' indices: as texels (one gather per tap on
+// lavapipe, where a storage-buffer read at a lane-varying index is a loop over the lanes).
+layout(set = 0, binding = DENOISER_BINDING_PREV_HISTORY) uniform samplerBuffer gPrevHistory;
 layout(set = 0, binding = DENOISER_BINDING_HISTORY, std430) writeonly buffer History { vec4 gHistory[]; };
-layout(set = 0, binding = DENOISER_BINDING_PREV_MOMENTS, std430) readonly buffer PrevMoments { vec2 gPrevMoments[]; };
+layout(set = 0, binding = DENOISER_BINDING_PREV_MOMENTS) uniform samplerBuffer gPrevMoments;
 layout(set = 0, binding = DENOISER_BINDING_MOMENTS, std430) writeonly buffer Moments { vec2 gMoments[]; };
 layout(set = 0, binding = DENOISER_BINDING_FILTERED, std430) writeonly buffer Filtered { vec4 gFiltered[]; };
 
@@ -57,10 +60,10 @@ void main() {
                 ivec2 q = base + ivec2(dx, dy);
                 if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, ivec2(size)))) continue;
                 uint qi = uint(q.x) + uint(q.y) * size.x;
-                if (surfaceKey(loadGBuffer(gPrevGBuffer, qi)) != key) continue;
+                if (texelFetch(gPrevSurfaceKeys, int(qi)).x != key) continue;
                 float w = (dx == 0 ? 1.0 - f.x : f.x) * (dy == 0 ? 1.0 - f.y : f.y);
-                history += gPrevHistory[qi] * w;
-                moments += gPrevMoments[qi] * w;
+                history += texelFetch(gPrevHistory, int(qi)) * w;
+                moments += texelFetch(gPrevMoments, int(qi)).xy * w;
                 weight += w;
             }
         }

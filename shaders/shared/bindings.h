@@ -32,6 +32,8 @@ SHARED_CONST uint LIT_PASS_BINDING_FIRST = 9u;
 SHARED_CONST uint PRIMARY_BINDING_FRAME = PASS_BINDING_FIRST + 0u;  // FrameParams
 SHARED_CONST uint PRIMARY_BINDING_GBUFFER =
     PASS_BINDING_FIRST + 1u;  // GBufferTexel per pixel, written
+// uint per pixel, written: its surface key (common/surface_key.glsl), for the display's passes
+SHARED_CONST uint PRIMARY_BINDING_SURFACE_KEYS = PASS_BINDING_FIRST + 2u;
 // world/shade_sun.comp (preview shading)
 SHARED_CONST uint SUN_BINDING_FRAME = PASS_BINDING_FIRST + 0u;      // FrameParams
 SHARED_CONST uint SUN_BINDING_GBUFFER = PASS_BINDING_FIRST + 1u;    // GBufferTexel per pixel

@@ -21,13 +21,15 @@ SHARED_ASSERT_SIZE(UpsamplingParams, 16);
 
 SHARED_CONST uint UPSAMPLING_BINDING_FRAME = 0u;     // FrameParams
 SHARED_CONST uint UPSAMPLING_BINDING_PARAMS = 1u;    // UpsamplingParams
-SHARED_CONST uint UPSAMPLING_BINDING_GBUFFER = 2u;   // this frame's G-buffer (render size)
+SHARED_CONST uint UPSAMPLING_BINDING_GBUFFER = 2u;   // this frame's G-buffer (render size): motion
 SHARED_CONST uint UPSAMPLING_BINDING_RADIANCE = 3u;  // vec4 per render pixel
 SHARED_CONST uint UPSAMPLING_BINDING_PREV_DISPLAY =
     4u;                                               // vec4 per display pixel: rgb, history weight
 SHARED_CONST uint UPSAMPLING_BINDING_DISPLAY = 5u;    // the same, written
 SHARED_CONST uint UPSAMPLING_BINDING_PREV_KEYS = 6u;  // uint per display pixel: its surface's key
 SHARED_CONST uint UPSAMPLING_BINDING_KEYS = 7u;       // the same, written
+// uint per render pixel: the surface keys primary rays wrote (uint texels)
+SHARED_CONST uint UPSAMPLING_BINDING_SURFACE_KEYS = 8u;
 
 SHARED_END
 

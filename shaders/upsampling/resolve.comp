@@ -10,7 +10,7 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "common/gbuffer_load.glsl"
-#include "common/surface_key.glsl"
+#include "common/surface_key.glsl"  // SURFACE_KEY_SKY
 #include "shared/frame_params.h"
 #include "shared/upsampling.h"
 
@@ -19,11 +19,14 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = UPSAMPLING_BINDING_FRAME, std430) readonly buffer Frame { FrameParams gFrame; };
 layout(set = 0, binding = UPSAMPLING_BINDING_PARAMS, std430) readonly buffer Params { UpsamplingParams gParams; };
 layout(set = 0, binding = UPSAMPLING_BINDING_GBUFFER) uniform usamplerBuffer gGBuffer;
-layout(set = 0, binding = UPSAMPLING_BINDING_RADIANCE, std430) readonly buffer Radiance { vec4 gRadiance[]; };
-layout(set = 0, binding = UPSAMPLING_BINDING_PREV_DISPLAY, std430) readonly buffer PrevDisplay { vec4 gPrevDisplay[]; };
+// What it only reads at other pixels' indices it reads as texels (one gather per tap on lavapipe,
+// where a storage-buffer read at a lane-varying index is a loop over the lanes).
+layout(set = 0, binding = UPSAMPLING_BINDING_RADIANCE) uniform samplerBuffer gRadiance;
+layout(set = 0, binding = UPSAMPLING_BINDING_PREV_DISPLAY) uniform samplerBuffer gPrevDisplay;
 layout(set = 0, binding = UPSAMPLING_BINDING_DISPLAY, std430) writeonly buffer Display { vec4 gDisplay[]; };
-layout(set = 0, binding = UPSAMPLING_BINDING_PREV_KEYS, std430) readonly buffer PrevKeys { uint gPrevKeys[]; };
+layout(set = 0, binding = UPSAMPLING_BINDING_PREV_KEYS) uniform usamplerBuffer gPrevKeys;
 layout(set = 0, binding = UPSAMPLING_BINDING_KEYS, std430) writeonly buffer Keys { uint gKeys[]; };
+layout(set = 0, binding = UPSAMPLING_BINDING_SURFACE_KEYS) uniform usamplerBuffer gSurfaceKeys;
 
 vec3 toYCoCg(vec3 c) {
     return vec3(dot(c, vec3(0.25, 0.5, 0.25)), dot(c, vec3(0.5, 0.0, -0.5)), dot(c, vec3(-0.25, 0.5, -0.25)));
@@ -66,7 +69,7 @@ vec4 catmullRomHistory(vec2 p, ivec2 display) {
         int y = clamp(base.y - 1 + j, 0, last.y);
         for (int i = 0; i < 4; ++i) {
             int x = clamp(base.x - 1 + i, 0, last.x);
-            vec4 h = gPrevDisplay[uint(x) + uint(y) * uint(display.x)];
+            vec4 h = texelFetch(gPrevDisplay, x + y * display.x);
             rgb += h.rgb * (wx[i].x * wy[j]);
             if (i == 1 || i == 2) {
                 if (j == 1 || j == 2) weight += h.w * ((i == 1 ? 1.0 - f.x : f.x) * (j == 1 ? 1.0 - f.y : f.y));
@@ -94,13 +97,10 @@ void main() {
     vec3 added = vec3(0.0), colour = vec3(0.0), m1 = vec3(0.0), m2 = vec3(0.0);
     float addedWeight = 0.0, colourWeight = 0.0;
     uint keys[9];
-    uint nearestKey = SURFACE_KEY_SKY;
-    vec4 nearestMotion = vec4(0.0);
-    vec2 nearestSample = vec2(0.0);
     for (int k = 0; k < 9; ++k) {
         ivec2 q = clamp(nearest + ivec2(k % 3 - 1, k / 3 - 1), ivec2(0), render - 1);
         uint qi = uint(q.x) + uint(q.y) * uint(render.x);
-        vec3 c = max(gRadiance[qi].rgb, vec3(0.0));
+        vec3 c = max(texelFetch(gRadiance, int(qi)).rgb, vec3(0.0));
         vec2 samplePosition = vec2(q) + 0.5 + jitter;
         vec2 d = samplePosition - centre;
         float w = exp(-4.5 * dot(d, d));
@@ -113,15 +113,16 @@ void main() {
         vec3 y = toYCoCg(c);
         m1 += y;
         m2 += y * y;
-        GBufferTexel g = loadGBuffer(gGBuffer, qi);
-        keys[k] = surfaceKey(g);
-        if (k == 4) {
-            nearestKey = keys[k];
-            nearestMotion = g.motion;
-            nearestSample = samplePosition;
-        }
+        // The keys primary rays wrote: one uint per tap, where the G-buffer costs two texels and
+        // the key's arithmetic.
+        keys[k] = texelFetch(gSurfaceKeys, int(qi)).x;
     }
     colour /= colourWeight;
+    // The nearest sample (the middle tap): its surface and motion.
+    ivec2 nearestTexel = clamp(nearest, ivec2(0), render - 1);
+    uint nearestKey = keys[4];
+    vec4 nearestMotion = loadGBuffer(gGBuffer, uint(nearestTexel.x) + uint(nearestTexel.y) * uint(render.x)).motion;
+    vec2 nearestSample = vec2(nearestTexel) + 0.5 + jitter;
 
     // Last frame's display where this pixel's surface was: the nearest sample's motion, from its
     // render position to the display's.
@@ -132,7 +133,7 @@ void main() {
         if (nearestMotion.w > 0.0) previous += (nearestMotion.xy - nearestSample) / scale;
         ivec2 keyTexel = ivec2(floor(previous));
         if (all(greaterThanEqual(previous, vec2(0.0))) && all(lessThan(previous, vec2(display)))) {
-            uint previousKey = gPrevKeys[uint(keyTexel.x) + uint(keyTexel.y) * display.x];
+            uint previousKey = texelFetch(gPrevKeys, keyTexel.x + keyTexel.y * int(display.x)).x;
             bool seen = false;
             inside = true;
             for (int k = 0; k < 9; ++k) {

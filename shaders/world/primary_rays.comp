@@ -1,17 +1,21 @@
 #version 460
 // Primary rays: one camera ray per pixel through the static world and the dynamic grid, written
 // to the G-buffer with the set the voxel belongs to and a motion vector that follows moving
-// objects.
+// objects, and the pixel's surface key to a buffer of its own: the resolve and the denoiser
+// compare keys at every filter tap and history texel, and one uint per tap is a quarter of the
+// G-buffer texels (and none of the arithmetic) that computing it there would cost.
 #extension GL_GOOGLE_include_directive : require
 
 #include "common/scene_trace.glsl"
 #include "common/camera.glsl"
+#include "common/surface_key.glsl"
 #include "shared/gbuffer.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(set = 0, binding = PRIMARY_BINDING_FRAME, std430) readonly buffer Params { FrameParams gFrame; };
 layout(set = 0, binding = PRIMARY_BINDING_GBUFFER, std430) writeonly buffer GBuffer { GBufferTexel gGBuffer[]; };
+layout(set = 0, binding = PRIMARY_BINDING_SURFACE_KEYS, std430) writeonly buffer SurfaceKeys { uint gSurfaceKeys[]; };
 
 void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;
@@ -47,4 +51,5 @@ void main() {
         }
     }
     gGBuffer[index] = texel;
+    gSurfaceKeys[index] = surfaceKey(texel);
 }

@@ -52,6 +52,21 @@ else
     fail "local job:"; cat "$tmp/a.log"
 fi
 
+# --render-scale reaches the tasks and the job's settings: a task's frame is one process's at that
+# scale (raw preview: lit and written at 32x24).
+"$vox" "${common[@]}" --render-scale 0.5 --out "$tmp/half_whole" >"$tmp/half_whole.log" 2>&1 ||
+    { cat "$tmp/half_whole.log"; fail "single capture at --render-scale 0.5"; }
+if job half --render-scale 0.5; then
+    for i in 00001 00005 00010; do
+        cmp -s "$tmp/half_whole/frame_$i.png" "$tmp/half/frame_$i.png" ||
+            fail "--render-scale 0.5: the job's frame_$i.png differs from one process's"
+    done
+    grep -q '"render_scale"' "$tmp/half/job.json" || fail "the job's settings do not record --render-scale"
+    echo "ok: --render-scale 0.5 reaches the job's tasks (frames as one process's)"
+else
+    fail "local job at --render-scale 0.5:"; cat "$tmp/half.log"
+fi
+
 # 2. Damage: a truncated frame, a deleted one, one recorded with other settings.
 truncate -s 100 "$tmp/a/frame_00001.png"
 rm "$tmp/a/frame_00006.png"

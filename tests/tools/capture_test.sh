@@ -79,6 +79,23 @@ run w --frames 9: --warmup 4 && {
     echo "ok: --frames 9: --warmup 4 wrote 3 frames"
 }
 
+# --render-scale as in vox render: the lighting at a fraction of --size, the reconstruction
+# (--display upsampled) resolving it to --size; raw frames are the lit image, at the render size.
+png_size() { od -An -tu1 -j16 -N8 "$1" | awk '{ print $3 * 256 + $4 "x" $7 * 256 + $8 }'; }
+run h --render-scale 0.5 --display upsampled --frames 0:1 --warmup 0 && {
+    for f in "$tmp/h"/frame_*.png; do
+        [ "$(png_size "$f")" = 64x48 ] || fail "$(basename "$f") is $(png_size "$f"), want --size 64x48"
+    done
+    grep -q "64x48, lit at 32x24 (--render-scale 0.5)" "$tmp/h.log" || fail "the render size was not reported"
+    rays=$(awk -F, 'NR == 2 { print $12 }' "$tmp/h/capture_00000-00001.csv")
+    [ "$rays" = 768 ] || fail "primary_rays at --render-scale 0.5: '$rays', want 32x24 = 768"
+    echo "ok: --render-scale 0.5 --display upsampled: 64x48 frames lit at 32x24"
+}
+run hr --render-scale 0.5 --frames 0:0 --warmup 0 && {
+    [ "$(png_size "$tmp/hr/frame_00000.png")" = 32x24 ] || fail "a raw frame at --render-scale 0.5 is $(png_size "$tmp/hr/frame_00000.png"), want 32x24"
+    echo "ok: --render-scale 0.5 --display raw: 32x24 frames"
+}
+
 # With ffmpeg on PATH the capture ends with an MP4 of every written frame; without, it says so.
 if command -v ffmpeg >/dev/null && command -v ffprobe >/dev/null; then
     if "$vox" capture "$tmp/yard.toml" --out "$tmp/v" --size 64x48 --method preview >"$tmp/v.log" 2>&1; then
@@ -128,5 +145,7 @@ expect_error "--frames: 5:3 ends before it starts" -- "${c[@]}" --frames 5:3
 expect_error "--frames: the first frame is too small \(min 0\), not -1" -- "${c[@]}" --frames -1:
 expect_error "--frames: the last frame is too small \(min 0\), not -1" -- "${c[@]}" --frames 3:-1
 expect_error "required|--out" -- "$vox" capture "$tmp/yard.toml"
+expect_error "--render-scale: must be positive, not 0; allowed: \[0.0625, 1\]" -- "${c[@]}" --render-scale 0
+expect_error "--render-scale: too large \(max 1\), not 2" -- "${c[@]}" --render-scale 2
 
 [ $failures -eq 0 ] || { echo "$failures failure(s)"; exit 1; }

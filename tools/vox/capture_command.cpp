@@ -63,8 +63,12 @@ int runCapture(const CaptureOptions& o) {
     std::printf("path     %s: %u frames at %g fps (%.2f s), %zu keys, %zu events\n",
                 setup->pathFile.string().c_str(), count, setup->fps, setup->fly.duration,
                 setup->fly.camera.keys().size(), setup->fly.timeline.events().size());
-    std::printf("frames   %u..%u of 0..%u, after %u warm-up frame(s); %ux%u\n", first, last,
+    std::printf("frames   %u..%u of 0..%u, after %u warm-up frame(s); %ux%u", first, last,
                 count - 1, first - start, setup->size.x, setup->size.y);
+    if (setup->renderSize != setup->size)
+        std::printf(", lit at %ux%u (--render-scale %g)", setup->renderSize.x, setup->renderSize.y,
+                    o.renderScale);
+    std::printf("\n");
     std::printf("lighting %s\n", engine::render::describeLighting(setup->lighting).c_str());
     std::fflush(stdout);  // before the progress line on stderr
 
@@ -136,6 +140,7 @@ void addCaptureCommand(CLI::App& app, int& exitCode) {
                     "Path file or name in worlds/paths/ (default: the world's own [path])");
     cmd->add_option("--out", o->out, "Output folder");
     cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
+    addRenderScaleOption(*cmd, o->renderScale);
     cmd->add_option("--fps", o->fps, "Frames per second (default: the path's fps, else 30)")
         ->check(numberIn(engine::world::kFpsRange));
     cmd->add_option("--frames", o->frames,

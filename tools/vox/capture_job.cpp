@@ -71,6 +71,8 @@ std::vector<std::string> taskCommandOf(const CaptureOptions& o, const CaptureSet
                                      absolutePath(setup.scene.sourcePath)};
     if (!o.path.empty()) args.insert(args.end(), {"--path", absolutePath(setup.pathFile)});
     args.insert(args.end(), {"--out", fs::absolute(dir).string(), "--size", o.size});
+    if (o.renderScale != 1.0f)
+        args.insert(args.end(), {"--render-scale", fmt::format("{}", o.renderScale)});
     if (o.fps) args.insert(args.end(), {"--fps", fmt::format("{}", *o.fps)});
     args.insert(args.end(),
                 {"--frames", fmt::format("{}:{}", setup.first, setup.last), "--warmup",
@@ -95,6 +97,8 @@ engine::Json captureSettings(const CaptureOptions& o, const CaptureSetup& setup)
     s["path"] = absolutePath(setup.pathFile);
     s["path_file"] = checksumOrError(setup.pathFile);
     s["size"] = fmt::format("{}x{}", setup.size.x, setup.size.y);
+    // Only when set: the settings of jobs submitted before the option stay theirs.
+    if (o.renderScale != 1.0f) s["render_scale"] = double(o.renderScale);
     s["fps"] = setup.fps;
     s["frames"] = fmt::format("{}:{}", setup.first, setup.last);
     s["path_frames"] = setup.count;

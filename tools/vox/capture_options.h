@@ -16,6 +16,7 @@ struct CaptureOptions {
     std::string path;
     std::string out;
     std::string size = "320x180";
+    float renderScale = 1.0f;   // the lighting's size as a fraction of --size (the frames')
     std::optional<double> fps;  // absent: the path file's
     std::string frames;
     std::uint32_t warmup = 30;

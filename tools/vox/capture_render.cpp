@@ -113,6 +113,7 @@ engine::Result<CaptureSetup> prepareCapture(const CaptureOptions& o) {
     auto size = parseSize(o.size, "--size");
     if (!size) return size.error();
     s.size = *size;
+    s.renderSize = renderSizeOf(s.size, o.renderScale);
     auto scene = loadWorld(o.world);
     if (!scene) return scene.error();
     s.scene = std::move(*scene);
@@ -144,8 +145,8 @@ engine::Result<double> renderCapture(
     engine::render::Renderer renderer(ctx);
     engine::render::FlythroughPlayer player(renderer, setup.scene, setup.fly, setup.fps);
     engine::render::FrameSettings settings;
-    settings.width = setup.size.x;
-    settings.height = setup.size.y;
+    settings.width = setup.renderSize.x;
+    settings.height = setup.renderSize.y;
     settings.displayWidth = setup.size.x;
     settings.displayHeight = setup.size.y;
     settings.exposure = request.exposure;

@@ -33,7 +33,8 @@ struct CaptureSetup {
     double fps = 30.0;
     std::uint32_t count = 0;            // frames of the path at fps
     std::uint32_t first = 0, last = 0;  // --frames, within 0..count-1
-    glm::uvec2 size{0};
+    glm::uvec2 size{0};                 // the frames' (--size)
+    glm::uvec2 renderSize{0};           // the lighting's (--render-scale of size)
     engine::lighting::LightingSettings lighting;
 };
 engine::Result<CaptureSetup> prepareCapture(const CaptureOptions& o);

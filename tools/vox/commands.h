@@ -67,6 +67,11 @@ engine::Result<std::filesystem::path> resolvePathFile(const std::string& arg);
 // Each number goes through the one number check (core/number_check.h): "--size: width must be
 // positive, not -5 (1..8192 pixels)".
 engine::Result<glm::uvec2> parseSize(const std::string& text, const char* option);
+// The lighting's size for a display of `display` pixels at render scale `scale` (--render-scale):
+// rounded, at least one pixel.
+inline glm::uvec2 renderSizeOf(glm::uvec2 display, float scale) {
+    return glm::max(glm::uvec2(1u), glm::uvec2(glm::round(glm::vec2(display) * scale)));
+}
 // "x,y,z", each component within `range`.
 engine::Result<glm::vec3> parseVec3(const std::string& text, const char* option,
                                     const engine::NumberRange& range);

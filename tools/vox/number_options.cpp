@@ -15,4 +15,12 @@ CLI::Validator numberIn(const engine::NumberRange& range) {
         engine::describeRange(range));
 }
 
+void addRenderScaleOption(CLI::App& cmd, float& scale) {
+    cmd.add_option("--render-scale", scale,
+                   "Render resolution as a fraction of --size; the display's reconstruction "
+                   "(--display) resolves it to --size")
+        ->capture_default_str()
+        ->check(numberIn(kRenderScaleRange));
+}
+
 }  // namespace vox

@@ -20,5 +20,11 @@ inline constexpr engine::NumberRange kFrameCountRange = engine::wholeRange(1, 10
 inline constexpr engine::NumberRange kWarmupRange = engine::wholeRange(0, 100000, "frames");
 inline constexpr engine::NumberRange kSamplesRange =
     engine::wholeRange(1, 1000000, "samples per pixel");
+// --render-scale: the lighting's size as a fraction of the display's (render, capture, play).
+inline constexpr engine::NumberRange kRenderScaleRange = engine::closedRange(1.0 / 16.0, 1.0);
+
+// --render-scale of the commands that write images at --size (vox render, vox capture): one help
+// text and one check.
+void addRenderScaleOption(CLI::App& cmd, float& scale);
 
 }  // namespace vox

@@ -24,7 +24,7 @@ void addPlayCommand(CLI::App& app, int& exitCode) {
                     "Render resolution as a fraction of the window's (1/16..1); fixes it (default: "
                     "start at 0.25 and "
                     "adapt to keep frames near --target-ms)")
-        ->check(numberIn(engine::closedRange(1.0 / 16.0, 1.0)));
+        ->check(numberIn(kRenderScaleRange));
     cmd->add_option("--target-ms", o->targetFrameMs,
                     "Frame time the automatic render scale aims at")
         ->capture_default_str()

@@ -170,8 +170,9 @@ int runRender(const RenderOptions& o) {
 
     engine::render::Renderer renderer(**ctx);
     engine::render::FrameSettings settings;
-    settings.width = std::max(1u, std::uint32_t(std::lround((*size).x * o.renderScale)));
-    settings.height = std::max(1u, std::uint32_t(std::lround((*size).y * o.renderScale)));
+    const glm::uvec2 renderSize = renderSizeOf(*size, o.renderScale);
+    settings.width = renderSize.x;
+    settings.height = renderSize.y;
     settings.displayWidth = (*size).x;
     settings.displayHeight = (*size).y;
     settings.exposure = o.exposure;
@@ -238,11 +239,7 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
         ->check(numberIn(kSamplesRange));
     cmd->add_option("--timings", o->timings,
                     "Write per-frame, per-pass GPU milliseconds to this JSON file");
-    cmd->add_option("--render-scale", o->renderScale,
-                    "Render resolution as a fraction of --size; the display's reconstruction "
-                    "(--display) resolves it to --size")
-        ->capture_default_str()
-        ->check(numberIn(engine::closedRange(1.0 / 16.0, 1.0)));
+    addRenderScaleOption(*cmd, o->renderScale);
     addLightingOptions(*cmd, o->lighting);
     cmd->callback([o, cmd, &exitCode] {
         // A fixed --exposure is the exposure: not metered.

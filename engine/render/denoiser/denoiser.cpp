@@ -48,6 +48,10 @@ void Denoiser::prepare(const FrameChanges& changes, const FrameInput& in, gpu::U
                                       "denoise.moments");
             mFiltered[i] = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(glm::vec4),
                                        "denoise.filtered");
+            // The passes read them at their taps as texels (shaders/denoiser/).
+            mHistory[i].setTexelFormat(VK_FORMAT_R32G32B32A32_SFLOAT);
+            mMoments[i].setTexelFormat(VK_FORMAT_R32G32_SFLOAT);
+            mFiltered[i].setTexelFormat(VK_FORMAT_R32G32B32A32_SFLOAT);
         }
         mRestart = true;
     }
@@ -76,13 +80,13 @@ void Denoiser::record(FrameCommands& commands, const FrameBuffers& frame) {
     const std::uint32_t now = frame.parity, then = frame.parity ^ 1u;
     mTemporal.record(
         cmd, frame.scene,
-        {frame.frameParams, mParams[0], frame.gbuffer, frame.prevGbuffer, frame.radiance,
+        {frame.frameParams, mParams[0], frame.gbuffer, frame.prevSurfaceKeys, frame.radiance,
          mHistory[then], mHistory[now], mMoments[then], mMoments[now], mFiltered[0]},
         frame.size);
     for (std::uint32_t i = 0; i < mPasses; ++i) {
         mAtrous.record(cmd, frame.scene,
                        {frame.frameParams, mParams[i + 1], frame.gbuffer, frame.radiance,
-                        mFiltered[i % 2], mFiltered[(i + 1) % 2]},
+                        mFiltered[i % 2], mFiltered[(i + 1) % 2], frame.surfaceKeys},
                        frame.size);
     }
 }

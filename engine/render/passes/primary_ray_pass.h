@@ -1,5 +1,6 @@
 // Primary rays: one camera ray per pixel through the brick grid into the G-buffer (hit voxel,
-// face, material, distance, DDA steps). Shader: shaders/world/primary_rays.comp
+// face, material, distance, DDA steps) and the surface keys the display's passes compare.
+// Shader: shaders/world/primary_rays.comp
 #pragma once
 
 #include "render/passes/compute_pass.h"
@@ -12,11 +13,13 @@ struct PrimaryRayIo {
     const GpuWorld& world;           // read
     const gpu::Buffer& frameParams;  // read
     gpu::Buffer& gbuffer;            // write
+    gpu::Buffer& surfaceKeys;        // write: uint per pixel
     auto bindings() const {
         return joinBindings(
             worldBindings(world),
             std::to_array<PassBinding>({{shared::PRIMARY_BINDING_FRAME, &frameParams},
-                                        {shared::PRIMARY_BINDING_GBUFFER, &gbuffer}}));
+                                        {shared::PRIMARY_BINDING_GBUFFER, &gbuffer},
+                                        {shared::PRIMARY_BINDING_SURFACE_KEYS, &surfaceKeys}}));
     }
 };
 

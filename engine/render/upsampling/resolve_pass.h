@@ -10,21 +10,24 @@ namespace engine::render {
 struct ResolveIo {
     const gpu::Buffer& frameParams;  // read
     const gpu::Buffer& params;       // read: UpsamplingParams
-    const gpu::Buffer& gbuffer;      // read (render size)
+    const gpu::Buffer& gbuffer;      // read (render size): the motion
+    const gpu::Buffer& surfaceKeys;  // read (render size)
     const gpu::Buffer& radiance;     // read (render size)
     const gpu::Buffer& prevDisplay;  // read
     gpu::Buffer& display;            // write
     const gpu::Buffer& prevKeys;     // read
     gpu::Buffer& keys;               // write
     auto bindings() const {
-        return std::to_array<PassBinding>({{shared::UPSAMPLING_BINDING_FRAME, &frameParams},
-                                           {shared::UPSAMPLING_BINDING_PARAMS, &params},
-                                           {shared::UPSAMPLING_BINDING_GBUFFER, &gbuffer},
-                                           {shared::UPSAMPLING_BINDING_RADIANCE, &radiance},
-                                           {shared::UPSAMPLING_BINDING_PREV_DISPLAY, &prevDisplay},
-                                           {shared::UPSAMPLING_BINDING_DISPLAY, &display},
-                                           {shared::UPSAMPLING_BINDING_PREV_KEYS, &prevKeys},
-                                           {shared::UPSAMPLING_BINDING_KEYS, &keys}});
+        return std::to_array<PassBinding>(
+            {{shared::UPSAMPLING_BINDING_FRAME, &frameParams},
+             {shared::UPSAMPLING_BINDING_PARAMS, &params},
+             {shared::UPSAMPLING_BINDING_GBUFFER, &gbuffer},
+             {shared::UPSAMPLING_BINDING_RADIANCE, &radiance},
+             {shared::UPSAMPLING_BINDING_PREV_DISPLAY, &prevDisplay},
+             {shared::UPSAMPLING_BINDING_DISPLAY, &display},
+             {shared::UPSAMPLING_BINDING_PREV_KEYS, &prevKeys},
+             {shared::UPSAMPLING_BINDING_KEYS, &keys},
+             {shared::UPSAMPLING_BINDING_SURFACE_KEYS, &surfaceKeys}});
     }
 };
 

@@ -51,9 +51,11 @@ void TemporalUpsampling::prepare(const FrameChanges& changes, const FrameInput& 
     if (in.displaySize != mDisplaySize) {
         mDisplaySize = in.displaySize;
         const std::uint64_t pixels = std::uint64_t(mDisplaySize.x) * mDisplaySize.y;
-        for (auto& keys : mKeys)
+        for (auto& keys : mKeys) {
             keys = gpu::Buffer(mCtx, gpu::BufferKind::Storage, pixels * sizeof(std::uint32_t),
                                "resolve.keys");
+            keys.setTexelFormat(VK_FORMAT_R32_UINT);  // the resolve reads last frame's as texels
+        }
         mRestart = true;
     }
     const glm::vec2 jitter = in.lighting.display.jitter
@@ -79,8 +81,8 @@ void TemporalUpsampling::prepare(const FrameChanges& changes, const FrameInput& 
 void TemporalUpsampling::record(FrameCommands& commands, const FrameBuffers& frame) {
     const std::uint32_t now = frame.parity, then = now ^ 1u;
     mPass.record(commands.current(),
-                 {frame.frameParams, mParams, frame.gbuffer, frame.radiance, frame.prevDisplay,
-                  frame.display, mKeys[then], mKeys[now]},
+                 {frame.frameParams, mParams, frame.gbuffer, frame.surfaceKeys, frame.radiance,
+                  frame.prevDisplay, frame.display, mKeys[then], mKeys[now]},
                  frame.displaySize);
 }
 
