@@ -23,8 +23,8 @@ struct PlayOptions {
     std::string camera;    // preset to start from; empty: the first
     glm::uvec2 windowSize{1280, 720};
     float renderScale = 0.25f;  // render resolution as a fraction of the window's (the start value)
-    bool autoScale = true;      // then adapt it to keep the GPU time near targetFrameMs
-    double targetFrameMs = 50.0;  // GPU time of the passes that scale with the render size
+    bool autoScale = true;      // then adapt it to keep frames near targetFrameMs
+    double targetFrameMs = 90.0;  // wall time per frame the automatic render scale aims at
     std::string scriptPath;       // replay scripted input (fixed time step, live input ignored)
     std::uint64_t maxFrames = 0;  // quit after this many frames; 0: no limit
     std::string editLogPath;      // write every edit, undo, redo, save and screenshot view here

@@ -40,4 +40,10 @@ std::vector<lighting::KnobValue> playerDefaults(bool autoExposure) {
     return values;
 }
 
+std::vector<lighting::KnobValue> playDefaults() {
+    std::vector<lighting::KnobValue> values = playerDefaults();
+    values.push_back({lighting::knobForOption("indirect"), "cache", "vox play's defaults"});
+    return values;
+}
+
 }  // namespace engine::scene

@@ -24,5 +24,9 @@ Result<lighting::LightingSettings> lightingFor(
 // `vox render`): the image reconstructed at the display's size and denoised, the exposure
 // metered. Without `autoExposure` (a fixed --exposure was given) the exposure stays fixed.
 std::vector<lighting::KnobValue> playerDefaults(bool autoExposure = true);
+// `vox play`'s: the player's, with full lighting — ReSTIR's direct light and the irradiance
+// cache's indirect, whose rays see the sky too (so no separate sky term). A scene's [indirect]
+// mode or `--indirect none` still wins.
+std::vector<lighting::KnobValue> playDefaults();
 
 }  // namespace engine::scene

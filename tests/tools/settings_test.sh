@@ -19,6 +19,21 @@ for want in "--indirect cache" "--cache-alpha 0.1" "--cache-rays 8" "--candidate
 done
 [ "$failures" -eq 0 ] && echo "ok: render, play and capture agree ($(wc -l <<< "$render") knobs)"
 
+# Each command's own defaults: play lights fully (the cache) and reconstructs; render reconstructs
+# but stays direct; a scene's [indirect] mode wins over play's default.
+cp "$(dirname "$0")/../../worlds/cornell.toml" "$tmp/plain.toml"
+cp "$tmp/plain.toml" "$tmp/direct.toml"
+printf '\n[indirect]\nmode = "none"\n' >> "$tmp/direct.toml"
+play=$("$vox" play "$tmp/plain.toml" --show-settings) || fail "play --show-settings exited $?"
+render=$("$vox" render "$tmp/plain.toml" --show-settings) || fail "render --show-settings exited $?"
+direct=$("$vox" play "$tmp/direct.toml" --show-settings) || fail "play --show-settings exited $?"
+for want in "--indirect cache" "--display denoised" "--auto-exposure on"; do
+    grep -qx -- "$want" <<< "$play" || fail "play's defaults lack '$want':"$'\n'"$play"
+done
+grep -qx -- "--indirect none" <<< "$render" || fail "render's default is not direct light only"
+grep -qx -- "--indirect none" <<< "$direct" || fail "the scene's [indirect] mode = none lost to play's default"
+[ "$failures" -eq 0 ] && echo "ok: play defaults to the cache, render to direct light, a scene's mode wins"
+
 # Out of range: refused by every entry point with the same one line.
 for bad in "--candidates 0" "--cache-rays 7" "--cache-alpha 2" "--spatial 40,10" "--mode spot"; do
     read -r -a args <<< "$bad"

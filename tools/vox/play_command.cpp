@@ -3,6 +3,7 @@
 #include "commands.h"
 #include "game/sandbox.h"
 #include "number_options.h"
+#include "scene/scene_lighting.h"
 
 namespace vox {
 
@@ -26,7 +27,8 @@ void addPlayCommand(CLI::App& app, int& exitCode) {
                     "adapt to keep frames near --target-ms)")
         ->check(numberIn(kRenderScaleRange));
     cmd->add_option("--target-ms", o->targetFrameMs,
-                    "Frame time the automatic render scale aims at")
+                    "Wall time per frame the automatic render scale aims at (host work and the "
+                    "window-size passes included)")
         ->capture_default_str()
         ->check(numberIn(engine::aboveRange(0.0, 10000.0, "ms")));
     cmd->add_option("--script", o->scriptPath,
@@ -62,6 +64,7 @@ void addPlayCommand(CLI::App& app, int& exitCode) {
     cmd->add_flag("!--no-hud", o->hud, "Start with the HUD hidden (Tab shows it)");
     addLightingOptions(*cmd, *lighting);
     cmd->callback([o, size, lighting, cmd, &exitCode] {
+        lighting->commandDefaults = engine::scene::playDefaults();
         if (lighting->showSettings) {
             exitCode = showSettings(o->world, *lighting);
             return;
