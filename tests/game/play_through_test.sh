@@ -22,10 +22,11 @@ world=$("$vox" info sandbox --json >/dev/null 2>&1 && echo sandbox)
 [ -n "$world" ] || { echo "FAIL: vox info sandbox"; exit 1; }
 
 # Render 128x72 (window 768x432 at scale 1/6); autosave every 0.03 minutes of the script's
-# clock (54 frames). Preview lighting and the raw display at a fixed exposure: deterministic and
-# at the render size, so the screenshot can be compared pixel for pixel with a headless render.
+# clock (54 frames). Preview lighting without play's default indirect cache, the raw display at a
+# fixed exposure: deterministic and at the render size, so the screenshot can be compared pixel
+# for pixel with a headless render.
 "$vox" play sandbox --script "$script" --size 768x432 \
-    --render-scale 0.1667 --method preview --display raw --auto-exposure off --save saved.toml --edit-log edits.log --autosave-minutes 0.03 \
+    --render-scale 0.1667 --method preview --indirect none --display raw --auto-exposure off --save saved.toml --edit-log edits.log --autosave-minutes 0.03 \
     >play.out 2>play.err
 rc=$?
 cat play.out
