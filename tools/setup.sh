@@ -8,7 +8,7 @@ preset="${1:-release}"
 packages=(
   build-essential cmake ninja-build pkg-config git
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
-  glslang-tools glslang-dev spirv-tools
+  glslang-tools glslang-dev spirv-tools libspirv-cross-c-shared-dev
   libglfw3-dev libglm-dev libopenvdb-dev libopenvdb-tools libblosc-dev zlib1g-dev time
   libgtest-dev libgmock-dev libbenchmark-dev
   libstb-dev libopenexr-dev libtomlplusplus-dev libcli11-dev libfmt-dev libspdlog-dev libimgui-dev

@@ -8,6 +8,7 @@
 #include "gpu/buffer.h"
 #include "gpu/command_list.h"
 #include "gpu/context.h"
+#include "gpu/shader_interface.h"
 #include "gpu/shader_registry.h"
 #include "gpu/vk_check.h"
 
@@ -15,112 +16,6 @@ namespace engine::gpu {
 
 namespace {
 constexpr std::uint32_t kSetsPerPool = 64;  // dispatches of one pipeline in flight at once
-
-// The SpecId decorations of a SPIR-V module (OpDecorate <id> SpecId <constant_id>), ascending.
-std::vector<std::uint32_t> declaredSpecIds(std::span<const std::uint32_t> code) {
-    constexpr std::uint32_t kOpDecorate = 71, kDecorationSpecId = 1, kHeaderWords = 5;
-    std::vector<std::uint32_t> ids;
-    for (std::size_t i = kHeaderWords; i < code.size();) {
-        const std::uint32_t words = code[i] >> 16, opcode = code[i] & 0xFFFFu;
-        if (words == 0 || i + words > code.size()) break;
-        if (opcode == kOpDecorate && words >= 4 && code[i + 2] == kDecorationSpecId)
-            ids.push_back(code[i + 3]);
-        i += words;
-    }
-    std::sort(ids.begin(), ids.end());
-    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-    return ids;
-}
-
-// The descriptor type of each binding 0..count-1 of set 0, as the SPIR-V module declares it: a
-// `uniform usamplerBuffer` (OpTypeImage, Dim Buffer, Sampled 1) is a uniform texel buffer;
-// anything else (a `buffer` block, or a binding the shader does not declare) a storage buffer.
-std::vector<VkDescriptorType> declaredBindingTypes(std::span<const std::uint32_t> code,
-                                                   std::uint32_t count) {
-    constexpr std::uint32_t kOpTypeImage = 25, kOpTypeSampledImage = 27, kOpTypePointer = 32,
-                            kOpVariable = 59, kOpDecorate = 71, kHeaderWords = 5;
-    constexpr std::uint32_t kDecorationBinding = 33, kDecorationDescriptorSet = 34;
-    constexpr std::uint32_t kStorageUniformConstant = 0, kDimBuffer = 5;
-    std::unordered_map<std::uint32_t, std::uint32_t> binding, set, pointerClass, pointee,
-        variableType, sampledImage;
-    std::unordered_map<std::uint32_t, std::pair<std::uint32_t, std::uint32_t>>
-        image;  // id -> (Dim, Sampled)
-    for (std::size_t i = kHeaderWords; i < code.size();) {
-        const std::uint32_t words = code[i] >> 16, opcode = code[i] & 0xFFFFu;
-        if (words == 0 || i + words > code.size()) break;
-        const std::uint32_t* w = &code[i];
-        if (opcode == kOpDecorate && words >= 3) {
-            if (w[2] == kDecorationBinding && words >= 4) binding[w[1]] = w[3];
-            if (w[2] == kDecorationDescriptorSet && words >= 4) set[w[1]] = w[3];
-        } else if (opcode == kOpTypeImage && words >= 8) {
-            image[w[1]] = {w[3], w[7]};
-        } else if (opcode == kOpTypeSampledImage && words >= 3) {
-            sampledImage[w[1]] = w[2];
-        } else if (opcode == kOpTypePointer && words >= 4) {
-            pointerClass[w[1]] = w[2];
-            pointee[w[1]] = w[3];
-        } else if (opcode == kOpVariable && words >= 4) {
-            variableType[w[2]] = w[1];
-        }
-        i += words;
-    }
-    std::vector<VkDescriptorType> types(count, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
-    for (auto [variable, b] : binding) {
-        if (b >= count || set[variable] != 0 || !variableType.contains(variable)) continue;
-        const std::uint32_t pointer = variableType[variable];
-        std::uint32_t type = pointee[pointer];
-        if (sampledImage.contains(type)) type = sampledImage[type];
-        if (pointerClass[pointer] == kStorageUniformConstant && image.contains(type)) {
-            CHECK_MSG(image[type] == std::make_pair(kDimBuffer, 1u),
-                      "binding %u: only sampled buffer images", b);
-            types[b] = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
-        }
-    }
-    return types;
-}
-
-// Which bindings 0..count-1 of set 0 the SPIR-V module may write: a storage buffer block none of
-// whose members (nor the variable) is decorated NonWritable (GLSL `readonly`). Texel buffers and
-// bindings the shader does not declare are read-only.
-std::vector<bool> declaredWritableBindings(std::span<const std::uint32_t> code,
-                                           std::uint32_t count) {
-    constexpr std::uint32_t kOpTypeStruct = 30, kOpTypePointer = 32, kOpVariable = 59,
-                            kOpDecorate = 71, kOpMemberDecorate = 72, kHeaderWords = 5;
-    constexpr std::uint32_t kDecorationBinding = 33, kDecorationDescriptorSet = 34,
-                            kDecorationNonWritable = 24;
-    std::unordered_map<std::uint32_t, std::uint32_t> binding, set, pointee, variableType, members,
-        readonlyMembers;
-    std::unordered_map<std::uint32_t, bool> readonlyVariable;
-    for (std::size_t i = kHeaderWords; i < code.size();) {
-        const std::uint32_t words = code[i] >> 16, opcode = code[i] & 0xFFFFu;
-        if (words == 0 || i + words > code.size()) break;
-        const std::uint32_t* w = &code[i];
-        if (opcode == kOpDecorate && words >= 3) {
-            if (w[2] == kDecorationBinding && words >= 4) binding[w[1]] = w[3];
-            if (w[2] == kDecorationDescriptorSet && words >= 4) set[w[1]] = w[3];
-            if (w[2] == kDecorationNonWritable) readonlyVariable[w[1]] = true;
-        } else if (opcode == kOpMemberDecorate && words >= 4 && w[3] == kDecorationNonWritable) {
-            ++readonlyMembers[w[1]];
-        } else if (opcode == kOpTypeStruct && words >= 2) {
-            members[w[1]] = words - 2;
-        } else if (opcode == kOpTypePointer && words >= 4) {
-            pointee[w[1]] = w[3];
-        } else if (opcode == kOpVariable && words >= 4) {
-            variableType[w[2]] = w[1];
-        }
-        i += words;
-    }
-    std::vector<bool> writable(count, false);
-    for (auto [variable, b] : binding) {
-        if (b >= count || set[variable] != 0 || !variableType.contains(variable)) continue;
-        const std::uint32_t type = pointee[variableType[variable]];
-        if (!members.contains(type) || readonlyVariable[variable])
-            continue;  // a texel buffer, or readonly
-        writable[b] = readonlyMembers[type] < members[type];
-    }
-    return writable;
-}
-
 }  // namespace
 
 ComputePipeline::ComputePipeline(Context& ctx, const std::string& shader,
@@ -130,8 +25,10 @@ ComputePipeline::ComputePipeline(Context& ctx, const std::string& shader,
     CHECK_MSG(!code.empty(), "no embedded shader named '%s'", shader.c_str());
     VkDevice device = ctx.device();
 
-    mTypes = declaredBindingTypes(code, bindingCount);
-    mWritable = declaredWritableBindings(code, bindingCount);
+    ShaderInterface declared = reflectShaderInterface(code, bindingCount, shader.c_str());
+    mTypes = std::move(declared.bindingTypes);
+    mWritable = std::move(declared.writable);
+    mSpecIds = std::move(declared.specIds);
     std::vector<VkDescriptorSetLayoutBinding> bindings(bindingCount);
     for (std::uint32_t i = 0; i < bindingCount; ++i) {
         bindings[i] = {i, mTypes[i], 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
@@ -150,7 +47,6 @@ ComputePipeline::ComputePipeline(Context& ctx, const std::string& shader,
     moduleInfo.codeSize = code.size_bytes();
     moduleInfo.pCode = code.data();
     VK_CHECK(vkCreateShaderModule(device, &moduleInfo, nullptr, &mModule));
-    mSpecIds = declaredSpecIds(code);
     variant({});  // the generic pipeline now: a shader that does not compile fails at start-up
 
     std::vector<VkDescriptorPoolSize> sizes;
