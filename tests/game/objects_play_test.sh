@@ -22,7 +22,7 @@ fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 cp "$(dirname "$script")/crate.toml" crate.toml || exit 1
 
 "$vox" play sandbox --model crate.toml --script "$script" --size 512x288 --render-scale 0.25 \
-    --method preview --save saved.toml >play.out 2>play.err
+    --method preview --indirect none --save saved.toml >play.out 2>play.err
 rc=$?
 cat play.out
 [ -s play.err ] && { echo "--- stderr:"; cat play.err; }

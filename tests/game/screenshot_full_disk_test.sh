@@ -24,7 +24,7 @@ echo "previous shot" > shot.png
 echo "previous window" > window.png
 echo "previous log" > frames.csv
 
-VOX_FAIL_WRITES=after:0 "$vox" play tiny.toml --script shots.script --size 320x180 --method preview \
+VOX_FAIL_WRITES=after:0 "$vox" play tiny.toml --script shots.script --size 320x180 --method preview --indirect none \
     --frame-log frames.csv >play.out 2>play.err
 rc=$?
 grep -q "screenshot failed: shot.png: cannot write: No space left on device" play.out || fail "no message for shot.png"

@@ -26,7 +26,7 @@ for name in "../outside" "$tmp/absolute" "/" "a/../../b" ".hidden"; do
     printf '[world]\nname = "%s"\nsize = [32, 16, 32]\n[[material]]\nname = "a"\n[[generator]]\ntype = "box"\nmin = [0, 0, 0]\nmax = [32, 4, 32]\nmaterial = "a"\n' \
         "$name" > "$run/world.toml"
     atRoot=$(find / -xdev -maxdepth 1 -name '*.png' 2>/dev/null | sort)
-    (cd "$run" && "$vox" play world.toml --script "$tmp/f12.script" --size 320x180 --method preview >play.out 2>play.err)
+    (cd "$run" && "$vox" play world.toml --script "$tmp/f12.script" --size 320x180 --method preview --indirect none >play.out 2>play.err)
     rc=$?
     stray=$(comm -13 <(echo "$atRoot") <(find / -xdev -maxdepth 1 -name '*.png' 2>/dev/null | sort))
     [ -n "$stray" ] && rm -f -- $stray

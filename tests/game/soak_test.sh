@@ -62,7 +62,7 @@ cycles=$(((edits + 200 - 60) / 22))
 # Sample VmRSS (KiB) of vox itself every 0.2 s while it runs.
 start_own_display 640x480 || exit 1
 bash -c '"$0" "$@" & echo $! >vox.pid; wait $!' "$vox" play sandbox --script soak.script --size 320x180 \
-    --render-scale 0.5 --method preview --undo-mb 1 --autosave-minutes 0 --frames $((edits + 200)) --model "$crate" \
+    --render-scale 0.5 --method preview --indirect none --undo-mb 1 --autosave-minutes 0 --frames $((edits + 200)) --model "$crate" \
     >play.out 2>play.err &
 runner=$!
 for _ in $(seq 50); do [ -s vox.pid ] && break; sleep 0.1; done

@@ -20,7 +20,7 @@ fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 # Render 128x72 (window 256x144 at scale 1/2), preview lighting.
 start_own_display 1024x768 || exit 1
 "$vox" play "$world" --script "$script" \
-    --size 256x144 --render-scale 0.5 --method preview --walk-log walk.csv --frame-log frames.csv \
+    --size 256x144 --render-scale 0.5 --method preview --indirect none --walk-log walk.csv --frame-log frames.csv \
     >play.out 2>play.err
 rc=$?
 cat play.out
