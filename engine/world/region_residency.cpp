@@ -163,7 +163,7 @@ ResidencyReport RegionResidency::update(glm::vec3 eye) {
             evict(k);
             ++report.evicted;
             if (d <= mReach) {
-                mReach = std::max(0.0f, d - 1.0f);
+                mReach = d - 1.0f;  // below 0 when the eye's own region went: ask for nothing
                 mReachEye = eye;
             }
         }

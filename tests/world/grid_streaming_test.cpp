@@ -197,7 +197,9 @@ TEST(GridStreaming, EditsSurviveEvictionReloadAndRestart) {
     }
     saved = grid.closeEditEpoch();
     s.pin(grid.regionsEditedAfter(saved));
-    settle(s, away, grid);
+    // Walking on (a region's width or more, so the residency asks again after the budget held it
+    // back): the budget now evicts the edited region, the farthest.
+    settle(s, glm::vec3(kWorld.x - 10.0f, 120.0f, kWorld.z * 0.5f), grid);
     EXPECT_FALSE(s.inGrid(edited));
     EXPECT_EQ(grid.get(voxel), kEmpty);
     settle(s, here, grid);
