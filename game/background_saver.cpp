@@ -75,6 +75,11 @@ engine::Result<std::size_t> BackgroundSaver::request(engine::world::Scene& scene
     job.worldVersion = worldVersion;
     auto it = mSavedEpoch.find(job.store);
     const bool whole = it == mSavedEpoch.end();
+    if (whole && mPartialGrid)
+        return engine::makeError(
+            "{}: a streamed world saves only the regions edited since it opened, into the store it "
+            "streams from as it was then; not saved",
+            job.store.string());
     if (!whole) job.keys = scene.grid.regionsEditedAfter(it->second);
     ObjectPayloads objects = objectPayloads(scene, savePath);
     job.payloads = std::move(objects.files);

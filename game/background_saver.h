@@ -51,6 +51,11 @@ public:
     // storeOfScene): saves to it can write only what changes from now on.
     void worldLoaded(engine::world::Scene& scene, const std::filesystem::path& store);
 
+    // The grid holds only the resident regions of a streamed world (game/streamed_world.h): a save
+    // that would write the whole world (a first save to another store, or after the store changed)
+    // is refused — it would erase every region not in memory.
+    void setPartialGrid(bool partial) { mPartialGrid = partial; }
+
     struct Done {
         std::filesystem::path savePath;
         bool autosave = false;
@@ -91,6 +96,7 @@ private:
 
     // Frame side: per store, the grid's edit epoch at its last snapshot (absent: write whole).
     std::map<std::filesystem::path, std::uint32_t> mSavedEpoch;
+    bool mPartialGrid = false;
 
     mutable std::mutex mMutex;
     std::condition_variable mWake, mIdle;

@@ -353,6 +353,7 @@ void Hud::drawStats(const HudStats& stats, HudControls& controls, HudActions& ac
     ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + width);
     ImGui::Text("%s%s", stats.savePath.c_str(), stats.unsaved ? " (unsaved changes)" : "");
     ImGui::TextUnformatted(stats.store.c_str());
+    if (!stats.streaming.empty()) ImGui::TextUnformatted(stats.streaming.c_str());
     ImGui::PopTextWrapPos();
     engine::lighting::LightingSettings& l = controls.lighting;
     if (!ImGui::CollapsingHeader(

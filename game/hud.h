@@ -43,7 +43,8 @@ struct HudStats {
     engine::render::DvfSkyStats sky;
     UndoStats undo;
     std::string worldName, savePath;
-    std::string store;  // the save's store: regions and size on disk (game/background_saver.h)
+    std::string store;      // the save's store: regions and size on disk (game/background_saver.h)
+    std::string streaming;  // regions in memory against the budget (game/streamed_world.h); or ""
     bool unsaved = false;
     bool mouseLook = false;
     Pick target;

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <fstream>
 #include <imgui.h>
+#include <map>
 #include <memory>
 #include <optional>
 #include <thread>
@@ -23,6 +24,7 @@
 #include "game/object_tools.h"
 #include "game/render_scale_controller.h"
 #include "game/script_player.h"
+#include "game/streamed_world.h"
 #include "game/undo_history.h"
 #include "game/walk_controller.h"
 #include "game/window.h"
@@ -95,6 +97,10 @@ private:
     // Reports the saves finished since the last call; returns the last failure, if any (a failed
     // save is not reported with `quiet`: the caller says it).
     engine::Status pollSaves(bool quiet = false);
+    void updateStreaming();
+    bool streamedBoxMissing(const world::Box& voxels) const {
+        return mStreaming && !mStreaming->boxInGrid(voxels);
+    }
     void requestQuit();
     void setMouseLook(bool on);
     void message(std::string text);
@@ -116,6 +122,19 @@ private:
     fs::path mWorldPath, mSavePath;
     std::unique_ptr<WorldStore> mStore = makeWorldStore();
     BackgroundSaver mSaver;
+    // Streaming (game/streamed_world.h): the grid holds only the regions near the camera. An
+    // edited region is pinned (kept in memory) until its save commits: edited after
+    // mCommittedEpoch, or touched by the undo history.
+    std::unique_ptr<world::GridStreaming> mStreaming;
+    fs::path mStreamStore;  // the store it streams from; empty: a generated terrain
+    std::uint32_t mCommittedEpoch = 0;
+    std::map<std::uint64_t, std::uint32_t> mSaveEpochs;  // world version -> its save's epoch
+    std::uint64_t mPinnedVersion = ~std::uint64_t(0);
+    std::uint32_t mPinnedEpoch = 0;
+    world::GridStreamingReport mStreamReport;
+    bool mStreamWait = false;  // the player waits for the regions around it
+    std::size_t mPeakStreamRegions = 0;
+    std::uint64_t mPeakStreamBytes = 0;
 
     // Declaration order is destruction order reversed: the presenter needs the ImGui context
     // and the device, and the device's surface needs the window.
@@ -200,12 +219,23 @@ engine::Status Sandbox::init() {
         engine::scene::resolveWorldPath(mOptions.world.empty() ? "sandbox" : mOptions.world);
     if (!path) return path.error();
     mWorldPath = *path;
-    auto scene = mStore->load(mWorldPath);
-    if (!scene) return scene.error();
-    mScene = std::move(*scene);
-    // A world read whole from a store saves back to it incrementally.
+    auto streamed = openStreamedWorld(mWorldPath, mOptions.stream);
+    if (!streamed) return streamed.error();
+    if (*streamed) {
+        mScene = std::move((*streamed)->scene);
+        mStreaming = std::move((*streamed)->streaming);
+        mStreamStore = (*streamed)->store;
+        mSaver.setPartialGrid(true);
+    } else {
+        auto scene = mStore->load(mWorldPath);
+        if (!scene) return scene.error();
+        mScene = std::move(*scene);
+    }
+    // A world read whole from a store saves back to it incrementally (a streamed one: only into
+    // it).
     if (fs::path store = engine::scene::storeOfScene(mScene); !store.empty())
         mSaver.worldLoaded(mScene, store);
+    mCommittedEpoch = mScene.grid.editEpoch() - 1;
     if (!mOptions.camera.empty()) {
         bool found =
             std::any_of(mScene.cameras.begin(), mScene.cameras.end(),
@@ -249,7 +279,8 @@ engine::Status Sandbox::init() {
         // wall: the whole loop iteration (input, HUD, edits, render + present, script actions);
         // render_call: Renderer::render alone; gpu: its passes' GPU time, present included.
         *mFrameLog
-            << "frame,wall_ms,render_call_ms,gpu_ms,present_gpu_ms,render_width,render_height\n";
+            << "frame,wall_ms,render_call_ms,gpu_ms,present_gpu_ms,render_width,render_height,"
+               "stream_regions,stream_in,stream_in_ms,stream_out,stream_out_ms\n";
     }
     if (!mOptions.walkLogPath.empty()) {
         if (engine::Status s = mWalkLogFile.open(mOptions.walkLogPath); !s) return s;
@@ -294,8 +325,35 @@ engine::Status Sandbox::init() {
     std::fflush(stdout);
     // Live play starts looking around; a script's mouse is logical (never grabs a real one).
     setMouseLook(true);
+    if (mStreaming) {
+        const world::ResidencySettings& r = mStreaming->settings();
+        std::printf(
+            "vox play: streaming regions within %.0f voxels from %s, budget %.0f MiB, at "
+            "most %zu region(s) into the grid per frame; autosave off\n",
+            double(r.radiusVoxels),
+            mStreamStore.empty() ? "the terrain generator" : mStreamStore.string().c_str(),
+            double(r.budgetBytes) / (1 << 20), mStreaming->regionsPerFrame());
+        std::fflush(stdout);
+    }
     if (mOptions.walk) message(mWalk.toggle(mScene, mCamera));
     return {};
+}
+
+// The grid follows the camera's regions; edited regions stay until their save commits.
+void Sandbox::updateStreaming() {
+    if (!mStreaming) return;
+    if (mPinnedVersion != mWorldVersion || mPinnedEpoch != mCommittedEpoch) {
+        std::vector<world::RegionKey> pinned = mScene.grid.regionsEditedAfter(mCommittedEpoch);
+        std::vector<world::RegionKey> undo = mUndo.regions();
+        pinned.insert(pinned.end(), undo.begin(), undo.end());
+        mStreaming->pin(pinned);
+        mPinnedVersion = mWorldVersion;
+        mPinnedEpoch = mCommittedEpoch;
+    }
+    mStreamReport = mStreaming->update(mCamera.position(), mScene.grid);
+    mPeakStreamRegions = std::max(mPeakStreamRegions, mStreaming->regionsInGrid());
+    mPeakStreamBytes = std::max(mPeakStreamBytes, mStreaming->bytes());
+    for (const std::string& e : mStreamReport.errors) message(e + " (seen as empty)");
 }
 
 void Sandbox::setMouseLook(bool on) {
@@ -315,6 +373,20 @@ int Sandbox::run() {
     mLastFrameStart = std::chrono::steady_clock::now();
     while (!mQuit) frame();
     int exitCode = 0;
+    if (mStreaming) {
+        // The memory streaming held at its peak: the pools never shrink, so their capacity is it.
+        const world::GridMemory cpu = mScene.grid.memory();
+        const engine::render::GpuWorldMemory gpu = mRenderer->gpuWorld().memory();
+        std::printf(
+            "vox play: streaming: at most %zu region(s) in the grid, %.1f MiB counted against the "
+            "budget; CPU grid: top grid %.1f MiB, brick pool %.1f MiB (%u bricks); GPU: top grid "
+            "%.1f MiB, brick pages %.1f MiB\n",
+            mPeakStreamRegions, double(mPeakStreamBytes) / (1 << 20),
+            double(cpu.topGridBytes + cpu.superGridBytes + cpu.bookkeepingBytes) / (1 << 20),
+            double(cpu.brickPoolBytes) / (1 << 20), mScene.grid.brickCapacity(),
+            double(gpu.topGridBytes) / (1 << 20), double(gpu.brickPageBytes) / (1 << 20));
+        std::fflush(stdout);
+    }
     // Saves still being written finish before the process ends, and say how they went.
     mSaver.waitIdle();
     if (!pollSaves()) exitCode = 1;
@@ -352,6 +424,7 @@ void Sandbox::frame() {
     ImGui::NewFrame();
 
     handleInput(dt);
+    updateStreaming();
 
     if (mTime - mMessageTime > kMessageSeconds) mMessage.clear();
     HudControls controls{mTools,     mScene.palette, mScene.sky, mRenderScale,
@@ -370,10 +443,12 @@ void Sandbox::frame() {
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if (mAutoScale && rendered.presented) adjustRenderScale(wallMs, framebuffer);
     if (mFrameLog && rendered.presented) {
-        *mFrameLog << fmt::format("{},{:.3f},{:.3f},{:.3f},{:.3f},{},{}\n", mFrame, wallMs,
-                                  rendered.renderCallMs, rendered.result.totalMs(),
-                                  rendered.result.passMsOf("present"), rendered.size.x,
-                                  rendered.size.y);
+        // stream_*: regions in the grid, and those written in and out this frame (streaming).
+        *mFrameLog << fmt::format(
+            "{},{:.3f},{:.3f},{:.3f},{:.3f},{},{},{},{},{:.3f},{},{:.3f}\n", mFrame, wallMs,
+            rendered.renderCallMs, rendered.result.totalMs(), rendered.result.passMsOf("present"),
+            rendered.size.x, rendered.size.y, mStreaming ? mStreaming->regionsInGrid() : 0,
+            mStreamReport.arrived, mStreamReport.inMs, mStreamReport.left, mStreamReport.outMs);
     }
     if (mWalkLog) *mWalkLog << mWalk.logRow(mFrame, mTime) << "\n";
     ++mFrame;
@@ -518,10 +593,18 @@ void Sandbox::handleInput(float dt) {
 
     if (!mInput.ctrl() && mInput.pressed(GLFW_KEY_F)) message(mWalk.toggle(mScene, mCamera));
     if (mWalk.active()) {
-        if (std::string m = mWalk.update(mInput, dt, mTime, mMouseLook, mScene, mCamera);
-            !m.empty())
+        // Unloaded ground is air: the player waits until the regions around it are in.
+        const world::PlayerBox b = mWalk.body().box();
+        const glm::ivec3 margin(16);
+        mStreamWait = streamedBoxMissing(
+            {glm::ivec3(glm::floor(b.min)) - margin, glm::ivec3(glm::ceil(b.max)) + margin});
+        if (mStreamWait) {
+        } else if (std::string m = mWalk.update(mInput, dt, mTime, mMouseLook, mScene, mCamera);
+                   !m.empty()) {
             message(m);
+        }
     } else {
+        mStreamWait = false;
         mCamera.update(mInput, dt, mMouseLook);
     }
     mTarget = pick(mScene.grid, mCamera.position(), mCamera.forward());
@@ -669,6 +752,11 @@ void Sandbox::applyEdit(const EditOp& op) {
                         toolName(op.tool)));
         return;
     }
+    if (streamedBoxMissing(op.region())) {
+        message(op.describe(mScene.palette) +
+                ": refused: it reaches a region not loaded yet (streaming: come closer)");
+        return;
+    }
     if (std::string why = mWalk.refusal(op, mScene.grid); !why.empty()) {
         message(op.describe(mScene.palette) + ": refused: " + why);
         return;
@@ -734,6 +822,16 @@ void Sandbox::redo() {
 }
 
 engine::Status Sandbox::save(const fs::path& path, bool autosave, bool wait) {
+    if (mStreaming && mStreamStore.empty())
+        return engine::makeError(
+            "a generated world streamed region by region cannot be saved yet: make it a store "
+            "first (vox import {} -o W.db) and play that",
+            mWorldPath.string());
+    if (mStreaming &&
+        fs::weakly_canonical(storePathFor(path)) != fs::weakly_canonical(mStreamStore))
+        return engine::makeError("a streamed world saves only into the store it streams from ({})",
+                                 mStreamStore.string());
+    const std::uint32_t epoch = mScene.grid.editEpoch();  // the save holds what is stamped up to it
     // The current view becomes the first camera preset, so reopening the save resumes here.
     std::vector<world::CameraPreset> presets = mScene.cameras;
     world::CameraPreset view = mCamera.preset();
@@ -750,6 +848,7 @@ engine::Status Sandbox::save(const fs::path& path, bool autosave, bool wait) {
     if (!regions) return regions.error();
     mAutosave.written(mTime, mWorldVersion);
     if (!autosave) mPendingSaveVersion = mWorldVersion;
+    if (!autosave && mStreaming) mSaveEpochs[mWorldVersion] = epoch;
     if (mEditLog)
         mEditLog << fmt::format("{} {} {}\n", autosave ? "autosave" : "save", mFrame, path.string())
                  << std::flush;
@@ -773,6 +872,10 @@ engine::Status Sandbox::pollSaves(bool quiet) {
             continue;
         }
         if (!d.autosave) {
+            // Committed: the regions it held may leave memory now.
+            if (auto e = mSaveEpochs.find(d.worldVersion); e != mSaveEpochs.end())
+                mCommittedEpoch = std::max(mCommittedEpoch, e->second);
+            mSaveEpochs.erase(mSaveEpochs.begin(), mSaveEpochs.upper_bound(d.worldVersion));
             mSavedVersion = d.worldVersion;
             mStoreStatus = {true, d.report.regionRows, d.report.fileBytes};
         }
@@ -855,7 +958,7 @@ void Sandbox::afterFrame(const engine::render::FrameResult& result, bool present
     }
     if (mScript) runScriptActions();
     (void)pollSaves();  // reported by message()
-    if (mAutosave.due(mTime, mWorldVersion)) {
+    if (!mStreaming && mAutosave.due(mTime, mWorldVersion)) {
         engine::Status s = save(autosavePath(mSavePath), true);
         if (!s) {
             message("autosave failed: " + s.error().message);
@@ -914,6 +1017,13 @@ HudStats Sandbox::hudStats() {
     s.worldName = mScene.name;
     s.savePath = mSavePath.string();
     s.store = describeStore(storePathFor(mSavePath), mStoreStatus);
+    if (mStreaming)
+        s.streaming =
+            fmt::format("streaming: {} region(s) in memory, {:.0f} of {:.0f} MiB, {} loading{}",
+                        mStreaming->regionsInGrid(), double(mStreaming->bytes()) / (1 << 20),
+                        double(mStreaming->settings().budgetBytes) / (1 << 20),
+                        mStreamReport.pending + mStreamReport.waiting,
+                        mStreamWait ? " - loading the ground around the player: waiting" : "");
     s.unsaved = unsaved();
     s.mouseLook = mMouseLook;
     s.target = mTarget;

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "game/streamed_world.h"
 #include "lighting/lighting_knobs.h"
 #include "world/player_body.h"
 
@@ -41,6 +42,7 @@ struct PlayOptions {
     // (scene/scene_lighting.h: the same merge as vox render); switchable live in the HUD.
     std::vector<engine::lighting::KnobValue> lighting;
     bool hud = true;
+    StreamOptions stream;         // regions streamed around the camera (game/streamed_world.h)
     bool captureCommand = false;  // `vox capture` exists: the no-display message points to it too
 };
 

@@ -1,5 +1,6 @@
 #include "game/undo_history.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <utility>
 
@@ -252,6 +253,15 @@ void UndoHistory::clear() {
     mSteps.clear();
     mCursor = 0;
     mBytes = 0;
+}
+
+std::vector<engine::world::RegionKey> UndoHistory::regions() const {
+    std::vector<engine::world::RegionKey> keys;
+    for (const Step& step : mSteps)
+        for (const CellState& c : step.cells) keys.push_back(engine::world::regionOfCell(c.cell));
+    std::sort(keys.begin(), keys.end());
+    keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+    return keys;
 }
 
 }  // namespace game

@@ -67,6 +67,10 @@ public:
     std::string undo(engine::world::BrickGrid& grid);
     std::string redo(engine::world::BrickGrid& grid);
 
+    // The regions (world/region.h) the grid steps touch, sorted: a streamed world keeps them in
+    // memory (game/streamed_world.h), so an undo never writes into a region that left.
+    std::vector<engine::world::RegionKey> regions() const;
+
     bool canUndo() const { return mCursor > 0; }
     bool canRedo() const { return mCursor < mSteps.size(); }
     UndoStats stats() const;

@@ -17,10 +17,19 @@
 
 namespace engine::scene {
 
-Result<world::Scene> loadSceneFile(const std::filesystem::path& path);
+// What loading builds. `gridGenerators` false reads the world's generators (checked, recorded in
+// scene.generators) without running them, leaving the grid empty: a streamed world
+// (world/grid_streaming.h) fills it region by region. Objects' generators always run.
+struct SceneLoadOptions {
+    bool gridGenerators = true;
+};
+
+Result<world::Scene> loadSceneFile(const std::filesystem::path& path,
+                                   const SceneLoadOptions& options = {});
 // sourceName names the text in messages and is the folder that relative paths in it (a vdb
 // generator's source) are resolved against.
-Result<world::Scene> loadSceneText(std::string_view text, std::string_view sourceName);
+Result<world::Scene> loadSceneText(std::string_view text, std::string_view sourceName,
+                                   const SceneLoadOptions& options = {});
 
 struct SceneWriteOptions {
     std::string_view headerComment;  // "# " before each line, above everything

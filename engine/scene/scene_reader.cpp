@@ -49,7 +49,8 @@ using world::Scene;
 
 class SceneReader {
 public:
-    explicit SceneReader(std::string source) : mSource(std::move(source)) {}
+    SceneReader(std::string source, const SceneLoadOptions& options)
+        : mSource(std::move(source)), mOptions(options) {}
 
     template <typename... Args>
     [[noreturn]] void fail(const toml::node* at, fmt::format_string<Args...> f,
@@ -152,7 +153,8 @@ private:
         if (!entry)
             fail(g.node("type"), "unknown generator '{}' (known: {})", type, knownGeneratorTypes());
         world::GeneratorRecord record{type, entry->parse(g)};
-        if (Status s = runWithinBudget(*entry, record, scene); !s)
+        const bool streamed = !mOptions.gridGenerators && &records == &scene.generators;
+        if (Status s = streamed ? Status{} : runWithinBudget(*entry, record, scene); !s)
             fail(&node, "{}", s.error().message);
         records.push_back(std::move(record));
     }
@@ -270,20 +272,22 @@ private:
     }
 
     std::string mSource;
+    SceneLoadOptions mOptions;
 };
 
 }  // namespace
 
-Result<Scene> loadSceneText(std::string_view text, std::string_view sourceName) {
+Result<Scene> loadSceneText(std::string_view text, std::string_view sourceName,
+                            const SceneLoadOptions& options) {
     return parseToml<Scene>(text, sourceName, [&](const toml::table& root) {
-        return SceneReader(std::string(sourceName)).read(root);
+        return SceneReader(std::string(sourceName), options).read(root);
     });
 }
 
-Result<Scene> loadSceneFile(const std::filesystem::path& path) {
+Result<Scene> loadSceneFile(const std::filesystem::path& path, const SceneLoadOptions& options) {
     auto text = readTextFile(path, "scene file");
     if (!text) return text.error();
-    return loadSceneText(*text, path.string());
+    return loadSceneText(*text, path.string(), options);
 }
 
 Result<std::filesystem::path> resolveWorldPath(std::string_view nameOrPath) {

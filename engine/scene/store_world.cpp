@@ -231,7 +231,8 @@ Result<StoreWriteReport> writeWorldStore(const world::Scene& scene, const fs::pa
     return report;
 }
 
-Result<world::Scene> loadWorldStore(const fs::path& path, std::optional<world::Box> box) {
+Result<world::Scene> loadWorldStore(const fs::path& path, std::optional<world::Box> box,
+                                    bool regions) {
     auto store = world::RegionStore::open(path, /*writable=*/false);
     if (!store) return store.error();
     auto keys = store->sceneKeys();
@@ -260,7 +261,9 @@ Result<world::Scene> loadWorldStore(const fs::path& path, std::optional<world::B
         world::writeRegion(*region, grid, rc, cellOffset);
         return {};
     };
-    if (!box) {
+    if (!regions) {
+        // streamed: the grid stays empty
+    } else if (!box) {
         if (Status s = store->forEachRegion([&](world::RegionKey key, auto blob) {
                 if (keyInside(key, count)) reportRowProgress("reading store regions", key, count);
                 return readOne(key, blob, scene->grid, glm::ivec3(0));

@@ -83,9 +83,11 @@ Result<StoreWriteReport> writeWorldStore(const world::Scene& scene,
                                          int regionCells = world::kRegionCells);
 
 // Loads the world a store holds. With `box`, only the regions meeting it are read, into a grid of
-// the box rounded out to whole 8^3 cells (a box export); the cameras stay where they were.
+// the box rounded out to whole 8^3 cells (a box export); the cameras stay where they were. Without
+// `regions`, none is read: the grid is empty and the world's size (a streamed world,
+// world/grid_streaming.h).
 Result<world::Scene> loadWorldStore(const std::filesystem::path& path,
-                                    std::optional<world::Box> box = {});
+                                    std::optional<world::Box> box = {}, bool regions = true);
 
 // Reads a store's regions into scene.grid, its material ids mapped by name onto scene.palette
 // (materials the palette lacks are added): the `store` generator.

@@ -269,7 +269,7 @@ void BrickGrid::markRegionsEdited(std::span<const RegionKey> keys) {
 void BrickGrid::touchCell(std::size_t index) {
     // Stamped on every touch: touchedCells() is cleared each frame by the GPU mirror, the stamps
     // only by a save.
-    {
+    if (mStampEdits) {
         const std::size_t x = index % mSizeInCells.x, yz = index / mSizeInCells.x;
         const std::size_t y = yz % mSizeInCells.y, z = yz / mSizeInCells.y;
         const std::size_t r =

@@ -130,6 +130,10 @@ public:
     std::vector<RegionKey> regionsEditedAfter(std::uint32_t epoch) const;
     // Stamps regions with the current epoch again (the regions of a save that failed).
     void markRegionsEdited(std::span<const RegionKey> keys);
+    // While off, changes are not stamped (they still mark cells and bricks dirty): streaming
+    // (world/grid_streaming.h) writes a region that arrives or leaves like an edit, so the GPU
+    // mirror and the lighting see it, but it is not an edit a save must write.
+    void setStampingEdits(bool on) { mStampEdits = on; }
 
     GridMemory memory() const;
     bool operator==(const BrickGrid& other) const;  // same voxels, regardless of pool layout
@@ -164,6 +168,7 @@ private:
     glm::ivec3 mRegionCount;
     std::vector<std::uint32_t> mRegionStamp;  // edit epoch of each region's last change
     std::uint32_t mEditEpoch = 1;
+    bool mStampEdits = true;
 };
 
 }  // namespace engine::world

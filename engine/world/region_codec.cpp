@@ -67,6 +67,15 @@ void writeRegion(const RegionSnapshot& region, BrickGrid& grid, int regionCellCo
             }
 }
 
+void eraseRegion(BrickGrid& grid, RegionKey key, int regionCellCount) {
+    const CellRange range = regionCells(key, grid.sizeInCells(), regionCellCount);
+    for (int z = range.min.z; z < range.max.z; ++z)
+        for (int y = range.min.y; y < range.max.y; ++y)
+            for (int x = range.min.x; x < range.max.x; ++x)
+                if (grid.cell({x, y, z}) != shared::CELL_EMPTY)
+                    grid.writeCellUniform({x, y, z}, kEmpty);
+}
+
 EncodedRegion encodeRegion(const RegionSnapshot& region, int zstdLevel) {
     std::vector<std::uint8_t> raw;
     raw.reserve(kHeaderWords * 4 + region.cells.size() * 4 +

@@ -38,6 +38,10 @@ RegionSnapshot snapshotRegion(const BrickGrid& grid, RegionKey key,
 void writeRegion(const RegionSnapshot& region, BrickGrid& grid, int regionCellCount = kRegionCells,
                  glm::ivec3 cellOffset = glm::ivec3(0));
 
+// Empties the region's cells in `grid`, its bricks back to the pool (a streamed region that
+// leaves: world/grid_streaming.h).
+void eraseRegion(BrickGrid& grid, RegionKey key, int regionCellCount = kRegionCells);
+
 struct EncodedRegion {
     RegionKey key;
     std::uint64_t rawBytes = 0;  // the payload before compression

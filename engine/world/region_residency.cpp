@@ -20,6 +20,8 @@ RegionResidency::RegionResidency(std::unique_ptr<RegionSource> source,
     const std::size_t n = std::size_t(mRegionCounts.x) * mRegionCounts.y * mRegionCounts.z;
     mTable.resize(n);
     mState.assign(n, RegionState::Absent);
+    mBytes.assign(n, 0);
+    mPinned.assign(n, 0);
     mLoader = std::thread([this] { run(); });
 }
 
@@ -65,7 +67,8 @@ void RegionResidency::take(Loaded loaded, std::vector<std::string>* errors) {
         if (errors) errors->push_back(std::move(loaded.error));
         return;
     }
-    mResidentBytes += loaded.region->bytes();
+    mBytes[i] = loaded.region->bytes();
+    mResidentBytes += mBytes[i];
     mTable[i] = std::move(loaded.region);
     mState[i] = RegionState::Resident;
     mResident.push_back(loaded.key);
@@ -92,7 +95,8 @@ std::size_t RegionResidency::waitIdle(std::vector<std::string>* errors) {
 void RegionResidency::evictAt(std::size_t i) {
     const RegionKey key = mResident[i];
     const std::size_t t = index(key);
-    mResidentBytes -= mTable[t]->bytes();
+    mResidentBytes -= mBytes[t];
+    mBytes[t] = 0;
     {
         std::lock_guard lock(mMutex);  // freed on the loader thread, not in the frame
         mToFree.push_back(std::move(mTable[t]));
@@ -106,6 +110,24 @@ void RegionResidency::evictAt(std::size_t i) {
 void RegionResidency::evict(RegionKey key) {
     auto it = std::find(mResident.begin(), mResident.end(), key);
     if (it != mResident.end()) evictAt(std::size_t(it - mResident.begin()));
+}
+
+void RegionResidency::setPinned(std::span<const RegionKey> keys) {
+    for (RegionKey k : mPinnedKeys) mPinned[index(k)] = 0;
+    mPinnedKeys.assign(keys.begin(), keys.end());
+    for (RegionKey k : mPinnedKeys) mPinned[index(k)] = 1;
+}
+
+std::unique_ptr<ResidentRegion> RegionResidency::release(RegionKey key) {
+    return std::move(mTable[index(key)]);
+}
+
+void RegionResidency::recycle(std::unique_ptr<ResidentRegion> region) {
+    {
+        std::lock_guard lock(mMutex);
+        mToFree.push_back(std::move(region));
+    }
+    mWake.notify_one();
 }
 
 void RegionResidency::request(std::span<const RegionKey> keys) {
@@ -137,10 +159,11 @@ ResidencyReport RegionResidency::update(glm::vec3 eye) {
                   [](const auto& a, const auto& b) { return a.first > b.first; });
         for (const auto& [d, k] : byDistance) {
             if (mResidentBytes <= mSettings.budgetBytes) break;
+            if (mPinned[index(k)]) continue;
             evict(k);
             ++report.evicted;
             if (d <= mReach) {
-                mReach = std::max(0.0f, d - 1.0f);
+                mReach = d - 1.0f;  // below 0 when the eye's own region went: ask for nothing
                 mReachEye = eye;
             }
         }

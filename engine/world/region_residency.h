@@ -65,6 +65,16 @@ public:
     // Blocks until the loader has nothing left to do, then collects (tests, tools; not the frame).
     std::size_t waitIdle(std::vector<std::string>* errors = nullptr);
     void evict(RegionKey key);
+    // Regions the budget must not evict (replaces the previous set): a streamed grid's edited
+    // regions until their save commits (world/grid_streaming.h). A pinned region still counts
+    // against the budget; the farthest unpinned ones go first.
+    void setPinned(std::span<const RegionKey> keys);
+    // Hands a resident region's voxels to the caller (a grid that holds them from now on,
+    // world/grid_streaming.h): it stays Resident, its bytes counted, until evicted, but get() and
+    // region() see it empty. recycle() gives the voxels back to be freed on the loader thread.
+    std::unique_ptr<ResidentRegion> release(RegionKey key);
+    void recycle(std::unique_ptr<ResidentRegion> region);
+    std::span<const RegionKey> residentKeys() const { return mResident; }
 
     glm::ivec3 worldSizeInCells() const { return mSizeInCells; }
     glm::ivec3 regionCounts() const { return mRegionCounts; }
@@ -98,6 +108,9 @@ private:
     // Frame-thread state: the paged top grid (region table) and what it holds.
     std::vector<std::unique_ptr<ResidentRegion>> mTable;
     std::vector<RegionState> mState;
+    std::vector<std::uint64_t> mBytes;   // of each resident region, counted while it is resident
+    std::vector<std::uint8_t> mPinned;   // setPinned(): not evicted by the budget
+    std::vector<RegionKey> mPinnedKeys;  // what mPinned marks, to clear it
     std::vector<RegionKey> mResident;
     std::uint64_t mResidentBytes = 0;
     float mReach = 0.0f;        // how far requests go: the radius, less while the budget is full

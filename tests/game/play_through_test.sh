@@ -70,7 +70,7 @@ echo "edit frames: $edits, each presented with only the touched bricks uploaded"
 "$vox" play saved.toml --frames 2 --size 256x144 --frame-log frames.csv >reopen.out 2>&1 ||
     fail "reopening the save: $(cat reopen.out)"
 grep -q "saves to saved.toml" reopen.out || fail "reopened save does not save back to itself"
-head -1 frames.csv | grep -q "^frame,wall_ms,render_call_ms,gpu_ms,present_gpu_ms,render_width,render_height$" ||
+head -1 frames.csv | grep -q "^frame,wall_ms,render_call_ms,gpu_ms,present_gpu_ms,render_width,render_height,stream_regions,stream_in,stream_in_ms,stream_out,stream_out_ms$" ||
     fail "frames.csv header: $(head -1 frames.csv)"
 rows=$(awk -F, 'NR > 1 && $2 > 0 && $3 > 0 && $4 > 0 && $6 == 64 && $7 == 36' frames.csv | wc -l)
 [ "$rows" -eq 2 ] || fail "frames.csv: expected 2 frame rows at 64x36 with times, got: $(cat frames.csv)"

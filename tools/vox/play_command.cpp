@@ -62,6 +62,19 @@ void addPlayCommand(CLI::App& app, int& exitCode) {
         "A model the object tool (key 4) places: WORLD.toml, FILE.vdb or FILE.vox, at most 16384 "
         "solid voxels (repeat for more; M cycles them)");
     cmd->add_flag("!--no-hud", o->hud, "Start with the HUD hidden (Tab shows it)");
+    cmd->add_option("--stream-radius", o->stream.radius,
+                    "Stream the world's regions within R voxels of the camera (a store, or one "
+                    "terrain generator; 0: load it whole; default: stream worlds wider than 2048 "
+                    "at 768)")
+        ->check(numberIn(engine::closedRange(0.0, 1e6, "voxels")));
+    cmd->add_option("--stream-budget-mb", o->stream.budgetMiB,
+                    "Memory budget of the streamed regions in MiB")
+        ->capture_default_str()
+        ->check(numberIn(engine::wholeRange(16, 1 << 20, "MiB")));
+    cmd->add_option("--stream-regions-per-frame", o->stream.regionsPerFrame,
+                    "Streamed regions copied into the world per frame, at most")
+        ->capture_default_str()
+        ->check(numberIn(engine::wholeRange(1, 4096, "regions")));
     addLightingOptions(*cmd, *lighting);
     cmd->callback([o, size, lighting, cmd, &exitCode] {
         lighting->commandDefaults = engine::scene::playDefaults();
