@@ -1,6 +1,6 @@
 // TemporalUpsampling: the displayed image at the display's size from the lighting at the render
 // size (`--display upsampled` or `denoised`). Each frame moves the primary rays by a sub-pixel
-// jitter (Halton 2,3: 16 offsets that cover a pixel evenly); the resolve
+// jitter (Halton 2,3: a cycle of 16 to 128 offsets, jitterPhases); the resolve
 // (shaders/upsampling/resolve.comp) blends this frame's samples into last frame's display image,
 // reprojected by the G-buffer's exact motion (the camera, and each object's own transform),
 // dropped where its voxel-face plane is not among this frame's nearby ones and clipped to their
