@@ -55,6 +55,16 @@ void main() {
         vec2 p = g.motion.xy - 0.5 - gFrame.jitter.zw;
         ivec2 base = ivec2(floor(p));
         vec2 f = p - vec2(base);
+        // A still view: the point was in this very pixel, only the jitter moved its sample. The
+        // pixel's own history is its average over the pixel; a bilinear read would mix in its
+        // neighbours every frame (the jitter's difference, up to a pixel), and that blur adds up.
+        // (Where this pixel saw another plane last frame, the bilinear read may still find it.)
+        vec2 here = vec2(pixel) + 0.5 + gFrame.jitter.xy;
+        if (all(lessThan(abs(g.motion.xy - here), vec2(1.0e-3))) &&
+            texelFetch(gPrevSurfaceKeys, int(index)).x == key) {
+            base = ivec2(pixel);
+            f = vec2(0.0);
+        }
         for (int dy = 0; dy < 2; ++dy) {
             for (int dx = 0; dx < 2; ++dx) {
                 ivec2 q = base + ivec2(dx, dy);

@@ -8,7 +8,7 @@ SHARED_BEGIN
 
 // UpsamplingParams.flags
 SHARED_CONST uint UPSAMPLING_RESTART = 1u;  // no history: the first frame, or a new display size
-// The world, its lights or the sky changed: the history counts as a few frames at most.
+// The world, its lights or the sky changed: the history counts as half a frame at most.
 SHARED_CONST uint UPSAMPLING_LIGHTING_CHANGED = 2u;
 
 struct UpsamplingParams {

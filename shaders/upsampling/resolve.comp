@@ -39,11 +39,15 @@ const float kSharpness = 1.0 / (2.0 * 0.3 * 0.3);
 // (render pixels per display pixel) times the Gaussian's integral, 2 pi sigma^2. History lengths
 // are in frames of that weight, whatever the render scale.
 const float kGaussianIntegral = 2.0 * 3.14159265 * 0.3 * 0.3;
-// After an edit, a light or the sky changed, or where the clip had to move the history by more
-// than a tenth of the light here (it disagrees with this frame beyond its noise: a light
-// switched, a shadow moved), the history counts as at most this many frames, so the display
-// follows a change within about as many.
+// Where the clip had to move the history by more than a tenth of the light here (it disagrees
+// with this frame beyond its noise: a light switched, a shadow moved), the history counts as at
+// most this many frames, so the display follows a change within about as many.
 const float kChangedHistory = 2.0;
+// After an edit, a light or the sky changed (FrameChanges: a reactive frame, as FSR 2's reactive
+// mask, for the whole view) the history counts as half a frame: a window switched on is
+// sub-pixel, the clip box of its neighbourhood holds the dark history, and with 2 frames the
+// region reached 0.28, 0.48, 0.60 of its new light over the first frames.
+const float kAnnouncedChangeHistory = 0.5;
 // The clip's width inside one surface, in standard deviations of the 3x3 samples.
 const float kInsideClipGamma = 3.0;
 
@@ -95,6 +99,7 @@ void main() {
     // interpolated colour for when nothing else is known (a Gaussian of a third of a render pixel), the
     // colour spread for clipping, and the surfaces seen.
     vec3 added = vec3(0.0), colour = vec3(0.0), m1 = vec3(0.0), m2 = vec3(0.0);
+    vec3 lowest = vec3(1e30), highest = vec3(-1e30);
     float addedWeight = 0.0, colourWeight = 0.0;
     uint keys[9];
     for (int k = 0; k < 9; ++k) {
@@ -113,6 +118,8 @@ void main() {
         vec3 y = toYCoCg(c);
         m1 += y;
         m2 += y * y;
+        lowest = min(lowest, y);
+        highest = max(highest, y);
         // The keys primary rays wrote: one uint per tap, where the G-buffer costs two texels and
         // the key's arithmetic.
         keys[k] = texelFetch(gSurfaceKeys, int(qi)).x;
@@ -128,6 +135,7 @@ void main() {
     // render position to the display's.
     vec4 history = vec4(0.0);
     bool inside = false;  // all 3x3 samples on the history's surface: no edge near
+    bool still = false;   // the history is this very pixel's (a still view of a still surface)
     if ((gParams.flags & UPSAMPLING_RESTART) == 0u) {
         vec2 previous = vec2(pixel) + 0.5;
         if (nearestMotion.w > 0.0) previous += (nearestMotion.xy - nearestSample) / scale;
@@ -141,6 +149,8 @@ void main() {
                 inside = inside && keys[k] == previousKey;
             }
             if (seen) history = catmullRomHistory(previous, ivec2(display));
+            vec2 moved = abs(previous - (vec2(pixel) + 0.5));  // float noise: 1e-5 of a pixel
+            still = seen && max(moved.x, moved.y) < 1.0e-3;
         }
     }
 
@@ -157,10 +167,24 @@ void main() {
         // window on a wall); a tight clip there throws away the history's average of it, and the
         // image darkens. Only edges get the tight clip.
         float gamma = inside ? kInsideClipGamma : gParams.clipGamma;
-        vec3 clipped = clamp(h, mean - gamma * sigma, mean + gamma * sigma);
+        vec3 lo = mean - gamma * sigma, hi = mean + gamma * sigma;
+        // On a still view the history is this pixel's own average over the jitter cycle: the
+        // 3x3 samples of one frame are a few of the points it averaged, so their spread says
+        // nothing about whether it is out of date (a sub-pixel window lands in a few of them and
+        // a variance clip pulls it to the brick around it: the still image lost windows and
+        // light). Only a value beyond all of them is a change the flags did not announce (a
+        // moving object's shadow): the box is their range (Salvi 2016, "An Excursion in Temporal
+        // Supersampling", for the variance box it widens).
+        if (still) {
+            lo = lowest;
+            hi = highest;
+        }
+        vec3 clipped = clamp(h, lo, hi);
         float frameWeight = scale.x * scale.y * kGaussianIntegral;
         float historyWeight = history.w;
-        if ((gParams.flags & UPSAMPLING_LIGHTING_CHANGED) != 0u || abs(clipped.x - h.x) > 0.1 * max(mean.x, 1e-4))
+        if ((gParams.flags & UPSAMPLING_LIGHTING_CHANGED) != 0u)
+            historyWeight = min(historyWeight, kAnnouncedChangeHistory * frameWeight);
+        else if (abs(clipped.x - h.x) > 0.1 * max(mean.x, 1e-4))
             historyWeight = min(historyWeight, kChangedHistory * frameWeight);
         result = (fromYCoCg(clipped) * historyWeight + added) / (historyWeight + addedWeight);
         weight = min(historyWeight + addedWeight, gParams.maxHistory * frameWeight);

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "gpu/gpu_test_setup.h"
+#include "metrics/display_error.h"
 #include "render/camera.h"
 #include "render/upsampling/temporal_upsampling.h"
 #include "world/scene_trace.h"
@@ -31,6 +32,19 @@ Scene edges() {
     scene.sky.sunDirection = glm::normalize(glm::vec3(0.4f, 1.0f, 0.3f));
     scene.cameras.push_back(
         CameraPreset{"view", {24.0f, 16.0f, -14.0f}, {22.0f, 4.0f, 20.0f}, 55.0f});
+    scene.grid.clearDirty();
+    return scene;
+}
+
+// The steps and pillars before a far wall with a grid of one-voxel lit windows: at the display's
+// size a window is about a pixel, at the render size half of one (a facade at a distance).
+Scene windows() {
+    Scene scene = edges();
+    auto lamp =
+        scene.palette.add(Material{"window", glm::vec3(0.7f), glm::vec3(1.0f, 0.9f, 0.7f), 2.0f});
+    fillBox(scene.grid, Box{{0, 1, 44}, {48, 20, 45}}, 2);
+    for (int y = 3; y < 19; y += 3)
+        for (int x = 1; x < 48; x += 3) scene.grid.set({x, y, 44}, *lamp);
     scene.grid.clearDirty();
     return scene;
 }
@@ -77,7 +91,7 @@ class Upsampling : public GpuTest {};
 
 TEST(UpsamplingJitter, HaltonOffsetsCoverThePixel) {
     double sx = 0.0, sy = 0.0;
-    for (std::uint32_t i = 1; i <= engine::render::TemporalUpsampling::kJitterPhases; ++i) {
+    for (std::uint32_t i = 1; i <= 16; ++i) {
         const glm::vec2 j = engine::render::jitterOffset(i);
         EXPECT_GT(j.x, -0.5f);
         EXPECT_LT(j.x, 0.5f);
@@ -90,6 +104,10 @@ TEST(UpsamplingJitter, HaltonOffsetsCoverThePixel) {
     EXPECT_LT(std::abs(sy / 16.0), 1.0 / 16.0);
     EXPECT_NEAR(engine::render::jitterOffset(1).x, 0.0f, 1e-6);
     EXPECT_NEAR(engine::render::jitterOffset(1).y, 1.0f / 3.0f - 0.5f, 1e-6);
+    // The cycle: 8 points per display pixel a render pixel covers (AMD FSR 2's count).
+    EXPECT_EQ(engine::render::jitterPhases({320, 180}, {640, 360}), 32u);
+    EXPECT_EQ(engine::render::jitterPhases({160, 90}, {640, 360}), 128u);
+    EXPECT_EQ(engine::render::jitterPhases({640, 360}, {640, 360}), 16u);
 }
 
 // Every pixel whose surface point the previous camera also saw maps, through the G-buffer's motion
@@ -174,6 +192,23 @@ TEST_F(Upsampling, StillCameraConvergesToTheAntialiasedImage) {
     EXPECT_LT(upError, 0.5 * rawError) << "raw 32x32 blown up " << rawError;
     // And no darker or brighter than the truth.
     EXPECT_NEAR(meanLuminance(up.display) / meanLuminance(truth), 1.0, 0.02);
+}
+
+// A still view of sub-pixel detail (render 32x32, display 64x64, lit windows of about a display
+// pixel) after 32 frames, against the 4x4 box-filtered truth: relative MAE below 0.07. Before,
+// 0.076: a jitter cycle of 16 points put only 4 distinct samples in each display pixel, and the
+// clip to the 3x3 samples' spread pulled a window's history towards the wall around it. Now
+// (32 points at this scale, the still history clipped to the samples' range only) 0.065.
+TEST_F(Upsampling, StillCameraConvergesOnSubPixelDetail) {
+    Scene scene = windows();
+    const std::vector<glm::vec4> truth = boxFiltered(scene, 64);
+    Renderer renderer(gpu_testing::context());
+    const FrameImages up = renderFrames(
+        renderer, scene, display(engine::lighting::Display::Upsampled), upsampledFrame(32, 64), 32);
+    const auto e = engine::metrics::compareDisplay({up.display, 64, 64}, {truth, 64, 64});
+    ASSERT_TRUE(e);
+    EXPECT_LT(e->relativeMae, 0.07);
+    EXPECT_NEAR(e->meanRatio, 1.0, 0.04);
 }
 
 // A new render size keeps what the display has converged to: the frame after the change is

@@ -51,6 +51,7 @@ struct DisplayBenchOptions {
     std::optional<std::uint32_t> frames;  // absent: the whole path
     std::uint32_t referenceEvery = 10;
     std::uint32_t referenceSpp = 128;
+    std::string only;                        // "flythrough" or "stability": that part alone
     std::string stabilityWorld = "sandbox";  // "none": skip the stability cases
     std::string stabilitySize;               // default: --size
     std::uint32_t stabilitySpp = 64;
@@ -260,11 +261,12 @@ int runDisplayBench(const DisplayBenchOptions& o) {
                     "ms median | p95 | MAE / raw same scale | wall / raw same scale |\n"
                     "|---|---|---|---|---|---|---|---|---|---|---|\n"};
     for (const std::string& world : o.worlds) {
+        if (o.only == "stability") break;
         if (engine::Status s = benchWorld(*setup->gpu, world, o, display, outputs); !s)
             return fail(s.error());
     }
     std::string stabilityTable;
-    if (o.stabilityWorld != "none") {
+    if (o.stabilityWorld != "none" && o.only != "flythrough") {
         auto scene = loadWorld(o.stabilityWorld);
         if (!scene) return fail(scene.error());
         auto fly = flythroughOf(*scene, o.stabilityWorld);
@@ -274,6 +276,7 @@ int runDisplayBench(const DisplayBenchOptions& o) {
         StabilityOptions so = o.stability;
         so.display = stabilityDisplay;
         so.referenceSpp = o.stabilitySpp;
+        if (o.images) so.images = out / "images";
         if (engine::Status s =
                 displayStability(*setup->gpu, *scene, *fly, displayRows(o.scales), *lighting, so,
                                  stabilityTable, stabilityFile.stream());
@@ -317,6 +320,9 @@ void addBenchDisplayCommand(CLI::App& bench, int& exitCode) {
     cmd->add_option("--reference-spp", o->referenceSpp, "Reference samples per pixel")
         ->capture_default_str()
         ->check(numberIn(engine::wholeRange(1, 65536, "samples per pixel")));
+    cmd->add_option("--only", o->only,
+                    "Run one part: flythrough (the worlds' paths) or stability (the still cases)")
+        ->check(CLI::IsMember({"flythrough", "stability"}));
     cmd->add_option("--stability-world", o->stabilityWorld,
                     "World whose timeline events the stability cases replay on a still camera "
                     "(none: skip them)")
@@ -339,8 +345,13 @@ void addBenchDisplayCommand(CLI::App& bench, int& exitCode) {
                     "Stability: frames of a moving object, each against its own reference")
         ->capture_default_str()
         ->check(numberIn(engine::wholeRange(1, 100000, "frames")));
+    cmd->add_option("--stability-cases", o->stability.cases,
+                    "Stability: only the first N cases (0: all)")
+        ->capture_default_str();
     cmd->add_flag("--images", o->images,
-                  "Write every reference frame and each row's image of it as PNGs (images/)");
+                  "Write every reference frame and each row's image of it as PNGs (images/); "
+                  "the stability cases: each still camera's last frame, its reference and a "
+                  "heat map of their difference");
     addLightingOptions(*cmd, o->lighting);
     cmd->add_option("-o,--output", o->output, "Output folder")->capture_default_str();
     cmd->callback([o, &exitCode] { exitCode = runDisplayBench(*o); });

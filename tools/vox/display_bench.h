@@ -74,6 +74,11 @@ struct StabilityOptions {
     std::uint32_t stillFrames = 32;  // frames before each event
     std::uint32_t afterFrames = 12;  // frames after it
     std::uint32_t ghostFrames = 16;  // frames of a moving object
+    std::uint32_t cases = 0;         // the first this many cases (0: all)
+    // Not empty: each still camera's last frame per row, its reference and a heat map of their
+    // difference as PNGs here, and the error split (edges, low frequencies, the reference's own
+    // noise against a reference of 4x the samples) in the CSV.
+    std::filesystem::path images;
 };
 engine::Status displayStability(engine::gpu::Context& ctx, const engine::world::Scene& scene,
                                 const engine::world::Flythrough& fly,

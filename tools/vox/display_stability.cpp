@@ -15,6 +15,7 @@
 // Luminance is clamped at the reference's 98th percentile as in metrics/display_error.h.
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <fmt/format.h>
 #include <map>
@@ -23,6 +24,7 @@
 
 #include "display_bench.h"
 #include "metrics/display_error.h"
+#include "metrics/heat_map.h"
 #include "progress_line.h"
 #include "shared/gbuffer.h"
 
@@ -60,6 +62,57 @@ double meanOver(const std::vector<double>& v, const std::vector<std::uint8_t>& m
     for (std::size_t i = 0; i < v.size(); ++i)
         if (mask[i]) s += v[i], ++n;
     return n ? s / double(n) : 0.0;
+}
+
+// Where a still image's error against the reference is, on clamped luminance, as shares of the
+// relative MAE: pixels at an edge of the reference (its 3x3 neighbourhood spans more than half
+// its mean: aliasing, resolution), and the error left after both images are averaged over 8x8
+// blocks (bias: a tone or energy difference, not noise or edges).
+struct ErrorSplit {
+    double mae = 0.0, edgeShare = 0.0, blockMae = 0.0;
+};
+
+ErrorSplit splitError(const std::vector<double>& shown, const std::vector<double>& ref,
+                      glm::uvec2 size) {
+    ErrorSplit e;
+    double sum = 0.0, refSum = 0.0, edge = 0.0;
+    for (std::uint32_t y = 0; y < size.y; ++y) {
+        for (std::uint32_t x = 0; x < size.x; ++x) {
+            const std::size_t i = std::size_t(y) * size.x + x;
+            double lo = ref[i], hi = ref[i], mean = 0.0;
+            int n = 0;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const int qx = int(x) + dx, qy = int(y) + dy;
+                    if (qx < 0 || qy < 0 || qx >= int(size.x) || qy >= int(size.y)) continue;
+                    const double v = ref[std::size_t(qy) * size.x + std::size_t(qx)];
+                    lo = std::min(lo, v), hi = std::max(hi, v), mean += v, ++n;
+                }
+            const double d = std::abs(shown[i] - ref[i]);
+            sum += d;
+            refSum += ref[i];
+            if (hi - lo > 0.5 * mean / n) edge += d;
+        }
+    }
+    double block = 0.0;
+    for (std::uint32_t by = 0; by + 8 <= size.y; by += 8)
+        for (std::uint32_t bx = 0; bx + 8 <= size.x; bx += 8) {
+            double a = 0.0, b = 0.0;
+            for (std::uint32_t y = by; y < by + 8; ++y)
+                for (std::uint32_t x = bx; x < bx + 8; ++x)
+                    a += shown[std::size_t(y) * size.x + x], b += ref[std::size_t(y) * size.x + x];
+            block += std::abs(a - b);
+        }
+    e.mae = sum / std::max(refSum, 1e-12);
+    e.edgeShare = edge / std::max(sum, 1e-12);
+    e.blockMae = block / std::max(refSum, 1e-12);
+    return e;
+}
+
+std::string fileLabel(std::string s) {
+    for (char& c : s)
+        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+    return s;
 }
 
 // A row replaying one case: its own scene and timeline (events before the case applied).
@@ -112,6 +165,10 @@ engine::Status displayStability(engine::gpu::Context& ctx, const Scene& scene,
                             : e.kind == TimelineEvent::Kind::DynamicStart ? e.object
                                                                           : e.material);
     }
+    if (o.cases > 0 && caseFrames.size() > o.cases) {
+        caseFrames.resize(o.cases);
+        std::erase_if(caseNames, [&](const auto& c) { return c.first > caseFrames.back(); });
+    }
     if (caseFrames.empty())
         return engine::makeError("{}: no timeline events for the stability cases", fly.source);
     std::ptrdiff_t nativeRow = -1;
@@ -145,6 +202,22 @@ engine::Status displayStability(engine::gpu::Context& ctx, const Scene& scene,
         const auto refBefore = reference.render(refScene, camera, o.display, t0);
         const double limitBefore = clampLimit(refBefore);
         const auto lumRefBefore = clampedLuminance(refBefore, limitBefore);
+        if (!o.images.empty()) {
+            // The reference's own noise: against one of 4x its samples.
+            DisplayReference finer(ctx, base, o.referenceSpp * 4);
+            const auto fine = finer.render(refScene, camera, o.display, t0);
+            const ErrorSplit n =
+                splitError(lumRefBefore, clampedLuminance(fine, limitBefore), o.display);
+            csv << fmt::format(
+                "\"{}\",reference,still_error_split,{:.5f},against {} spp: edge share {:.2f}; "
+                "8x8 block MAE {:.5f}\n",
+                name, n.mae, o.referenceSpp * 4, n.edgeShare, n.blockMae);
+            const auto stem = o.images / fmt::format("still_{:04}", frame);
+            if (engine::Status s = writeViewPng(stem.string() + "_reference.png", refBefore,
+                                                o.display, viewExposure(refBefore));
+                !s)
+                return s;
+        }
         double refMeanBefore = 0.0;
         for (double v : lumRefBefore) refMeanBefore += v;
         refMeanBefore /= double(lumRefBefore.size());
@@ -177,6 +250,29 @@ engine::Status displayStability(engine::gpu::Context& ctx, const Scene& scene,
                                                      {refBefore, o.display.x, o.display.y});
             if (!e) return e.error();
             RowSummary& s = summary[std::size_t(&r - runs.data())];
+            if (!o.images.empty()) {
+                const auto lum = clampedLuminance(shown, limitBefore);
+                const ErrorSplit split = splitError(lum, lumRefBefore, o.display);
+                csv << fmt::format(
+                    "\"{}\",{},still_error_split,{:.5f},edge share {:.2f}; 8x8 block MAE "
+                    "{:.5f}; mean ratio {:.4f}\n",
+                    name, r.row.label(), split.mae, split.edgeShare, split.blockMae, e->meanRatio);
+                std::vector<float> diff(lum.size());
+                for (std::size_t p = 0; p < lum.size(); ++p)
+                    diff[p] =
+                        float(std::abs(lum[p] - lumRefBefore[p]) / std::max(refMeanBefore, 1e-12));
+                const auto stem =
+                    o.images / fmt::format("still_{:04}_{}", frame, fileLabel(r.row.label()));
+                if (engine::Status st = writeViewPng(stem.string() + ".png", shown, o.display,
+                                                     viewExposure(refBefore));
+                    !st)
+                    return st;
+                engine::metrics::HeatMapOptions heat;
+                heat.maxValue = 0.5f;  // |difference| of half the image's mean luminance: red
+                auto written = engine::metrics::writeHeatMap(stem.string() + "_error.png", diff,
+                                                             o.display.x, o.display.y, heat);
+                if (!written) return written.error();
+            }
             s.stillMae.push_back(e->relativeMae);
             s.flicker.push_back(pairs ? flicker / pairs : 0.0);
             csv << fmt::format("\"{}\",{},still_relative_mae,{:.5f}\n", name, r.row.label(),

@@ -1,5 +1,7 @@
 #include "render/upsampling/temporal_upsampling.h"
 
+#include <algorithm>
+#include <cmath>
 #include <fmt/format.h>
 
 #include "gpu/uploader.h"
@@ -16,6 +18,11 @@ float radicalInverse(std::uint32_t index, std::uint32_t base) {
 }
 
 }  // namespace
+
+std::uint32_t jitterPhases(glm::uvec2 render, glm::uvec2 display) {
+    const double ratio = double(display.x) / double(std::max(render.x, 1u));
+    return std::clamp(std::uint32_t(std::lround(8.0 * ratio * ratio)), 16u, 128u);
+}
 
 glm::vec2 jitterOffset(std::uint32_t index) {
     return glm::vec2(radicalInverse(index, 2), radicalInverse(index, 3)) - 0.5f;
@@ -58,9 +65,10 @@ void TemporalUpsampling::prepare(const FrameChanges& changes, const FrameInput& 
         }
         mRestart = true;
     }
-    const glm::vec2 jitter = in.lighting.display.jitter
-                                 ? jitterOffset(in.frameIndex % kJitterPhases + 1)
-                                 : glm::vec2(0.0f);
+    const glm::vec2 jitter =
+        in.lighting.display.jitter
+            ? jitterOffset(in.frameIndex % jitterPhases(in.size, in.displaySize) + 1)
+            : glm::vec2(0.0f);
     params.jitter = glm::vec4(jitter, mPrevJitter);
     mPrevJitter = jitter;
 

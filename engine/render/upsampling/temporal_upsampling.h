@@ -1,6 +1,6 @@
 // TemporalUpsampling: the displayed image at the display's size from the lighting at the render
 // size (`--display upsampled` or `denoised`). Each frame moves the primary rays by a sub-pixel
-// jitter (Halton 2,3: 16 offsets that cover a pixel evenly); the resolve
+// jitter (Halton 2,3: a cycle of 16 to 128 offsets, jitterPhases); the resolve
 // (shaders/upsampling/resolve.comp) blends this frame's samples into last frame's display image,
 // reprojected by the G-buffer's exact motion (the camera, and each object's own transform),
 // dropped where its voxel-face plane is not among this frame's nearby ones and clipped to their
@@ -21,11 +21,14 @@ namespace engine::render {
 // Halton (2, 3) point `index` (from 1) minus 0.5: a sub-pixel offset in (-0.5, 0.5)^2.
 glm::vec2 jitterOffset(std::uint32_t index);
 
+// Jitter offsets in a cycle: 8 per display pixel a render pixel covers, as AMD FSR 2's
+// ffxFsr2GetJitterPhaseCount (8 x (display / render)^2), 16 to 128. At scale 0.5 a cycle of 16
+// put only 4 distinct points in each display pixel, so a still image stopped converging at its
+// edges after 16 frames; 32 put 8 there. At the display's own size it stays 16.
+std::uint32_t jitterPhases(glm::uvec2 render, glm::uvec2 display);
+
 class TemporalUpsampling : public Technique {
 public:
-    // Jitter offsets in a cycle; a still camera's history covers them all.
-    static constexpr std::uint32_t kJitterPhases = 16;
-
     explicit TemporalUpsampling(gpu::Context& ctx);
     static TechniquePlan plan(const lighting::LightingSettings& l, const SceneShape& scene,
                               glm::uvec2 size);
