@@ -21,7 +21,8 @@ constexpr std::uint32_t kEmitterLookupPasses = 6 + 6 * (1 + 8 + 64);
 
 std::uint32_t traversalSteps(glm::ivec3 size) {
     const auto planes = std::uint64_t(size.x) + std::uint64_t(size.y) + std::uint64_t(size.z);
-    return static_cast<std::uint32_t>(std::min<std::uint64_t>(planes + 1, shared::TRAVERSAL_MAX_STEPS));
+    return static_cast<std::uint32_t>(
+        std::min<std::uint64_t>(planes + 1, shared::TRAVERSAL_MAX_STEPS));
 }
 
 }  // namespace
@@ -29,7 +30,8 @@ std::uint32_t traversalSteps(glm::ivec3 size) {
 std::uint32_t rayLoopPasses(const world::Scene& scene) {
     std::uint32_t passes = kFixedPassesPerRay + traversalSteps(scene.grid.sizeInVoxels());
     if (scene.dynamic.present())
-        passes += shared::DYNAMIC_OCCUPANCY_BOXES + traversalSteps(scene.dynamic.grid.sizeInVoxels());
+        passes +=
+            shared::DYNAMIC_OCCUPANCY_BOXES + traversalSteps(scene.dynamic.grid.sizeInVoxels());
     return passes;
 }
 

@@ -3,6 +3,8 @@
 // one dispatch far below the budget computes. Each test's world is built to spend the budget in
 // one dispatch, and checks that it does (else it would show nothing); the reference's corridor is
 // checked only against one sample per frame.
+#include "render/loop_budget.h"
+
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
@@ -10,7 +12,6 @@
 
 #include "core/hash.h"
 #include "gpu/gpu_test_setup.h"
-#include "render/loop_budget.h"
 #include "world/world_edits.h"
 
 using namespace engine::world;
@@ -31,10 +32,11 @@ int differingPixels(const std::vector<glm::vec4>& a, const std::vector<glm::vec4
 // of voxels one small block at a time.
 Scene corridor() {
     const glm::ivec3 size{16, 16, 384};
-    Scene scene = paletteScene(size,
-                               {Material{"white", glm::vec3(0.7f)},
-                                Material{"lamp", glm::vec3(0.8f), glm::vec3(1.0f, 0.9f, 0.7f), 8.0f}},
-                               true);
+    Scene scene =
+        paletteScene(size,
+                     {Material{"white", glm::vec3(0.7f)},
+                      Material{"lamp", glm::vec3(0.8f), glm::vec3(1.0f, 0.9f, 0.7f), 8.0f}},
+                     true);
     const MaterialId white = *scene.palette.find("white"), lamp = *scene.palette.find("lamp");
     fillBox(scene.grid, Box{{0, 0, 0}, {16, 1, 384}}, white);
     fillBox(scene.grid, Box{{0, 15, 0}, {16, 16, 384}}, white);
@@ -49,7 +51,8 @@ Scene corridor() {
                     scene.grid.set({x, y, z}, white);
             }
     for (int z = 8; z < size.z; z += 12) scene.grid.set({7 + z % 2, 14, z}, lamp);
-    scene.cameras.push_back(CameraPreset{"down the corridor", {8.0f, 8.0f, 2.0f}, {8.0f, 7.0f, 200.0f}, 70.0f});
+    scene.cameras.push_back(
+        CameraPreset{"down the corridor", {8.0f, 8.0f, 2.0f}, {8.0f, 7.0f, 200.0f}, 70.0f});
     scene.grid.clearDirty();
     return scene;
 }
