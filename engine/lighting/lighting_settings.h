@@ -58,6 +58,9 @@ struct LightingSettings {
     bool referenceMis =
         true;  // Reference: MIS of light and cosine sampling (false: light sampling only)
     ReferenceProbe referenceProbe = ReferenceProbe::None;
+    // BruteForce and Uniform test hook: shadow rays per pixel per dispatch (0: as many as
+    // lavapipe's loop budget allows, render/loop_budget.h); 1 keeps every dispatch far below it.
+    std::uint32_t shadowRaysPerDispatch = 0;
     std::uint32_t seed = 1;
     Indirect indirect =
         Indirect::None;  // Cache, Path and Vct add their term to any method but Reference

@@ -212,7 +212,8 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
         mSpecializeShaders ? std::span<const std::uint32_t>(frame.features)
                            : std::span<const std::uint32_t>();
     FrameCommands commands(mCtx, mTimer, mLateTimer, specialization);
-    const FrameInput in{scene, camera, settings, lighting, mSize, mDisplaySize, mFrameIndex};
+    const FrameInput in{scene, camera,       settings,    lighting,
+                        mSize, mDisplaySize, mFrameIndex, mEmitters.aliveCount()};
     prepareFrame(commands.current(), scene, in, frame, result);
 
     gpu::Buffer& gbuffer = mGBuffers[mCurrent];

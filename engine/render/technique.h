@@ -65,6 +65,7 @@ struct FrameInput {
     glm::uvec2 size;
     glm::uvec2 displaySize;  // the displayed image's (size, unless a technique writes the display)
     std::uint32_t frameIndex;
+    std::uint32_t emitters;  // alive emitters this frame (the emitter list's, as uploaded)
 };
 
 // The frame's buffers that the passes of different techniques hand each other.

@@ -33,7 +33,7 @@ void main() {
         vec3 L = vec3(0.0);
         if (s.valid) {
             // Stream 64 + i: one per path, apart from every other pass's (1-11).
-            uint rng = rngInit(pixel, gPath.frame, 64u + i, gPath.seed);
+            uint rng = rngInit(pixel, gPath.frame, 64u + gPath.firstSample + i, gPath.seed);
             vec3 dir = cosineDirection(s.normal, rngNext(rng), rngNext(rng));
             vec3 origin = s.position + s.normal * kRayOffset;
             SceneHit hit = traceScene(origin, dir, 1.0e30);
@@ -46,6 +46,7 @@ void main() {
         accum += vec4(L, 1.0);
     }
     gAccum[index] = accum;
+    if ((flags & PATH_INDIRECT_FINAL) == 0u) return;
     vec3 indirect = accum.rgb / accum.w;
     gIndirect[index] = vec4(indirect, 1.0);
     gRadiance[index] += vec4(indirect, 0.0);

@@ -16,7 +16,12 @@ struct LightSamplingParams {
     uint byPower;     // draws by emitter power, alias table (else uniform)
     uint frameIndex;
     uint seed;
-    uint pad0, pad1;
+    // Many shadow rays per pixel run as several dispatches (lavapipe's loop budget,
+    // engine/render/loop_budget.h), each adding its range [first, end) of the alive emitters
+    // (brute force) or of the samples to the pixel's running sum in the partial buffer; the
+    // dispatch with end == LIGHT_SAMPLING_REST takes the rest and writes the radiance.
+    uint first;
+    uint end;
 };
 SHARED_ASSERT_SIZE(LightSamplingParams, 32);
 
@@ -24,6 +29,11 @@ SHARED_CONST uint LIGHT_SAMPLING_BINDING_FRAME = LIT_PASS_BINDING_FIRST + 0u;   
 SHARED_CONST uint LIGHT_SAMPLING_BINDING_PARAMS = LIT_PASS_BINDING_FIRST + 1u;    // LightSamplingParams
 SHARED_CONST uint LIGHT_SAMPLING_BINDING_GBUFFER = LIT_PASS_BINDING_FIRST + 2u;   // GBufferTexel per pixel
 SHARED_CONST uint LIGHT_SAMPLING_BINDING_RADIANCE = LIT_PASS_BINDING_FIRST + 3u;  // vec4 per pixel
+// uvec4 per pixel between the dispatches of one brute-force frame: the sum so far (float bits)
+// and the random state
+SHARED_CONST uint LIGHT_SAMPLING_BINDING_PARTIAL = LIT_PASS_BINDING_FIRST + 4u;
+
+SHARED_CONST uint LIGHT_SAMPLING_REST = 0xffffffffu;
 
 SHARED_END
 

@@ -12,14 +12,18 @@ SHARED_BEGIN
 SHARED_CONST uint PATH_INDIRECT_BRICK_LIGHTS = 1u;
 // Drop the accumulated sum: the camera moved, the world or the settings changed, or accumulation is off.
 SHARED_CONST uint PATH_INDIRECT_RESTART = 2u;
+// The frame's last dispatch (a frame's paths may take several, engine/render/loop_budget.h): it
+// writes the indirect term and adds it to the radiance.
+SHARED_CONST uint PATH_INDIRECT_FINAL = 4u;
 
 struct PathIndirectParams {
-    uint samples;  // bounce paths per pixel in this frame
+    uint samples;  // bounce paths per pixel in this dispatch
     uint bounces;  // bounces per path (>= 1)
     uint flags;    // PATH_INDIRECT_*
     uint frame;    // the renderer's frame index: with the seed, it seeds the frame's paths
     uint seed;
-    uint pad0, pad1, pad2;
+    uint firstSample;  // the frame's paths before this dispatch's
+    uint pad0, pad1;
 };
 SHARED_ASSERT_SIZE(PathIndirectParams, 32);
 

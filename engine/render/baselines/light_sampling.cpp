@@ -5,19 +5,22 @@
 #include "gpu/uploader.h"
 #include "render/baselines/light_sampling_params.h"
 #include "render/frame_commands.h"
+#include "render/loop_budget.h"
+#include "world/scene.h"
 
 namespace engine::render {
 
-LightSampling::LightSampling(gpu::Context& ctx) : mPass(ctx) {
-    mParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::LightSamplingParams),
-                          "baselines.params");
+LightSampling::LightSampling(gpu::Context& ctx) : mCtx(ctx), mPass(ctx) {
+    mPartial = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(glm::uvec4), "baselines.partial");
 }
 
 TechniquePlan LightSampling::plan(const lighting::LightingSettings& l, const SceneShape&,
-                                  glm::uvec2) {
+                                  glm::uvec2 size) {
     TechniquePlan p;
     p.runs = lighting::samplesLightsPerPixel(l);
     p.deviceBytes = sizeof(shared::LightSamplingParams);
+    // The running sums of a frame split across dispatches (render/loop_budget.h).
+    p.deviceBytes += std::uint64_t(size.x) * size.y * sizeof(glm::uvec4);
     return p;
 }
 
@@ -30,13 +33,32 @@ std::string LightSampling::describe(const lighting::LightingSettings& l) {
 
 void LightSampling::prepare(const FrameChanges&, const FrameInput& in, gpu::Uploader& uploader,
                             shared::FrameParams&) {
-    const shared::LightSamplingParams p = lightSamplingParams(in.lighting, in.frameIndex);
-    uploader.write(mParams, 0, &p, sizeof(p));
+    shared::LightSamplingParams p = lightSamplingParams(in.lighting, in.frameIndex);
+    const std::uint32_t rays = p.everyLight != 0u ? in.emitters : std::max(p.samples, 1u);
+    const std::uint32_t perDispatch = in.lighting.shadowRaysPerDispatch != 0u
+                                          ? in.lighting.shadowRaysPerDispatch
+                                          : shadowRaysPerDispatch(in.scene);
+    mDispatches = std::max(1u, (rays + perDispatch - 1u) / perDispatch);
+    const std::uint64_t partialBytes =
+        mDispatches > 1u ? std::uint64_t(in.size.x) * in.size.y * sizeof(glm::uvec4)
+                         : sizeof(glm::uvec4);
+    if (mPartial.size() != partialBytes)
+        mPartial = gpu::Buffer(mCtx, gpu::BufferKind::Storage, partialBytes, "baselines.partial");
+    while (mParams.size() < mDispatches)
+        mParams.emplace_back(mCtx, gpu::BufferKind::Storage, sizeof(shared::LightSamplingParams),
+                             "baselines.params");
+    for (std::uint32_t d = 0; d < mDispatches; ++d) {
+        p.first = d * perDispatch;
+        p.end = d + 1 < mDispatches ? p.first + perDispatch : shared::LIGHT_SAMPLING_REST;
+        uploader.write(mParams[d], 0, &p, sizeof(p));
+    }
 }
 
 void LightSampling::record(FrameCommands& commands, const FrameBuffers& frame) {
-    mPass.record(commands.current(), frame.scene,
-                 {frame.frameParams, mParams, frame.gbuffer, frame.radiance}, frame.size);
+    std::vector<LightSamplingIo> series;
+    for (std::uint32_t d = 0; d < mDispatches; ++d)
+        series.push_back({frame.frameParams, mParams[d], frame.gbuffer, frame.radiance, mPartial});
+    mPass.recordSeries(commands.current(), frame.scene, series, frame.size);
 }
 
 }  // namespace engine::render

@@ -1,4 +1,5 @@
-// Light-sampling baselines: N light samples with N shadow rays per pixel, or every light once.
+// Light-sampling baselines: N light samples with N shadow rays per pixel, or every light once
+// (one dispatch per range of emitters or samples, LightSampling::record).
 // Shader: shaders/baselines/light_sampling.comp
 #pragma once
 
@@ -12,11 +13,13 @@ struct LightSamplingIo {
     const gpu::Buffer& params;       // read: LightSamplingParams
     const gpu::Buffer& gbuffer;      // read
     gpu::Buffer& radiance;           // write
+    gpu::Buffer& partial;            // read and write: the sums between a frame's dispatches
     auto bindings() const {
         return std::to_array<PassBinding>({{shared::LIGHT_SAMPLING_BINDING_FRAME, &frameParams},
                                            {shared::LIGHT_SAMPLING_BINDING_PARAMS, &params},
                                            {shared::LIGHT_SAMPLING_BINDING_GBUFFER, &gbuffer},
-                                           {shared::LIGHT_SAMPLING_BINDING_RADIANCE, &radiance}});
+                                           {shared::LIGHT_SAMPLING_BINDING_RADIANCE, &radiance},
+                                           {shared::LIGHT_SAMPLING_BINDING_PARTIAL, &partial}});
     }
 };
 

@@ -41,4 +41,16 @@ void ComputePass::record(gpu::CommandList& cmd, std::span<const PassBinding> bin
     cmd.endPass();
 }
 
+void ComputePass::recordSeries(gpu::CommandList& cmd,
+                               std::span<const std::vector<PassBinding>> series,
+                               glm::uvec2 groups) {
+    cmd.beginPass(mName);
+    for (const std::vector<PassBinding>& bindings : series) {
+        const Bound b = bound(bindings);
+        if (groups.x > 0 && groups.y > 0)
+            mPipeline.dispatch(cmd, b.buffers, groups.x, groups.y, 1, b.writes);
+    }
+    cmd.endPass();
+}
+
 }  // namespace engine::render

@@ -69,6 +69,10 @@ public:
     // `groups` workgroups; a zero count records only the label. The dispatch waits for the
     // earlier commands that wrote what it reads or touched what it writes (PassBinding::writes).
     void record(gpu::CommandList& cmd, std::span<const PassBinding> bindings, glm::uvec2 groups);
+    // Several such dispatches, one after another (dispatch i binds series[i]), labelled and timed
+    // as one pass: a frame's work split to fit lavapipe's loop budget (render/loop_budget.h).
+    void recordSeries(gpu::CommandList& cmd, std::span<const std::vector<PassBinding>> series,
+                      glm::uvec2 groups);
     // The same with the workgroup counts an earlier pass wrote into `args` at `offset` (three
     // uints): for work whose size only the GPU knows, such as the pixels a pass set aside.
     void recordIndirect(gpu::CommandList& cmd, std::span<const PassBinding> bindings,

@@ -23,6 +23,13 @@ void LitPass::record(gpu::CommandList& cmd, const SceneBindings& scene,
     mPass.record(cmd, withScene(scene, own), groups);
 }
 
+void LitPass::recordSeries(gpu::CommandList& cmd, const SceneBindings& scene,
+                           std::span<const std::vector<PassBinding>> series, glm::uvec2 groups) {
+    std::vector<std::vector<PassBinding>> all;
+    for (const std::vector<PassBinding>& own : series) all.push_back(withScene(scene, own));
+    mPass.recordSeries(cmd, all, groups);
+}
+
 void LitPass::recordIndirect(gpu::CommandList& cmd, const SceneBindings& scene,
                              std::span<const PassBinding> own, const gpu::Buffer& args,
                              std::uint64_t offset) {

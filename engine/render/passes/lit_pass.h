@@ -19,6 +19,10 @@ public:
     // `own`: the pass's buffers, at LIT_PASS_BINDING_FIRST and after.
     void record(gpu::CommandList& cmd, const SceneBindings& scene, std::span<const PassBinding> own,
                 glm::uvec2 groups);
+    // Dispatches one after another, `series[i]` dispatch i's own buffers, timed as one pass
+    // (ComputePass::recordSeries).
+    void recordSeries(gpu::CommandList& cmd, const SceneBindings& scene,
+                      std::span<const std::vector<PassBinding>> series, glm::uvec2 groups);
     // Workgroup counts from `args` at `offset` (ComputePass::recordIndirect).
     void recordIndirect(gpu::CommandList& cmd, const SceneBindings& scene,
                         std::span<const PassBinding> own, const gpu::Buffer& args,
@@ -40,6 +44,16 @@ public:
         : mPass(ctx, std::move(name), shader, bindingCount<Io>()) {}
     void record(gpu::CommandList& cmd, const SceneBindings& scene, const Io& io, glm::uvec2 size) {
         mPass.record(cmd, scene, io.bindings(), screenGroups(size));
+    }
+    // One dispatch per Io of `series`, timed as one pass (LitPass::recordSeries).
+    void recordSeries(gpu::CommandList& cmd, const SceneBindings& scene, std::span<const Io> series,
+                      glm::uvec2 size) {
+        std::vector<std::vector<PassBinding>> own;
+        for (const Io& io : series) {
+            const auto b = io.bindings();
+            own.emplace_back(b.begin(), b.end());
+        }
+        mPass.recordSeries(cmd, scene, own, screenGroups(size));
     }
 
 private:

@@ -3,11 +3,14 @@
 // Per pixel and frame, `samples` bounce paths from the G-buffer's surface (the reference path
 // tracer's walk from the first bounce on), averaged over frames while camera and world stay still
 // and restarted when either changes — on a flythrough every frame starts afresh.
-// Owns the running sum and the parameters.
+// Owns the running sum and the parameters. A frame's paths run as several dispatches when their
+// loops would spend more than lavapipe's loop budget (render/loop_budget.h); each path's random
+// numbers follow from its index in the frame, so the split changes no bit.
 #pragma once
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "gpu/buffer.h"
 #include "gpu/uploader.h"
@@ -35,7 +38,11 @@ public:
 private:
     gpu::Context& mCtx;
     PathIndirectPass mPass;
-    gpu::Buffer mParams, mAccumulation;
+    // One PathIndirectParams per dispatch of this frame (at least as many): a frame's paths are
+    // split into dispatches that fit lavapipe's loop budget (render/loop_budget.h).
+    std::vector<gpu::Buffer> mParams;
+    std::uint32_t mDispatches = 1;
+    gpu::Buffer mAccumulation;
     glm::uvec2 mSize{0};
     std::uint32_t mPaths = 0;
 };

@@ -7,14 +7,12 @@
 #include "gpu/uploader.h"
 #include "render/frame_commands.h"
 #include "render/frame_result.h"
+#include "render/loop_budget.h"
 #include "render/reference/reference_params.h"
 
 namespace engine::render {
 
-Reference::Reference(gpu::Context& ctx) : mCtx(ctx), mPass(ctx) {
-    mParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::ReferenceParams),
-                          "reference.params");
-}
+Reference::Reference(gpu::Context& ctx) : mCtx(ctx), mPass(ctx) {}
 
 TechniquePlan Reference::plan(const lighting::LightingSettings& l, const SceneShape&,
                               glm::uvec2 size) {
@@ -40,16 +38,27 @@ void Reference::prepare(const FrameChanges& changes, const FrameInput& in, gpu::
     }
     mRestart = mSamples == 0 || changes.restartsAccumulation();
     if (mRestart) mSamples = 0;
-    mSamples += std::max(in.lighting.samplesPerFrame, 1u);
-    const shared::ReferenceParams p = referenceParams(in.lighting);
-    uploader.write(mParams, 0, &p, sizeof(p));
+    const std::uint32_t samples = std::max(in.lighting.samplesPerFrame, 1u);
+    mSamples += samples;
+    shared::ReferenceParams p = referenceParams(in.lighting);
+    const std::uint32_t perDispatch = referenceSamplesPerDispatch(in.scene, in.lighting.bounces);
+    mDispatches = (samples + perDispatch - 1) / perDispatch;
+    while (mParams.size() < mDispatches)
+        mParams.emplace_back(mCtx, gpu::BufferKind::Storage, sizeof(shared::ReferenceParams),
+                             "reference.params");
+    for (std::uint32_t d = 0; d < mDispatches; ++d) {
+        p.samples = std::min(perDispatch, samples - d * perDispatch);
+        uploader.write(mParams[d], 0, &p, sizeof(p));
+    }
 }
 
 void Reference::record(FrameCommands& commands, const FrameBuffers& frame) {
     gpu::CommandList& cmd = commands.current();
     if (mRestart) cmd.fillBuffer(mAccumulation, 0);
-    mPass.record(cmd, frame.scene, {frame.frameParams, mParams, mAccumulation, frame.radiance},
-                 mSize);
+    std::vector<ReferenceIo> series;
+    for (std::uint32_t d = 0; d < mDispatches; ++d)
+        series.push_back({frame.frameParams, mParams[d], mAccumulation, frame.radiance});
+    mPass.recordSeries(cmd, frame.scene, series, mSize);
 }
 
 void Reference::collect(FrameResult& result) { result.referenceSamples = mSamples; }
