@@ -38,7 +38,7 @@ TEST_F(ComputePipelineBindings, TypesFollowTheShaderDeclarations) {
 }
 
 TEST_F(ComputePipelineBindings, LightPassesReadTheEmittersAndAliasTableAsTexels) {
-    const std::uint32_t count = shared::LIGHT_SAMPLING_BINDING_RADIANCE + 1u;
+    const std::uint32_t count = shared::LIGHT_SAMPLING_BINDING_PARTIAL + 1u;
     engine::gpu::ComputePipeline lit(context(), "baselines/light_sampling", count);
     const std::vector<VkDescriptorType>& types = lit.bindingTypes();
     EXPECT_EQ(types[shared::LIGHTS_BINDING_ALIAS], VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER);
