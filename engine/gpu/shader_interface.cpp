@@ -1,9 +1,8 @@
 #include "gpu/shader_interface.h"
 
-#include <spirv_cross_c.h>
-
 #include <algorithm>
 #include <memory>
+#include <spirv_cross_c.h>
 
 #include "core/check.h"
 
@@ -53,16 +52,18 @@ ShaderInterface reflectShaderInterface(std::span<const std::uint32_t> code,
         return std::min(spvc_compiler_get_decoration(compiler, r.id, SpvDecorationBinding),
                         bindingCount);
     };
-    for (const spvc_reflected_resource& r : resourcesOf(resources, SPVC_RESOURCE_TYPE_STORAGE_BUFFER)) {
+    for (const spvc_reflected_resource& r :
+         resourcesOf(resources, SPVC_RESOURCE_TYPE_STORAGE_BUFFER)) {
         const std::uint32_t b = bindingOf(r);
         if (b == bindingCount) continue;
         const SpvDecoration* decorations = nullptr;
         size_t count = 0;
         spvc_compiler_get_buffer_block_decorations(compiler, r.id, &decorations, &count);
-        out.writable[b] =
-            std::find(decorations, decorations + count, SpvDecorationNonWritable) == decorations + count;
+        out.writable[b] = std::find(decorations, decorations + count, SpvDecorationNonWritable) ==
+                          decorations + count;
     }
-    for (const spvc_reflected_resource& r : resourcesOf(resources, SPVC_RESOURCE_TYPE_SAMPLED_IMAGE)) {
+    for (const spvc_reflected_resource& r :
+         resourcesOf(resources, SPVC_RESOURCE_TYPE_SAMPLED_IMAGE)) {
         const std::uint32_t b = bindingOf(r);
         if (b == bindingCount) continue;
         spvc_type type = spvc_compiler_get_type_handle(compiler, r.type_id);
@@ -70,10 +71,11 @@ ShaderInterface reflectShaderInterface(std::span<const std::uint32_t> code,
                   "shader %s, binding %u: only sampled buffer images", name, b);
         out.bindingTypes[b] = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
     }
-    for (spvc_resource_type type : {SPVC_RESOURCE_TYPE_STORAGE_IMAGE, SPVC_RESOURCE_TYPE_SEPARATE_IMAGE})
+    for (spvc_resource_type type :
+         {SPVC_RESOURCE_TYPE_STORAGE_IMAGE, SPVC_RESOURCE_TYPE_SEPARATE_IMAGE})
         for (const spvc_reflected_resource& r : resourcesOf(resources, type))
-            CHECK_MSG(bindingOf(r) == bindingCount, "shader %s, binding %u: only sampled buffer images",
-                      name, bindingOf(r));
+            CHECK_MSG(bindingOf(r) == bindingCount,
+                      "shader %s, binding %u: only sampled buffer images", name, bindingOf(r));
     return out;
 }
 

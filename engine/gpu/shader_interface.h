@@ -3,11 +3,10 @@
 // Read with SPIRV-Cross's reflection, so the pipeline's layout follows the shader's source.
 #pragma once
 
-#include <vulkan/vulkan.h>
-
 #include <cstdint>
 #include <span>
 #include <vector>
+#include <vulkan/vulkan.h>
 
 namespace engine::gpu {
 
