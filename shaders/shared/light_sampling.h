@@ -25,9 +25,11 @@ struct LightSamplingParams {
 };
 SHARED_ASSERT_SIZE(LightSamplingParams, 32);
 
-SHARED_CONST uint LIGHT_SAMPLING_BINDING_FRAME = LIT_PASS_BINDING_FIRST + 0u;     // FrameParams
-SHARED_CONST uint LIGHT_SAMPLING_BINDING_PARAMS = LIT_PASS_BINDING_FIRST + 1u;    // LightSamplingParams
-SHARED_CONST uint LIGHT_SAMPLING_BINDING_GBUFFER = LIT_PASS_BINDING_FIRST + 2u;   // GBufferTexel per pixel
+SHARED_CONST uint LIGHT_SAMPLING_BINDING_FRAME = LIT_PASS_BINDING_FIRST + 0u;  // FrameParams
+SHARED_CONST uint LIGHT_SAMPLING_BINDING_PARAMS =
+    LIT_PASS_BINDING_FIRST + 1u;  // LightSamplingParams
+SHARED_CONST uint LIGHT_SAMPLING_BINDING_GBUFFER =
+    LIT_PASS_BINDING_FIRST + 2u;  // GBufferTexel per pixel
 SHARED_CONST uint LIGHT_SAMPLING_BINDING_RADIANCE = LIT_PASS_BINDING_FIRST + 3u;  // vec4 per pixel
 // uvec4 per pixel between the dispatches of one brute-force frame: the sum so far (float bits)
 // and the random state

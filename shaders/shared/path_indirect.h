@@ -10,7 +10,8 @@ SHARED_BEGIN
 // PathIndirectParams.flags
 // The emitter list was built with brick lights (the MIS weight of an emitter hit needs its shape).
 SHARED_CONST uint PATH_INDIRECT_BRICK_LIGHTS = 1u;
-// Drop the accumulated sum: the camera moved, the world or the settings changed, or accumulation is off.
+// Drop the accumulated sum: the camera moved, the world or the settings changed, or accumulation is
+// off.
 SHARED_CONST uint PATH_INDIRECT_RESTART = 2u;
 // The frame's last dispatch (a frame's paths may take several, engine/render/loop_budget.h): it
 // writes the indirect term and adds it to the radiance.
@@ -27,12 +28,16 @@ struct PathIndirectParams {
 };
 SHARED_ASSERT_SIZE(PathIndirectParams, 32);
 
-SHARED_CONST uint PATH_INDIRECT_BINDING_FRAME = LIT_PASS_BINDING_FIRST + 0u;         // FrameParams
-SHARED_CONST uint PATH_INDIRECT_BINDING_PARAMS = LIT_PASS_BINDING_FIRST + 1u;        // PathIndirectParams
-SHARED_CONST uint PATH_INDIRECT_BINDING_GBUFFER = LIT_PASS_BINDING_FIRST + 2u;       // GBufferTexel per pixel
-SHARED_CONST uint PATH_INDIRECT_BINDING_ACCUMULATION = LIT_PASS_BINDING_FIRST + 3u;  // vec4 per pixel: sum, paths
-SHARED_CONST uint PATH_INDIRECT_BINDING_INDIRECT = LIT_PASS_BINDING_FIRST + 4u;      // vec4 per pixel, written
-SHARED_CONST uint PATH_INDIRECT_BINDING_RADIANCE = LIT_PASS_BINDING_FIRST + 5u;      // vec4 per pixel, added to
+SHARED_CONST uint PATH_INDIRECT_BINDING_FRAME = LIT_PASS_BINDING_FIRST + 0u;   // FrameParams
+SHARED_CONST uint PATH_INDIRECT_BINDING_PARAMS = LIT_PASS_BINDING_FIRST + 1u;  // PathIndirectParams
+SHARED_CONST uint PATH_INDIRECT_BINDING_GBUFFER =
+    LIT_PASS_BINDING_FIRST + 2u;  // GBufferTexel per pixel
+SHARED_CONST uint PATH_INDIRECT_BINDING_ACCUMULATION =
+    LIT_PASS_BINDING_FIRST + 3u;  // vec4 per pixel: sum, paths
+SHARED_CONST uint PATH_INDIRECT_BINDING_INDIRECT =
+    LIT_PASS_BINDING_FIRST + 4u;  // vec4 per pixel, written
+SHARED_CONST uint PATH_INDIRECT_BINDING_RADIANCE =
+    LIT_PASS_BINDING_FIRST + 5u;  // vec4 per pixel, added to
 
 SHARED_END
 
