@@ -1,14 +1,8 @@
 #include "game/streamed_world.h"
 
 #include <algorithm>
-#include <any>
 
-#include "scene/generators/store_keys.h"
-#include "scene/scene_file.h"
-#include "scene/store_world.h"
-#include "world/generators.h"
-#include "world/store_region_source.h"
-#include "world/terrain_region_source.h"
+#include "scene/world_regions.h"
 
 namespace game {
 
@@ -27,56 +21,26 @@ engine::Result<std::optional<StreamedWorld>> openStreamedWorld(const fs::path& p
         return std::optional<StreamedWorld>{};
     }
     // The world without its voxels: its tables, and its generators read but not run.
-    auto lean = ext == ".db" ? engine::scene::loadWorldStore(path, {}, /*regions=*/false)
-                             : engine::scene::loadSceneFile(path, {.gridGenerators = false});
+    auto lean = engine::scene::loadWorldLean(path);
     if (!lean) return lean.error();
     const glm::ivec3 size = lean->grid.sizeInVoxels();
     if (!asked && std::max(size.x, size.z) <= kStreamByDefaultVoxels)
         return std::optional<StreamedWorld>{};
 
-    StreamedWorld out;
-    std::unique_ptr<world::RegionSource> source;
-    if (fs::path store = engine::scene::storeOfScene(*lean); !store.empty()) {
-        // Streamed rows keep the store's material ids: the scene's palette must be the store's.
-        if (ext != ".db") {
-            auto own = engine::scene::loadWorldStore(store, {}, /*regions=*/false);
-            if (!own) return own.error();
-            if (own->palette.size() != lean->palette.size())
-                return engine::makeError(
-                    "{}: cannot stream: its palette differs from its store's ({}); play the store "
-                    "itself or --stream-radius 0",
-                    path.string(), store.string());
-            for (std::size_t i = 1; i < own->palette.size(); ++i)
-                if (own->palette[world::MaterialId(i)].name !=
-                    lean->palette[world::MaterialId(i)].name)
-                    return engine::makeError(
-                        "{}: cannot stream: its palette differs from its store's ({}); play the "
-                        "store itself or --stream-radius 0",
-                        path.string(), store.string());
-        }
-        auto opened = world::StoreRegionSource::open(store, lean->palette.size());
-        if (!opened) return opened.error();
-        if (opened->worldSizeInCells() != lean->grid.sizeInCells())
-            return engine::makeError("{}: cannot stream: its size differs from its store's ({})",
-                                     path.string(), store.string());
-        source = std::make_unique<world::StoreRegionSource>(std::move(*opened));
-        out.store = store;
-    } else if (lean->generators.size() == 1 && lean->generators[0].type == "terrain") {
-        source = std::make_unique<world::TerrainRegionSource>(
-            size, std::any_cast<const world::TerrainParams&>(lean->generators[0].params));
-    } else {
+    auto regions = engine::scene::worldRegionsOf(*lean, path);
+    if (!regions) return regions.error();
+    if (!regions->source) {
         if (asked)
-            return engine::makeError(
-                "--stream-radius: {}: cannot stream: only a store or a world of one terrain "
-                "generator streams ({} generator(s) here)",
-                path.string(), lean->generators.size());
-        // Not streamable: loaded whole (its generators were not run).
-        return std::optional<StreamedWorld>{};
+            return engine::makeError("--stream-radius: {}: cannot stream: {}", path.string(),
+                                     regions->whyNot);
+        return std::optional<StreamedWorld>{};  // not streamable: loaded whole
     }
+    StreamedWorld out;
+    out.store = regions->store;
     const world::ResidencySettings settings{
         options.radius > 0.0f ? options.radius : StreamOptions::kDefaultRadius,
         options.budgetMiB << 20};
-    out.streaming = std::make_unique<world::GridStreaming>(std::move(source), settings,
+    out.streaming = std::make_unique<world::GridStreaming>(std::move(regions->source), settings,
                                                            options.regionsPerFrame);
     out.scene = std::move(*lean);
     return std::optional<StreamedWorld>(std::move(out));

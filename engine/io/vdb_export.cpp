@@ -7,6 +7,7 @@
 
 #include "core/atomic_file.h"
 #include "core/progress.h"
+#include "io/vdb_export_cells.h"
 #include "io/vdb_layout.h"
 #include "io/vdb_reader.h"
 
@@ -74,12 +75,14 @@ private:
     }
 };
 
-// One output grid written straight from the brick grid, never built as an OpenVDB tree: its
+// One output grid written straight from the world's cells, never built as an OpenVDB tree: its
 // topology and leaf buffers are produced cell by cell while io::Archive writes it, in exactly the
 // byte layout Tree::writeTopology()/writeBuffers() would produce (RootNode, InternalNode 5 and 4,
 // LeafNode 3; root children sorted by origin, node children in bit order). Our bricks and
 // OpenVDB leaves share size and alignment, so an empty cell is nothing, a homogeneous cell one
-// tile of an internal node, and a brick one leaf.
+// tile of an internal node, and a brick one leaf. An Internal4 node is exactly one region, so
+// each pass (statistics, topology, buffers) reads the world region by region
+// (io/vdb_export_cells.h).
 template <typename GridT>
 class BrickGridAsVdb final : public GridT {
 public:
@@ -90,21 +93,22 @@ public:
     using LeafT = typename Int4T::ChildNodeType;
     using ValueOf = std::function<std::optional<ValueT>(MaterialId)>;
 
-    BrickGridAsVdb(const BrickGrid& grid, ValueOf value)
+    BrickGridAsVdb(ExportCells& cells, ValueOf value)
         : GridT(vdb::zeroVal<ValueT>()),
-          mGrid(grid),
+          mCells(cells),
           mValue(std::move(value)),
           mBackground(vdb::zeroVal<ValueT>()) {
         static_assert(LeafT::DIM == world::kBrickDim, "bricks must be OpenVDB leaves");
-        const glm::ivec3 cells = grid.sizeInCells();
+        static_assert(kCells4 == world::kRegionCells, "an Internal4 node must be one region");
+        mRegions = world::regionCount(cells.sizeInCells());
+        computeStats();
         // The Internal5 nodes (512^3 cells) with anything in them, in root-table order.
-        const glm::ivec3 nodes = (cells + (kCells5 - 1)) / kCells5;
+        const glm::ivec3 nodes = (mRegions + (kRegions5 - 1)) / kRegions5;
         for (int x = 0; x < nodes.x; ++x)
             for (int y = 0; y < nodes.y; ++y)
                 for (int z = 0; z < nodes.z; ++z)
-                    if (anyContent(glm::ivec3(x, y, z) * kCells5, kCells5))
+                    if (nodeHasContent(glm::ivec3(x, y, z) * kRegions5))
                         mRootChildren.emplace_back(x, y, z);
-        computeStats();
     }
 
     std::uint64_t tiles() const { return mTiles; }
@@ -139,11 +143,12 @@ public:
 private:
     static constexpr int kCells4 = Int4T::DIM / LeafT::DIM;  // 16 cells per Internal4 axis
     static constexpr int kCells5 = Int5T::DIM / LeafT::DIM;  // 512 cells per Internal5 axis
+    static constexpr int kRegions5 = kCells5 / kCells4;      // 32 regions per Internal5 axis
     enum class Kind { Empty, Tile, Leaf };
+    static constexpr const char* kStatsTask = "counting VDB grid content (regions)";
 
     Kind kind(glm::ivec3 c, ValueT* tile = nullptr) const {
-        if (!mGrid.containsCell(c)) return Kind::Empty;
-        const std::uint32_t cell = mGrid.cell(c);
+        const std::uint32_t cell = mCells.cell(c);
         if (cell == shared::CELL_EMPTY) return Kind::Empty;
         if (!BrickGrid::cellIsBrick(cell)) {
             std::optional<ValueT> v = mValue(BrickGrid::cellMaterial(cell));
@@ -151,23 +156,30 @@ private:
             if (tile) *tile = *v;
             return Kind::Tile;
         }
-        for (MaterialId m : mGrid.brickVoxels(BrickGrid::cellBrick(cell)))
+        for (MaterialId m : mCells.brickVoxels(cell))
             if (m != world::kEmpty && mValue(m)) return Kind::Leaf;
         return Kind::Empty;
     }
 
-    bool anyContent(glm::ivec3 first, int count) const {
-        const glm::ivec3 last = glm::min(first + count, mGrid.sizeInCells());
-        for (int z = first.z; z < last.z; ++z)
-            for (int y = first.y; y < last.y; ++y)
-                for (int x = first.x; x < last.x; ++x)
-                    if (kind({x, y, z}) != Kind::Empty) return true;
+    std::size_t regionIndex(glm::ivec3 r) const {
+        return std::size_t(r.x) +
+               std::size_t(mRegions.x) * (std::size_t(r.y) + std::size_t(mRegions.y) * r.z);
+    }
+    bool regionHasContent(glm::ivec3 r) const {
+        return glm::all(glm::lessThan(r, mRegions)) && mRegionHasContent[regionIndex(r)];
+    }
+    bool nodeHasContent(glm::ivec3 firstRegion) const {
+        const glm::ivec3 last = glm::min(firstRegion + kRegions5, mRegions);
+        for (int z = firstRegion.z; z < last.z; ++z)
+            for (int y = firstRegion.y; y < last.y; ++y)
+                for (int x = firstRegion.x; x < last.x; ++x)
+                    if (mRegionHasContent[regionIndex({x, y, z})]) return true;
         return false;
     }
 
     // A leaf's values in OpenVDB's order (x slowest, z fastest) and its active mask.
     void leaf(glm::ivec3 c, ValueT* values, typename LeafT::NodeMaskType& mask) const {
-        const world::BrickVoxels& voxels = mGrid.brickVoxels(BrickGrid::cellBrick(mGrid.cell(c)));
+        const world::BrickVoxels& voxels = mCells.brickVoxels(mCells.cell(c));
         mask.setOff();
         for (vdb::Index i = 0; i < LeafT::SIZE; ++i) {
             const MaterialId m = voxels[std::size_t(
@@ -188,7 +200,8 @@ private:
     void writeInternal5(std::ostream& os, glm::ivec3 first, bool topology) const {
         typename Int5T::NodeMaskType childMask, valueMask;
         for (vdb::Index pos = 0; pos < Int5T::NUM_VALUES; ++pos)
-            if (anyContent(first + childCell<Int5T>(pos, kCells4), kCells4)) childMask.setOn(pos);
+            if (regionHasContent((first + childCell<Int5T>(pos, kCells4)) / kCells4))
+                childMask.setOn(pos);
         if (topology) {
             childMask.save(os);
             valueMask.save(os);
@@ -238,43 +251,53 @@ private:
         }
     }
 
-    // The statistics io::Archive would have added (file_bbox_min/max, file_voxel_count,
-    // file_mem_bytes); computed here because it would compute them from an empty tree.
+    // Which regions hold anything for this grid, and the statistics io::Archive would have added
+    // (file_bbox_min/max, file_voxel_count, file_mem_bytes; it would compute them from an empty
+    // tree): one pass, region by region.
     void computeStats() {
         glm::ivec3 lo(INT32_MAX), hi(INT32_MIN);
-        const glm::ivec3 cells = mGrid.sizeInCells();
+        const glm::ivec3 size = mCells.sizeInCells();
         std::unique_ptr<ValueT[]> values(new ValueT[LeafT::SIZE]);
         typename LeafT::NodeMaskType mask;
-        std::uint64_t int4 = 0;
-        for (int z = 0; z < cells.z; ++z)
-            for (int y = 0; y < cells.y; ++y)
-                for (int x = 0; x < cells.x; ++x) {
-                    const glm::ivec3 c(x, y, z);
-                    const Kind k = kind(c);
-                    if (k == Kind::Empty) continue;
-                    if (k == Kind::Tile) {
-                        mTiles++;
-                        mActive += LeafT::SIZE;
-                        lo = glm::min(lo, c * 8);
-                        hi = glm::max(hi, c * 8 + 7);
-                        continue;
-                    }
-                    mLeaves++;
-                    leaf(c, values.get(), mask);
-                    mActive += mask.countOn();
-                    for (auto it = mask.beginOn(); it; ++it) {
-                        const vdb::Index i = it.pos();
-                        const glm::ivec3 p =
-                            c * 8 + glm::ivec3(int(i >> 6), int((i >> 3) & 7), int(i & 7));
-                        lo = glm::min(lo, p);
-                        hi = glm::max(hi, p);
-                    }
+        mRegionHasContent.assign(std::size_t(mRegions.x) * mRegions.y * mRegions.z, false);
+        for (int rz = 0; rz < mRegions.z; ++rz)
+            for (int ry = 0; ry < mRegions.y; ++ry)
+                for (int rx = 0; rx < mRegions.x; ++rx) {
+                    const world::CellRange range = world::regionCells({rx, ry, rz}, size);
+                    bool content = false;
+                    for (int z = range.min.z; z < range.max.z; ++z)
+                        for (int y = range.min.y; y < range.max.y; ++y)
+                            for (int x = range.min.x; x < range.max.x; ++x) {
+                                const glm::ivec3 c(x, y, z);
+                                const Kind k = kind(c);
+                                if (k == Kind::Empty) continue;
+                                content = true;
+                                if (k == Kind::Tile) {
+                                    mTiles++;
+                                    mActive += LeafT::SIZE;
+                                    lo = glm::min(lo, c * 8);
+                                    hi = glm::max(hi, c * 8 + 7);
+                                    continue;
+                                }
+                                mLeaves++;
+                                leaf(c, values.get(), mask);
+                                mActive += mask.countOn();
+                                for (auto it = mask.beginOn(); it; ++it) {
+                                    const vdb::Index i = it.pos();
+                                    const glm::ivec3 p =
+                                        c * 8 +
+                                        glm::ivec3(int(i >> 6), int((i >> 3) & 7), int(i & 7));
+                                    lo = glm::min(lo, p);
+                                    hi = glm::max(hi, p);
+                                }
+                            }
+                    mRegionHasContent[regionIndex({rx, ry, rz})] = content;
+                    mInt4 += content;
+                    const std::size_t done = regionIndex({rx, ry, rz}) + 1;
+                    if (done < mRegionHasContent.size())
+                        reportProgress(kStatsTask, done, mRegionHasContent.size());
                 }
-        for (const glm::ivec3& node : mRootChildren) {
-            for (vdb::Index pos = 0; pos < Int5T::NUM_VALUES; ++pos)
-                int4 += anyContent(node * kCells5 + childCell<Int5T>(pos, kCells4), kCells4);
-        }
-        mInt4 = int4;
+        reportProgress(kStatsTask, mRegionHasContent.size(), mRegionHasContent.size());
         if (mActive == 0) lo = hi = glm::ivec3(0);
         this->insertMeta(vdb::GridBase::META_FILE_BBOX_MIN,
                          vdb::Vec3IMetadata(vdb::Vec3i(lo.x, lo.y, lo.z)));
@@ -282,26 +305,35 @@ private:
                          vdb::Vec3IMetadata(vdb::Vec3i(hi.x, hi.y, hi.z)));
         this->insertMeta(vdb::GridBase::META_FILE_VOXEL_COUNT,
                          vdb::Int64Metadata(std::int64_t(mActive)));
-        const std::uint64_t memory = mRootChildren.size() * sizeof(Int5T) + int4 * sizeof(Int4T) +
+        std::uint64_t int5 = 0;
+        const glm::ivec3 nodes = (mRegions + (kRegions5 - 1)) / kRegions5;
+        for (int x = 0; x < nodes.x; ++x)
+            for (int y = 0; y < nodes.y; ++y)
+                for (int z = 0; z < nodes.z; ++z)
+                    int5 += nodeHasContent(glm::ivec3(x, y, z) * kRegions5);
+        const std::uint64_t memory = int5 * sizeof(Int5T) + mInt4 * sizeof(Int4T) +
                                      mLeaves * (sizeof(LeafT) + LeafT::SIZE * sizeof(ValueT));
         this->insertMeta(vdb::GridBase::META_FILE_MEM_BYTES,
                          vdb::Int64Metadata(std::int64_t(memory)));
     }
 
-    const BrickGrid& mGrid;
+    ExportCells& mCells;
     ValueOf mValue;
     ValueT mBackground;
+    glm::ivec3 mRegions{0};               // regions along each axis
+    std::vector<bool> mRegionHasContent;  // x fastest
     std::vector<glm::ivec3> mRootChildren;
     std::uint64_t mTiles = 0, mLeaves = 0, mActive = 0;
-    std::uint64_t mInt4 = 0;  // Internal4 nodes (128^3 voxels): the unit of export progress
+    std::uint64_t mInt4 = 0;  // Internal4 nodes (regions) with content: the unit of progress
     mutable std::uint64_t mWrittenInt4 = 0;
     mutable std::string mProgressTask;
 };
 
 template <typename GridT>
-std::shared_ptr<BrickGridAsVdb<GridT>> gridOf(const world::Scene& scene, const char* name, bool zUp,
+std::shared_ptr<BrickGridAsVdb<GridT>> gridOf(ExportCells& cells, const world::Scene& scene,
+                                              const char* name, bool zUp,
                                               typename BrickGridAsVdb<GridT>::ValueOf value) {
-    auto grid = std::make_shared<BrickGridAsVdb<GridT>>(scene.grid, std::move(value));
+    auto grid = std::make_shared<BrickGridAsVdb<GridT>>(cells, std::move(value));
     grid->setName(name);
     grid->setTransform(vdb_layout::gridTransform(double(scene.voxelSize), zUp));
     grid->setCreator("voxengine");
@@ -320,8 +352,8 @@ Result<VdbExportOptions> vdbExportOptionsFor(const std::string& tool) {
     return o;
 }
 
-Status exportVdb(const world::Scene& scene, const fs::path& path, const VdbExportOptions& options,
-                 VdbExportReport* report) {
+Status exportVdbFrom(ExportCells& cells, const world::Scene& scene, const fs::path& path,
+                     const VdbExportOptions& options, VdbExportReport* report) {
     initializeOpenVdb();
     const world::Palette& palette = scene.palette;
     bool anyEmissive = false;
@@ -333,7 +365,7 @@ Status exportVdb(const world::Scene& scene, const fs::path& path, const VdbExpor
         // First, for tools that show or read "the first grid".
         makers.push_back([&] {
             auto grid =
-                gridOf<vdb::FloatGrid>(scene, vdb_layout::kDensityGrid, options.zUp,
+                gridOf<vdb::FloatGrid>(cells, scene, vdb_layout::kDensityGrid, options.zUp,
                                        [](MaterialId) { return std::optional<float>(1.0f); });
             grid->setGridClass(vdb::GRID_FOG_VOLUME);
             grid->insertMeta(
@@ -344,7 +376,7 @@ Status exportVdb(const world::Scene& scene, const fs::path& path, const VdbExpor
     }
     makers.push_back([&] {
         auto grid =
-            gridOf<vdb::Int32Grid>(scene, vdb_layout::kMaterialGrid, options.zUp,
+            gridOf<vdb::Int32Grid>(cells, scene, vdb_layout::kMaterialGrid, options.zUp,
                                    [](MaterialId m) { return std::optional<std::int32_t>(m); });
         grid->insertMeta("vox:role",
                          vdb::StringMetadata("material index into the vox:material.* palette"));
@@ -357,7 +389,7 @@ Status exportVdb(const world::Scene& scene, const fs::path& path, const VdbExpor
     if (options.colourGrids) {
         makers.push_back([&] {
             auto grid = gridOf<vdb::Vec3SGrid>(
-                scene, vdb_layout::kAlbedoGrid, options.zUp, [&](MaterialId m) {
+                cells, scene, vdb_layout::kAlbedoGrid, options.zUp, [&](MaterialId m) {
                     glm::vec3 a = palette[m].albedo;
                     return std::optional<vdb::Vec3s>(vdb::Vec3s(a.x, a.y, a.z));
                 });
@@ -369,7 +401,7 @@ Status exportVdb(const world::Scene& scene, const fs::path& path, const VdbExpor
         if (anyEmissive) {
             makers.push_back([&] {
                 auto grid = gridOf<vdb::Vec3SGrid>(
-                    scene, vdb_layout::kEmissionGrid, options.zUp, [&](MaterialId m) {
+                    cells, scene, vdb_layout::kEmissionGrid, options.zUp, [&](MaterialId m) {
                         if (!palette[m].emissive()) return std::optional<vdb::Vec3s>();
                         glm::vec3 e = palette[m].emittedRadiance();
                         return std::optional<vdb::Vec3s>(vdb::Vec3s(e.x, e.y, e.z));
@@ -393,6 +425,8 @@ Status exportVdb(const world::Scene& scene, const fs::path& path, const VdbExpor
             os.exceptions(std::ios::failbit | std::ios::badbit);
             StreamingVdbWriter().writeStreamed(os, fileMetadata, makers);
             os.flush();
+        } catch (const ExportReadError& e) {
+            return makeError("{}", e.message);  // a region the source could not give
         } catch (const std::ios_base::failure&) {
             if (Status s = file.status(); !s) return s;  // the write's own error: path and reason
             return makeError("{}: cannot write VDB file", path.string());
@@ -404,8 +438,27 @@ Status exportVdb(const world::Scene& scene, const fs::path& path, const VdbExpor
     if (!written) return written;
     std::error_code ec;
     local.fileBytes = fs::file_size(path, ec);
+    local.regionLoads = cells.regionLoads();
     if (report) *report = local;
     return {};
+}
+
+Status exportVdb(const world::Scene& scene, const fs::path& path, const VdbExportOptions& options,
+                 VdbExportReport* report) {
+    ExportCells cells(scene.grid);
+    return exportVdbFrom(cells, scene, path, options, report);
+}
+
+Status exportVdb(const world::Scene& scene, world::RegionSource& source, const fs::path& path,
+                 const VdbExportOptions& options, VdbExportReport* report) {
+    if (source.worldSizeInCells() != scene.grid.sizeInCells())
+        return makeError(
+            "{}: cannot export: the world's regions span {}x{}x{} cells, its scene {}x{}x{}",
+            path.string(), source.worldSizeInCells().x, source.worldSizeInCells().y,
+            source.worldSizeInCells().z, scene.grid.sizeInCells().x, scene.grid.sizeInCells().y,
+            scene.grid.sizeInCells().z);
+    ExportCells cells(source);
+    return exportVdbFrom(cells, scene, path, options, report);
 }
 
 }  // namespace engine::io

@@ -2,7 +2,8 @@
 //
 // Streamed: no OpenVDB tree is built. Each grid's topology and leaf values are generated from the
 // brick grid cell by cell as the file is written (a homogeneous cell becomes one 8^3 tile, an
-// empty cell nothing, a brick one leaf), so exporting holds one leaf of values beyond the world.
+// empty cell nothing, a brick one leaf), so exporting holds one leaf of values beyond the world —
+// and, from a region source, one region instead of the world (io/vdb_export_cells.h).
 // The save is atomic (core/atomic_file.h): a temporary file beside the target, every write
 // checked, fsynced, then renamed, so a failed export leaves the previous file intact.
 #pragma once
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "world/region_source.h"
 #include "world/scene.h"
 
 namespace engine::io {
@@ -38,9 +40,16 @@ struct VdbExportReport {
     std::uint64_t tiles = 0;   // homogeneous cells written as one tile each
     std::uint64_t leaves = 0;  // bricks written as 8^3 leaves
     std::uint64_t fileBytes = 0;
+    std::uint64_t regionLoads = 0;  // regions read from a source (each grid reads each three times)
 };
 
 Status exportVdb(const world::Scene& scene, const std::filesystem::path& path,
                  const VdbExportOptions& options = {}, VdbExportReport* report = nullptr);
+// The same file, the voxels read from `source` one region at a time (a world store, a streamed
+// terrain): the export holds one region, never the world. `scene` gives everything else (palette,
+// cameras, sky, voxel size); its grid is not read, but its size must be the source's.
+Status exportVdb(const world::Scene& scene, world::RegionSource& source,
+                 const std::filesystem::path& path, const VdbExportOptions& options = {},
+                 VdbExportReport* report = nullptr);
 
 }  // namespace engine::io

@@ -7,6 +7,7 @@
 #include "io/vdb_export.h"
 #include "io/vox_export.h"
 #include "scene/store_world.h"
+#include "scene/world_regions.h"
 
 namespace vox {
 
@@ -36,6 +37,33 @@ int writeVox(const engine::world::Scene& scene, const std::string& output) {
             "note     %llu emissive voxels emit a colour other than their albedo; .vox emits the "
             "albedo\n",
             static_cast<unsigned long long>(r.emissionColourDiffers));
+    return 0;
+}
+
+// From `regions` when given (the scene's grid is then not read), else from the scene's grid.
+int writeVdb(const engine::world::Scene& scene, engine::world::RegionSource* regions,
+             const engine::io::VdbExportOptions& options, const std::string& output) {
+    engine::io::VdbExportReport report;
+    std::error_code ec;
+    const std::filesystem::path out(output);
+    if (out.has_parent_path())
+        std::filesystem::create_directories(out.parent_path(), ec);  // like every output of vox
+    engine::Status s = regions ? engine::io::exportVdb(scene, *regions, out, options, &report)
+                               : engine::io::exportVdb(scene, out, options, &report);
+    if (!s) return fail(s.error());
+    std::string grids;
+    for (const auto& g : report.grids) grids += (grids.empty() ? "" : ", ") + g;
+    std::printf(
+        "wrote    %s (%.2f MiB)\ngrids    %s%s\nvoxels   %llu solid: %llu cells as 8^3 tiles, "
+        "%llu bricks as leaves\n",
+        output.c_str(), double(report.fileBytes) / (1 << 20), grids.c_str(),
+        options.zUp ? "\naxes     Z-up (the engine's +y is the file's +z)" : "",
+        static_cast<unsigned long long>(report.solidVoxels),
+        static_cast<unsigned long long>(report.tiles),
+        static_cast<unsigned long long>(report.leaves));
+    if (regions)
+        std::printf("read     region by region (%llu region reads), never the whole world\n",
+                    static_cast<unsigned long long>(report.regionLoads));
     return 0;
 }
 
@@ -99,18 +127,8 @@ void addExportCommand(CLI::App& app, int& exitCode) {
                 return;
             }
         }
-        auto scene =
-            exportBox ? engine::scene::loadWorldStore(*world, exportBox) : loadWorld(*world);
-        if (!scene) {
-            exitCode = fail(scene.error());
-            return;
-        }
-        if (ext == ".vox") {
-            exitCode = writeVox(*scene, *output);
-            return;
-        }
         engine::io::VdbExportOptions options;
-        if (!tool->empty()) {
+        if (ext == ".vdb" && !tool->empty()) {
             auto forTool = engine::io::vdbExportOptionsFor(*tool);
             if (!forTool) {
                 exitCode = fail(engine::makeError("--for: {}", forTool.error().message));
@@ -119,26 +137,26 @@ void addExportCommand(CLI::App& app, int& exitCode) {
             options = *forTool;
         }
         options.colourGrids = !*idsOnly;
-        engine::io::VdbExportReport report;
-        std::error_code ec;
-        const std::filesystem::path out(*output);
-        if (out.has_parent_path())
-            std::filesystem::create_directories(out.parent_path(), ec);  // like every output of vox
-        engine::Status s = engine::io::exportVdb(*scene, out, options, &report);
-        if (!s) {
-            exitCode = fail(s.error());
+        // A store or a terrain world goes to VDB region by region, never loaded whole. Anything
+        // else (or a scene whose store has another palette) is loaded whole, as before.
+        if (ext == ".vdb" && !exportBox) {
+            const std::filesystem::path file = worldFileOf(*world);
+            if (file.extension() == ".db" || file.extension() == ".toml")
+                if (auto lean = engine::scene::loadWorldLean(file))
+                    if (auto regions = engine::scene::worldRegionsOf(*lean, file);
+                        regions && regions->source) {
+                        exitCode = writeVdb(*lean, regions->source.get(), options, *output);
+                        return;
+                    }
+        }
+        auto scene =
+            exportBox ? engine::scene::loadWorldStore(*world, exportBox) : loadWorld(*world);
+        if (!scene) {
+            exitCode = fail(scene.error());
             return;
         }
-        std::string grids;
-        for (const auto& g : report.grids) grids += (grids.empty() ? "" : ", ") + g;
-        std::printf(
-            "wrote    %s (%.2f MiB)\ngrids    %s%s\nvoxels   %llu solid: %llu cells as 8^3 tiles, "
-            "%llu bricks as leaves\n",
-            output->c_str(), double(report.fileBytes) / (1 << 20), grids.c_str(),
-            options.zUp ? "\naxes     Z-up (the engine's +y is the file's +z)" : "",
-            static_cast<unsigned long long>(report.solidVoxels),
-            static_cast<unsigned long long>(report.tiles),
-            static_cast<unsigned long long>(report.leaves));
+        exitCode =
+            ext == ".vox" ? writeVox(*scene, *output) : writeVdb(*scene, nullptr, options, *output);
     });
 }
 
