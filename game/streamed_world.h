@@ -14,12 +14,13 @@
 #include <optional>
 
 #include "core/error.h"
+#include "scene/world_regions.h"
 #include "world/grid_streaming.h"
 #include "world/scene.h"
 
 namespace game {
 
-inline constexpr int kStreamByDefaultVoxels = 2048;
+inline constexpr int kStreamByDefaultVoxels = engine::scene::kLoadWholeUpToVoxels;
 
 struct StreamOptions {
     float radius = -1.0f;  // voxels; negative: stream by default at kDefaultRadius; 0: never

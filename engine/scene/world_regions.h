@@ -14,6 +14,11 @@
 
 namespace engine::scene {
 
+// Worlds up to this wide (x and z) load whole in vox play and export from memory: the 1024 x 256 x
+// 1024 terrain loads in about a second; the 4096 x 256 x 4096 one needs 10 s and ~2 GiB
+// (docs/WORLD_STORE.md). Wider ones stream, and a terrain exports region by region.
+inline constexpr int kLoadWholeUpToVoxels = 2048;
+
 // A world read without its voxels: its tables, its generators read but not run. Its grid is
 // sized to the world and empty.
 Result<world::Scene> loadWorldLean(const std::filesystem::path& path);
