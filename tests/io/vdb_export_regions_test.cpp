@@ -1,10 +1,8 @@
 // VDB export region by region (io/vdb_export.h, io/vdb_export_cells.h): from a world store or a
 // terrain scene file the file is byte for byte the one exported from the whole world in memory,
 // each region is read once per pass, and a damaged region fails with one line and leaves no file.
-#include <algorithm>
 #include <fstream>
 #include <gtest/gtest.h>
-#include <iterator>
 
 #include "io/vdb_export.h"
 #include "io/vdb_test_util.h"
@@ -19,15 +17,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using namespace engine::world;
-
-// The file's bytes but its header's UUID, which OpenVDB makes anew for every file (after the
-// magic number, the file and library versions and the grid-offsets flag: bytes 21-56).
-std::string bytesOf(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::string bytes{std::istreambuf_iterator<char>(in), {}};
-    if (bytes.size() > 57) std::fill(bytes.begin() + 21, bytes.begin() + 57, '-');
-    return bytes;
-}
 
 // 47 x 25 x 42 cells: 3 x 2 x 3 regions, clipped at every far edge; stone glows, so the file
 // has an emission grid whose content differs from the material grid's.
@@ -64,7 +53,8 @@ TEST(VdbExportRegions, FromAStoreTheFileIsTheWholeWorldsByteForByte) {
 
     EXPECT_EQ(whole.grids, streamed.grids);
     ASSERT_EQ(streamed.grids.size(), 3u);  // material, albedo, emission
-    EXPECT_TRUE(bytesOf(dir / "whole.vdb") == bytesOf(dir / "store.vdb"));
+    EXPECT_TRUE(vox_test::vdbBytesWithoutUuid(dir / "whole.vdb") ==
+                vox_test::vdbBytesWithoutUuid(dir / "store.vdb"));
     // Per grid: every region once for the statistics, the regions with content once for the
     // topology and once for the buffers — never the world at once, never a region per cell.
     EXPECT_LE(streamed.regionLoads, 3u * 3u * 18u);
@@ -112,7 +102,8 @@ seed = 11
     ASSERT_TRUE(regions.ok() && regions->source) << regions.error().message;
     EXPECT_TRUE(regions->store.empty());
     ASSERT_TRUE(engine::io::exportVdb(*lean, *regions->source, dir / "regions.vdb").ok());
-    EXPECT_TRUE(bytesOf(dir / "whole.vdb") == bytesOf(dir / "regions.vdb"));
+    EXPECT_TRUE(vox_test::vdbBytesWithoutUuid(dir / "whole.vdb") ==
+                vox_test::vdbBytesWithoutUuid(dir / "regions.vdb"));
 }
 
 TEST(VdbExportRegions, ADamagedRegionFailsWithOneLineAndLeavesNoFile) {

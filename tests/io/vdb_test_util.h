@@ -1,9 +1,12 @@
-// Helpers shared by the io tests: a scratch folder per test, and the check every failure message
-// must pass (one line that starts with the file's path).
+// Helpers shared by the io tests: a scratch folder per test, the check every failure message
+// must pass (one line that starts with the file's path), a VDB file's bytes to compare.
 #pragma once
 
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <gtest/gtest.h>
+#include <iterator>
 #include <string>
 #include <unistd.h>
 
@@ -43,6 +46,16 @@ inline ::testing::AssertionResult isOneLineNamingFile(const std::string& message
         return ::testing::AssertionFailure()
                << "does not start with " << file.string() << ": " << message;
     return ::testing::AssertionSuccess();
+}
+
+// A VDB file's bytes but its header's UUID, which OpenVDB makes anew for every file (after the
+// magic number, the file and library versions and the grid-offsets flag: bytes 21-56), so two
+// exports of one world compare equal.
+inline std::string vdbBytesWithoutUuid(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::string bytes{std::istreambuf_iterator<char>(in), {}};
+    if (bytes.size() > 57) std::fill(bytes.begin() + 21, bytes.begin() + 57, '-');
+    return bytes;
 }
 
 }  // namespace vox_test

@@ -11,6 +11,7 @@
 #include "io/vdb_test_util.h"
 #include "scene/generators/store_keys.h"
 #include "scene/scene_file.h"
+#include "scene/world_regions.h"
 #include "world/region_store.h"
 
 namespace {
@@ -76,6 +77,15 @@ TEST(StoreWorld, RealVdbRoundTripsAndExportsLikeTodaysPath) {
     ASSERT_TRUE(a.ok() && b.ok());
     EXPECT_TRUE(a->grid == b->grid);
     EXPECT_TRUE(a->palette == b->palette);
+    // vox export's path for a store, region by region, writes the same file as the store loaded
+    // whole.
+    auto lean = engine::scene::loadWorldLean(dir / "w.db");
+    ASSERT_TRUE(lean.ok()) << lean.error().message;
+    auto regions = engine::scene::worldRegionsOf(*lean, dir / "w.db");
+    ASSERT_TRUE(regions.ok() && regions->source);
+    ASSERT_TRUE(engine::io::exportVdb(*lean, *regions->source, dir / "regions.vdb").ok());
+    EXPECT_TRUE(vox_test::vdbBytesWithoutUuid(dir / "store.vdb") ==
+                vox_test::vdbBytesWithoutUuid(dir / "regions.vdb"));
 }
 
 TEST(StoreWorld, SceneFileNamingTheStoreMapsMaterialsByName) {
