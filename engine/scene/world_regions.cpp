@@ -54,8 +54,13 @@ Result<WorldRegions> worldRegionsOf(const world::Scene& lean, const fs::path& pa
             lean.grid.sizeInVoxels(),
             std::any_cast<const world::TerrainParams&>(lean.generators[0].params));
     } else {
-        out.whyNot = "only a store or a world of one terrain generator is read region by region (" +
-                     std::to_string(lean.generators.size()) + " generator(s) here)";
+        std::string made;
+        for (const world::GeneratorRecord& g : lean.generators)
+            made += (made.empty() ? "" : ", ") + g.type;
+        out.whyNot =
+            "only a store or a world made by one terrain generator is read region by region (made "
+            "by: " +
+            (made.empty() ? std::string("nothing") : made) + ")";
     }
     return out;
 }
