@@ -10,9 +10,9 @@
 //          the row's new steady value (the mean of the last 4 frames), which is also compared
 //          with the reference's;
 //   object: a dynamic object starts, seen from the path's camera moved towards it until it
-//          spans a third of the view (objectCamera); each of `ghostFrames` frames is compared with its own
-//          reference. A pixel the object left a frames ago is "age a"; the ghost trail is the
-//          largest age whose relative error is above 1.5x that of the pixels the object never
+//          spans a third of the view (objectCamera); each of `ghostFrames` frames is compared with
+//          its own reference. A pixel the object left a frames ago is "age a"; the ghost trail is
+//          the largest age whose relative error is above 1.5x that of the pixels the object never
 //          covered (0: no ghost). Coverage comes from the native raw row's G-buffer.
 // Luminance is clamped at the reference's 98th percentile as in metrics/display_error.h.
 #include <algorithm>
@@ -161,7 +161,8 @@ engine::world::CameraPreset objectCamera(engine::world::CameraPreset camera, con
         const float distance =
             extent / (kObjectViewShare * 2.0f * std::tan(glm::radians(camera.fovYDegrees) * 0.5f));
         const glm::vec3 away = camera.position - centre;
-        if (glm::length(away) > distance) camera.position = centre + glm::normalize(away) * distance;
+        if (glm::length(away) > distance)
+            camera.position = centre + glm::normalize(away) * distance;
         camera.target = centre;
         break;
     }
@@ -280,8 +281,10 @@ engine::Status displayStability(engine::gpu::Context& ctx, const Scene& scene,
                     for (std::size_t p = 0; p < lum.size(); ++p)
                         d += std::abs(lum[p] - previous[p]);
                     d /= double(lum.size()) * std::max(refMeanBefore, 1e-12);
-                    if (i < o.stillFrames) converging += d, ++convergingPairs;
-                    else flicker += d, ++pairs;
+                    if (i < o.stillFrames)
+                        converging += d, ++convergingPairs;
+                    else
+                        flicker += d, ++pairs;
                 }
                 previous = lum;
                 if (i + 1 == o.stillFrames) shown = std::move(image);
@@ -320,8 +323,8 @@ engine::Status displayStability(engine::gpu::Context& ctx, const Scene& scene,
                                e->relativeMae);
             csv << fmt::format("\"{}\",{},still_flicker,{:.5f}\n", name, r.row.label(),
                                s.flicker.back());
-            csv << fmt::format("\"{}\",{},still_flicker_converging,{:.5f}\n", name,
-                               r.row.label(), s.convergingFlicker.back());
+            csv << fmt::format("\"{}\",{},still_flicker_converging,{:.5f}\n", name, r.row.label(),
+                               s.convergingFlicker.back());
             if (object && std::ptrdiff_t(&r - runs.data()) == nativeRow) {
                 const auto images = r.renderer->readback();
                 r.objectMask.resize(images.gbuffer.size());
@@ -495,8 +498,7 @@ engine::Status displayStability(engine::gpu::Context& ctx, const Scene& scene,
             rows[i].label(), avg(s.stillMae), avg(s.flicker),
             avg(s.flicker) / std::max(rawFlicker, 1e-12),
             avg(s.convergingFlicker) / std::max(rawConverging, 1e-12), worst(s.framesToSteady), lo,
-            hi,
-            s.ghostTrail ? fmt::format("{} ({})", *s.ghostTrail, s.ghostDetail) : "—");
+            hi, s.ghostTrail ? fmt::format("{} ({})", *s.ghostTrail, s.ghostDetail) : "—");
         table += line;
         std::printf("%s", line.c_str());
     }
