@@ -10,14 +10,20 @@ SHARED_BEGIN
 SHARED_CONST uint UPSAMPLING_RESTART = 1u;  // no history: the first frame, or a new display size
 // The world, its lights or the sky changed: the history counts as half a frame at most.
 SHARED_CONST uint UPSAMPLING_LIGHTING_CHANGED = 2u;
+// A dynamic object moved or appeared: its shadows and light may have moved unannounced.
+SHARED_CONST uint UPSAMPLING_OBJECTS_MOVED = 4u;
 
 struct UpsamplingParams {
     uint flags;        // UPSAMPLING_*
     float maxHistory;  // frames of samples the display history holds at most
     float clipGamma;   // history clipped to the neighbourhood's mean +- gamma standard deviations
     uint pad0;
+    // The voxels this frame's edits changed, with a cell around them (min inclusive, max
+    // exclusive; empty when no edit): a static surface seen there has no history.
+    ivec4 editedMin;
+    ivec4 editedMax;
 };
-SHARED_ASSERT_SIZE(UpsamplingParams, 16);
+SHARED_ASSERT_SIZE(UpsamplingParams, 48);
 
 SHARED_CONST uint UPSAMPLING_BINDING_FRAME = 0u;     // FrameParams
 SHARED_CONST uint UPSAMPLING_BINDING_PARAMS = 1u;    // UpsamplingParams

@@ -128,15 +128,23 @@ void main() {
     // The nearest sample (the middle tap): its surface and motion.
     ivec2 nearestTexel = clamp(nearest, ivec2(0), render - 1);
     uint nearestKey = keys[4];
-    vec4 nearestMotion = loadGBuffer(gGBuffer, uint(nearestTexel.x) + uint(nearestTexel.y) * uint(render.x)).motion;
+    GBufferTexel nearestSurface = loadGBuffer(gGBuffer, uint(nearestTexel.x) + uint(nearestTexel.y) * uint(render.x));
+    vec4 nearestMotion = nearestSurface.motion;
     vec2 nearestSample = vec2(nearestTexel) + 0.5 + jitter;
+    // An edit this frame near the surface: it may have kept its key (a plane) but not its
+    // material or its light (a lamp turned to stone), and then its history is another surface's.
+    bool edited = (nearestSurface.data.w & GBUFFER_FLAG_DYNAMIC) == 0u &&
+                  all(greaterThanEqual(nearestSurface.voxel.xyz, gParams.editedMin.xyz)) &&
+                  all(lessThan(nearestSurface.voxel.xyz, gParams.editedMax.xyz));
 
     // Last frame's display where this pixel's surface was: the nearest sample's motion, from its
     // render position to the display's.
     vec4 history = vec4(0.0);
     bool inside = false;  // all 3x3 samples on the history's surface: no edge near
     bool still = false;   // the history is this very pixel's (a still view of a still surface)
-    if ((gParams.flags & UPSAMPLING_RESTART) == 0u) {
+    bool unchanged = false;  // and the world did not change: the history needs no test
+    bool worldUnchanged = (gParams.flags & (UPSAMPLING_LIGHTING_CHANGED | UPSAMPLING_OBJECTS_MOVED)) == 0u;
+    if ((gParams.flags & UPSAMPLING_RESTART) == 0u && !edited) {
         vec2 previous = vec2(pixel) + 0.5;
         if (nearestMotion.w > 0.0) previous += (nearestMotion.xy - nearestSample) / scale;
         ivec2 keyTexel = ivec2(floor(previous));
@@ -148,9 +156,16 @@ void main() {
                 seen = seen || keys[k] == previousKey;
                 inside = inside && keys[k] == previousKey;
             }
-            if (seen) history = catmullRomHistory(previous, ivec2(display));
             vec2 moved = abs(previous - (vec2(pixel) + 0.5));  // float noise: 1e-5 of a pixel
-            still = seen && max(moved.x, moved.y) < 1.0e-3;
+            bool here = max(moved.x, moved.y) < 1.0e-3;
+            // Nothing in the world changed (no edit, light, sky or object: FrameChanges), and the
+            // surface was at this very pixel: the history is the pixel's own and still right,
+            // whatever this frame's few samples hit. (At a silhouette a sliver of floor one
+            // frame's samples saw and the next's missed dropped it, and the clip pulled it to
+            // whatever they did see: the still image flickered along every edge.)
+            unchanged = here && worldUnchanged;
+            if (seen || unchanged) history = catmullRomHistory(previous, ivec2(display));
+            still = (seen || unchanged) && here;
         }
     }
 
@@ -179,6 +194,10 @@ void main() {
             lo = lowest;
             hi = highest;
         }
+        if (unchanged) {
+            lo = vec3(-1e30);
+            hi = vec3(1e30);
+        }
         vec3 clipped = clamp(h, lo, hi);
         float frameWeight = scale.x * scale.y * kGaussianIntegral;
         float historyWeight = history.w;
@@ -186,8 +205,17 @@ void main() {
             historyWeight = min(historyWeight, kAnnouncedChangeHistory * frameWeight);
         else if (abs(clipped.x - h.x) > 0.1 * max(mean.x, 1e-4))
             historyWeight = min(historyWeight, kChangedHistory * frameWeight);
+        float fullHistory = gParams.maxHistory * frameWeight;
         result = (fromYCoCg(clipped) * historyWeight + added) / (historyWeight + addedWeight);
-        weight = min(historyWeight + addedWeight, gParams.maxHistory * frameWeight);
+        weight = min(historyWeight + addedWeight, fullHistory);
+        // A still pixel with a full history has averaged the jitter cycle; a running mean would
+        // keep moving by the sub-pixel contrast over its length every frame (a flicker 6x raw
+        // ReSTIR's, which is frozen on a still view). It stops taking samples until the clip or
+        // an announced change shortens its history.
+        if (still && historyWeight >= 0.999 * fullHistory) {
+            result = fromYCoCg(clipped);
+            weight = fullHistory;
+        }
     }
     gDisplay[index] = vec4(max(result, vec3(0.0)), weight);
     gKeys[index] = nearestKey;

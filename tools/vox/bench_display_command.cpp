@@ -334,7 +334,7 @@ void addBenchDisplayCommand(CLI::App& bench, int& exitCode) {
         ->capture_default_str()
         ->check(numberIn(engine::wholeRange(1, 65536, "samples per pixel")));
     cmd->add_option("--still-frames", o->stability.stillFrames,
-                    "Stability: still frames before each event (the last 16 give the flicker)")
+                    "Stability: still frames before each event (16 more give the flicker)")
         ->capture_default_str()
         ->check(numberIn(engine::wholeRange(2, 100000, "frames")));
     cmd->add_option("--after-frames", o->stability.afterFrames,

@@ -2,15 +2,17 @@
 // events that share a frame is replayed on a still camera — the path's camera at that moment,
 // scene time held there — so that what changes on screen is the event alone:
 //   still: `stillFrames` frames converge; the last is compared with the converged reference
-//          (relative MAE) and the last 16 give the flicker: the mean |frame - previous frame| of
-//          the clamped luminance over the reference's mean;
+//          (relative MAE); 16 more give the flicker of the converged image: the mean
+//          |frame - previous frame| of the clamped luminance over the reference's mean (the last
+//          16 still frames give it while converging);
 //   edit / light: the event, then `afterFrames` frames; its region (pixels whose reference
 //          luminance changed by more than 10 %) is followed until its mean stays within 10 % of
 //          the row's new steady value (the mean of the last 4 frames), which is also compared
 //          with the reference's;
-//   object: a dynamic object starts; each of `ghostFrames` frames is compared with its own
-//          reference. A pixel the object left a frames ago is "age a"; the ghost trail is the
-//          largest age whose relative error is above 1.5x that of the pixels the object never
+//   object: a dynamic object starts, seen from the path's camera moved towards it until it
+//          spans a third of the view (objectCamera); each of `ghostFrames` frames is compared with
+//          its own reference. A pixel the object left a frames ago is "age a"; the ghost trail is
+//          the largest age whose relative error is above 1.5x that of the pixels the object never
 //          covered (0: no ghost). Coverage comes from the native raw row's G-buffer.
 // Luminance is clamped at the reference's 98th percentile as in metrics/display_error.h.
 #include <algorithm>
@@ -115,6 +117,11 @@ std::string fileLabel(std::string s) {
     return s;
 }
 
+// The flicker of a still image is measured over this many frames after the still frames: a
+// converged image's, as raw ReSTIR's (frozen on a still view) is. The last 16 of the still frames
+// give the flicker while converging, a running mean's approach to it.
+constexpr std::uint32_t kConvergedFlickerFrames = 16;
+
 // A row replaying one case: its own scene and timeline (events before the case applied).
 struct RowRun {
     DisplayRow row;
@@ -136,9 +143,35 @@ const char* kindName(TimelineEvent::Kind k) {
     }
 }
 
+// The share of the view's height an object's box spans in its case.
+constexpr float kObjectViewShare = 1.0f / 3.0f;
+
+// An object case's camera: the path's camera moved along its line to the object (the line it
+// sees the object along) until the object's box spans kObjectViewShare of the view's height,
+// looking at it. From the path's cameras a small object leaves too few display pixels a frame to
+// measure a ghost by (fewer than 16 per age at 320x180).
+engine::world::CameraPreset objectCamera(engine::world::CameraPreset camera, const Scene& scene,
+                                         const std::string& object, double t) {
+    for (const engine::world::DynamicObject& o : scene.objects) {
+        if (o.name != object) continue;
+        const engine::world::Box box = o.worldBounds(o.poseAt(t));
+        const glm::vec3 centre = glm::vec3(box.min + box.max) * 0.5f;
+        const glm::ivec3 size = box.size();
+        const float extent = float(std::max({size.x, size.y, size.z}));
+        const float distance =
+            extent / (kObjectViewShare * 2.0f * std::tan(glm::radians(camera.fovYDegrees) * 0.5f));
+        const glm::vec3 away = camera.position - centre;
+        if (glm::length(away) > distance)
+            camera.position = centre + glm::normalize(away) * distance;
+        camera.target = centre;
+        break;
+    }
+    return camera;
+}
+
 // Per row, what the stability table says of it over all cases.
 struct RowSummary {
-    std::vector<double> stillMae, flicker, framesToSteady, steadyRatio;
+    std::vector<double> stillMae, flicker, convergingFlicker, framesToSteady, steadyRatio;
     std::optional<int> ghostTrail;
     std::string ghostDetail;
 };
@@ -154,10 +187,12 @@ engine::Status displayStability(engine::gpu::Context& ctx, const Scene& scene,
     if (engine::Status s = f.timeline.bind(bound); !s) return s;
     // The events' frames, each once: a case replays everything its frame applies.
     std::vector<std::uint32_t> caseFrames;
-    std::map<std::uint32_t, std::string> caseNames;
+    std::map<std::uint32_t, std::string> caseNames, caseObjects;
     for (const TimelineEvent& e : f.timeline.events()) {
         const std::uint32_t frame = engine::world::Timeline::firstFrame(e.time, f.fps);
         if (caseFrames.empty() || caseFrames.back() != frame) caseFrames.push_back(frame);
+        if (e.kind == TimelineEvent::Kind::DynamicStart && !caseObjects.contains(frame))
+            caseObjects[frame] = e.object;
         std::string& name = caseNames[frame];
         name += fmt::format("{}{} {}", name.empty() ? "" : " + ", kindName(e.kind),
                             e.kind == TimelineEvent::Kind::Light
@@ -183,9 +218,11 @@ engine::Status displayStability(engine::gpu::Context& ctx, const Scene& scene,
     std::uint32_t done = 0;
     for (std::uint32_t frame : caseFrames) {
         const std::string& name = caseNames[frame];
-        const bool object = name.find("object") != std::string::npos;
+        const bool object = caseObjects.contains(frame);
         const double t0 = Flythrough::frameTime(frame, f.fps);
-        const engine::world::CameraPreset camera = f.camera.at(t0, "still");
+        const engine::world::CameraPreset camera =
+            object ? objectCamera(f.camera.at(t0, "still"), bound, caseObjects[frame], t0)
+                   : f.camera.at(t0, "still");
         // Everything before the case's frame, in the rows' and the reference's scenes.
         Scene before = bound;
         engine::world::Timeline timeline = f.timeline;
@@ -227,25 +264,31 @@ engine::Status displayStability(engine::gpu::Context& ctx, const Scene& scene,
             frameSettings.timeSeconds = t;
             r.renderer->render(r.scene, camera, frameSettings, rowLighting(r.row, base));
         };
-        // Still frames: converge, the flicker of the last 16, the error of the last.
+        // Still frames: converge (the error of the last, the flicker of the last 16 while
+        // converging), then 16 more for the flicker of the converged image.
         for (RowRun& r : runs) {
             std::vector<double> previous;
-            double flicker = 0.0;
-            int pairs = 0;
-            for (std::uint32_t i = 0; i < o.stillFrames; ++i) {
+            double flicker = 0.0, converging = 0.0;
+            int pairs = 0, convergingPairs = 0;
+            std::vector<glm::vec4> shown;
+            for (std::uint32_t i = 0; i < o.stillFrames + kConvergedFlickerFrames; ++i) {
                 render(r, t0);
                 if (i + 16 < o.stillFrames) continue;
-                const auto lum = clampedLuminance(shownImage(*r.renderer, o.display), limitBefore);
+                auto image = shownImage(*r.renderer, o.display);
+                const auto lum = clampedLuminance(image, limitBefore);
                 if (!previous.empty()) {
                     double d = 0.0;
                     for (std::size_t p = 0; p < lum.size(); ++p)
                         d += std::abs(lum[p] - previous[p]);
-                    flicker += d / double(lum.size()) / std::max(refMeanBefore, 1e-12);
-                    ++pairs;
+                    d /= double(lum.size()) * std::max(refMeanBefore, 1e-12);
+                    if (i < o.stillFrames)
+                        converging += d, ++convergingPairs;
+                    else
+                        flicker += d, ++pairs;
                 }
                 previous = lum;
+                if (i + 1 == o.stillFrames) shown = std::move(image);
             }
-            const auto shown = shownImage(*r.renderer, o.display);
             auto e = engine::metrics::compareDisplay({shown, o.display.x, o.display.y},
                                                      {refBefore, o.display.x, o.display.y});
             if (!e) return e.error();
@@ -275,10 +318,13 @@ engine::Status displayStability(engine::gpu::Context& ctx, const Scene& scene,
             }
             s.stillMae.push_back(e->relativeMae);
             s.flicker.push_back(pairs ? flicker / pairs : 0.0);
+            s.convergingFlicker.push_back(convergingPairs ? converging / convergingPairs : 0.0);
             csv << fmt::format("\"{}\",{},still_relative_mae,{:.5f}\n", name, r.row.label(),
                                e->relativeMae);
             csv << fmt::format("\"{}\",{},still_flicker,{:.5f}\n", name, r.row.label(),
                                s.flicker.back());
+            csv << fmt::format("\"{}\",{},still_flicker_converging,{:.5f}\n", name, r.row.label(),
+                               s.convergingFlicker.back());
             if (object && std::ptrdiff_t(&r - runs.data()) == nativeRow) {
                 const auto images = r.renderer->readback();
                 r.objectMask.resize(images.gbuffer.size());
@@ -422,8 +468,9 @@ engine::Status displayStability(engine::gpu::Context& ctx, const Scene& scene,
     };
     table += fmt::format(
         "\nStability on {} ({} cases: {}; {}x{}, reference {} spp):\n\n| row | still rel. MAE "
-        "after {} frames | flicker | flicker / raw same scale | frames to 10 % (worst) | steady / "
-        "reference (range) | ghost trail (frames) |\n|---|---|---|---|---|---|---|\n",
+        "after {} frames | flicker | flicker / raw same scale | flicker / raw while converging | "
+        "frames to 10 % (worst) | steady / reference (range) | ghost trail (frames) "
+        "|\n|---|---|---|---|---|---|---|---|\n",
         scene.name, caseFrames.size(),
         [&] {
             std::string s;
@@ -433,10 +480,12 @@ engine::Status displayStability(engine::gpu::Context& ctx, const Scene& scene,
         }(),
         o.display.x, o.display.y, o.referenceSpp, o.stillFrames);
     for (std::size_t i = 0; i < rows.size(); ++i) {
-        double rawFlicker = 0.0;
+        double rawFlicker = 0.0, rawConverging = 0.0;
         for (std::size_t k = 0; k < rows.size(); ++k)
-            if (rows[k].mode == Display::Raw && rows[k].scale == rows[i].scale)
+            if (rows[k].mode == Display::Raw && rows[k].scale == rows[i].scale) {
                 rawFlicker = avg(summary[k].flicker);
+                rawConverging = avg(summary[k].convergingFlicker);
+            }
         const auto& s = summary[i];
         const auto [lo, hi] =
             s.steadyRatio.empty()
@@ -445,10 +494,11 @@ engine::Status displayStability(engine::gpu::Context& ctx, const Scene& scene,
                       *std::min_element(s.steadyRatio.begin(), s.steadyRatio.end()),
                       *std::max_element(s.steadyRatio.begin(), s.steadyRatio.end())};
         const std::string line = fmt::format(
-            "| {} | {:.4f} | {:.4f} | {:.2f} | {:.0f} | {:.2f}–{:.2f} | {} |\n", rows[i].label(),
-            avg(s.stillMae), avg(s.flicker), avg(s.flicker) / std::max(rawFlicker, 1e-12),
-            worst(s.framesToSteady), lo, hi,
-            s.ghostTrail ? fmt::format("{} ({})", *s.ghostTrail, s.ghostDetail) : "—");
+            "| {} | {:.4f} | {:.4f} | {:.2f} | {:.2f} | {:.0f} | {:.2f}–{:.2f} | {} |\n",
+            rows[i].label(), avg(s.stillMae), avg(s.flicker),
+            avg(s.flicker) / std::max(rawFlicker, 1e-12),
+            avg(s.convergingFlicker) / std::max(rawConverging, 1e-12), worst(s.framesToSteady), lo,
+            hi, s.ghostTrail ? fmt::format("{} ({})", *s.ghostTrail, s.ghostDetail) : "—");
         table += line;
         std::printf("%s", line.c_str());
     }

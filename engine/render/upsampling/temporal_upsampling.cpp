@@ -17,6 +17,19 @@ float radicalInverse(std::uint32_t index, std::uint32_t base) {
     return result;
 }
 
+// The voxels of the edited cells, as one box (empty when nothing was edited): where a surface
+// may have kept its place but not its material or light (a lamp turned to stone, a light
+// switched), so a history of it is of another surface.
+world::Box editedVoxels(const FrameChanges& changes) {
+    if (changes.editedCells.empty()) return {};
+    glm::ivec3 lo = changes.editedCells.front(), hi = lo;
+    for (const glm::ivec3& c : changes.editedCells) {
+        lo = glm::min(lo, c);
+        hi = glm::max(hi, c);
+    }
+    return {lo * world::kBrickDim, (hi + 1) * world::kBrickDim};
+}
+
 }  // namespace
 
 std::uint32_t jitterPhases(glm::uvec2 render, glm::uvec2 display) {
@@ -80,6 +93,13 @@ void TemporalUpsampling::prepare(const FrameChanges& changes, const FrameInput& 
     // which a bright sub-pixel light or a noisy neighbourhood can hide.
     if (changes.staticWorldChanged || changes.lightsUploaded || changes.skyChanged)
         p.flags |= shared::UPSAMPLING_LIGHTING_CHANGED;
+    if (changes.objectsMoved) p.flags |= shared::UPSAMPLING_OBJECTS_MOVED;
+    // A cell around the edited voxels: their light changes most nearby (the shadow of a new
+    // block, a wall lit by a lamp turned off), where the clip alone follows it too slowly.
+    if (const world::Box edited = editedVoxels(changes); !edited.empty()) {
+        p.editedMin = glm::ivec4(edited.min - world::kBrickDim, 0);
+        p.editedMax = glm::ivec4(edited.max + world::kBrickDim, 0);
+    }
     p.maxHistory = float(std::max(in.lighting.display.resolveHistory, 1u));
     p.clipGamma = 1.25f;
     uploader.write(mParams, 0, &p, sizeof(p));
