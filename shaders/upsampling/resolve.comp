@@ -6,11 +6,14 @@
 // converges to an anti-aliased image at the display's size from a quarter of its pixels or fewer.
 // History is dropped where its surface is not among this frame's nearby surfaces (the exact
 // surface keys of common/surface_key.glsl: a disocclusion) and clipped to the neighbourhood's
-// colour spread elsewhere (lighting that changed).
+// colour spread elsewhere (lighting that changed). It also writes the shown image, tonemapped,
+// so the display image is not read again at the window's size.
 #extension GL_GOOGLE_include_directive : require
 
 #include "common/gbuffer_load.glsl"
 #include "common/surface_key.glsl"  // SURFACE_KEY_SKY
+#include "common/tonemap.glsl"
+#include "shared/exposure.h"
 #include "shared/frame_params.h"
 #include "shared/upsampling.h"
 
@@ -27,6 +30,8 @@ layout(set = 0, binding = UPSAMPLING_BINDING_DISPLAY, std430) writeonly buffer D
 layout(set = 0, binding = UPSAMPLING_BINDING_PREV_KEYS) uniform usamplerBuffer gPrevKeys;
 layout(set = 0, binding = UPSAMPLING_BINDING_KEYS, std430) writeonly buffer Keys { uint gKeys[]; };
 layout(set = 0, binding = UPSAMPLING_BINDING_SURFACE_KEYS) uniform usamplerBuffer gSurfaceKeys;
+layout(set = 0, binding = UPSAMPLING_BINDING_EXPOSURE, std430) readonly buffer Exposure { ExposureState gExposure; };
+layout(set = 0, binding = UPSAMPLING_BINDING_LDR, std430) writeonly buffer Ldr { uint gLdr[]; };
 
 vec3 toYCoCg(vec3 c) {
     return vec3(dot(c, vec3(0.25, 0.5, 0.25)), dot(c, vec3(0.5, 0.0, -0.5)), dot(c, vec3(-0.25, 0.5, -0.25)));
@@ -189,6 +194,8 @@ void main() {
         result = (fromYCoCg(clipped) * historyWeight + added) / (historyWeight + addedWeight);
         weight = min(historyWeight + addedWeight, gParams.maxHistory * frameWeight);
     }
-    gDisplay[index] = vec4(max(result, vec3(0.0)), weight);
+    result = max(result, vec3(0.0));
+    gDisplay[index] = vec4(result, weight);
     gKeys[index] = nearestKey;
+    gLdr[index] = tonemapToRgba8(result, shownExposure(gFrame.exposure, gExposure.value.x));
 }
