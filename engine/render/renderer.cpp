@@ -230,6 +230,7 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
                                mRayStats,
                                mExposure,
                                mDisplay[mCurrent],
+                               mLdr,
                                mDisplay[mCurrent ^ 1u],
                                mSize,
                                mDisplaySize,
@@ -237,8 +238,10 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
     for (std::size_t i = 0; i < mTechniques.size(); ++i) {
         if (frame.steps[i].plan.runs) mTechniques[i]->record(commands, buffers);
     }
-    const gpu::Buffer& shown = frame.writesDisplay ? mDisplay[mCurrent] : mRadiance;
-    mTonemap.record(commands.current(), {mFrameParams, shown, mLdr, mExposure}, mDisplaySize);
+    // A technique that writes the display tonemaps it too (TechniquePlan::writesDisplay).
+    if (!frame.writesDisplay)
+        mTonemap.record(commands.current(), {mFrameParams, mRadiance, mLdr, mExposure},
+                        mDisplaySize);
     commands.finish();
     result.passMs = commands.passMs();
     for (std::size_t i = 0; i < mTechniques.size(); ++i) {

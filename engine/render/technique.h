@@ -48,8 +48,9 @@ struct TechniquePlan {
     bool runs = false;
     std::uint64_t deviceBytes = 0;  // device memory it holds at the frame's size when it runs
     bool addsIndirect = false;  // it writes the frame's indirect term (else the frame clears it)
-    // It writes the display image (FrameBuffers::display), which the tonemap then shows instead
-    // of the radiance.
+    // It writes the display image (FrameBuffers::display) and that image tonemapped
+    // (FrameBuffers::ldr), so the frame's tonemap pass does not run: a second pass over the
+    // window's pixels cost about a third of the resolve's time on lavapipe.
     bool writesDisplay = false;
     // The shader features it decides (FEATURE_*, value); they are 0 in a frame that does not run
     // it.
@@ -81,6 +82,7 @@ struct FrameBuffers {
     gpu::Buffer& rayStats;               // preview: steps and rays per pixel
     gpu::Buffer& exposure;               // the display's ExposureState: auto exposure writes it
     gpu::Buffer& display;                // the display image at displaySize, when one is planned
+    gpu::Buffer& ldr;                    // the shown image, tonemapped: RGBA8 at displaySize
     const gpu::Buffer& prevDisplay;      // last frame's
     glm::uvec2 size;
     glm::uvec2 displaySize;

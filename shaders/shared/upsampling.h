@@ -36,6 +36,9 @@ SHARED_CONST uint UPSAMPLING_BINDING_PREV_KEYS = 6u;  // uint per display pixel:
 SHARED_CONST uint UPSAMPLING_BINDING_KEYS = 7u;       // the same, written
 // uint per render pixel: the surface keys primary rays wrote (uint texels)
 SHARED_CONST uint UPSAMPLING_BINDING_SURFACE_KEYS = 8u;
+SHARED_CONST uint UPSAMPLING_BINDING_EXPOSURE = 9u;  // ExposureState (shared/exposure.h)
+// uint per display pixel: the display tonemapped, packed RGBA8 (common/tonemap.glsl), written
+SHARED_CONST uint UPSAMPLING_BINDING_LDR = 10u;
 
 SHARED_END
 

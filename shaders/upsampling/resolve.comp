@@ -6,11 +6,14 @@
 // converges to an anti-aliased image at the display's size from a quarter of its pixels or fewer.
 // History is dropped where its surface is not among this frame's nearby surfaces (the exact
 // surface keys of common/surface_key.glsl: a disocclusion) and clipped to the neighbourhood's
-// colour spread elsewhere (lighting that changed).
+// colour spread elsewhere (lighting that changed). It also writes the shown image, tonemapped,
+// so the display image is not read again at the window's size.
 #extension GL_GOOGLE_include_directive : require
 
 #include "common/gbuffer_load.glsl"
 #include "common/surface_key.glsl"  // SURFACE_KEY_SKY
+#include "common/tonemap.glsl"
+#include "shared/exposure.h"
 #include "shared/frame_params.h"
 #include "shared/upsampling.h"
 
@@ -27,6 +30,8 @@ layout(set = 0, binding = UPSAMPLING_BINDING_DISPLAY, std430) writeonly buffer D
 layout(set = 0, binding = UPSAMPLING_BINDING_PREV_KEYS) uniform usamplerBuffer gPrevKeys;
 layout(set = 0, binding = UPSAMPLING_BINDING_KEYS, std430) writeonly buffer Keys { uint gKeys[]; };
 layout(set = 0, binding = UPSAMPLING_BINDING_SURFACE_KEYS) uniform usamplerBuffer gSurfaceKeys;
+layout(set = 0, binding = UPSAMPLING_BINDING_EXPOSURE, std430) readonly buffer Exposure { ExposureState gExposure; };
+layout(set = 0, binding = UPSAMPLING_BINDING_LDR, std430) writeonly buffer Ldr { uint gLdr[]; };
 
 vec3 toYCoCg(vec3 c) {
     return vec3(dot(c, vec3(0.25, 0.5, 0.25)), dot(c, vec3(0.5, 0.0, -0.5)), dot(c, vec3(-0.25, 0.5, -0.25)));
@@ -53,9 +58,11 @@ const float kInsideClipGamma = 3.0;
 
 // Last frame's display at `p` (display pixels), Catmull-Rom over the 4x4 texels around it: a
 // bilinear fetch blurs the history a little every frame the camera moves, and the blur adds up
-// (Karis 2014 samples the history bicubically for the same reason). The taps are clamped to the
-// image; the weight channel is read bilinearly, and negative lobes cannot make colour negative
-// (the clip and the final max() follow).
+// (Karis 2014 samples the history bicubically for the same reason). The four corner taps are left
+// out and the rest renormalised (as Jimenez 2016's 5-tap filter, "Filmic SMAA", does): their
+// weights are products of the two small outer lobes (at most 0.0055 each), and each tap is a
+// gather on lavapipe. The taps are clamped to the image; the weight channel is read bilinearly,
+// and negative lobes cannot make colour negative (the clip and the final max() follow).
 vec4 catmullRomHistory(vec2 p, ivec2 display) {
     p -= 0.5;
     ivec2 base = ivec2(floor(p));
@@ -72,6 +79,7 @@ vec4 catmullRomHistory(vec2 p, ivec2 display) {
     for (int j = 0; j < 4; ++j) {
         int y = clamp(base.y - 1 + j, 0, last.y);
         for (int i = 0; i < 4; ++i) {
+            if ((i == 0 || i == 3) && (j == 0 || j == 3)) continue;  // a corner
             int x = clamp(base.x - 1 + i, 0, last.x);
             vec4 h = texelFetch(gPrevDisplay, x + y * display.x);
             rgb += h.rgb * (wx[i].x * wy[j]);
@@ -80,7 +88,8 @@ vec4 catmullRomHistory(vec2 p, ivec2 display) {
             }
         }
     }
-    return vec4(max(rgb, vec3(0.0)), weight);
+    float corners = (w0.x + w3.x) * (w0.y + w3.y);
+    return vec4(max(rgb / (1.0 - corners), vec3(0.0)), weight);
 }
 
 void main() {
@@ -101,18 +110,25 @@ void main() {
     vec3 added = vec3(0.0), colour = vec3(0.0), m1 = vec3(0.0), m2 = vec3(0.0);
     vec3 lowest = vec3(1e30), highest = vec3(-1e30);
     float addedWeight = 0.0, colourWeight = 0.0;
+    // Both Gaussians are separable: a weight per column and per row of taps, 12 exponentials a
+    // pixel instead of 18 (lavapipe pays for every one in every lane).
+    ivec3 columns = clamp(nearest.x + ivec3(-1, 0, 1), 0, render.x - 1);
+    ivec3 rows = clamp(nearest.y + ivec3(-1, 0, 1), 0, render.y - 1);
+    vec3 dx = vec3(columns) + 0.5 + jitter.x - centre.x;
+    vec3 dy = vec3(rows) + 0.5 + jitter.y - centre.y;
+    vec3 colourX = exp(-4.5 * dx * dx), colourY = exp(-4.5 * dy * dy);
+    vec3 addedX = dx / scale.x, addedY = dy / scale.y;
+    addedX = exp(-kSharpness * addedX * addedX);
+    addedY = exp(-kSharpness * addedY * addedY);
     uint keys[9];
     for (int k = 0; k < 9; ++k) {
-        ivec2 q = clamp(nearest + ivec2(k % 3 - 1, k / 3 - 1), ivec2(0), render - 1);
-        uint qi = uint(q.x) + uint(q.y) * uint(render.x);
+        int i = k % 3, j = k / 3;
+        uint qi = uint(columns[i]) + uint(rows[j]) * uint(render.x);
         vec3 c = max(texelFetch(gRadiance, int(qi)).rgb, vec3(0.0));
-        vec2 samplePosition = vec2(q) + 0.5 + jitter;
-        vec2 d = samplePosition - centre;
-        float w = exp(-4.5 * dot(d, d));
+        float w = colourX[i] * colourY[j];
         colour += c * w;
         colourWeight += w;
-        vec2 dd = d / scale;
-        float wd = exp(-kSharpness * dot(dd, dd));
+        float wd = addedX[i] * addedY[j];
         added += c * wd;
         addedWeight += wd;
         vec3 y = toYCoCg(c);
@@ -217,6 +233,8 @@ void main() {
             weight = fullHistory;
         }
     }
-    gDisplay[index] = vec4(max(result, vec3(0.0)), weight);
+    result = max(result, vec3(0.0));
+    gDisplay[index] = vec4(result, weight);
     gKeys[index] = nearestKey;
+    gLdr[index] = tonemapToRgba8(result, shownExposure(gFrame.exposure, gExposure.value.x));
 }

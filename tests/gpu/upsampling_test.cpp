@@ -2,6 +2,7 @@
 // reprojects by are exact (GPU against the CPU traversal), a still camera converges to the
 // anti-aliased image at the display's size from a quarter of its pixels, and a change of render
 // size keeps the display's history.
+#include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
 
@@ -287,4 +288,34 @@ TEST_F(Upsampling, AnEditedSurfaceDropsItsHistory) {
     }
     ASSERT_GT(pixels, 64);
     EXPECT_NEAR(shown / target, 1.0, 0.25) << "over " << pixels << " window pixels";
+}
+
+// The resolve writes the shown image itself (the frame's tonemap pass does not run at the
+// display's size): it must be the display image through the same curve, ACES fit then sRGB, at
+// the fixed exposure — to one step of 8 bits (the GPU's pow against std::pow).
+TEST_F(Upsampling, TheShownImageIsTheDisplayTonemapped) {
+    Scene scene = windows();
+    Renderer renderer(gpu_testing::context());
+    FrameSettings f = upsampledFrame(32, 64);
+    f.exposure = 1.7f;
+    const FrameImages up =
+        renderFrames(renderer, scene, display(engine::lighting::Display::Upsampled), f, 3);
+    ASSERT_EQ(up.rgba8.size(), up.display.size());
+    auto curve = [&](float x) {
+        x = std::max(x, 0.0f) * f.exposure;
+        x = std::clamp((x * (2.51f * x + 0.03f)) / (x * (2.43f * x + 0.59f) + 0.14f), 0.0f, 1.0f);
+        x = x > 0.0031308f ? 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f : 12.92f * x;
+        return int(std::lround(std::clamp(x, 0.0f, 1.0f) * 255.0f));
+    };
+    int worst = 0, bright = 0;
+    for (std::size_t i = 0; i < up.display.size(); ++i) {
+        for (int c = 0; c < 3; ++c) {
+            const int gpu = int((up.rgba8[i] >> (8 * c)) & 0xffu);
+            worst = std::max(worst, std::abs(gpu - curve(up.display[i][c])));
+            bright += gpu > 128 ? 1 : 0;
+        }
+        ASSERT_EQ(up.rgba8[i] >> 24, 0xffu) << "pixel " << i;
+    }
+    EXPECT_LE(worst, 1);
+    EXPECT_GT(bright, 0);  // the windows: the curve's upper part is exercised
 }

@@ -1,5 +1,6 @@
 // Temporal upsampling's one dispatch over the display: this frame's jittered samples and the
-// display history resolved into the display image. Shader: shaders/upsampling/resolve.comp
+// display history resolved into the display image, and that image tonemapped (the shown one: the
+// frame's tonemap pass does not run). Shader: shaders/upsampling/resolve.comp
 #pragma once
 
 #include "render/passes/compute_pass.h"
@@ -17,17 +18,20 @@ struct ResolveIo {
     gpu::Buffer& display;            // write
     const gpu::Buffer& prevKeys;     // read
     gpu::Buffer& keys;               // write
+    const gpu::Buffer& exposure;     // read: ExposureState, when FrameParams.exposure.y is 1
+    gpu::Buffer& ldr;                // write: the display tonemapped, packed RGBA8 per pixel
     auto bindings() const {
-        return std::to_array<PassBinding>(
-            {{shared::UPSAMPLING_BINDING_FRAME, &frameParams},
-             {shared::UPSAMPLING_BINDING_PARAMS, &params},
-             {shared::UPSAMPLING_BINDING_GBUFFER, &gbuffer},
-             {shared::UPSAMPLING_BINDING_RADIANCE, &radiance},
-             {shared::UPSAMPLING_BINDING_PREV_DISPLAY, &prevDisplay},
-             {shared::UPSAMPLING_BINDING_DISPLAY, &display},
-             {shared::UPSAMPLING_BINDING_PREV_KEYS, &prevKeys},
-             {shared::UPSAMPLING_BINDING_KEYS, &keys},
-             {shared::UPSAMPLING_BINDING_SURFACE_KEYS, &surfaceKeys}});
+        return std::to_array<PassBinding>({{shared::UPSAMPLING_BINDING_FRAME, &frameParams},
+                                           {shared::UPSAMPLING_BINDING_PARAMS, &params},
+                                           {shared::UPSAMPLING_BINDING_GBUFFER, &gbuffer},
+                                           {shared::UPSAMPLING_BINDING_RADIANCE, &radiance},
+                                           {shared::UPSAMPLING_BINDING_PREV_DISPLAY, &prevDisplay},
+                                           {shared::UPSAMPLING_BINDING_DISPLAY, &display},
+                                           {shared::UPSAMPLING_BINDING_PREV_KEYS, &prevKeys},
+                                           {shared::UPSAMPLING_BINDING_KEYS, &keys},
+                                           {shared::UPSAMPLING_BINDING_SURFACE_KEYS, &surfaceKeys},
+                                           {shared::UPSAMPLING_BINDING_EXPOSURE, &exposure},
+                                           {shared::UPSAMPLING_BINDING_LDR, &ldr}});
     }
 };
 

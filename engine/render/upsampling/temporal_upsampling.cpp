@@ -108,10 +108,11 @@ void TemporalUpsampling::prepare(const FrameChanges& changes, const FrameInput& 
 
 void TemporalUpsampling::record(FrameCommands& commands, const FrameBuffers& frame) {
     const std::uint32_t now = frame.parity, then = now ^ 1u;
-    mPass.record(commands.current(),
-                 {frame.frameParams, mParams, frame.gbuffer, frame.surfaceKeys, frame.radiance,
-                  frame.prevDisplay, frame.display, mKeys[then], mKeys[now]},
-                 frame.displaySize);
+    mPass.record(
+        commands.current(),
+        {frame.frameParams, mParams, frame.gbuffer, frame.surfaceKeys, frame.radiance,
+         frame.prevDisplay, frame.display, mKeys[then], mKeys[now], frame.exposure, frame.ldr},
+        frame.displaySize);
 }
 
 }  // namespace engine::render

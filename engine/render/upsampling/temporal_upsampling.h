@@ -5,8 +5,9 @@
 // reprojected by the G-buffer's exact motion (the camera, and each object's own transform),
 // dropped where its voxel-face plane is not among this frame's nearby ones and clipped to their
 // colour spread elsewhere. A still camera converges to an anti-aliased image; a change of render
-// size keeps the display's history. The display image is the renderer's (FrameBuffers::display):
-// the tonemap and the readback take it from there.
+// size keeps the display's history. The display image is the renderer's (FrameBuffers::display),
+// and so is the shown image the resolve tonemaps into (FrameBuffers::ldr): the readback and the
+// presenter take them from there.
 #pragma once
 
 #include <cstdint>
