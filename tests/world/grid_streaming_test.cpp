@@ -11,6 +11,7 @@
 #include "world/region_store.h"
 #include "world/store_region_source.h"
 #include "world/terrain_region_source.h"
+#include "world/test_terrain.h"
 
 namespace {
 
@@ -20,18 +21,7 @@ namespace fs = std::filesystem;
 // 4 x 2 x 4 regions, the last ones clipped.
 constexpr glm::ivec3 kWorld{480, 200, 456};
 
-TerrainParams terrain() {
-    TerrainParams p;
-    p.top = 1;
-    p.soil = 2;
-    p.rock = 3;
-    p.baseHeight = 96;
-    p.amplitude = 64;
-    p.wavelength = 90;
-    p.octaves = 4;
-    p.seed = 5;
-    return p;
-}
+TerrainParams terrain() { return vox_test::testTerrain(5); }
 
 const BrickGrid& wholeWorld() {
     static const BrickGrid grid = [] {

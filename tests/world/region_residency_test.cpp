@@ -14,6 +14,7 @@
 #include "world/region_store.h"
 #include "world/store_region_source.h"
 #include "world/terrain_region_source.h"
+#include "world/test_terrain.h"
 
 namespace {
 
@@ -23,18 +24,7 @@ namespace fs = std::filesystem;
 // Clipped at every far edge: 47 x 25 x 42 cells, 3 x 2 x 3 regions.
 constexpr glm::ivec3 kWorld{376, 200, 336};
 
-TerrainParams terrain() {
-    TerrainParams p;
-    p.top = 1;
-    p.soil = 2;
-    p.rock = 3;
-    p.baseHeight = 96;
-    p.amplitude = 64;
-    p.wavelength = 90;
-    p.octaves = 4;
-    p.seed = 7;
-    return p;
-}
+TerrainParams terrain() { return vox_test::testTerrain(7); }
 
 const BrickGrid& wholeWorld() {
     static const BrickGrid grid = [] {
