@@ -26,9 +26,11 @@ std::uint64_t GpuDynamicGrid::sync(const world::DynamicGrid& grid, gpu::Uploader
     }
 
     const world::BrickGrid& g = grid.grid;
-    std::span<const std::uint32_t> supers = g.superCells(), cells = g.cells();
+    // The objects' grid is small and uploaded whole: its cells as a dense array (the shaders
+    // read the dynamic grid without a region table).
+    std::span<const std::uint32_t> supers = g.superCells();
     // Live bricks only, renumbered densely (the pool may hold free slots).
-    std::vector<std::uint32_t> cellWords(cells.begin(), cells.end());
+    std::vector<std::uint32_t> cellWords = g.denseCells();
     std::vector<std::uint32_t> bricks;
     for (std::uint32_t& c : cellWords) {
         if (!world::BrickGrid::cellIsBrick(c)) continue;
@@ -52,7 +54,7 @@ std::uint64_t GpuDynamicGrid::sync(const world::DynamicGrid& grid, gpu::Uploader
     h.offsets.x = std::uint32_t(words);  // right after the header: shaders take that for granted
     words = align4(words + supers.size());
     h.offsets.y = std::uint32_t(words);
-    words = align4(words + cells.size());
+    words = align4(words + cellWords.size());
     h.offsets.z = std::uint32_t(words);
     words += bricks.size() * shared::BRICK_MASK_WORDS;
     h.offsets.w = std::uint32_t(words);

@@ -24,6 +24,38 @@ std::uint32_t pagesFor(std::uint32_t brickCapacity) {
         1, (brickCapacity + shared::BRICK_PAGE_BRICKS - 1) >> shared::BRICK_PAGE_SHIFT);
 }
 
+// Cell pages the GPU keeps room for: doubling, so a world that streams in regrows its grid
+// texels (a full upload) a few times, not at every new page.
+std::uint64_t cellPageCapacity(std::uint32_t pages) {
+    return std::max<std::uint64_t>(8, std::bit_ceil(std::uint64_t(pages)));
+}
+
+// Where each part of the grid texels starts (shared/brick_grid.h).
+struct TexelLayout {
+    std::uint64_t table = 0, pages = 0, masks = 0, total = 0;
+};
+TexelLayout texelLayout(const world::BrickGrid& grid, std::uint64_t pageCapacity,
+                        std::uint64_t brickPages) {
+    TexelLayout l;
+    l.table = grid.superCells().size();
+    l.pages = l.table + grid.topGrid().table().size();
+    l.masks = l.pages + pageCapacity * shared::PAGE_CELLS;
+    l.total = l.masks + brickPages * shared::BRICK_PAGE_BRICKS * shared::BRICK_MASK_WORDS;
+    return l;
+}
+
+// A super cell as the GPU holds it: an occupied one names its region's top-grid page.
+std::uint32_t gpuSuperCell(const world::BrickGrid& grid, std::size_t index) {
+    const std::uint32_t skip = grid.superCells()[index];
+    if (skip != 0) return skip;
+    const glm::ivec3 n = grid.sizeInSuperCells();
+    const std::size_t yz = index / std::size_t(n.x);
+    const glm::ivec3 s(int(index % std::size_t(n.x)), int(yz % std::size_t(n.y)),
+                       int(yz / std::size_t(n.y)));
+    const world::PagedTopGrid& top = grid.topGrid();
+    return top.table()[top.regionIndex(s << 2)] << shared::SUPER_PAGE_SHIFT;
+}
+
 bool samePalette(const std::vector<shared::GpuMaterial>& a,
                  const std::vector<shared::GpuMaterial>& b) {
     return a.size() == b.size() &&
@@ -41,10 +73,14 @@ WorldUploadStats GpuWorld::sync(const world::Scene& scene, gpu::Uploader& upload
     // changed, so a world over the device's limit leaves the GPU copy as it was.
     const std::uint64_t pages =
         std::max<std::uint64_t>(mPages.size(), pagesFor(grid.brickCapacity()));
-    gpu::checkTexelCount(mCtx,
-                         grid.cells().size() + grid.superCells().size() +
-                             pages * shared::BRICK_PAGE_BRICKS * shared::BRICK_MASK_WORDS,
-                         "world '" + scene.name + "'");
+    const world::PagedTopGrid& top = grid.topGrid();
+    // Room for cell pages only grows within one world (a new world starts afresh).
+    const std::uint64_t pageCapacity =
+        needsFullUpload(grid)
+            ? cellPageCapacity(top.pageCount())
+            : std::max<std::uint64_t>(mCellPageCapacity, cellPageCapacity(top.pageCount()));
+    const TexelLayout layout = texelLayout(grid, pageCapacity, pages);
+    gpu::checkTexelCount(mCtx, layout.total, "world '" + scene.name + "'");
 
     std::vector<shared::GpuMaterial> palette = scene.palette.toGpu();
     if (!samePalette(palette, mUploadedPalette)) {
@@ -61,49 +97,100 @@ WorldUploadStats GpuWorld::sync(const world::Scene& scene, gpu::Uploader& upload
     }
 
     ensurePages(grid.brickCapacity(), uploader);
-    // The grid texels: the cells, the super cells, then every brick slot's mask words (a copy of
-    // the pages' masks that the traversal reads as texels, without the page table). More pages
-    // outgrow the mask copy: then everything is uploaded again, as for a new world.
-    const std::uint64_t gridTexelBytes = grid.cells().size_bytes() + grid.superCells().size_bytes();
-    const std::uint64_t texelBytes =
-        gridTexelBytes + mPages.size() * shared::BRICK_PAGE_BRICKS * kMaskBytes;
-    if (needsFullUpload(grid) || mCells.size() != texelBytes) {
+    // The grid texels: the super cells, the region table, the cell pages, then every brick
+    // slot's mask words (a copy of the pages' masks that the traversal reads as texels, without
+    // the page table). More brick pages outgrow the mask copy, more cell pages their room: then
+    // everything is uploaded again, as for a new world.
+    const TexelLayout uploaded = texelLayout(grid, pageCapacity, mPages.size());
+    mMaskBase = uploaded.masks;
+    if (needsFullUpload(grid) || mCells.size() != uploaded.total * 4u) {
         // A new or resized world: upload the top grid and every live brick.
         stats.full = true;
         mSizeInCells = grid.sizeInCells();
-        std::span<const std::uint32_t> cells = grid.cells();
-        std::span<const std::uint32_t> supers = grid.superCells();
-        mCells = gpu::Buffer(mCtx, gpu::BufferKind::Storage, texelBytes, "world.cells");
+        mCellPageCapacity = pageCapacity;
+        mCells = gpu::Buffer(mCtx, gpu::BufferKind::Storage, uploaded.total * 4u, "world.cells");
         mCells.setTexelFormat(VK_FORMAT_R32_UINT);
         mInfo = gpu::Buffer(mCtx, gpu::BufferKind::Storage, sizeof(shared::BrickGridInfo),
                             "world.info");
-        uploader.write(mCells, cells.size_bytes(), supers.data(), supers.size_bytes());
-        stats.bytes += supers.size_bytes();
-        uploader.write(mCells, 0, cells.data(), cells.size_bytes());
-        stats.cells = static_cast<std::uint32_t>(cells.size());
-        stats.bytes += cells.size_bytes();
-        std::vector<std::uint32_t> live;
-        for (std::uint32_t c : cells) {
-            if (world::BrickGrid::cellIsBrick(c)) live.push_back(world::BrickGrid::cellBrick(c));
+        std::vector<std::uint32_t> supers(grid.superCells().size());
+        for (std::size_t s = 0; s < supers.size(); ++s) supers[s] = gpuSuperCell(grid, s);
+        uploader.write(mCells, 0, supers.data(), supers.size() * 4u);
+        uploader.write(mCells, uploaded.table * 4u, top.table().data(), top.table().size_bytes());
+        for (std::uint32_t page = 0; page < top.pageCount(); ++page) {
+            uploader.write(mCells, (uploaded.pages + std::uint64_t(page) * shared::PAGE_CELLS) * 4u,
+                           top.pageCells(page), shared::PAGE_CELLS * 4u);
         }
+        stats.cells = top.pageCount() * shared::PAGE_CELLS;
+        stats.bytes += (supers.size() + top.table().size() + stats.cells) * 4u;
+        std::vector<std::uint32_t> live;
+        top.forEachLiveCell([&](std::uint32_t c) {
+            if (world::BrickGrid::cellIsBrick(c)) live.push_back(world::BrickGrid::cellBrick(c));
+        });
         uploadBricks(grid, live, uploader);
         stats.bricks = static_cast<std::uint32_t>(live.size());
     } else {
-        std::vector<std::uint32_t> dirty(grid.dirtyCells().begin(), grid.dirtyCells().end());
-        std::sort(dirty.begin(), dirty.end());
-        std::span<const std::uint32_t> cells = grid.cells();
-        // Runs of consecutive cells become one region each.
-        for (std::size_t i = 0; i < dirty.size();) {
+        // Regions whose page changed: the table entry, the whole page (a page number a region
+        // reuses holds another region's old cells on the GPU) and the region's super cells
+        // (occupied ones name the page).
+        std::vector<std::uint8_t> wholePage(top.table().size(), 0);
+        std::vector<std::uint32_t> supers(grid.dirtySuperCells().begin(),
+                                          grid.dirtySuperCells().end());
+        const glm::ivec3 superSize = grid.sizeInSuperCells();
+        const glm::ivec3 regions = top.sizeInRegions();
+        for (std::uint32_t r : top.changedRegions()) {
+            const std::uint32_t page = top.table()[r];
+            uploader.write(mCells, (uploaded.table + r) * 4u, &top.table()[r], 4u);
+            stats.bytes += 4u;
+            if (page != world::PagedTopGrid::kEmptyPage) {
+                uploader.write(mCells,
+                               (uploaded.pages + std::uint64_t(page) * shared::PAGE_CELLS) * 4u,
+                               top.pageCells(page), shared::PAGE_CELLS * 4u);
+                stats.cells += shared::PAGE_CELLS;
+                stats.bytes += shared::PAGE_CELLS * 4u;
+                wholePage[r] = 1;
+            }
+            const std::size_t yz = r / std::size_t(regions.x);
+            const glm::ivec3 lo =
+                glm::ivec3(int(r % std::size_t(regions.x)), int(yz % std::size_t(regions.y)),
+                           int(yz / std::size_t(regions.y))) *
+                4;
+            const glm::ivec3 hi = glm::min(lo + 4, superSize);
+            for (int z = lo.z; z < hi.z; ++z)
+                for (int y = lo.y; y < hi.y; ++y)
+                    for (int x = lo.x; x < hi.x; ++x)
+                        supers.push_back(std::uint32_t(grid.superCellIndex({x, y, z})));
+        }
+        // The other dirty cells, by texel; runs of consecutive texels become one copy each.
+        std::vector<std::uint64_t> texels;
+        for (std::uint32_t index : grid.dirtyCells()) {
+            const glm::ivec3 c = grid.cellOfIndex(index);
+            const std::size_t r = top.regionIndex(c);
+            if (wholePage[r] || top.table()[r] == world::PagedTopGrid::kEmptyPage) continue;
+            texels.push_back(uploaded.pages + std::uint64_t(top.table()[r]) * shared::PAGE_CELLS +
+                             std::uint64_t(world::PagedTopGrid::pageLocal(c)));
+        }
+        std::sort(texels.begin(), texels.end());
+        auto cellAt = [&](std::uint64_t texel) -> const std::uint32_t* {
+            const std::uint64_t local = texel - uploaded.pages;
+            return top.pageCells(std::uint32_t(local / shared::PAGE_CELLS)) +
+                   local % shared::PAGE_CELLS;
+        };
+        for (std::size_t i = 0; i < texels.size();) {
             std::size_t j = i + 1;
-            while (j < dirty.size() && dirty[j] == dirty[j - 1] + 1) ++j;
-            uploader.write(mCells, std::uint64_t(dirty[i]) * 4u, &cells[dirty[i]], (j - i) * 4u);
+            // A run stays within one page (its cells are contiguous on the CPU too).
+            while (j < texels.size() && texels[j] == texels[j - 1] + 1 &&
+                   (texels[j] - uploaded.pages) % shared::PAGE_CELLS != 0)
+                ++j;
+            uploader.write(mCells, texels[i] * 4u, cellAt(texels[i]), (j - i) * 4u);
             stats.bytes += (j - i) * 4u;
             i = j;
         }
-        stats.cells = static_cast<std::uint32_t>(dirty.size());
-        std::span<const std::uint32_t> supers = grid.superCells();
-        for (std::uint32_t s : grid.dirtySuperCells()) {
-            uploader.write(mCells, cells.size_bytes() + std::uint64_t(s) * 4u, &supers[s], 4u);
+        stats.cells += static_cast<std::uint32_t>(texels.size());
+        std::sort(supers.begin(), supers.end());
+        supers.erase(std::unique(supers.begin(), supers.end()), supers.end());
+        for (std::uint32_t s : supers) {
+            const std::uint32_t value = gpuSuperCell(grid, s);
+            uploader.write(mCells, std::uint64_t(s) * 4u, &value, 4u);
             stats.bytes += 4u;
         }
         std::vector<std::uint32_t> bricks(grid.dirtyBricks().begin(), grid.dirtyBricks().end());
@@ -120,7 +207,8 @@ WorldUploadStats GpuWorld::sync(const world::Scene& scene, gpu::Uploader& upload
     info.sizeInVoxels = glm::ivec4(grid.sizeInVoxels(), 0);
     info.sizeInSuperCells = glm::ivec4(grid.sizeInSuperCells(), 0);
     info.counts = glm::uvec4(grid.liveBricks(), static_cast<std::uint32_t>(mPages.size()),
-                             static_cast<std::uint32_t>(scene.palette.size()), 0u);
+                             static_cast<std::uint32_t>(scene.palette.size()),
+                             static_cast<std::uint32_t>(mMaskBase));
     info.dynamicGrid = glm::uvec4(mDynamic.present() ? 1u : 0u, 0u, 0u, 0u);
     uploader.write(mInfo, 0, &info, sizeof(info));
     return stats;
@@ -155,9 +243,8 @@ void GpuWorld::uploadBricks(const world::BrickGrid& grid, std::vector<std::uint3
         uploader.write(mPages[brick >> shared::BRICK_PAGE_SHIFT], local * kMaskBytes,
                        grid.brickMask(brick).words.data(), kMaskBytes);
     }
-    const std::uint64_t maskTexels = grid.cells().size_bytes() + grid.superCells().size_bytes();
     for (std::uint32_t brick : bricks) {
-        uploader.write(mCells, maskTexels + std::uint64_t(brick) * kMaskBytes,
+        uploader.write(mCells, mMaskBase * 4u + std::uint64_t(brick) * kMaskBytes,
                        grid.brickMask(brick).words.data(), kMaskBytes);
     }
     for (std::uint32_t brick : bricks) {

@@ -1,10 +1,12 @@
 // GpuWorld: the GPU mirror of a Scene's BrickGrid, palette and dynamic grid (world bindings 0-4 of
 // every ray-tracing shader, see shaders/shared/bindings.h).
 //
-// The first sync uploads everything; later syncs upload only the bricks and top-grid cells the
-// grid marked dirty, then clear the marks. The brick pool lives in pages of
-// BRICK_PAGE_BRICKS bricks, each its own buffer reached by device address, so no binding
-// exceeds lavapipe's 128 MiB limit however large the world grows.
+// The first sync uploads everything; later syncs upload only the bricks, top-grid cells, region
+// table entries and pages the grid marked changed (the caller then clears the marks). The top
+// grid is paged as on the CPU (world/paged_top_grid.h): the GPU holds the region table and room
+// for the pages (doubling; outgrowing it uploads everything again). The brick pool lives in pages
+// of BRICK_PAGE_BRICKS bricks, each its own buffer reached by device address, so no binding exceeds
+// lavapipe's 128 MiB limit however large the world grows.
 #pragma once
 
 #include <cstdint>
@@ -53,6 +55,7 @@ public:
     // Forget the GPU state: the next sync uploads everything.
     void invalidate() {
         mSizeInCells = glm::ivec3(0);
+        mCellPageCapacity = 0;
         mDynamic.invalidate();
     }
 
@@ -70,6 +73,8 @@ private:
 
     gpu::Context& mCtx;
     glm::ivec3 mSizeInCells{0};
+    std::uint64_t mCellPageCapacity = 0;  // top-grid pages the grid texels hold room for
+    std::uint64_t mMaskBase = 0;          // first texel of the mask copy
     gpu::Buffer mInfo, mCells, mPageTable, mPalette;
     std::vector<gpu::Buffer> mPages;
     std::vector<shared::GpuMaterial> mUploadedPalette;

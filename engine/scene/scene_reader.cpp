@@ -109,10 +109,10 @@ private:
         glm::ivec3 size =
             keys.ivec3("size", {}, wholeRange(1, world::kMaxWorldExtent, "voxels"), true);
         glm::u64vec3 cells = glm::u64vec3((size + 7) / 8);
-        if (cells.x * cells.y * cells.z > world::kMaxTopGridCells)
+        if (cells.x * cells.y * cells.z > world::kMaxSceneTopGridCells)
             fail(keys.node("size"),
                  "world size {}x{}x{} needs {} top-grid cells, more than the limit of {}", size.x,
-                 size.y, size.z, cells.x * cells.y * cells.z, world::kMaxTopGridCells);
+                 size.y, size.z, cells.x * cells.y * cells.z, world::kMaxSceneTopGridCells);
         scene.grid = world::BrickGrid(size);
     }
 

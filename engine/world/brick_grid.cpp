@@ -12,15 +12,18 @@ int localIndex(glm::ivec3 p) { return brickVoxelIndex(p & (kBrickDim - 1)); }
 std::uint32_t uniformCellValue(MaterialId m) {
     return m == kEmpty ? shared::CELL_EMPTY : (shared::CELL_HOMOGENEOUS | m);
 }
+// A cell's marks on its top-grid page.
+constexpr std::uint8_t kMarkDirty = 1;    // in mDirtyCells
+constexpr std::uint8_t kMarkTouched = 2;  // in mTouchedCells
+
+glm::ivec3 checkedCells(glm::ivec3 sizeInVoxels) {
+    CHECK(glm::all(glm::greaterThan(sizeInVoxels, glm::ivec3(0))));
+    return (sizeInVoxels + (kBrickDim - 1)) / kBrickDim;
+}
 }  // namespace
 
-BrickGrid::BrickGrid(glm::ivec3 sizeInVoxels) {
-    CHECK(glm::all(glm::greaterThan(sizeInVoxels, glm::ivec3(0))));
-    mSizeInCells = (sizeInVoxels + (kBrickDim - 1)) / kBrickDim;
-    std::size_t count = static_cast<std::size_t>(mSizeInCells.x) * mSizeInCells.y * mSizeInCells.z;
-    mCells.assign(count, shared::CELL_EMPTY);
-    mCellDirty.assign(count, 0);
-    mCellTouched.assign(count, 0);
+BrickGrid::BrickGrid(glm::ivec3 sizeInVoxels)
+    : mSizeInCells(checkedCells(sizeInVoxels)), mTop(mSizeInCells) {
     mSizeInSuperCells = (mSizeInCells + 3) / 4;
     std::size_t supers =
         static_cast<std::size_t>(mSizeInSuperCells.x) * mSizeInSuperCells.y * mSizeInSuperCells.z;
@@ -56,12 +59,12 @@ void BrickGrid::set(glm::ivec3 p, MaterialId material) {
     voxels[localIndex(p)] = material;
     if (isUniform(voxels)) {
         freeBrick(brick);
-        setCell(cellIndex(c), uniformCellValue(material));
+        setCell(c, uniformCellValue(material));
         return;
     }
     mBrickMasks[brick] = BrickMask::build(voxels);
     markBrickDirty(brick);
-    touchCell(cellIndex(c));
+    touchCell(c);
 }
 
 BrickVoxels BrickGrid::readCell(glm::ivec3 c) const {
@@ -77,46 +80,54 @@ void BrickGrid::writeCell(glm::ivec3 c, const BrickVoxels& voxels) {
         writeCellUniform(c, voxels[0]);
         return;
     }
-    std::size_t index = cellIndex(c);
-    std::uint32_t value = mCells[index];
+    std::uint32_t value = mTop.get(c);
     std::uint32_t brick;
     if (cellIsBrick(value)) {
         brick = cellBrick(value);
         if (mBrickVoxels[brick] == voxels) return;
     } else {
         brick = allocateBrick();
-        setCell(index, brick + 1u);
+        setCell(c, brick + 1u);
     }
     mBrickVoxels[brick] = voxels;
     mBrickMasks[brick] = BrickMask::build(voxels);
     markBrickDirty(brick);
-    touchCell(index);
+    touchCell(c);
 }
 
 void BrickGrid::writeCellUniform(glm::ivec3 c, MaterialId material) {
-    std::size_t index = cellIndex(c);
-    std::uint32_t value = mCells[index];
+    std::uint32_t value = mTop.get(c);
     if (cellIsBrick(value)) freeBrick(cellBrick(value));
-    setCell(index, uniformCellValue(material));
+    setCell(c, uniformCellValue(material));
 }
 
 std::uint32_t BrickGrid::homogeneousCells() const {
-    return static_cast<std::uint32_t>(
-        std::count_if(mCells.begin(), mCells.end(),
-                      [](std::uint32_t v) { return (v & shared::CELL_HOMOGENEOUS) != 0; }));
+    std::uint32_t count = 0;
+    mTop.forEachLiveCell(
+        [&](std::uint32_t v) { count += (v & shared::CELL_HOMOGENEOUS) != 0 ? 1u : 0u; });
+    return count;
 }
 
 std::uint64_t BrickGrid::solidVoxels() const {
     std::uint64_t total = 0;
-    for (std::uint32_t v : mCells) {
-        if (v == shared::CELL_EMPTY) continue;
+    mTop.forEachLiveCell([&](std::uint32_t v) {
+        if (v == shared::CELL_EMPTY) return;
         if (v & shared::CELL_HOMOGENEOUS) {
             total += kBrickVoxels;
-            continue;
+            return;
         }
         for (MaterialId m : mBrickVoxels[cellBrick(v)]) total += (m != kEmpty);
-    }
+    });
     return total;
+}
+
+std::vector<std::uint32_t> BrickGrid::denseCells() const {
+    std::vector<std::uint32_t> cells(cellCount(), shared::CELL_EMPTY);
+    for (int z = 0; z < mSizeInCells.z; ++z)
+        for (int y = 0; y < mSizeInCells.y; ++y)
+            for (int x = 0; x < mSizeInCells.x; ++x)
+                cells[cellIndex({x, y, z})] = mTop.get({x, y, z});
+    return cells;
 }
 
 void BrickGrid::reserveBricks(std::uint32_t n) {
@@ -127,25 +138,29 @@ void BrickGrid::reserveBricks(std::uint32_t n) {
 
 void BrickGrid::clearDirty() {
     for (std::uint32_t b : mDirtyBricks) mBrickDirty[b] = 0;
-    for (std::uint32_t c : mDirtyCells) mCellDirty[c] = 0;
+    for (std::uint32_t c : mDirtyCells) mTop.marks(cellOfIndex(c)) = 0;
     for (std::uint32_t s : mDirtySuperCells) mSuperDirty[s] = 0;
-    for (std::uint32_t c : mTouchedCells) mCellTouched[c] = 0;
+    for (std::uint32_t c : mTouchedCells) mTop.marks(cellOfIndex(c)) = 0;
     mTouchedCells.clear();
     mDirtySuperCells.clear();
     mDirtyBricks.clear();
     mDirtyCells.clear();
+    // Every consumer has seen this frame's lists: pages left empty can go (their table entries
+    // are then the next sync's changes).
+    mTop.clearRegionChanges();
+    mTop.releaseEmptyPages();
 }
 
 GridMemory BrickGrid::memory() const {
     constexpr std::size_t kBrickBytes = sizeof(BrickVoxels) + sizeof(BrickMask);
     GridMemory m;
-    m.topGridBytes = mCells.size() * sizeof(std::uint32_t);
+    m.topGridBytes = mTop.bytes();
     m.superGridBytes = mSuperCells.size() * sizeof(std::uint32_t) + mSuperCounts.size();
     m.brickPoolBytes = mBrickVoxels.size() * kBrickBytes;
     m.liveBrickBytes = liveBricks() * kBrickBytes;
     m.bookkeepingBytes =
-        mFreeBricks.size() * sizeof(std::uint32_t) + mBrickDirty.size() + mCellDirty.size() +
-        mSuperDirty.size() + mCellTouched.size() + mTouchedCells.size() * sizeof(std::uint32_t) +
+        mFreeBricks.size() * sizeof(std::uint32_t) + mBrickDirty.size() + mSuperDirty.size() +
+        mTouchedCells.size() * sizeof(std::uint32_t) +
         (mDirtyBricks.size() + mDirtyCells.size() + mDirtySuperCells.size() + mRegionStamp.size()) *
             sizeof(std::uint32_t);
     return m;
@@ -153,15 +168,27 @@ GridMemory BrickGrid::memory() const {
 
 bool BrickGrid::operator==(const BrickGrid& other) const {
     if (mSizeInCells != other.mSizeInCells) return false;
-    for (std::size_t i = 0; i < mCells.size(); ++i) {
-        std::uint32_t a = mCells[i], b = other.mCells[i];
-        if (cellIsBrick(a) != cellIsBrick(b)) return false;
-        if (!cellIsBrick(a)) {
-            if (a != b) return false;
-        } else if (mBrickVoxels[cellBrick(a)] != other.mBrickVoxels[cellBrick(b)]) {
-            return false;
-        }
-    }
+    const glm::ivec3 regions = mTop.sizeInRegions();
+    for (int rz = 0; rz < regions.z; ++rz)
+        for (int ry = 0; ry < regions.y; ++ry)
+            for (int rx = 0; rx < regions.x; ++rx) {
+                const CellRange range = regionCells({rx, ry, rz}, mSizeInCells);
+                if (!mTop.regionHasPage(range.min) && !other.mTop.regionHasPage(range.min))
+                    continue;  // both all empty
+                for (int z = range.min.z; z < range.max.z; ++z)
+                    for (int y = range.min.y; y < range.max.y; ++y)
+                        for (int x = range.min.x; x < range.max.x; ++x) {
+                            const std::uint32_t a = mTop.get({x, y, z});
+                            const std::uint32_t b = other.mTop.get({x, y, z});
+                            if (cellIsBrick(a) != cellIsBrick(b)) return false;
+                            if (!cellIsBrick(a)) {
+                                if (a != b) return false;
+                            } else if (mBrickVoxels[cellBrick(a)] !=
+                                       other.mBrickVoxels[cellBrick(b)]) {
+                                return false;
+                            }
+                        }
+            }
     return true;
 }
 
@@ -180,23 +207,21 @@ std::uint32_t BrickGrid::allocateBrick() {
 
 void BrickGrid::freeBrick(std::uint32_t brick) { mFreeBricks.push_back(brick); }
 
-void BrickGrid::setCell(std::size_t index, std::uint32_t value) {
-    std::uint32_t old = mCells[index];
+void BrickGrid::setCell(glm::ivec3 c, std::uint32_t value) {
+    const std::uint32_t old = mTop.set(c, value);
     if (old == value) return;
-    mCells[index] = value;
-    touchCell(index);
+    touchCell(c);
     if ((old == shared::CELL_EMPTY) != (value == shared::CELL_EMPTY)) {
-        std::size_t x = index % mSizeInCells.x, yz = index / mSizeInCells.x;
-        std::size_t y = yz % mSizeInCells.y, z = yz / mSizeInCells.y;
-        glm::ivec3 sc(int(x >> 2), int(y >> 2), int(z >> 2));
+        const glm::ivec3 sc = c >> 2;
         std::uint8_t& count = mSuperCounts[superCellIndex(sc)];
         bool wasEmpty = count == 0;
         count = static_cast<std::uint8_t>(value == shared::CELL_EMPTY ? count - 1 : count + 1);
         if (wasEmpty != (count == 0)) updateSkipDistances(sc, count != 0);
     }
-    if (!mCellDirty[index]) {
-        mCellDirty[index] = 1;
-        mDirtyCells.push_back(static_cast<std::uint32_t>(index));
+    std::uint8_t& marks = mTop.marks(c);
+    if (!(marks & kMarkDirty)) {
+        marks |= kMarkDirty;
+        mDirtyCells.push_back(static_cast<std::uint32_t>(cellIndex(c)));
     }
 }
 
@@ -266,21 +291,14 @@ void BrickGrid::markRegionsEdited(std::span<const RegionKey> keys) {
     }
 }
 
-void BrickGrid::touchCell(std::size_t index) {
+void BrickGrid::touchCell(glm::ivec3 c) {
     // Stamped on every touch: touchedCells() is cleared each frame by the GPU mirror, the stamps
     // only by a save.
-    if (mStampEdits) {
-        const std::size_t x = index % mSizeInCells.x, yz = index / mSizeInCells.x;
-        const std::size_t y = yz % mSizeInCells.y, z = yz / mSizeInCells.y;
-        const std::size_t r =
-            (x >> kRegionCellsShift) +
-            std::size_t(mRegionCount.x) *
-                ((y >> kRegionCellsShift) + std::size_t(mRegionCount.y) * (z >> kRegionCellsShift));
-        mRegionStamp[r] = mEditEpoch;
-    }
-    if (mCellTouched[index]) return;
-    mCellTouched[index] = 1;
-    mTouchedCells.push_back(static_cast<std::uint32_t>(index));
+    if (mStampEdits) mRegionStamp[mTop.regionIndex(c)] = mEditEpoch;
+    std::uint8_t& marks = mTop.marks(c);
+    if (marks & kMarkTouched) return;
+    marks |= kMarkTouched;
+    mTouchedCells.push_back(static_cast<std::uint32_t>(cellIndex(c)));
 }
 
 void BrickGrid::markBrickDirty(std::uint32_t brick) {

@@ -1,8 +1,10 @@
 // BrickGrid: the two-level voxel world.
 //
-// A dense top grid, sized to the world's bounds in 8^3 cells, holds one uint per cell (encoding
-// in shaders/shared/brick_grid.h): empty, homogeneous (one material, no storage) or an index
-// into a brick pool with a free list. Random access is O(1). Every write that changes a brick
+// A top grid over the world's bounds in 8^3 cells holds one uint per cell (encoding in
+// shaders/shared/brick_grid.h): empty, homogeneous (one material, no storage) or an index into a
+// brick pool with a free list. The top grid is paged by region (world/paged_top_grid.h): regions
+// without a non-empty cell share one empty page, so its memory follows content. Random access is
+// O(1) (a table read, then the page's). Every write that changes a brick
 // or a cell marks it dirty; the GPU mirror (render/gpu_world.h) uploads only dirty entries and
 // then calls clearDirty(). Uniform bricks collapse back into homogeneous cells on write.
 #pragma once
@@ -14,6 +16,7 @@
 
 #include "world/brick.h"
 #include "world/paged_pool.h"
+#include "world/paged_top_grid.h"
 #include "world/region.h"
 
 namespace engine::world {
@@ -31,12 +34,12 @@ struct Box {
 };
 
 struct GridMemory {
-    std::size_t topGridBytes = 0;
+    std::size_t topGridBytes = 0;  // region table and pages, with each page's dirty marks
     std::size_t superGridBytes =
         0;  // skip distances and counts over 4^3 cells (5/256 of the top grid)
     std::size_t brickPoolBytes = 0;    // capacity of the pool (live + free bricks), voxels + masks
     std::size_t liveBrickBytes = 0;    // live bricks only
-    std::size_t bookkeepingBytes = 0;  // free list and dirty flags
+    std::size_t bookkeepingBytes = 0;  // free list and dirty lists
 };
 
 class BrickGrid {
@@ -58,14 +61,26 @@ public:
     MaterialId get(glm::ivec3 p) const;
     void set(glm::ivec3 p, MaterialId material);
 
-    // Cell access, for edits and traversal.
+    // Cell access, for edits and traversal. A cell's index (x fastest, as if the top grid were
+    // dense) names it in the dirty lists; storage is by page (topGrid()).
     std::size_t cellIndex(glm::ivec3 c) const {
         return static_cast<std::size_t>(c.x) +
                static_cast<std::size_t>(mSizeInCells.x) *
                    (static_cast<std::size_t>(c.y) + static_cast<std::size_t>(mSizeInCells.y) * c.z);
     }
-    std::uint32_t cell(glm::ivec3 c) const { return mCells[cellIndex(c)]; }
-    std::span<const std::uint32_t> cells() const { return mCells; }
+    glm::ivec3 cellOfIndex(std::size_t index) const {
+        const std::size_t yz = index / std::size_t(mSizeInCells.x);
+        return {int(index % std::size_t(mSizeInCells.x)), int(yz % std::size_t(mSizeInCells.y)),
+                int(yz / std::size_t(mSizeInCells.y))};
+    }
+    std::size_t cellCount() const {
+        return std::size_t(mSizeInCells.x) * std::size_t(mSizeInCells.y) *
+               std::size_t(mSizeInCells.z);
+    }
+    std::uint32_t cell(glm::ivec3 c) const { return mTop.get(c); }
+    const PagedTopGrid& topGrid() const { return mTop; }
+    // Every cell in index order, as a dense array (small grids: dynamic objects, tests).
+    std::vector<std::uint32_t> denseCells() const;
     // Super cells (4^3 cells), for skipping open air: superCells() holds the skip distance of each
     // (0: something in it; k >= 1: empty within Chebyshev distance k - 1, see shared/brick_grid.h),
     // kept up to date on every edit from the count of non-empty cells in each.
@@ -141,16 +156,16 @@ public:
 private:
     std::uint32_t allocateBrick();
     void freeBrick(std::uint32_t brick);
-    void setCell(std::size_t index, std::uint32_t value);
+    void setCell(glm::ivec3 c, std::uint32_t value);
     void markBrickDirty(std::uint32_t brick);
-    void touchCell(std::size_t index);
+    void touchCell(glm::ivec3 c);
     void updateSkipDistances(glm::ivec3 changed, bool nowOccupied);
     std::uint32_t skipDistance(glm::ivec3 s) const;
     void setSuperCell(std::size_t index, std::uint32_t value);
 
     glm::ivec3 mSizeInCells;
     glm::ivec3 mSizeInSuperCells;
-    std::vector<std::uint32_t> mCells;
+    PagedTopGrid mTop;                       // cells, and per cell kMarkDirty | kMarkTouched
     std::vector<std::uint32_t> mSuperCells;  // skip distances (what the GPU reads)
     std::vector<std::uint8_t> mSuperCounts;  // non-empty cells per super cell (0..64)
     std::vector<std::uint8_t> mSuperDirty;
@@ -161,9 +176,7 @@ private:
     std::vector<std::uint32_t> mFreeBricks;
     std::vector<std::uint8_t> mBrickDirty;
     std::vector<std::uint32_t> mDirtyBricks;
-    std::vector<std::uint8_t> mCellDirty;
     std::vector<std::uint32_t> mDirtyCells;
-    std::vector<std::uint8_t> mCellTouched;
     std::vector<std::uint32_t> mTouchedCells;
     glm::ivec3 mRegionCount;
     std::vector<std::uint32_t> mRegionStamp;  // edit epoch of each region's last change

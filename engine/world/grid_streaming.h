@@ -15,9 +15,11 @@
 // Edited regions are pinned by the caller (pin()) until their save commits, so an edit is never
 // evicted before it is on disk; after that, eviction and reload give it back from the store.
 //
-// The top grid stays dense, sized to the world: 4 bytes a cell plus 5/256 for the super grid,
-// 64 MiB at 4096 x 256 x 4096 voxels and 256 MiB at 8192 x 256 x 8192 (docs/WORLD_STORE.md); a
-// paged top grid is the next step for wider worlds.
+// The grid's top grid is paged by region (world/paged_top_grid.h): a region that leaves gives its
+// page back once the frame's changes have been seen (BrickGrid::clearDirty), so the top grid, CPU
+// and GPU, holds pages for the regions in the grid only. What stays sized to the world is the
+// region table (4 bytes a region) and the super grid (6 bytes per 32^3 voxels on the CPU, 4 on the
+// GPU: 24 + 16 MiB at 16384 x 512 x 16384).
 #pragma once
 
 #include <cstddef>

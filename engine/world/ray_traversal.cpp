@@ -64,7 +64,6 @@ RayHit traceRay(const BrickGrid& grid, const Ray& ray, TraversalMode mode) {
     }
     float t = tEnter;
 
-    const std::span<const std::uint32_t> cells = grid.cells();
     const std::span<const std::uint32_t> supers = grid.superCells();
     const glm::vec3 absInv = glm::abs(inv);
     glm::vec3 tNext(0.0f);   // where the ray leaves the current block, per axis
@@ -87,7 +86,7 @@ RayHit traceRay(const BrickGrid& grid, const Ray& ray, TraversalMode mode) {
             s = 32;
         } else {
             if (exact > 8) refine();
-            const std::uint32_t cell = cells[grid.cellIndex(v >> 3)];
+            const std::uint32_t cell = grid.cell(v >> 3);
             if (cell == shared::CELL_EMPTY) {
                 s = 8;
             } else if (cell & shared::CELL_HOMOGENEOUS) {

@@ -36,15 +36,15 @@ CameraPreset Scene::camera(std::string_view wanted) const {
 
 std::uint64_t Scene::emissiveVoxels() const {
     std::uint64_t count = 0;
-    for (std::uint32_t c : grid.cells()) {
-        if (c == shared::CELL_EMPTY) continue;
+    grid.topGrid().forEachLiveCell([&](std::uint32_t c) {
+        if (c == shared::CELL_EMPTY) return;
         if (!BrickGrid::cellIsBrick(c)) {
             count += palette[BrickGrid::cellMaterial(c)].emissive() ? kBrickVoxels : 0;
-            continue;
+            return;
         }
         for (MaterialId m : grid.brickVoxels(BrickGrid::cellBrick(c)))
             count += palette[m].emissive();
-    }
+    });
     return count;
 }
 

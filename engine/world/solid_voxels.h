@@ -7,15 +7,22 @@
 
 namespace engine::world {
 
-// f(cell) for every cell that is not empty: a brick or a homogeneous cell.
+// f(cell) for every cell that is not empty: a brick or a homogeneous cell. A run of cells in a
+// region without a top-grid page of its own (all empty) is skipped in one step.
 template <typename F>
 void forEachOccupiedCell(const BrickGrid& grid, F&& f) {
     const glm::ivec3 cells = grid.sizeInCells();
+    const PagedTopGrid& top = grid.topGrid();
     for (int cz = 0; cz < cells.z; ++cz)
         for (int cy = 0; cy < cells.y; ++cy)
-            for (int cx = 0; cx < cells.x; ++cx) {
+            for (int cx = 0; cx < cells.x;) {
                 const glm::ivec3 c(cx, cy, cz);
-                if (grid.cell(c) != shared::CELL_EMPTY) f(c);
+                if (!top.regionHasPage(c)) {
+                    cx = (cx | (kRegionCells - 1)) + 1;
+                    continue;
+                }
+                if (top.get(c) != shared::CELL_EMPTY) f(c);
+                ++cx;
             }
 }
 

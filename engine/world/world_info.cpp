@@ -17,8 +17,10 @@ WorldInfo describeWorld(const Scene& scene) {
     WorldInfo info;
     info.sizeInVoxels = g.sizeInVoxels();
     info.sizeInCells = g.sizeInCells();
-    info.cells = g.cells().size();
-    for (std::uint32_t c : g.cells()) info.emptyCells += (c == shared::CELL_EMPTY);
+    info.cells = g.cellCount();
+    std::size_t occupied = 0;
+    g.topGrid().forEachLiveCell([&](std::uint32_t c) { occupied += (c != shared::CELL_EMPTY); });
+    info.emptyCells = info.cells - occupied;
     info.homogeneousCells = g.homogeneousCells();
     info.bricks = g.liveBricks();
     info.freeBricks = g.brickCapacity() - g.liveBricks();

@@ -101,7 +101,8 @@ TraceResult traceGrid(vec3 o, vec3 d, float tMax, bool hierarchical, bool dyn) {
     const ivec3 superSize = gridSizeInSuperCells(dyn);
     const ivec3 cellSize = gridSizeInCells(dyn);
     const uint superBase = superCellBase(cellSize);
-    const uint masksBase = maskBase(cellSize, superSize);
+    const uint masksBase = dyn ? 0u : maskBase();
+    const uint pagesBase = dyn ? 0u : pageBaseOf(cellSize, 0u);
     precise vec3 tNext = vec3(0.0);
     precise vec3 tDelta = vec3(0.0);
     int level = 0;
@@ -120,6 +121,9 @@ TraceResult traceGrid(vec3 o, vec3 d, float tMax, bool hierarchical, bool dyn) {
     // lane that does not need it.
     ivec3 boxCentre = ivec3(-1);  // super cell of the last super-grid read (its skip distance in `skip`)
     uint skip = 0u;
+    // The static world's top-grid page of boxCentre's region, from the same read (an occupied
+    // super cell names it): the cell reads below need no region-table read.
+    uint page = 0u;
     ivec3 cellKey = ivec3(-1);    // cell of `cell`
     uint cell = CELL_EMPTY;
     uint masks = 0u;              // index of the first mask word of the brick in `cell`
@@ -138,7 +142,9 @@ TraceResult traceGrid(vec3 o, vec3 d, float tMax, bool hierarchical, bool dyn) {
             ivec3 off = abs(superCell - boxCentre);
             if (uint(max(off.x, max(off.y, off.z))) >= max(skip, 1u)) {
                 boxCentre = superCell;
-                skip = gridSuperCellIn(dyn, superSize, superBase, superCell);
+                uint superWord = gridSuperCellIn(dyn, superSize, superBase, superCell);
+                skip = superWord & SUPER_SKIP_MASK;
+                page = superWord >> SUPER_PAGE_SHIFT;
             }
             air = skip != 0u;
         }
@@ -154,7 +160,13 @@ TraceResult traceGrid(vec3 o, vec3 d, float tMax, bool hierarchical, bool dyn) {
             bool newCell = any(notEqual(v >> 3, cellKey));
             if (newCell) {
                 cellKey = v >> 3;
-                cell = gridCellIn(dyn, cellSize, cellKey);
+                if (dyn) {
+                    cell = gridCellIn(dyn, cellSize, cellKey);
+                } else if (hierarchical) {
+                    cell = pageCell(pagesBase + page * PAGE_CELLS, cellKey);
+                } else {
+                    cell = pageCell(cellPageBase(cellSize, cellKey), cellKey);  // no super-grid read
+                }
                 coarseKey = -1;
                 fineKey = -1;
                 if (cell != CELL_EMPTY && (cell & CELL_HOMOGENEOUS) == 0u) {

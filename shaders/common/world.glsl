@@ -17,9 +17,9 @@
 layout(buffer_reference, std430, buffer_reference_align = 4) readonly buffer BrickPage { uint words[]; };
 
 layout(set = 0, binding = WORLD_BINDING_INFO, std430) readonly buffer WorldInfoBuffer { BrickGridInfo gWorld; };
-// The top grid's cells, then its super cells (skip distance per 4^3 cells, 0: occupied; see
-// shared/brick_grid.h), then every brick's mask words; and the page table (device address per
-// brick page, as two uints). Both are read as texels: llvmpipe gathers a texel fetch for the 8
+// The super cells (skip distance per 4^3 cells, 0: occupied), the top grid's region table and
+// cell pages, then every brick's mask words (see shared/brick_grid.h); and the page table (device
+// address per brick page, as two uints). Both are read as texels: llvmpipe gathers a texel fetch for the 8
 // lanes of a SIMD batch at once, where it compiles a storage-buffer read into a loop over the
 // lanes with a branch per lane.
 layout(set = 0, binding = WORLD_BINDING_CELLS) uniform usamplerBuffer gGridTexels;
@@ -34,24 +34,46 @@ layout(set = 0, binding = WORLD_BINDING_DYNAMIC) uniform usamplerBuffer gDynamic
 vec3 materialAlbedo(uint material) { return uintBitsToFloat(texelFetch(gPaletteTexels, int(material) * 3).rgb); }
 vec3 materialEmission(uint material) { return uintBitsToFloat(texelFetch(gPaletteTexels, int(material) * 3 + 1).rgb); }
 
-// Where the super cells start among the grid texels: after the cells.
-uint superCellBase(ivec3 sizeInCells) { return uint(sizeInCells.x) * uint(sizeInCells.y) * uint(sizeInCells.z); }
+// Where the super cells start among the grid texels: first.
+uint superCellBase(ivec3 sizeInCells) { return 0u; }
 
-// Where the bricks' mask words start among the grid texels: after the super cells (brick b's
-// BRICK_MASK_WORDS words at maskBase + b * BRICK_MASK_WORDS; a copy of its page's).
-uint maskBase(ivec3 sizeInCells, ivec3 sizeInSuperCells) {
-    return superCellBase(sizeInCells) + superCellBase(sizeInSuperCells);
+uint boxVolume(ivec3 n) { return uint(n.x) * uint(n.y) * uint(n.z); }
+
+// Where the region table starts among the grid texels: after the super cells.
+uint regionTableBase(ivec3 sizeInCells) { return boxVolume((sizeInCells + 3) >> 2); }
+
+// The grid texel where the top-grid page of the region holding `cell` starts (the region table's
+// entry; regions without a page of their own read page 0, all empty). Everything from the size in
+// cells, so a caller that read it once reads no more of the world info.
+uint cellPageBase(ivec3 sizeInCells, ivec3 cell) {
+    ivec3 n = (sizeInCells + int(PAGE_CELLS_AXIS - 1u)) >> int(REGION_CELLS_SHIFT);
+    ivec3 r = cell >> int(REGION_CELLS_SHIFT);
+    uint table = regionTableBase(sizeInCells);
+    uint page = texelFetch(gGridTexels, int(table + uint(r.x) + uint(n.x) * (uint(r.y) + uint(n.y) * uint(r.z)))).x;
+    return table + boxVolume(n) + page * PAGE_CELLS;
 }
+
+// A cell of the page that starts at texel `pageBase` (the cell's region's, cellPageBase).
+uint pageCell(uint pageBase, ivec3 cell) {
+    ivec3 l = cell & int(PAGE_CELLS_AXIS - 1u);
+    return texelFetch(gGridTexels, int(pageBase + uint(l.x) + PAGE_CELLS_AXIS * (uint(l.y) + PAGE_CELLS_AXIS * uint(l.z)))).x;
+}
+
+// Where the bricks' mask words start among the grid texels: after the cell pages, whose number
+// only the world info knows (brick b's BRICK_MASK_WORDS words at maskBase + b * BRICK_MASK_WORDS;
+// a copy of its page's).
+uint maskBase() { return gWorld.counts.w; }
 
 uint worldCell(ivec3 cell) {
     ivec3 s = gWorld.sizeInCells.xyz;
-    return texelFetch(gGridTexels, int(uint(cell.x) + uint(s.x) * (uint(cell.y) + uint(s.y) * uint(cell.z)))).x;
+    return pageCell(cellPageBase(s, cell), cell);
 }
 
+// The skip distance (shared/brick_grid.h; without the page bits).
 uint worldSuperCell(ivec3 s) {
     ivec3 n = gWorld.sizeInSuperCells.xyz;
     uint i = uint(s.x) + uint(n.x) * (uint(s.y) + uint(n.y) * uint(s.z));
-    return texelFetch(gGridTexels, int(superCellBase(gWorld.sizeInCells.xyz) + i)).x;
+    return texelFetch(gGridTexels, int(i)).x & SUPER_SKIP_MASK;
 }
 
 uint64_t brickPageAddress(uint page) {
@@ -133,20 +155,34 @@ ivec3 gridSizeInCells(bool dyn) {
 // llvmpipe turns a buffer read into a loop over the SIMD lanes (in Mesa 21.3's source even one
 // whose address all lanes share), so a size read per step can cost as much as the cell read.
 // `base`: superCellBase of the static grid's size in cells (unused for the dynamic grid).
+// The static grid's occupied super cells carry their page (SUPER_PAGE_SHIFT): mask with
+// SUPER_SKIP_MASK for the skip distance.
 uint gridSuperCellIn(bool dyn, ivec3 n, uint base, ivec3 s) {
     uint i = uint(s.x) + uint(n.x) * (uint(s.y) + uint(n.y) * uint(s.z));
     if (dyn) return dynamicTexel(gDynHeader.offsets.x + i);
     return texelFetch(gGridTexels, int(base + i)).x;
 }
 
+// The static grid's cells go through the region table (two texel fetches); the dynamic grid's
+// top grid is dense.
 uint gridCellIn(bool dyn, ivec3 n, ivec3 cell) {
-    uint i = uint(cell.x) + uint(n.x) * (uint(cell.y) + uint(n.y) * uint(cell.z));
-    if (dyn) return dynamicTexel(gDynHeader.offsets.y + i);
-    return texelFetch(gGridTexels, int(i)).x;
+    if (dyn) {
+        uint i = uint(cell.x) + uint(n.x) * (uint(cell.y) + uint(n.y) * uint(cell.z));
+        return dynamicTexel(gDynHeader.offsets.y + i);
+    }
+    return pageCell(cellPageBase(n, cell), cell);
 }
 
+// The texel where top-grid page `page` starts (pages follow the region table).
+uint pageBaseOf(ivec3 sizeInCells, uint page) {
+    ivec3 n = (sizeInCells + int(PAGE_CELLS_AXIS - 1u)) >> int(REGION_CELLS_SHIFT);
+    return regionTableBase(sizeInCells) + boxVolume(n) + page * PAGE_CELLS;
+}
+
+// The skip distance.
 uint gridSuperCell(bool dyn, ivec3 s) {
-    return gridSuperCellIn(dyn, gridSizeInSuperCells(dyn), dyn ? 0u : superCellBase(gWorld.sizeInCells.xyz), s);
+    return gridSuperCellIn(dyn, gridSizeInSuperCells(dyn), dyn ? 0u : superCellBase(gWorld.sizeInCells.xyz), s) &
+           SUPER_SKIP_MASK;
 }
 
 uint gridCell(bool dyn, ivec3 cell) { return gridCellIn(dyn, gridSizeInCells(dyn), cell); }
@@ -201,7 +237,7 @@ bool gridVoxelSolid(bool dyn, ivec3 v) {
     if ((cell & CELL_HOMOGENEOUS) != 0u) return true;
     ivec3 l = v & 7;
     uint bit = uint(l.x + 8 * l.y + 64 * l.z);
-    uint first = gridBrickMaskIndex(dyn, dyn ? 0u : maskBase(cells, gridSizeInSuperCells(dyn)), cell - 1u);
+    uint first = gridBrickMaskIndex(dyn, dyn ? 0u : maskBase(), cell - 1u);
     return ((gridMaskWordAt(dyn, first + (bit >> 5u)) >> (bit & 31u)) & 1u) != 0u;
 }
 

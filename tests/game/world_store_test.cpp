@@ -98,7 +98,7 @@ void expectSameWorld(const Scene& a, const Scene& b, const std::string& what) {
     EXPECT_EQ(a.grid.solidVoxels(), b.grid.solidVoxels()) << what;
     EXPECT_EQ(a.grid.homogeneousCells(), b.grid.homogeneousCells()) << what;
     EXPECT_EQ(a.grid.liveBricks(), b.grid.liveBricks()) << what;
-    auto ca = a.grid.cells(), cb = b.grid.cells();
+    const std::vector<std::uint32_t> ca = a.grid.denseCells(), cb = b.grid.denseCells();
     std::size_t differing = 0;
     for (std::size_t i = 0; i < ca.size(); ++i) {
         bool same =

@@ -1,4 +1,6 @@
 // The frame: G-buffer against the CPU reference traversal, determinism, and image files.
+#include <algorithm>
+#include <bit>
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
@@ -136,9 +138,13 @@ TEST_F(Render, AWorldOverTheTexelLimitIsRefusedWithItsSize) {
             try {
                 renderer.render(scene, scene.camera(), settings, kPreview);
             } catch (const engine::gpu::TexelBufferTooLarge& e) {
-                const std::string texels =
-                    std::to_string(scene.grid.cells().size() + scene.grid.superCells().size() +
-                                   4096 * 20 * ((scene.grid.brickCapacity() + 4095) / 4096));
+                // Super cells, region table, room for the cell pages (doubling, at least 8),
+                // the mask copy.
+                const std::string texels = std::to_string(
+                    scene.grid.superCells().size() + scene.grid.topGrid().table().size() +
+                    std::max<std::size_t>(8, std::bit_ceil(scene.grid.topGrid().pageCount())) *
+                        4096 +
+                    4096 * 20 * ((scene.grid.brickCapacity() + 4095) / 4096));
                 EXPECT_NE(std::string(e.what()).find(
                               "world 'sandbox' too large for the GPU's texel buffer: " + texels +
                               " texels, limit 50000"),

@@ -94,13 +94,14 @@ TEST(SceneFile, CornellBoxHasTheThesisLight) {
     EXPECT_EQ(scene->emissiveVoxels(), 131072u);  // 256 bricks of 8^3
     MaterialId light = *scene->palette.find("light");
     int lightCells = 0;
-    for (std::uint32_t c : scene->grid.cells())
+    for (std::uint32_t c : scene->grid.denseCells())
         lightCells += c == (shared::CELL_HOMOGENEOUS | light);
     EXPECT_EQ(lightCells, 256) << "each emissive brick is a homogeneous cell (a brick light)";
 }
 
-// Memory follows content: doubling the air above a terrain adds only top-grid cells.
-TEST(SceneFile, EmptyAirCostsOnlyTopGridCells) {
+// Memory follows content: doubling the air above a terrain adds only region-table entries (the
+// top grid is paged by region) and super cells.
+TEST(SceneFile, EmptyAirCostsOnlyRegionTableEntries) {
     TerrainParams p;
     p.top = 1;
     p.soil = 2;
@@ -114,13 +115,15 @@ TEST(SceneFile, EmptyAirCostsOnlyTopGridCells) {
     generateTerrain(high, p);
     EXPECT_EQ(low.liveBricks(), high.liveBricks());
     EXPECT_EQ(low.memory().brickPoolBytes, high.memory().brickPoolBytes);
-    std::size_t extraCells = high.cells().size() - low.cells().size();
-    EXPECT_EQ(extraCells, 128u * 32u * 128u);
+    EXPECT_EQ(high.topGrid().livePages(), low.topGrid().livePages());
+    const std::size_t extraRegions = high.topGrid().table().size() - low.topGrid().table().size();
+    EXPECT_EQ(extraRegions, 8u * 2u * 8u);
+    // A table entry and its changed flag per region.
     EXPECT_EQ(high.memory().topGridBytes - low.memory().topGridBytes,
-              extraCells * sizeof(std::uint32_t));
+              extraRegions * (sizeof(std::uint32_t) + 1u));
     // The pool holds only non-uniform bricks: far fewer than the cells the terrain touches.
-    EXPECT_LT(low.liveBricks(), low.cells().size() / 10);
-    for (std::uint32_t c : low.cells()) {
+    EXPECT_LT(low.liveBricks(), low.cellCount() / 10);
+    for (std::uint32_t c : low.denseCells()) {
         if (BrickGrid::cellIsBrick(c)) {
             ASSERT_FALSE(isUniform(low.brickVoxels(BrickGrid::cellBrick(c))));
         }
@@ -129,7 +132,9 @@ TEST(SceneFile, EmptyAirCostsOnlyTopGridCells) {
     for (const char* name : {"grass", "dirt", "stone"}) (void)scene.palette.add(Material{name});
     scene.grid = std::move(low);
     WorldInfo info = describeWorld(scene);
-    EXPECT_EQ(info.topGridBytes, 128u * 32u * 128u * 4u);
+    EXPECT_EQ(info.topGridBytes, scene.grid.memory().topGridBytes);
+    EXPECT_LT(info.topGridBytes, 128u * 32u * 128u * 4u * 2u)
+        << "pages (cells and their marks) of the regions the terrain occupies";
     EXPECT_EQ(info.brickPoolBytes, info.bricks * (1024u + 80u));
 }
 

@@ -34,7 +34,6 @@ RayHit traceClassicTwoLevel(const BrickGrid& grid, const engine::world::Ray& ray
     if (tEnter > tExit) return {};
     const glm::ivec3 step(d.x > 0 ? 1 : -1, d.y > 0 ? 1 : -1, d.z > 0 ? 1 : -1);
     const glm::vec3 absInv = glm::abs(inv);
-    const std::uint32_t* cells = grid.cells().data();
 
     glm::vec3 p = o + d * tEnter;
     glm::ivec3 cell = glm::clamp(glm::ivec3(glm::floor(p)) >> 3, glm::ivec3(0), cellsSize - 1);
@@ -45,7 +44,7 @@ RayHit traceClassicTwoLevel(const BrickGrid& grid, const engine::world::Ray& ray
     std::uint32_t steps = 0;
     for (;;) {
         ++steps;
-        std::uint32_t c = cells[grid.cellIndex(cell)];
+        std::uint32_t c = grid.cell(cell);
         if (c != 0) {
             glm::vec3 q = o + d * tCell;
             glm::ivec3 lo = cell * 8;
