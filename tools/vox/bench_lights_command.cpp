@@ -202,7 +202,9 @@ int runLightsBench(const LightsBenchOptions& o) {
                 for (std::size_t i = 0; i < r.mae.size(); ++i)
                     maeTime.push_back(r.mae[i] * r.mae[i] * r.cpuMs[i]);
                 const auto mat = summarize(maeTime);
-                const double vsBest = mt.median / summarize(results[best].mseTime).median;
+                // 0 / 0 when both rows' MSE is under the reference's own: unresolved, not a ratio.
+                const double bestMt = summarize(results[best].mseTime).median;
+                const double vsBest = bestMt > 0.0 ? mt.median / bestMt : std::nan("");
                 // The relative RMSE this sampling would reach in the first row's CPU time.
                 const double equalMs = summarize(results[0].cpuMs).median;
                 const double relEqual =
