@@ -292,12 +292,14 @@ void Hud::drawStats(const HudStats& stats, HudControls& controls, HudActions& ac
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("adapt the render scale to keep the frame responsive");
     textEntries(
-        {fmt::format("bricks {}", stats.liveBricks), fmt::format("emitters {}", stats.emitters)},
+        {fmt::format("bricks {}", stats.liveBricks),
+         fmt::format("emitters {}{}", stats.emitters, stats.regirSampling ? " (regir)" : "")},
         width);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip(
             "emissive voxels with an exposed face; a cell all of one emissive material is one "
-            "brick light");
+            "brick light; (regir): candidates from ReGIR's grid (--sampling regir, or auto's "
+            "choice for many lights spread far apart)");
     textEntries(
         {"memory CPU " + megabytes(stats.cpuMemory.topGridBytes + stats.cpuMemory.brickPoolBytes),
          "GPU " + megabytes(stats.gpuMemory.topGridBytes + stats.gpuMemory.brickPageBytes +

@@ -34,6 +34,7 @@ struct HudStats {
     std::uint32_t liveBricks = 0;
     std::uint64_t emitters =
         0;  // lighting::EmitterList entries (exposed emissive voxels, brick lights)
+    bool regirSampling = false;  // the candidates came from ReGIR's grid (regir or auto's choice)
     engine::world::GridMemory cpuMemory;
     engine::render::GpuWorldMemory gpuMemory;
     bool cacheUsed = false;

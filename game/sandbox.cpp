@@ -1006,6 +1006,7 @@ HudStats Sandbox::hudStats() {
     s.frame = mFrame;
     s.liveBricks = mScene.grid.liveBricks();
     s.emitters = mRenderer->emitters().aliveCount();
+    s.regirSampling = mLastFrame.regirSampling;
     s.cpuMemory = mScene.grid.memory();
     s.gpuMemory = mRenderer->gpuWorld().memory();
     s.cacheUsed = mLastFrame.cacheUsed;

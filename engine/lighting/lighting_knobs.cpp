@@ -51,14 +51,16 @@ bool isUniform(const LightingSettings& s) { return s.method == Method::Uniform; 
 bool isReference(const LightingSettings& s) { return s.method == Method::Reference; }
 bool vctMitigates(const LightingSettings& s) { return usesVct(s) && s.vct.leakMitigation; }
 
-// --sampling: uniform, power (alias table) or regir (ReGIR's grid for ReSTIR and RIS, whose cells
-// draw by power; the other methods take power).
+// --sampling: uniform, power (alias table), regir (ReGIR's grid for ReSTIR and RIS, whose cells
+// draw by power; the other methods take power) or auto (power or regir, chosen per scene by the
+// renderer: render/sampling_choice.h).
 double getSampling(const LightingSettings& s) {
-    return s.regir.enabled ? 2.0 : s.byPower ? 1.0 : 0.0;
+    return s.autoSampling ? 3.0 : s.regir.enabled ? 2.0 : s.byPower ? 1.0 : 0.0;
 }
 void setSampling(LightingSettings& s, double v) {
     s.byPower = v >= 1.0;
-    s.regir.enabled = v >= 2.0 ? 1u : 0u;
+    s.regir.enabled = v == 2.0 ? 1u : 0u;
+    s.autoSampling = v >= 3.0;
 }
 
 // --method: the methods by name, and restir-unbiased for ReSTIR with the unbiased normalisation.
@@ -119,7 +121,7 @@ constexpr std::array<std::string_view, 6> kMethods{"preview", "restir",     "ris
 constexpr std::array<std::string_view, 3> kSky{"none", "dvf", "reference"};
 constexpr std::array<std::string_view, 5> kIndirect{"none", "cache", "path", "reference", "vct"};
 constexpr std::array<std::string_view, 2> kModes{"point", "area"};
-constexpr std::array<std::string_view, 3> kSampling{"uniform", "power", "regir"};
+constexpr std::array<std::string_view, 4> kSampling{"uniform", "power", "regir", "auto"};
 constexpr std::array<std::string_view, 2> kPixelFilters{"box", "centre"};
 // In the order of enum Display.
 constexpr std::array<std::string_view, 3> kDisplays{"raw", "upsampled", "denoised"};
@@ -176,9 +178,10 @@ const Knob kEmitters[] = {
      .set = setField<&S::area>,
      .relevant = samplesEmitters},
     {.name = "sampling",
-     .help = "Candidate emitters: uniform, by power (alias table), or regir (ReSTIR/RIS: from a "
-             "world-space grid of "
-             "lights resampled per cell by power and distance; other methods by power)",
+     .help = "Candidate emitters: uniform, by power (alias table), regir (ReSTIR/RIS: from a "
+             "world-space grid of lights resampled per cell by power and distance; other methods "
+             "by power), or auto (power or regir per scene: regir when 64+ emitters spread over "
+             "2+ of its cells with at most 32 in each)",
      .kind = KnobKind::Choice,
      .choices = kSampling,
      .get = getSampling,
@@ -431,7 +434,7 @@ const Knob kRegir[] = {
      .max = 256,
      .get = getPartField<&S::regir, &G::cellSize>,
      .set = setPartField<&S::regir, &G::cellSize>,
-     .relevant = usesRegir},
+     .relevant = mayUseRegir},
     {.name = "regir_candidates",
      .help = "regir: power-drawn candidates resampled into each cell entry per frame",
      .kind = KnobKind::Count,
@@ -439,7 +442,7 @@ const Knob kRegir[] = {
      .max = 256,
      .get = getPartField<&S::regir, &G::buildCandidates>,
      .set = setPartField<&S::regir, &G::buildCandidates>,
-     .relevant = usesRegir},
+     .relevant = mayUseRegir},
 };
 
 // Voxel cone tracing (render/vct/; the Wicked Engine's voxel GI after Crassin et al.), prefixed

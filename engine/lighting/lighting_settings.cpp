@@ -59,6 +59,9 @@ bool accumulates(const LightingSettings& s) {
     return s.accumulation.enabled && s.method != Method::Reference && s.method != Method::Preview;
 }
 bool usesRegir(const LightingSettings& s) { return s.regir.enabled != 0u && resamples(s); }
+bool mayUseRegir(const LightingSettings& s) {
+    return usesRegir(s) || (s.autoSampling && s.byPower && resamples(s));
+}
 bool drawsLightsByPower(const LightingSettings& s) {
     return s.byPower && (resamples(s) || usesCache(s));
 }

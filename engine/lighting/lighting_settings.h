@@ -49,6 +49,9 @@ struct LightingSettings {
     bool byPower = true;  // candidates from the alias table over power (else uniform)
     shared::RegirKnobs
         regir;  // ReGIR's world-space candidates (sampling regir: regir.enabled, by power too)
+    // --sampling auto: the renderer chooses power or regir per scene (render/sampling_choice.h)
+    // and sets byPower / regir.enabled to the choice; false once chosen or named.
+    bool autoSampling = true;
     bool brickLights = true;
     shared::RestirKnobs restir;         // ReSTIR's knobs and their defaults (M also drives RIS)
     std::uint32_t shadowRays = 1;       // Uniform: samples (and shadow rays) per pixel
@@ -93,6 +96,8 @@ bool reconstructs(const LightingSettings& s);
 // The lighting denoised before that: not the noise-free preview.
 bool denoises(const LightingSettings& s);
 bool usesRegir(const LightingSettings& s);  // ReSTIR and RIS with sampling regir
+// ReSTIR and RIS with sampling auto, before the renderer has chosen: ReGIR's knobs may matter.
+bool mayUseRegir(const LightingSettings& s);
 // Lights drawn by power from the alias table: ReSTIR/RIS candidates and the cache's bounce.
 bool drawsLightsByPower(const LightingSettings& s);
 // Those draws from presampled light tiles instead (the light_tiles knob).

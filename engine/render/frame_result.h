@@ -21,6 +21,8 @@ struct FrameResult {
     double emitterUpdateMs = 0.0;  // CPU time of the emitter list update
     double dynamicUpdateMs = 0.0;  // CPU time of posing and re-voxelising dynamic objects
     std::uint32_t emitters = 0;
+    bool regirSampling =
+        false;  // candidates from ReGIR's grid (--sampling regir, or auto's choice)
     std::uint32_t referenceSamples = 0;   // samples per pixel accumulated so far (reference)
     std::uint32_t accumulatedFrames = 0;  // frames in the lit image's running mean (accumulate)
     bool cacheUsed = false;

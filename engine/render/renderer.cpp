@@ -192,19 +192,22 @@ void Renderer::prepareFrame(gpu::CommandList& cmd, world::Scene& scene, const Fr
 
 FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& camera,
                              const FrameSettings& settings,
-                             const lighting::LightingSettings& lighting,
+                             const lighting::LightingSettings& requested,
                              gpu::Presenter* presenter) {
     const glm::uvec2 size(settings.width, settings.height);
     // The display's size if a technique resolves to it (the memory plan asks the frame plan).
     const glm::uvec2 requestedDisplay =
         settings.displayWidth != 0 ? glm::uvec2(settings.displayWidth, settings.displayHeight)
                                    : size;
-    checkMemory(scene, size, requestedDisplay, lighting);
+    checkMemory(scene, size, requestedDisplay, requested);
     // Before the scene's update: a new size forgets the last frame's time, which the objects'
     // previous poses must not see after the update.
     resize(size);
     FrameResult result;
-    updateScene(scene, settings, lighting, result);
+    updateScene(scene, settings, requested, result);
+    const lighting::LightingSettings lighting =
+        resolveAutoSampling(scene, requested, result.emitterUpdate);
+    result.regirSampling = engine::lighting::usesRegir(lighting);
     const FramePlan frame = planFrame(lighting, sceneShape(scene), size);
     resizeDisplay(frame.writesDisplay ? requestedDisplay : size, frame.writesDisplay);
     // Every pass compiled without the code of the features this frame does not use.
@@ -252,6 +255,22 @@ FrameResult Renderer::render(world::Scene& scene, const world::CameraPreset& cam
     ++mFrameIndex;
     if (presenter) present(*presenter, result);
     return result;
+}
+
+lighting::LightingSettings Renderer::resolveAutoSampling(
+    const world::Scene& scene, const lighting::LightingSettings& lighting,
+    const lighting::EmitterUpdateStats& update) {
+    if (!lighting.autoSampling) return lighting;
+    const glm::ivec3 world = scene.grid.sizeInVoxels();
+    const bool emittersChanged =
+        update.full || update.added != 0 || update.removed != 0 || update.changed != 0;
+    if (!mSamplingFacts || emittersChanged || world != mSamplingFactsWorld ||
+        !(lighting.regir == mSamplingFactsKnobs)) {
+        mSamplingFacts = engine::render::samplingFacts(mEmitters, world, lighting.regir);
+        mSamplingFactsWorld = world;
+        mSamplingFactsKnobs = lighting.regir;
+    }
+    return resolveSampling(lighting, autoChoosesRegir(*mSamplingFacts));
 }
 
 void Renderer::present(gpu::Presenter& presenter, FrameResult& result) {

@@ -32,6 +32,7 @@
 #include "render/gpu_world.h"
 #include "render/passes/primary_ray_pass.h"
 #include "render/passes/tonemap_pass.h"
+#include "render/sampling_choice.h"
 #include "render/technique.h"
 #include "shared/gbuffer.h"
 
@@ -93,6 +94,8 @@ public:
 
     GpuWorld& gpuWorld() { return mWorld; }
     const lighting::EmitterList& emitters() const { return mEmitters; }
+    // What --sampling auto last chose from (none before a frame with sampling auto).
+    const std::optional<SamplingFacts>& samplingFacts() const { return mSamplingFacts; }
     // The techniques, for tests and tools that read their state.
     const IrradianceCache& irradianceCache() const;
     const LightTiles& lightTiles() const;
@@ -113,6 +116,11 @@ private:
     void prepareFrame(gpu::CommandList& cmd, world::Scene& scene, const FrameInput& in,
                       const FramePlan& plan, FrameResult& result);
     void present(gpu::Presenter& presenter, FrameResult& result);
+    // The lighting with --sampling auto resolved for this scene (render/sampling_choice.h); the
+    // facts are gathered again only when the emitters, the world's size or ReGIR's knobs change.
+    lighting::LightingSettings resolveAutoSampling(const world::Scene& scene,
+                                                   const lighting::LightingSettings& lighting,
+                                                   const lighting::EmitterUpdateStats& update);
     template <class T>
     T& technique(std::string_view name) const;
 
@@ -129,6 +137,9 @@ private:
     // One per registered technique, in registry order.
     std::vector<std::unique_ptr<Technique>> mTechniques;
     FrameChangeTracker mChanges;
+    std::optional<SamplingFacts> mSamplingFacts;  // for --sampling auto, with what it was made of
+    glm::ivec3 mSamplingFactsWorld{0};
+    shared::RegirKnobs mSamplingFactsKnobs{};
 
     glm::uvec2 mSize{0};
     gpu::Buffer mFrameParams, mRadiance, mLdr, mRayStats, mIndirect;

@@ -24,6 +24,9 @@ std::string valueText(const toml::node& n) {
 
 const lighting::Knob* indirectKnob(std::string_view key) {
     if (key == "mode") return lighting::knobForOption("indirect");
+    // How a world's lights are sampled is the world's to say too (a world of many lights spread
+    // far apart may want regir however auto decides).
+    if (key == "sampling") return lighting::knobForOption("sampling");
     for (std::string_view group : {"cache", "path", "vct"}) {
         for (const lighting::Knob& k : lighting::knobGroup(group).knobs) {
             if (k.name == key) return &k;

@@ -1,5 +1,6 @@
 // The [indirect] table: how a world wants its indirect light (the mode and the irradiance
-// cache's knobs), kept in world::Scene::indirect as the knobs' text.
+// cache's knobs) and its lights sampled (`sampling`), kept in world::Scene::indirect as the
+// knobs' text.
 #pragma once
 
 #include "lighting/knob.h"
@@ -9,7 +10,8 @@
 
 namespace engine::scene {
 
-// The lighting knob an [indirect] key names ("mode" is `indirect`, the rest the cache's), or null.
+// The lighting knob an [indirect] key names ("mode" is `indirect`, "sampling" is `sampling`, the
+// rest the cache's, the path term's or the cones'), or null.
 const lighting::Knob* indirectKnob(std::string_view key);
 // Reads the keys of an [indirect] table into scene.indirect, checked by the knobs; `table` is
 // the table's node, for messages.

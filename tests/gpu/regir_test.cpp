@@ -17,6 +17,7 @@
 
 using namespace engine::world;
 using namespace gpu_testing;
+using engine::render::FrameResult;
 
 namespace {
 
@@ -100,6 +101,7 @@ LightingSettings regirRis(std::uint32_t candidates) {
     l.method = Method::Ris;
     l.restir.candidates = candidates;
     l.regir.enabled = 1;
+    l.autoSampling = false;  // the tests that turn the grid off compare with power draws
     l.regir.cellSize = 8.0f;
     return l;
 }
@@ -418,4 +420,45 @@ TEST(Regir, ShippedWorldDrawsFromTheGrid) {
     std::printf("%d of %d lit pixels differ between grid and power candidates\n", differ, lit);
     ASSERT_GT(lit, 200);
     EXPECT_GT(differ, lit / 2);
+}
+
+// --sampling auto renders exactly what it chooses: the same bytes as the sampling named outright,
+// ReGIR's grid for many lamps spread over many cells, power draws for the few lamps of lampScene.
+TEST(Regir, AutoSamplingRendersExactlyItsChoice) {
+    Scene spread =
+        paletteScene({96, 32, 96},
+                     {Material{"white", glm::vec3(0.75f)},
+                      Material{"lamp", glm::vec3(0.8f), glm::vec3(1.0f, 0.85f, 0.6f), 4.0f}},
+                     true);
+    fillBox(spread.grid, Box{{0, 0, 0}, {96, 1, 96}}, kWhite);
+    for (int z = 2; z < 96; z += 4)
+        for (int x = 2; x < 96; x += 4) spread.grid.set({x, 1, z}, kLamp);  // 576 lamps
+    spread.cameras.push_back(
+        CameraPreset{"low", {48.0f, 10.0f, 20.0f}, {48.0f, 0.0f, 60.0f}, 60.0f});
+    spread.grid.clearDirty();
+    Scene few = lampScene();
+    for (auto [scene, expectRegir] : {std::pair{&spread, true}, std::pair{&few, false}}) {
+        auto render = [&](const char* sampling) {
+            LightingSettings l;
+            if (std::string(sampling) != "auto") {
+                l.autoSampling = false;
+                l.regir.enabled = std::string(sampling) == "regir" ? 1u : 0u;
+            }
+            Renderer r(context());
+            FrameResult last;
+            for (int f = 0; f < 3; ++f) last = r.render(*scene, scene->camera(), frame(32), l);
+            EXPECT_EQ(last.regirSampling, std::string(sampling) == "regir" ||
+                                              (std::string(sampling) == "auto" && expectRegir))
+                << sampling;
+            return r.readback().radiance;
+        };
+        const std::vector<glm::vec4> chosen = render("auto");
+        const std::vector<glm::vec4> named = render(expectRegir ? "regir" : "power");
+        const std::vector<glm::vec4> other = render(expectRegir ? "power" : "regir");
+        ASSERT_EQ(chosen.size(), named.size());
+        EXPECT_EQ(std::memcmp(chosen.data(), named.data(), chosen.size() * sizeof(glm::vec4)), 0)
+            << scene->name;
+        EXPECT_NE(std::memcmp(chosen.data(), other.data(), chosen.size() * sizeof(glm::vec4)), 0)
+            << scene->name << ": the two samplings should differ, or the test shows nothing";
+    }
 }

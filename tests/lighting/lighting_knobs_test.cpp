@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "render/frame_plan.h"
+#include "scene/scene_file.h"
 #include "scene/scene_lighting.h"
 #include "world/scene.h"
 
@@ -142,6 +143,49 @@ TEST(LightingKnobs, SamplingChoosesUniformPowerOrRegir) {
     EXPECT_EQ(s.regir.enabled, 0u);
     EXPECT_FALSE(setKnob(sampling, s, "tree").ok());
     EXPECT_FALSE(setKnob(*knobForOption("regir-cell"), s, "0").ok());
+}
+
+// --sampling auto is the default: ReSTIR's description says so, the knob writes it back, and a
+// scene file's [indirect] sampling and the command line set it and override it both ways; the
+// renderer resolves it per scene (render/sampling_choice.h).
+TEST(LightingKnobs, SamplingAutoIsTheDefaultAndRoundTrips) {
+    const Knob& sampling = *knobForOption("sampling");
+    const LightingSettings defaults;
+    EXPECT_TRUE(defaults.autoSampling);
+    EXPECT_TRUE(defaults.byPower);
+    EXPECT_EQ(knobText(sampling, defaults), "auto");
+    EXPECT_NE(engine::render::describeLighting(defaults).find(" auto "), std::string::npos)
+        << engine::render::describeLighting(defaults);
+
+    const char* text = R"([world]
+name = "auto_sampling"
+size = [32, 32, 32]
+[indirect]
+sampling = "power"
+)";
+    auto scene = engine::scene::loadSceneText(text, "auto_sampling.toml");
+    ASSERT_TRUE(scene.ok()) << scene.error().message;
+    auto fromScene = engine::scene::lightingFor(&*scene, std::vector<KnobValue>{});
+    ASSERT_TRUE(fromScene.ok()) << fromScene.error().message;
+    EXPECT_FALSE(fromScene->autoSampling);
+    EXPECT_EQ(knobText(sampling, *fromScene), "power");
+    auto fromCli =
+        engine::scene::lightingFor(&*scene, std::vector<KnobValue>{option("sampling", "auto")});
+    ASSERT_TRUE(fromCli.ok()) << fromCli.error().message;
+    EXPECT_TRUE(fromCli->autoSampling);
+    EXPECT_EQ(knobText(sampling, *fromCli), "auto");
+
+    scene->indirect = {{"sampling", "auto"}};
+    auto reread = engine::scene::loadSceneText(engine::scene::sceneText(*scene), "again.toml");
+    ASSERT_TRUE(reread.ok()) << reread.error().message;
+    auto autoAgain = engine::scene::lightingFor(&*reread, std::vector<KnobValue>{});
+    ASSERT_TRUE(autoAgain.ok()) << autoAgain.error().message;
+    EXPECT_EQ(*autoAgain, defaults);
+    auto regir =
+        engine::scene::lightingFor(&*reread, std::vector<KnobValue>{option("sampling", "regir")});
+    ASSERT_TRUE(regir.ok()) << regir.error().message;
+    EXPECT_FALSE(regir->autoSampling);
+    EXPECT_EQ(regir->regir.enabled, 1u);
 }
 
 // Voxel cone tracing's knobs likewise: [indirect] mode = "vct" and vct_* keys, --vct-* options.

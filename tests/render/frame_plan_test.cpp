@@ -133,7 +133,7 @@ TEST(FramePlan, DescriptionNamesTheRunningTechniques) {
     l.indirect = Indirect::Cache;
     const std::string text = engine::render::describeLighting(l);
     EXPECT_EQ(
-        text.rfind("restir biased area M=32 power bricks temporal spatial 5x30px + cache K=128", 0),
+        text.rfind("restir biased area M=32 auto bricks temporal spatial 5x30px + cache K=128", 0),
         0u)
         << text;
     l.method = Method::Reference;  // the cache does not run beside the reference

@@ -26,6 +26,7 @@ void addJobCommand(CLI::App& app, int& exitCode);
 void addBenchTraverseCommand(CLI::App& bench, int& exitCode);
 void addBenchEmittersCommand(CLI::App& bench, int& exitCode);
 void addBenchRestirCommand(CLI::App& bench, int& exitCode);
+void addBenchLightsCommand(CLI::App& bench, int& exitCode);
 void addBenchAccuracyCommand(CLI::App& bench, int& exitCode);
 void addBenchSweepCommand(CLI::App& bench, int& exitCode);
 void addBenchStabilityCommand(CLI::App& bench, int& exitCode);

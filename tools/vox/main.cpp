@@ -145,6 +145,7 @@ int main(int argc, char** argv) {
     vox::addBenchTraverseCommand(*bench, exitCode);
     vox::addBenchEmittersCommand(*bench, exitCode);
     vox::addBenchRestirCommand(*bench, exitCode);
+    vox::addBenchLightsCommand(*bench, exitCode);
     vox::addBenchAccuracyCommand(*bench, exitCode);
     vox::addBenchSweepCommand(*bench, exitCode);
     vox::addBenchStabilityCommand(*bench, exitCode);

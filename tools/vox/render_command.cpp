@@ -198,6 +198,13 @@ int runRender(const RenderOptions& o) {
     engine::render::FrameImages images = renderer.readback();
 
     printFrame(results.back(), results.front(), settings, l);
+    if (const auto& facts = renderer.samplingFacts();
+        facts && l.byPower && engine::lighting::resamples(l))
+        std::printf(
+            "sampling auto chose %s: %u emitters spread %.0f voxels, %.1f ReGIR cells of %.0f, "
+            "%.1f per occupied cell\n",
+            results.back().regirSampling ? "regir" : "power", facts->emitters, facts->spread,
+            facts->spread / facts->regirCell, facts->regirCell, facts->perOccupiedCell);
     if (!o.timings.empty()) {
         if (engine::Status s = writeTimings(o.timings, scene->name, l, settings, results); !s)
             return fail(s.error());

@@ -1,6 +1,7 @@
 #include "sweep_runner.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <ctime>
 #include <fmt/format.h>
@@ -74,7 +75,7 @@ SweepPoint measureSetting(engine::render::Renderer& renderer, engine::world::Sce
                           std::string label) {
     renderer.resetHistory();
     std::map<std::string, std::vector<double>> times;
-    std::vector<double> totals, cpuTimes;
+    std::vector<double> totals, cpuTimes, wallTimes;
     SweepPoint p;
     p.scene = scene.name;
     p.label = std::move(label);
@@ -86,13 +87,18 @@ SweepPoint measureSetting(engine::render::Renderer& renderer, engine::world::Sce
         // not the accumulation of all frames so far, so its time and error belong together.
         if (lighting.method == Method::Reference) renderer.resetHistory();
         const double cpuBefore = processCpuMs();
+        const auto wallBefore = std::chrono::steady_clock::now();
         engine::render::FrameResult r = renderer.render(scene, camera, frame, lighting);
         const double cpu = processCpuMs() - cpuBefore;
+        const double wall =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wallBefore)
+                .count();
         p.emitters = r.emitters;
         if (i < frames / 2) continue;
         for (const auto& [name, ms] : r.passMs) times[name].push_back(ms);
         totals.push_back(r.totalMs() - r.passMsOf("upload"));
         cpuTimes.push_back(cpu);
+        wallTimes.push_back(wall);
         engine::render::FrameImages img = renderer.readback();
         auto e = engine::metrics::compareImages({img.radiance, frame.width, frame.height},
                                                 {reference, frame.width, frame.height});
@@ -109,6 +115,7 @@ SweepPoint measureSetting(engine::render::Renderer& renderer, engine::world::Sce
     for (auto& [name, v] : times) p.passMs[name] = median(v);
     p.totalMs = median(totals);
     p.cpuMs = median(cpuTimes);
+    p.wallMs = median(wallTimes);
     p.fastestMs = totals.empty() ? 0.0 : *std::min_element(totals.begin(), totals.end());
     p.mae /= std::max(counted, 1);
     p.mse /= std::max(counted, 1);

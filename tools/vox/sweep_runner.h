@@ -35,6 +35,9 @@ struct SweepPoint {
     // device (lavapipe) that is the device's work plus the host's, and other processes taking the
     // cores do not lengthen it as they lengthen the GPU timestamps.
     double cpuMs = 0.0;
+    // Median wall time of the whole Renderer::render call per frame: host work, submission and the
+    // wait for the device (readback excluded); what a player waits, other processes' load included.
+    double wallMs = 0.0;
     double mae = 0.0, mse = 0.0, rmae = 0.0;
     double meanRatio =
         0.0;  // mean luminance of non-emitting surface pixels / the reference's: bias at a glance

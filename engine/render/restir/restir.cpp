@@ -34,7 +34,10 @@ TechniquePlan Restir::plan(const lighting::LightingSettings& l, const SceneShape
 }
 
 std::string Restir::describe(const lighting::LightingSettings& l) {
-    const char* sampling = l.regir.enabled ? "regir" : l.byPower ? "power" : "uniform";
+    const char* sampling = l.regir.enabled  ? "regir"
+                           : !l.byPower     ? "uniform"
+                           : l.autoSampling ? "auto"
+                                            : "power";
     const char* lights = l.brickLights ? "bricks" : "voxels";
     const char* mode = l.area ? "area" : "point";
     if (l.method == lighting::Method::Ris) {
