@@ -330,10 +330,11 @@ engine::Status Sandbox::init() {
         const world::ResidencySettings& r = mStreaming->settings();
         std::printf(
             "vox play: streaming regions within %.0f voxels from %s, budget %.0f MiB, at "
-            "most %zu region(s) into the grid per frame; autosave off\n",
+            "most %zu region(s) and %zu bricks into the grid per frame; autosave off\n",
             double(r.radiusVoxels),
             mStreamStore.empty() ? "the terrain generator" : mStreamStore.string().c_str(),
-            double(r.budgetBytes) / (1 << 20), mStreaming->regionsPerFrame());
+            double(r.budgetBytes) / (1 << 20), mStreaming->regionsPerFrame(),
+            mStreaming->bricksPerFrame());
         std::fflush(stdout);
     }
     if (mOptions.walk) message(mWalk.toggle(mScene, mCamera));
