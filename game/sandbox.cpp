@@ -153,11 +153,11 @@ private:
     UndoHistory mUndo;
     Autosave mAutosave;
     Hud mHud;
-    // The edit log is a journal: appended and flushed line by line so it survives a crash, and
-    // checked at exit. The frame log is an output like any other, written atomically at exit.
+    // The edit and frame logs are journals: appended and flushed line by line so a session that
+    // crashes or is stopped early keeps its rows (a long streaming flight is measured even if it
+    // is killed), and checked at exit.
     std::ofstream mEditLog;
-    engine::AtomicFile mFrameLogFile;
-    std::ostream* mFrameLog = nullptr;
+    std::ofstream mFrameLog;
     engine::AtomicFile mWalkLogFile;
     std::ostream* mWalkLog = nullptr;
 
@@ -274,11 +274,12 @@ engine::Status Sandbox::init() {
         mEditLog << "# vox play edit log: world " << mWorldPath.string() << "\n";
     }
     if (!mOptions.frameLogPath.empty()) {
-        if (engine::Status s = mFrameLogFile.open(mOptions.frameLogPath); !s) return s;
-        mFrameLog = &mFrameLogFile.stream();
+        mFrameLog.open(mOptions.frameLogPath);
+        if (!mFrameLog)
+            return engine::makeError("{}: cannot write the frame log", mOptions.frameLogPath);
         // wall: the whole loop iteration (input, HUD, edits, render + present, script actions);
         // render_call: Renderer::render alone; gpu: its passes' GPU time, present included.
-        *mFrameLog
+        mFrameLog
             << "frame,wall_ms,render_call_ms,gpu_ms,present_gpu_ms,render_width,render_height,"
                "stream_regions,stream_in,stream_in_ms,stream_out,stream_out_ms\n";
     }
@@ -329,10 +330,11 @@ engine::Status Sandbox::init() {
         const world::ResidencySettings& r = mStreaming->settings();
         std::printf(
             "vox play: streaming regions within %.0f voxels from %s, budget %.0f MiB, at "
-            "most %zu region(s) into the grid per frame; autosave off\n",
+            "most %zu region(s) and %zu bricks into the grid per frame; autosave off\n",
             double(r.radiusVoxels),
             mStreamStore.empty() ? "the terrain generator" : mStreamStore.string().c_str(),
-            double(r.budgetBytes) / (1 << 20), mStreaming->regionsPerFrame());
+            double(r.budgetBytes) / (1 << 20), mStreaming->regionsPerFrame(),
+            mStreaming->bricksPerFrame());
         std::fflush(stdout);
     }
     if (mOptions.walk) message(mWalk.toggle(mScene, mCamera));
@@ -390,13 +392,16 @@ int Sandbox::run() {
     // Saves still being written finish before the process ends, and say how they went.
     mSaver.waitIdle();
     if (!pollSaves()) exitCode = 1;
-    for (auto [log, file] :
-         {std::pair{mFrameLog, &mFrameLogFile}, std::pair{mWalkLog, &mWalkLogFile}}) {
-        if (!log) continue;
-        if (engine::Status c = file->commit(); !c) {
+    if (mWalkLog) {
+        if (engine::Status c = mWalkLogFile.commit(); !c) {
             std::fprintf(stderr, "vox play: %s\n", c.error().message.c_str());
             exitCode = 1;
         }
+    }
+    if (mFrameLog.is_open() && !mFrameLog.flush()) {
+        std::fprintf(stderr, "vox play: %s: cannot write the frame log (disk full?)\n",
+                     mOptions.frameLogPath.c_str());
+        exitCode = 1;
     }
     if (mEditLog.is_open() && !mEditLog.flush()) {
         std::fprintf(stderr, "vox play: %s: cannot write the edit log (disk full?)\n",
@@ -442,13 +447,15 @@ void Sandbox::frame() {
     const double wallMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if (mAutoScale && rendered.presented) adjustRenderScale(wallMs, framebuffer);
-    if (mFrameLog && rendered.presented) {
+    if (mFrameLog.is_open() && rendered.presented) {
         // stream_*: regions in the grid, and those written in and out this frame (streaming).
-        *mFrameLog << fmt::format(
+        // Flushed every row: a write error sticks in the stream's state and is reported at exit.
+        mFrameLog << fmt::format(
             "{},{:.3f},{:.3f},{:.3f},{:.3f},{},{},{},{},{:.3f},{},{:.3f}\n", mFrame, wallMs,
             rendered.renderCallMs, rendered.result.totalMs(), rendered.result.passMsOf("present"),
             rendered.size.x, rendered.size.y, mStreaming ? mStreaming->regionsInGrid() : 0,
             mStreamReport.arrived, mStreamReport.inMs, mStreamReport.left, mStreamReport.outMs);
+        mFrameLog.flush();
     }
     if (mWalkLog) *mWalkLog << mWalk.logRow(mFrame, mTime) << "\n";
     ++mFrame;

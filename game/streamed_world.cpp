@@ -40,8 +40,8 @@ engine::Result<std::optional<StreamedWorld>> openStreamedWorld(const fs::path& p
     const world::ResidencySettings settings{
         options.radius > 0.0f ? options.radius : StreamOptions::kDefaultRadius,
         options.budgetMiB << 20};
-    out.streaming = std::make_unique<world::GridStreaming>(std::move(regions->source), settings,
-                                                           options.regionsPerFrame);
+    out.streaming = std::make_unique<world::GridStreaming>(
+        std::move(regions->source), settings, options.regionsPerFrame, options.bricksPerFrame);
     out.scene = std::move(*lean);
     return std::optional<StreamedWorld>(std::move(out));
 }

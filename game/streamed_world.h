@@ -24,8 +24,9 @@ inline constexpr int kStreamByDefaultVoxels = engine::scene::kLoadWholeUpToVoxel
 
 struct StreamOptions {
     float radius = -1.0f;  // voxels; negative: stream by default at kDefaultRadius; 0: never
-    std::uint64_t budgetMiB = 1536;   // the streamed regions' bytes in the grid, at most
-    std::size_t regionsPerFrame = 4;  // copied into the grid per frame, at most
+    std::uint64_t budgetMiB = 1536;     // the streamed regions' bytes in the grid, at most
+    std::size_t regionsPerFrame = 4;    // copied into the grid per frame, at most
+    std::size_t bricksPerFrame = 1024;  // their bricks per frame, at most (but one region)
     static constexpr float kDefaultRadius = 768.0f;
 };
 

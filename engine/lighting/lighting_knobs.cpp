@@ -488,6 +488,13 @@ const Knob kVct[] = {
      .get = getPartField<&S::vct, &V::refreshPeriod>,
      .set = setPartField<&S::vct, &V::refreshPeriod>,
      .relevant = usesVct},
+    {.name = "vct_classify_all",
+     .help = "vct: classify every texel each frame, not only the blocks that may have changed "
+             "(the same image; for tests and timing)",
+     .kind = KnobKind::Switch,
+     .get = getPartField<&S::vct, &V::classifyAll>,
+     .set = setPartField<&S::vct, &V::classifyAll>,
+     .relevant = usesVct},
 };
 
 // Temporal accumulation of the lit image over still frames (render/accumulation/).

@@ -17,6 +17,10 @@ struct VctSettings {
     // Texels that stay in the clipmap are re-injected every this many frames, in turn (new ones,
     // those near dynamic objects and every texel after an edit or a light change at once).
     std::uint32_t refreshPeriod = 8;
+    // vct.classify visits every texel of every level each frame, not only the blocks that may
+    // have changed (render/vct/vct_block_list.h): the same image, the cost before issue 38's
+    // block list — for tests and timing.
+    bool classifyAll = false;
 
     bool operator==(const VctSettings&) const = default;
 };

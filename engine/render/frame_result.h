@@ -32,6 +32,9 @@ struct FrameResult {
     IrradianceCacheStats cache;
     bool skyUsed = false;  // a sky term (DVF or its reference) was added
     DvfSkyStats sky;       // DVF: masks held, queued and traced this frame
+    bool vctUsed = false;
+    std::uint32_t vctBlocks = 0;  // VCT: blocks of 4^3 texels vct.classify visited (0: no pass)
+    double vctPrepareMs = 0.0;    // VCT: CPU time of its prepare (the block list included)
     double totalMs() const;
     double passMsOf(const std::string& name) const;
 };

@@ -24,10 +24,13 @@ std::uint32_t pagesFor(std::uint32_t brickCapacity) {
         1, (brickCapacity + shared::BRICK_PAGE_BRICKS - 1) >> shared::BRICK_PAGE_SHIFT);
 }
 
-// Cell pages the GPU keeps room for: doubling, so a world that streams in regrows its grid
-// texels (a full upload) a few times, not at every new page.
+// Cell pages and brick pages the grid texels keep room for: doubling, so a world that streams in
+// rebuilds its grid texels a few times (log2 of its size), not at every new page.
 std::uint64_t cellPageCapacity(std::uint32_t pages) {
     return std::max<std::uint64_t>(8, std::bit_ceil(std::uint64_t(pages)));
+}
+std::uint64_t brickPageRoom(std::uint64_t pages) {
+    return std::max<std::uint64_t>(1, std::bit_ceil(pages));
 }
 
 // Where each part of the grid texels starts (shared/brick_grid.h).
@@ -74,12 +77,15 @@ WorldUploadStats GpuWorld::sync(const world::Scene& scene, gpu::Uploader& upload
     const std::uint64_t pages =
         std::max<std::uint64_t>(mPages.size(), pagesFor(grid.brickCapacity()));
     const world::PagedTopGrid& top = grid.topGrid();
-    // Room for cell pages only grows within one world (a new world starts afresh).
+    // Room for cell pages and brick masks only grows within one world (a new world starts
+    // afresh).
+    const bool newWorld = needsFullUpload(grid);
     const std::uint64_t pageCapacity =
-        needsFullUpload(grid)
-            ? cellPageCapacity(top.pageCount())
-            : std::max<std::uint64_t>(mCellPageCapacity, cellPageCapacity(top.pageCount()));
-    const TexelLayout layout = texelLayout(grid, pageCapacity, pages);
+        newWorld ? cellPageCapacity(top.pageCount())
+                 : std::max<std::uint64_t>(mCellPageCapacity, cellPageCapacity(top.pageCount()));
+    const std::uint64_t maskRoom =
+        newWorld ? brickPageRoom(pages) : std::max(mBrickPageRoom, brickPageRoom(pages));
+    const TexelLayout layout = texelLayout(grid, pageCapacity, maskRoom);
     gpu::checkTexelCount(mCtx, layout.total, "world '" + scene.name + "'");
 
     std::vector<shared::GpuMaterial> palette = scene.palette.toGpu();
@@ -99,15 +105,21 @@ WorldUploadStats GpuWorld::sync(const world::Scene& scene, gpu::Uploader& upload
     ensurePages(grid.brickCapacity(), uploader);
     // The grid texels: the super cells, the region table, the cell pages, then every brick
     // slot's mask words (a copy of the pages' masks that the traversal reads as texels, without
-    // the page table). More brick pages outgrow the mask copy, more cell pages their room: then
-    // everything is uploaded again, as for a new world.
-    const TexelLayout uploaded = texelLayout(grid, pageCapacity, mPages.size());
+    // the page table). More brick pages than the mask copy has room for, or more cell pages: the
+    // grid texels are built again, from the host.
+    const TexelLayout uploaded = texelLayout(grid, pageCapacity, maskRoom);
     mMaskBase = uploaded.masks;
-    if (needsFullUpload(grid) || mCells.size() != uploaded.total * 4u) {
-        // A new or resized world: upload the top grid and every live brick.
-        stats.full = true;
+    if (newWorld || mCells.size() != uploaded.total * 4u) {
+        // A new or resized world uploads the top grid and every live brick. Room outgrown within
+        // one world (streaming, a large edit) rebuilds only the grid texels: the brick pages,
+        // buffers of their own, already hold every brick but this frame's dirty ones, and the
+        // world is not new to the lighting (no cache cleared, no history lost). Uploading every
+        // brick again as a new world was what made a streamed flight's slowest frames (issue
+        // 39): once per 4096 bricks streamed in.
+        stats.full = newWorld;
         mSizeInCells = grid.sizeInCells();
         mCellPageCapacity = pageCapacity;
+        mBrickPageRoom = maskRoom;
         mCells = gpu::Buffer(mCtx, gpu::BufferKind::Storage, uploaded.total * 4u, "world.cells");
         mCells.setTexelFormat(VK_FORMAT_R32_UINT);
         mInfo = gpu::Buffer(mCtx, gpu::BufferKind::Storage, sizeof(shared::BrickGridInfo),
@@ -126,8 +138,16 @@ WorldUploadStats GpuWorld::sync(const world::Scene& scene, gpu::Uploader& upload
         top.forEachLiveCell([&](std::uint32_t c) {
             if (world::BrickGrid::cellIsBrick(c)) live.push_back(world::BrickGrid::cellBrick(c));
         });
-        uploadBricks(grid, live, uploader);
-        stats.bricks = static_cast<std::uint32_t>(live.size());
+        if (newWorld) {
+            uploadBricks(grid, live, uploader);
+            stats.bricks = static_cast<std::uint32_t>(live.size());
+        } else {
+            uploadMaskCopy(grid, live, uploader);
+            stats.bytes += live.size() * kMaskBytes;
+            std::vector<std::uint32_t> bricks(grid.dirtyBricks().begin(), grid.dirtyBricks().end());
+            uploadBricks(grid, bricks, uploader);
+            stats.bricks = static_cast<std::uint32_t>(bricks.size());
+        }
     } else {
         // Regions whose page changed: the table entry, the whole page (a page number a region
         // reuses holds another region's old cells on the GPU) and the region's super cells
@@ -233,6 +253,15 @@ void GpuWorld::ensurePages(std::uint32_t brickCapacity, gpu::Uploader& uploader)
     uploader.write(mPageTable, 0, addresses.data(), addresses.size() * sizeof(std::uint64_t));
 }
 
+void GpuWorld::uploadMaskCopy(const world::BrickGrid& grid, std::vector<std::uint32_t>& bricks,
+                              gpu::Uploader& uploader) {
+    std::sort(bricks.begin(), bricks.end());
+    for (std::uint32_t brick : bricks) {
+        uploader.write(mCells, mMaskBase * 4u + std::uint64_t(brick) * kMaskBytes,
+                       grid.brickMask(brick).words.data(), kMaskBytes);
+    }
+}
+
 void GpuWorld::uploadBricks(const world::BrickGrid& grid, std::vector<std::uint32_t>& bricks,
                             gpu::Uploader& uploader) {
     // Sorted, masks first and materials second: runs of neighbouring bricks then merge into one
@@ -243,10 +272,7 @@ void GpuWorld::uploadBricks(const world::BrickGrid& grid, std::vector<std::uint3
         uploader.write(mPages[brick >> shared::BRICK_PAGE_SHIFT], local * kMaskBytes,
                        grid.brickMask(brick).words.data(), kMaskBytes);
     }
-    for (std::uint32_t brick : bricks) {
-        uploader.write(mCells, mMaskBase * 4u + std::uint64_t(brick) * kMaskBytes,
-                       grid.brickMask(brick).words.data(), kMaskBytes);
-    }
+    uploadMaskCopy(grid, bricks, uploader);
     for (std::uint32_t brick : bricks) {
         std::uint64_t local = brick & (shared::BRICK_PAGE_BRICKS - 1u);
         uploader.write(

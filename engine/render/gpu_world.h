@@ -4,7 +4,8 @@
 // The first sync uploads everything; later syncs upload only the bricks, top-grid cells, region
 // table entries and pages the grid marked changed (the caller then clears the marks). The top
 // grid is paged as on the CPU (world/paged_top_grid.h): the GPU holds the region table and room
-// for the pages (doubling; outgrowing it uploads everything again). The brick pool lives in pages
+// for the pages and for the brick masks' copy (doubling; outgrowing it builds the grid texels
+// again, but not the bricks, and is not a new world). The brick pool lives in pages
 // of BRICK_PAGE_BRICKS bricks, each its own buffer reached by device address, so no binding exceeds
 // lavapipe's 128 MiB limit however large the world grows.
 #pragma once
@@ -56,6 +57,7 @@ public:
     void invalidate() {
         mSizeInCells = glm::ivec3(0);
         mCellPageCapacity = 0;
+        mBrickPageRoom = 0;
         mDynamic.invalidate();
     }
 
@@ -70,10 +72,14 @@ private:
     void ensurePages(std::uint32_t brickCapacity, gpu::Uploader& uploader);
     void uploadBricks(const world::BrickGrid& grid, std::vector<std::uint32_t>& bricks,
                       gpu::Uploader& uploader);
+    // The mask copy in the grid texels alone (the traversal's), for `bricks`.
+    void uploadMaskCopy(const world::BrickGrid& grid, std::vector<std::uint32_t>& bricks,
+                        gpu::Uploader& uploader);
 
     gpu::Context& mCtx;
     glm::ivec3 mSizeInCells{0};
     std::uint64_t mCellPageCapacity = 0;  // top-grid pages the grid texels hold room for
+    std::uint64_t mBrickPageRoom = 0;     // brick pages the grid texels' mask copy holds room for
     std::uint64_t mMaskBase = 0;          // first texel of the mask copy
     gpu::Buffer mInfo, mCells, mPageTable, mPalette;
     std::vector<gpu::Buffer> mPages;

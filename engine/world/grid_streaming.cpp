@@ -13,9 +13,11 @@ double msSince(std::chrono::steady_clock::time_point start) {
 }  // namespace
 
 GridStreaming::GridStreaming(std::unique_ptr<RegionSource> source,
-                             const ResidencySettings& settings, std::size_t regionsPerFrame)
+                             const ResidencySettings& settings, std::size_t regionsPerFrame,
+                             std::size_t bricksPerFrame)
     : mResidency(std::move(source), settings),
-      mRegionsPerFrame(std::max<std::size_t>(1, regionsPerFrame)) {
+      mRegionsPerFrame(std::max<std::size_t>(1, regionsPerFrame)),
+      mBricksPerFrame(bricksPerFrame) {
     const glm::ivec3 n = mResidency.regionCounts();
     mInGrid.assign(std::size_t(n.x) * n.y * n.z, 0);
 }
@@ -58,7 +60,7 @@ GridStreamingReport GridStreaming::update(glm::vec3 eye, BrickGrid& grid) {
     }
     report.outMs = msSince(start);
 
-    // Arrived: into the grid, nearest first, at most mRegionsPerFrame.
+    // Arrived: into the grid, nearest first, within the per-frame limits (the first always).
     start = std::chrono::steady_clock::now();
     std::vector<std::pair<float, RegionKey>> arrived;
     for (RegionKey k : mResidency.residentKeys()) {
@@ -73,6 +75,10 @@ GridStreamingReport GridStreaming::update(glm::vec3 eye, BrickGrid& grid) {
     });
     for (const auto& [d, k] : arrived) {
         if (report.arrived == mRegionsPerFrame) break;
+        const ResidentRegion* loaded = mResidency.region(k);
+        const std::size_t bricks = loaded ? loaded->voxels().bricks.size() : 0;
+        if (report.arrived > 0 && bricks > mBricksPerFrame - report.bricks) break;
+        report.bricks += bricks;
         std::unique_ptr<ResidentRegion> region = mResidency.release(k);
         if (region) writeRegion(region->voxels(), grid);  // null: a failed load, seen as empty
         mResidency.recycle(std::move(region));

@@ -6,9 +6,14 @@
 // (BrickGrid::setStampingEdits): what was only streamed is never saved.
 //
 // The residency's loader thread reads, decodes or generates a region; the frame thread only copies
-// it into the grid, at most `regionsPerFrame` a frame (nearest first), so a frame's share of
-// streaming is bounded. The residency's copy is handed back to be freed once the grid holds it:
-// the budget counts the bytes the grid holds for streamed regions, not a second copy.
+// it into the grid, nearest first, at most `regionsPerFrame` regions and `bricksPerFrame` bricks a
+// frame (but always one region, however many bricks it has), so a frame's share of streaming is
+// bounded: the copy, and everything downstream (uploads, the emitter rescan, the lighting's
+// invalidation), grows with the bricks and cells written. Bricks, not milliseconds: the split of
+// arrivals over frames then depends on what arrived, not on how loaded the machine is. A region
+// is written whole or not at all, so a ray sees it whole or as air, never half. The residency's
+// copy is handed back to be freed once the grid holds it: the budget counts the bytes the grid
+// holds for streamed regions, not a second copy.
 //
 // Regions not in the grid are air for rays (the grid's empty cells) and must not be walked into:
 // boxInGrid() says whether every region a box meets is there (the player waits while not).
@@ -37,7 +42,8 @@ namespace engine::world {
 struct GridStreamingReport {
     std::size_t arrived = 0;          // regions written into the grid by this update
     std::size_t left = 0;             // regions erased from the grid by this update
-    std::size_t waiting = 0;          // loaded, not yet in the grid (the per-frame limit)
+    std::size_t bricks = 0;           // bricks of the regions written in by this update
+    std::size_t waiting = 0;          // loaded, not yet in the grid (the per-frame limits)
     std::size_t pending = 0;          // asked of the loader, not loaded yet
     double inMs = 0.0;                // copying arrived regions into the grid
     double outMs = 0.0;               // erasing left regions from the grid
@@ -46,8 +52,9 @@ struct GridStreamingReport {
 
 class GridStreaming {
 public:
+    static constexpr std::size_t kUnlimitedBricks = ~std::size_t(0);
     GridStreaming(std::unique_ptr<RegionSource> source, const ResidencySettings& settings,
-                  std::size_t regionsPerFrame);
+                  std::size_t regionsPerFrame, std::size_t bricksPerFrame = kUnlimitedBricks);
 
     // Frame thread, once a frame: the residency's update around `eye`, then the grid follows it.
     GridStreamingReport update(glm::vec3 eye, BrickGrid& grid);
@@ -61,6 +68,7 @@ public:
     std::uint64_t bytes() const { return mResidency.residentBytes(); }
     const ResidencySettings& settings() const { return mResidency.settings(); }
     std::size_t regionsPerFrame() const { return mRegionsPerFrame; }
+    std::size_t bricksPerFrame() const { return mBricksPerFrame; }
     RegionResidency& residency() { return mResidency; }
 
 private:
@@ -71,6 +79,7 @@ private:
 
     RegionResidency mResidency;
     std::size_t mRegionsPerFrame;
+    std::size_t mBricksPerFrame;
     std::vector<std::uint8_t> mInGrid;  // per region
     std::vector<RegionKey> mGridKeys;   // the regions in the grid
 };

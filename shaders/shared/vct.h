@@ -65,6 +65,14 @@ SHARED_CONST uint VCT_LIST_ARGS = 1u;
 SHARED_CONST uint VCT_LIST_HEADER = 4u;
 SHARED_CONST uint VCT_INJECT_GROUP_SIZE = 64u;  // inject_radiance.comp's workgroup
 
+// vct.classify visits blocks of VCT_BLOCK^3 texels, one workgroup each, from a list the host
+// makes (render/vct/vct_block_list.h; VCT_INJECT_BINDING_BLOCKS): a block's index is
+// x + VCT_BLOCKS_PER_AXIS * (y + VCT_BLOCKS_PER_AXIS * (z + VCT_BLOCKS_PER_AXIS * level)).
+SHARED_CONST uint VCT_BLOCK = 4u;
+SHARED_CONST uint VCT_BLOCKS_PER_AXIS = VCT_RES / VCT_BLOCK;
+SHARED_CONST uint VCT_BLOCKS_PER_LEVEL =
+    VCT_BLOCKS_PER_AXIS * VCT_BLOCKS_PER_AXIS * VCT_BLOCKS_PER_AXIS;
+
 // classify_texels.comp, list_dispatch.comp and inject_radiance.comp: world + lights, then
 SHARED_CONST uint VCT_INJECT_BINDING_FRAME = LIT_PASS_BINDING_FIRST + 0u;   // FrameParams
 SHARED_CONST uint VCT_INJECT_BINDING_PARAMS = LIT_PASS_BINDING_FIRST + 1u;  // VctParams
@@ -72,6 +80,8 @@ SHARED_CONST uint VCT_INJECT_BINDING_PREVIOUS =
     LIT_PASS_BINDING_FIRST + 2u;  // vec4 volume, last frame's
 SHARED_CONST uint VCT_INJECT_BINDING_VOLUME = LIT_PASS_BINDING_FIRST + 3u;  // vec4 volume, written
 SHARED_CONST uint VCT_INJECT_BINDING_LIST = LIT_PASS_BINDING_FIRST + 4u;    // uint: the texel list
+SHARED_CONST uint VCT_INJECT_BINDING_BLOCKS =
+    LIT_PASS_BINDING_FIRST + 5u;  // uint: the blocks vct.classify visits
 // trace_cones.comp: world + lights, then
 SHARED_CONST uint VCT_CONES_BINDING_FRAME = LIT_PASS_BINDING_FIRST + 0u;   // FrameParams
 SHARED_CONST uint VCT_CONES_BINDING_PARAMS = LIT_PASS_BINDING_FIRST + 1u;  // VctParams

@@ -12,6 +12,7 @@ layout(set = 0, binding = VCT_INJECT_BINDING_PARAMS, std430) readonly buffer Vct
 layout(set = 0, binding = VCT_INJECT_BINDING_PREVIOUS, std430) readonly buffer Previous { vec4 gPrevious[]; };
 layout(set = 0, binding = VCT_INJECT_BINDING_VOLUME, std430) writeonly buffer Volume { vec4 gVolume[]; };
 layout(set = 0, binding = VCT_INJECT_BINDING_LIST, std430) buffer List { uint gList[]; };
+layout(set = 0, binding = VCT_INJECT_BINDING_BLOCKS, std430) readonly buffer Blocks { uint gBlocks[]; };
 
 #define VCT_VOLUME gPrevious
 #define VCT_ORIGIN(l) gVct.prevOrigin[l]

@@ -13,6 +13,12 @@
 #   ... "$vox" play ...
 
 own_display_available() { command -v Xvfb >/dev/null 2>&1; }
+# Ends the test as skipped (ctest's SKIP_RETURN_CODE 77) when there is no Xvfb to start.
+skip_without_own_display() {
+    own_display_available && return 0
+    echo "SKIP: Xvfb not found (apt-get install xvfb; tools/setup.sh installs it)"
+    exit 77
+}
 
 OWN_DISPLAY_PID=""
 OWN_DISPLAY_DIR=""

@@ -9,10 +9,7 @@ set -u
 vox="$1"; check="$2"; script="$3"; out="$4"
 
 source "$(dirname "$0")/own_display.sh"
-if ! own_display_available; then
-    echo "SKIP: Xvfb not found (apt-get install xvfb; tools/setup.sh installs it)"
-    exit 77
-fi
+skip_without_own_display
 rm -rf "$out" && mkdir -p "$out" && cd "$out" || exit 1
 failures=0
 start_own_display 1024x768 || exit 1

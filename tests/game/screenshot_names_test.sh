@@ -7,10 +7,7 @@
 set -u
 vox="$1"
 source "$(dirname "$0")/own_display.sh"
-if ! own_display_available; then
-    echo "SKIP: Xvfb not found (apt-get install xvfb; tools/setup.sh installs it)"
-    exit 77
-fi
+skip_without_own_display
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 failures=0

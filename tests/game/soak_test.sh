@@ -18,10 +18,7 @@ bound_mib=8
 crate="$(cd "$(dirname "$0")" && pwd)/crate.toml"
 
 source "$(dirname "$0")/own_display.sh"
-if ! own_display_available; then
-    echo "SKIP: Xvfb not found (apt-get install xvfb; tools/setup.sh installs it)"
-    exit 77
-fi
+skip_without_own_display
 rm -rf "$out" && mkdir -p "$out" && cd "$out" || exit 1
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 failures=0

@@ -9,10 +9,7 @@ set -u
 vox="$1"; check="$2"; script="$3"; world="$4"; out="$5"
 
 source "$(dirname "$0")/own_display.sh"
-if ! own_display_available; then
-    echo "SKIP: Xvfb not found (apt-get install xvfb; tools/setup.sh installs it)"
-    exit 77
-fi
+skip_without_own_display
 rm -rf "$out" && mkdir -p "$out" && cd "$out" || exit 1
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }

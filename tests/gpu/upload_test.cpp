@@ -112,8 +112,10 @@ TEST_F(Upload, CollapsingAndReusingBricksStaysConsistent) {
     }
 }
 
-// The traversal reads brick masks from a copy beside the top grid sized for the brick pages; an
-// edit that needs a new page outgrows it, and the next sync uploads everything again.
+// The traversal reads brick masks from a copy beside the top grid with room for the brick pages;
+// an edit that needs a new page outgrows it, and the next sync builds the grid texels again —
+// but uploads only the dirty bricks and is not a new world (streaming grows the pool this way
+// every few frames; a whole upload there cleared the lighting's caches, issue 39).
 TEST_F(Upload, MoreBrickPagesUploadTheGridTexelsAgain) {
     BrickGrid grid({256, 64, 256});
     fillBox(grid, Box{{0, 0, 0}, {256, 8, 256}}, 1);  // homogeneous ground, no bricks
@@ -132,8 +134,11 @@ TEST_F(Upload, MoreBrickPagesUploadTheGridTexelsAgain) {
         }
     }
     ASSERT_GT(scene.grid.liveBricks(), shared::BRICK_PAGE_BRICKS);
+    const std::size_t dirtyBricks = scene.grid.dirtyBricks().size();
     auto grown = renderer.render(scene, camera, smallFrame(), kPreview);
-    EXPECT_TRUE(grown.upload.full);
+    EXPECT_FALSE(grown.upload.full);
+    EXPECT_EQ(grown.upload.bricks, dirtyBricks);
+    EXPECT_LT(grown.upload.bricks, scene.grid.liveBricks());
     FrameImages incremental = renderer.readback();
     Renderer fresh(gpu_testing::context());
     fresh.render(scene, camera, smallFrame(), kPreview);

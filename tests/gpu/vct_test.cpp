@@ -5,6 +5,9 @@
 #include <algorithm>
 #include <cstdio>
 #include <gtest/gtest.h>
+#include <map>
+#include <memory>
+#include <tuple>
 
 #include "gpu/gpu_test_setup.h"
 #include "render/vct/voxel_cone_tracing.h"
@@ -89,6 +92,44 @@ std::vector<glm::vec4> referenceIndirect(Scene& scene, const CameraPreset& camer
     std::vector<glm::vec4> with = run(1), without = run(0);
     for (std::size_t i = 0; i < with.size(); ++i) with[i] -= without[i];
     return with;
+}
+
+// A street longer than levels 0 and 1 reach (64 and 128 voxels), so they move with a camera
+// walking it: a floor, walls of two colours every 16 voxels, a lamp, the sun — and a 6^3 block
+// sliding 50 voxels along it in the first scene second.
+Scene street() {
+    Scene scene = makeScene({224, 24, 40});
+    fillBox(scene.grid, Box{{0, 0, 0}, {224, 2, 40}}, kWhite);
+    for (int x = 8; x < 224; x += 16)
+        fillBox(scene.grid, Box{{x, 2, 30}, {x + 3, 14, 36}}, (x / 16) % 2 ? kRed : kGreen);
+    fillBox(scene.grid, Box{{100, 8, 10}, {102, 10, 12}}, kLamp);
+    scene.grid.clearDirty();
+    DynamicObject block;
+    block.modelSize = glm::ivec3(6);
+    BrickGrid model(block.modelSize);
+    fillBox(model, Box{glm::ivec3(0), block.modelSize}, kWhite);
+    block.model = std::make_shared<const BrickGrid>(std::move(model));
+    block.path =
+        ObjectPath({ObjectKey{0.0, {40.0, 6.0, 18.0}}, ObjectKey{1.0, {90.0, 6.0, 18.0}}}, false);
+    scene.objects.push_back(block);
+    return scene;
+}
+
+// The issue's doorway-lit room: a closed room (48 x 24 x 48 voxels inside) with walls and roof
+// `wall` voxels thick, lit only through a doorway in its -x wall by a low sun (and the sky);
+// camera "ceiling" inside looks straight up at the ceiling, which only light bounced off the
+// sunlit patch of floor inside (and the walls) reaches.
+Scene doorwayRoom(int wall) {
+    Scene scene = makeScene({112, 48, 112});
+    fillBox(scene.grid, Box{{0, 0, 0}, {112, 2, 112}}, kWhite);
+    fillBox(scene.grid, Box{{32 - wall, 2, 32 - wall}, {80 + wall, 26 + wall, 80 + wall}}, kWhite);
+    fillBox(scene.grid, Box{{32, 2, 32}, {80, 26, 80}}, 0);
+    fillBox(scene.grid, Box{{32 - wall, 2, 48}, {32, 18, 64}}, 0);  // the doorway
+    scene.sky.sunDirection = glm::normalize(glm::vec3(-1.0f, 0.7f, 0.0f));
+    scene.cameras.push_back(
+        CameraPreset{"ceiling", {60.0f, 6.0f, 56.0f}, {60.0f, 26.0f, 56.5f}, 60.0f});
+    scene.grid.clearDirty();
+    return scene;
 }
 
 }  // namespace
@@ -236,6 +277,109 @@ TEST_F(Vct, IndirectMeanAgainstThePathTracerOnShippedWorlds) {
         EXPECT_GT(vct / one, 0.8) << name;
         EXPECT_LT(vct / one, 1.25) << name;
     }
+}
+
+// The block list (render/vct/vct_block_list.h) classifies only the blocks of texels that may have
+// changed; every frame must give the image of classifying every texel (`vct_classify_all`), and
+// while the world and the objects rest it must classify only the blocks the moving levels bring
+// in. A walk along the street: the camera moves (levels 0 and 1 take in new texels, whose slots
+// held others) while the block slides, then the camera stops, the block rests, then it is taken
+// away (its texels must be zeroed, the shadow it cast re-injected in turn), then the camera walks
+// on. In place and with the extra bounce (two volumes, each written every other frame).
+TEST_F(Vct, BlockListGivesTheImageOfClassifyingEveryTexel) {
+    constexpr std::uint32_t kFrames = 28, kRefresh = 4;
+    const auto cameraAt = [](std::uint32_t i) {
+        const float x = 10.0f + 12.0f * float(std::min(i, 9u)) + 15.0f * float(i > 22 ? i - 22 : 0);
+        return CameraPreset{"walk", {x, 12.0f, 4.0f}, {x + 30.0f, 3.0f, 30.0f}, 70.0f};
+    };
+    struct Run {
+        std::vector<std::vector<glm::vec4>> images;
+        std::vector<std::uint32_t> blocks;
+    };
+    const auto walk = [&](bool bounce, bool classifyAll) {
+        Scene scene = street();
+        LightingSettings l = vctLighting();
+        l.vct.refreshPeriod = kRefresh;
+        l.vct.extraBounce = bounce;
+        l.vct.classifyAll = classifyAll;
+        Renderer r(gpu_testing::context());
+        Run run;
+        for (std::uint32_t i = 0; i < kFrames; ++i) {
+            if (i == 16) scene.objects.clear();
+            FrameSettings f = frame(24);
+            f.timeSeconds = double(std::min(i, 8u)) / 8.0;  // the block rests from frame 8
+            run.blocks.push_back(r.render(scene, cameraAt(i), f, l).vctBlocks);
+            run.images.push_back(r.readback().indirect);
+        }
+        return run;
+    };
+    for (const bool bounce : {false, true}) {
+        const Run all = walk(bounce, true), listed = walk(bounce, false);
+        for (std::uint32_t i = 0; i < kFrames; ++i) {
+            EXPECT_GT(meanOf(all.images[i]), 0.0) << "frame " << i;
+            EXPECT_EQ(listed.images[i], all.images[i]) << "frame " << i << " bounce " << bounce;
+            EXPECT_EQ(all.blocks[i], 4 * ::shared::VCT_BLOCKS_PER_LEVEL);
+        }
+        std::printf("street, %s: blocks classified per frame:",
+                    bounce ? "extra bounce" : "in place");
+        for (std::uint32_t b : listed.blocks) std::printf(" %u", b);
+        std::printf(" (of %u)\n", 4 * ::shared::VCT_BLOCKS_PER_LEVEL);
+        if (bounce) continue;
+        // In place, once the objects rested kRefresh frames (their grid changes last on frame 9,
+        // whose previous pose is the rest pose) and the camera stopped (frame 9): nothing to
+        // classify; after the block is taken away (frame 16) its
+        // rotation again; the camera walking on brings in blocks of the moving levels only.
+        for (std::uint32_t i = 14; i < 16; ++i) EXPECT_EQ(listed.blocks[i], 0u) << "frame " << i;
+        EXPECT_GT(listed.blocks[16], 0u);
+        for (std::uint32_t i = 20; i < 23; ++i) EXPECT_EQ(listed.blocks[i], 0u) << "frame " << i;
+        for (std::uint32_t i = 23; i < kFrames; ++i) {
+            EXPECT_GT(listed.blocks[i], 0u) << "frame " << i;
+            EXPECT_LE(listed.blocks[i], 2 * ::shared::VCT_BLOCKS_PER_LEVEL) << "frame " << i;
+        }
+    }
+}
+
+// The doorway-lit room of issue 38: the ceiling's indirect light against the path tracer's, with
+// walls and roof 1 and 16 voxels thick, one clipmap level (64 voxels: cones leave it inside the
+// room) and four (the room inside), under sun and sky and under the sun alone (docs/ACCURACY.md).
+// One level under the sky: 5.6 and 13.5 times too bright — thicker walls brighter, so not a leak
+// through them: a cone past the clipmap takes the sky (cone_trace.glsl), right in the open, wrong
+// in a room. Without the sky, the same cones are too dark (0.62, 0.24: the lit floor is past
+// their reach). With the room in the clipmap, 1.73 and 1.57 under the sky, 1.57 and 1.02 under
+// the sun alone: the 1-voxel walls leak (the method's own, Vct.ThinWallLeak...), and the sky
+// through the doorway, 16 voxels across, seen through 8- and 16-voxel texels, is too bright.
+TEST_F(Vct, DoorwayLitRoomCeiling) {
+    std::map<std::tuple<int, bool, std::uint32_t>, double> ratio;
+    for (const int wall : {1, 16}) {
+        for (const bool sky : {true, false}) {
+            Scene scene = doorwayRoom(wall);
+            if (!sky) scene.sky.skyRadiance = glm::vec3(0.0f);
+            const CameraPreset camera = scene.camera("ceiling");
+            const double ref = meanOf(referenceIndirect(scene, camera, 24, 256));
+            for (const std::uint32_t levels : {1u, 4u}) {
+                LightingSettings l = vctLighting();
+                l.vct.levels = levels;
+                Renderer r(gpu_testing::context());
+                r.render(scene, camera, frame(24), l);
+                const double vct = meanOf(r.readback().indirect);
+                std::printf(
+                    "doorway room, walls %2d voxels, %s, %u level(s): ceiling indirect vct %.5f, "
+                    "path tracer %.5f (ratio %.2f)\n",
+                    wall, sky ? "sun and sky" : "sun alone ", levels, vct, ref, vct / ref);
+                ratio[std::make_tuple(wall, sky, levels)] = vct / ref;
+            }
+        }
+    }
+    const auto at = [&](int wall, bool sky, std::uint32_t levels) {
+        return ratio[std::make_tuple(wall, sky, levels)];
+    };
+    for (const int wall : {1, 16}) {
+        EXPECT_GT(at(wall, true, 1u), 4.0) << wall;   // the sky past the clipmap
+        EXPECT_LT(at(wall, false, 1u), 1.0) << wall;  // the rest of the light out of reach
+        EXPECT_LT(at(wall, true, 4u), 2.0) << wall;
+    }
+    EXPECT_GT(at(16, true, 1u), at(1, true, 1u));  // thick walls: no less
+    EXPECT_NEAR(at(16, false, 4u), 1.0, 0.2);      // in reach, no sky, no thin wall
 }
 
 // The clipmap's levels (VoxelConeTracing::levelOrigin): a camera deep inside a large world gets

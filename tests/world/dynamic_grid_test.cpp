@@ -158,7 +158,9 @@ TEST(DynamicGrid, OccupancyBoxesHoldEveryVoxelInFewCells) {
         EXPECT_FALSE(b.empty());
         // Objects 2 and 3 have a box each (0 and 1 share theirs with 4 and 5): the cells of one
         // 6x4x2 object, at most 2 per axis.
-        if (i >= 2) EXPECT_TRUE(glm::all(glm::lessThanEqual(b.size(), glm::ivec3(16)))) << i;
+        if (i >= 2) {
+            EXPECT_TRUE(glm::all(glm::lessThanEqual(b.size(), glm::ivec3(16)))) << i;
+        }
     }
     const glm::ivec3 s = g.grid.sizeInVoxels();
     std::size_t solid = 0;

@@ -96,6 +96,41 @@ TEST(GridStreaming, StreamedGridEqualsTheWorldLoadedWholeAndEvictionsEmptyIt) {
     EXPECT_FALSE(t.boxInGrid({glm::ivec3(0), glm::ivec3(4)}));
 }
 
+// The per-frame brick limit spreads arrivals over frames: with every region loaded, each frame
+// writes regions whose bricks stay within the limit, or one region alone if it has more; the
+// grid's dirty bricks (what the GPU uploads) are exactly those; and the grid ends equal to the
+// world loaded whole.
+TEST(GridStreaming, BricksPerFrameSpreadArrivalsOverFrames) {
+    BrickGrid grid(kWorld);
+    const std::size_t limit = 600;
+    GridStreaming s(std::make_unique<TerrainRegionSource>(kWorld, terrain()),
+                    {1e6f, std::uint64_t(1) << 40}, 32, limit);
+    const glm::vec3 eye(10.0f, 60.0f, 10.0f);
+    s.update(eye, grid);  // asks for every region
+    s.residency().waitIdle();
+    ASSERT_EQ(s.residency().residentRegions(), 32u);
+    std::size_t frames = 0, alone = 0, arrived = 0;
+    while (arrived < 32u) {
+        ASSERT_LT(frames, 32u) << "a frame took no region";
+        const GridStreamingReport r = s.update(eye, grid);
+        ASSERT_GE(r.arrived, 1u);
+        EXPECT_EQ(grid.dirtyBricks().size(), r.bricks);
+        if (r.arrived == 1 && r.bricks > limit)
+            ++alone;
+        else
+            EXPECT_LE(r.bricks, limit);
+        arrived += r.arrived;
+        ++frames;
+        grid.clearDirty();
+    }
+    EXPECT_EQ(s.regionsInGrid(), 32u);
+    EXPECT_TRUE(grid == wholeWorld());
+    // The limit did split the arrivals (32 regions a frame were allowed).
+    EXPECT_GT(frames, 2u);
+    std::printf("%zu frames, %zu with one region over the limit, %u bricks\n", frames, alone,
+                wholeWorld().liveBricks());
+}
+
 // What the renderer reads to see an edit (BrickGrid's dirty and touched lists, which FrameChanges,
 // the emitter list, ReGIR, the irradiance cache and DVF follow) holds every cell of a region that
 // arrives and of one that leaves.

@@ -75,6 +75,11 @@ void addPlayCommand(CLI::App& app, int& exitCode) {
                     "Streamed regions copied into the world per frame, at most")
         ->capture_default_str()
         ->check(numberIn(engine::wholeRange(1, 4096, "regions")));
+    cmd->add_option("--stream-bricks-per-frame", o->stream.bricksPerFrame,
+                    "Bricks of the streamed regions copied into the world per frame, at most (one "
+                    "region always goes in, however many it has)")
+        ->capture_default_str()
+        ->check(numberIn(engine::wholeRange(1, 1 << 24, "bricks")));
     addLightingOptions(*cmd, *lighting);
     cmd->callback([o, size, lighting, cmd, &exitCode] {
         lighting->commandDefaults = engine::scene::playDefaults();

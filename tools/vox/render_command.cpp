@@ -14,6 +14,7 @@
 #include "render/frame_plan.h"
 #include "render/renderer.h"
 #include "scene/scene_lighting.h"
+#include "shared/vct.h"
 #include "tool_gpu.h"
 
 namespace vox {
@@ -81,6 +82,10 @@ void printFrame(const engine::render::FrameResult& frame, const engine::render::
                 "patches)\n",
                 c.coarseEntries);
     }
+    if (frame.vctUsed)
+        std::printf("vct      %u of %u blocks of 4^3 texels classified, %.3f ms CPU (last frame)\n",
+                    frame.vctBlocks, l.vct.levels * shared::VCT_BLOCKS_PER_LEVEL,
+                    frame.vctPrepareMs);
     if (frame.skyUsed && l.sky == engine::lighting::Sky::Dvf) {
         std::printf(
             "sky      %u DVF masks (%u waiting), %u traced with %u rays in the last frame, %.2f "
@@ -90,7 +95,7 @@ void printFrame(const engine::render::FrameResult& frame, const engine::render::
     }
 }
 
-// --timings: every frame's per-pass GPU milliseconds.
+// --timings: every frame's per-pass GPU milliseconds (and VCT's host time and blocks).
 engine::Status writeTimings(const std::string& file, const std::string& world,
                             const engine::lighting::LightingSettings& l,
                             const engine::render::FrameSettings& settings,
@@ -107,6 +112,10 @@ engine::Status writeTimings(const std::string& file, const std::string& world,
         for (std::size_t p = 0; p < results[i].passMs.size(); ++p)
             json << (p ? ", " : "") << "\"" << results[i].passMs[p].first
                  << "\": " << results[i].passMs[p].second;
+        // Not passes: VCT's host time and the blocks it classified.
+        if (results[i].vctUsed)
+            json << ", \"vct.blocks (count)\": " << results[i].vctBlocks
+                 << ", \"vct.prepare (CPU ms)\": " << results[i].vctPrepareMs;
         json << "}" << (i + 1 < results.size() ? "," : "") << "\n";
     }
     json << "]}\n";

@@ -1,12 +1,14 @@
 #include "render/vct/voxel_cone_tracing.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <fmt/format.h>
 #include <glm/common.hpp>
 #include <utility>
 
 #include "render/frame_commands.h"
+#include "render/frame_result.h"
 
 namespace engine::render {
 
@@ -25,6 +27,8 @@ std::pair<glm::ivec3, glm::ivec3> unionOf(glm::ivec3 aMin, glm::ivec3 aMax, glm:
 VoxelConeTracing::VoxelConeTracing(gpu::Context& ctx) : mCtx(ctx), mInject(ctx), mCones(ctx) {
     mParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::VctParams), "vct.params");
     mList = gpu::Buffer(ctx, gpu::BufferKind::Storage, VctInjectPass::listBytes(), "vct.list");
+    mBlocks =
+        gpu::Buffer(ctx, gpu::BufferKind::Storage, VctInjectPass::blocksBytes(), "vct.blocks");
 }
 
 std::uint64_t VoxelConeTracing::volumeBytes() {
@@ -54,7 +58,7 @@ TechniquePlan VoxelConeTracing::plan(const lighting::LightingSettings& l, const 
     p.runs = lighting::usesVct(l);
     p.addsIndirect = true;
     p.deviceBytes = sizeof(shared::VctParams) + 2 * volumeBytes() +  // fixed: two volumes
-                    VctInjectPass::listBytes();
+                    VctInjectPass::listBytes() + VctInjectPass::blocksBytes();
     return p;
 }
 
@@ -69,6 +73,7 @@ std::string VoxelConeTracing::describe(const lighting::LightingSettings& l) {
 
 void VoxelConeTracing::prepare(const FrameChanges& changes, const FrameInput& in,
                                gpu::Uploader& uploader, shared::FrameParams&) {
+    const auto start = std::chrono::steady_clock::now();
     const lighting::LightingSettings& lighting = in.lighting;
     if (mVolumes[0].size() == 0) {
         mVolumes[0] = gpu::Buffer(mCtx, gpu::BufferKind::Storage, volumeBytes(), "vct.volume0");
@@ -110,9 +115,56 @@ void VoxelConeTracing::prepare(const FrameChanges& changes, const FrameInput& in
     p.refreshPeriod = std::max(lighting.vct.refreshPeriod, 1u);
     p.frame = in.frameIndex;
     uploader.write(mParams, 0, &p, sizeof(p));
+
+    // The blocks of texels vct.classify visits (vct_block_list.h). A texel re-injected in a world
+    // that has not changed since its last injection gets the values it holds: the injection is a
+    // function of the world, the objects, the lights, the sky, the settings and the texel's place
+    // (its jitter is not the frame's). Every texel is due once in any refreshPeriod frames, so
+    // that many frames after the objects last changed the rotation can change nothing, and only
+    // the texels new to a level need visiting. The extra bounce's values change from frame to
+    // frame (it reads last frame's volume), so it keeps the rotation, over the blocks that hold
+    // content; its volume was written two frames ago, so the texels new since then are visited too.
+    if (changes.newWorld || changes.staticWorldChanged) ++mGridVersion;
+    const bool objectsChanged =
+        changes.objectsMoved || objectsMin != mPrevDynamicMin || objectsMax != mPrevDynamicMax;
+    if (!previousValid) {
+        mObjectsChanging = false;  // every texel is injected now, with today's objects
+    } else if (objectsChanged) {
+        mObjectsChanging = true;
+        mObjectsChangedFrame = in.frameIndex;
+    }
+    const bool rotationMatters =
+        lighting.vct.extraBounce ||
+        (mObjectsChanging && in.frameIndex - mObjectsChangedFrame < p.refreshPeriod);
+    mBlockList.clear();
+    if (lighting.vct.classifyAll || !previousValid ||
+        (lighting.vct.extraBounce && !mPreviousWasValid)) {
+        mBlockList.addAll(levels);
+    } else {
+        for (std::uint32_t l = 0; l < levels; ++l) {
+            const glm::ivec4 now = p.levelOrigin[l];
+            mBlockList.addNew(l, now, mPrevOrigins[l]);
+            if (lighting.vct.extraBounce) mBlockList.addNew(l, now, mPrevPrevOrigins[l]);
+            if (!rotationMatters) continue;
+            mBlockList.addContent(l, now, in.scene.grid, mGridVersion);
+            mBlockList.addBox(l, now, dynamicMin, dynamicMax);  // the objects' content is inside
+            if (lighting.vct.extraBounce)
+                mBlockList.addBox(l, now, mPrevPrevDynamicMin, mPrevPrevDynamicMax);
+        }
+    }
+    const std::span<const std::uint32_t> blocks = mBlockList.blocks();
+    mBlockCount = std::uint32_t(blocks.size());
+    if (mBlockCount > 0) uploader.write(mBlocks, 0, blocks.data(), blocks.size_bytes());
+
+    mPrevPrevOrigins = mPrevOrigins;
     for (std::uint32_t l = 0; l < shared::VCT_MAX_LEVELS; ++l) mPrevOrigins[l] = p.levelOrigin[l];
+    mPrevPrevDynamicMin = mPrevDynamicMin;
+    mPrevPrevDynamicMax = mPrevDynamicMax;
     mPrevDynamicMin = objectsMin;
     mPrevDynamicMax = objectsMax;
+    mPreviousWasValid = previousValid;
+    mPrepareMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     mPrevSettings = lighting.vct;
     mPrevSeed = lighting.seed;
     mLevels = levels;
@@ -128,14 +180,23 @@ void VoxelConeTracing::record(FrameCommands& commands, const FrameBuffers& frame
     if (!mExtraBounce) mCurrent = 0;
     gpu::Buffer& volume = mVolumes[mCurrent];
     const gpu::Buffer& previous = mExtraBounce ? mVolumes[mCurrent ^ 1u] : volume;
-    cmd.fillBuffer(mList, 0);  // the injection list's count
-    mInject.record(cmd, frame.scene, {frame.frameParams, mParams, previous, volume, mList},
-                   mLevels);
+    // No block listed: every texel already holds this frame's values.
+    if (mBlockCount > 0) {
+        cmd.fillBuffer(mList, 0);  // the injection list's count
+        mInject.record(cmd, frame.scene,
+                       {frame.frameParams, mParams, previous, volume, mList, mBlocks}, mBlockCount);
+    }
     mCones.record(
         cmd, frame.scene,
         {frame.frameParams, mParams, frame.gbuffer, volume, frame.indirect, frame.radiance},
         frame.size);
     mCurrent ^= 1u;
+}
+
+void VoxelConeTracing::collect(FrameResult& result) {
+    result.vctUsed = true;
+    result.vctBlocks = mBlockCount;
+    result.vctPrepareMs = mPrepareMs;
 }
 
 }  // namespace engine::render
