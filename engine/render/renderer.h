@@ -45,6 +45,7 @@ class DvfSky;
 class IrradianceCache;
 class LightTiles;
 class RegirGrid;
+class TemporalUpsampling;
 struct FramePlan;
 
 struct FrameImages {
@@ -97,6 +98,7 @@ public:
     const IrradianceCache& irradianceCache() const;
     const LightTiles& lightTiles() const;
     const RegirGrid& regirGrid() const;
+    const TemporalUpsampling& temporalUpsampling() const;
     DvfSky& dvfSky();
 
 private:

@@ -46,6 +46,8 @@ public:
                  shared::FrameParams& params) override;
     void record(FrameCommands& commands, const FrameBuffers& frame) override;
     void skip() override;
+    // The pre-pass's summary of the last frame (shared/upsampling.h), for tests.
+    const gpu::Buffer& neighbourhood() const { return mNeighbourhood; }
 
 private:
     gpu::Context& mCtx;
