@@ -14,6 +14,7 @@
 #include "render/light_tiles/light_tiles.h"
 #include "render/memory_plan.h"
 #include "render/regir/regir_grid.h"
+#include "render/upsampling/temporal_upsampling.h"
 #include "shared/exposure.h"
 
 namespace engine::render {
@@ -74,6 +75,9 @@ const IrradianceCache& Renderer::irradianceCache() const {
 }
 const LightTiles& Renderer::lightTiles() const { return technique<LightTiles>("light_tiles"); }
 const RegirGrid& Renderer::regirGrid() const { return technique<RegirGrid>("regir"); }
+const TemporalUpsampling& Renderer::temporalUpsampling() const {
+    return technique<TemporalUpsampling>("upsampling");
+}
 DvfSky& Renderer::dvfSky() { return technique<DvfSky>("sky"); }
 
 std::uint64_t Renderer::frameBytesPerPixel() {

@@ -46,6 +46,7 @@ class DvfSky;
 class IrradianceCache;
 class LightTiles;
 class RegirGrid;
+class TemporalUpsampling;
 struct FramePlan;
 
 struct FrameImages {
@@ -100,6 +101,7 @@ public:
     const IrradianceCache& irradianceCache() const;
     const LightTiles& lightTiles() const;
     const RegirGrid& regirGrid() const;
+    const TemporalUpsampling& temporalUpsampling() const;
     DvfSky& dvfSky();
 
 private:

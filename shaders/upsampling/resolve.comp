@@ -6,37 +6,42 @@
 // converges to an anti-aliased image at the display's size from a quarter of its pixels or fewer.
 // History is dropped where its surface is not among this frame's nearby surfaces (the exact
 // surface keys of common/surface_key.glsl: a disocclusion) and clipped to the neighbourhood's
-// colour spread elsewhere (lighting that changed). It also writes the shown image, tonemapped,
-// so the display image is not read again at the window's size.
+// colour spread elsewhere (lighting that changed). What it needs of the 3x3 samples around its
+// nearest one — their spread, their keys, the sample's motion — it reads from the pre-pass
+// (summarize_neighbourhood.comp, once per render pixel); it reads render samples itself only for
+// what depends on where the display pixel lies among them. It also writes the shown image,
+// tonemapped, so the display image is not read again at the window's size.
 #extension GL_GOOGLE_include_directive : require
 
-#include "common/gbuffer_load.glsl"
-#include "common/surface_key.glsl"  // SURFACE_KEY_SKY
 #include "common/tonemap.glsl"
+#include "common/ycocg.glsl"
 #include "shared/exposure.h"
 #include "shared/frame_params.h"
 #include "shared/upsampling.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(set = 0, binding = UPSAMPLING_BINDING_FRAME, std430) readonly buffer Frame { FrameParams gFrame; };
-layout(set = 0, binding = UPSAMPLING_BINDING_PARAMS, std430) readonly buffer Params { UpsamplingParams gParams; };
-layout(set = 0, binding = UPSAMPLING_BINDING_GBUFFER) uniform usamplerBuffer gGBuffer;
+layout(set = 0, binding = UPSAMPLING_BINDING_FRAME, std430) readonly buffer Frame {
+    FrameParams gFrame;
+};
+layout(set = 0, binding = UPSAMPLING_BINDING_PARAMS, std430) readonly buffer Params {
+    UpsamplingParams gParams;
+};
+layout(set = 0, binding = UPSAMPLING_BINDING_NEIGHBOURHOOD) uniform usamplerBuffer gNeighbourhood;
 // What it only reads at other pixels' indices it reads as texels (one gather per tap on lavapipe,
 // where a storage-buffer read at a lane-varying index is a loop over the lanes).
 layout(set = 0, binding = UPSAMPLING_BINDING_RADIANCE) uniform samplerBuffer gRadiance;
 layout(set = 0, binding = UPSAMPLING_BINDING_PREV_DISPLAY) uniform samplerBuffer gPrevDisplay;
-layout(set = 0, binding = UPSAMPLING_BINDING_DISPLAY, std430) writeonly buffer Display { vec4 gDisplay[]; };
+layout(set = 0, binding = UPSAMPLING_BINDING_DISPLAY, std430) writeonly buffer Display {
+    vec4 gDisplay[];
+};
 layout(set = 0, binding = UPSAMPLING_BINDING_PREV_KEYS) uniform usamplerBuffer gPrevKeys;
 layout(set = 0, binding = UPSAMPLING_BINDING_KEYS, std430) writeonly buffer Keys { uint gKeys[]; };
 layout(set = 0, binding = UPSAMPLING_BINDING_SURFACE_KEYS) uniform usamplerBuffer gSurfaceKeys;
-layout(set = 0, binding = UPSAMPLING_BINDING_EXPOSURE, std430) readonly buffer Exposure { ExposureState gExposure; };
+layout(set = 0, binding = UPSAMPLING_BINDING_EXPOSURE, std430) readonly buffer Exposure {
+    ExposureState gExposure;
+};
 layout(set = 0, binding = UPSAMPLING_BINDING_LDR, std430) writeonly buffer Ldr { uint gLdr[]; };
-
-vec3 toYCoCg(vec3 c) {
-    return vec3(dot(c, vec3(0.25, 0.5, 0.25)), dot(c, vec3(0.5, 0.0, -0.5)), dot(c, vec3(-0.25, 0.5, -0.25)));
-}
-vec3 fromYCoCg(vec3 c) { return vec3(c.x + c.y - c.z, c.x + c.z, c.x - c.y - c.z); }
 
 // exp(-kSharpness d^2): a standard deviation of 0.3 display pixels.
 const float kSharpness = 1.0 / (2.0 * 0.3 * 0.3);
@@ -55,6 +60,11 @@ const float kChangedHistory = 2.0;
 const float kAnnouncedChangeHistory = 0.5;
 // The clip's width inside one surface, in standard deviations of the 3x3 samples.
 const float kInsideClipGamma = 3.0;
+
+// The render samples per axis that can add to a display pixel: those within a render pixel of its
+// centre when a render pixel spans 2 display pixels or more, the nearest alone from 4 (a sample
+// left out is 2 display pixels away or more: a weight of exp(-kSharpness 4) = 2e-10 at most).
+int addingTaps(float scale) { return scale <= 0.25 ? 1 : scale <= 0.5 ? 2 : 3; }
 
 // Last frame's display at `p` (display pixels), Catmull-Rom over the 4x4 texels around it: a
 // bilinear fetch blurs the history a little every frame the camera moves, and the blur adds up
@@ -84,7 +94,8 @@ vec4 catmullRomHistory(vec2 p, ivec2 display) {
             vec4 h = texelFetch(gPrevDisplay, x + y * display.x);
             rgb += h.rgb * (wx[i].x * wy[j]);
             if (i == 1 || i == 2) {
-                if (j == 1 || j == 2) weight += h.w * ((i == 1 ? 1.0 - f.x : f.x) * (j == 1 ? 1.0 - f.y : f.y));
+                if (j == 1 || j == 2)
+                    weight += h.w * ((i == 1 ? 1.0 - f.x : f.x) * (j == 1 ? 1.0 - f.y : f.y));
             }
         }
     }
@@ -103,74 +114,64 @@ void main() {
     vec2 jitter = gFrame.jitter.xy;
     ivec2 nearest = ivec2(floor(centre - jitter));  // the render sample closest to it
 
-    // The 3x3 samples around it: what they add to this display pixel (a Gaussian of 0.3 display
-    // pixels around its centre, near a box: over a jitter cycle the samples that fall in it), an
-    // interpolated colour for when nothing else is known (a Gaussian of a third of a render pixel), the
-    // colour spread for clipping, and the surfaces seen.
-    vec3 added = vec3(0.0), colour = vec3(0.0), m1 = vec3(0.0), m2 = vec3(0.0);
-    vec3 lowest = vec3(1e30), highest = vec3(-1e30);
-    float addedWeight = 0.0, colourWeight = 0.0;
-    // Both Gaussians are separable: a weight per column and per row of taps, 12 exponentials a
-    // pixel instead of 18 (lavapipe pays for every one in every lane).
-    ivec3 columns = clamp(nearest.x + ivec3(-1, 0, 1), 0, render.x - 1);
-    ivec3 rows = clamp(nearest.y + ivec3(-1, 0, 1), 0, render.y - 1);
-    vec3 dx = vec3(columns) + 0.5 + jitter.x - centre.x;
-    vec3 dy = vec3(rows) + 0.5 + jitter.y - centre.y;
-    vec3 colourX = exp(-4.5 * dx * dx), colourY = exp(-4.5 * dy * dy);
-    vec3 addedX = dx / scale.x, addedY = dy / scale.y;
-    addedX = exp(-kSharpness * addedX * addedX);
-    addedY = exp(-kSharpness * addedY * addedY);
-    uint keys[9];
-    for (int k = 0; k < 9; ++k) {
-        int i = k % 3, j = k / 3;
-        uint qi = uint(columns[i]) + uint(rows[j]) * uint(render.x);
-        vec3 c = max(texelFetch(gRadiance, int(qi)).rgb, vec3(0.0));
-        float w = colourX[i] * colourY[j];
-        colour += c * w;
-        colourWeight += w;
-        float wd = addedX[i] * addedY[j];
-        added += c * wd;
-        addedWeight += wd;
-        vec3 y = toYCoCg(c);
-        m1 += y;
-        m2 += y * y;
-        lowest = min(lowest, y);
-        highest = max(highest, y);
-        // The keys primary rays wrote: one uint per tap, where the G-buffer costs two texels and
-        // the key's arithmetic.
-        keys[k] = texelFetch(gSurfaceKeys, int(qi)).x;
-    }
-    colour /= colourWeight;
-    // The nearest sample (the middle tap): its surface and motion.
+    // The 3x3 samples around the nearest one, summarised once per render pixel (the pre-pass).
     ivec2 nearestTexel = clamp(nearest, ivec2(0), render - 1);
-    uint nearestKey = keys[4];
-    GBufferTexel nearestSurface = loadGBuffer(gGBuffer, uint(nearestTexel.x) + uint(nearestTexel.y) * uint(render.x));
-    vec4 nearestMotion = nearestSurface.motion;
+    int summary =
+        int(UPSAMPLING_NEIGHBOURHOOD_TEXELS) * (nearestTexel.x + nearestTexel.y * render.x);
+    uvec4 own = texelFetch(gNeighbourhood, summary);
+    uvec4 moments = texelFetch(gNeighbourhood, summary + 1);
+    uvec4 range = texelFetch(gNeighbourhood, summary + 2);
+    uvec4 keySet = texelFetch(gNeighbourhood, summary + 3);
+    uint keyCount = own.z >> NEIGHBOURHOOD_KEY_COUNT_SHIFT;
+
+    // What the samples near it add to this display pixel: a Gaussian of 0.3 display pixels around
+    // its centre, near a box (over a jitter cycle, the samples that fall in it). Both axes'
+    // weights are separable: one exponential per row and per tap.
+    ivec2 taps = ivec2(addingTaps(scale.x), addingTaps(scale.y));
+    ivec2 first = ivec2(floor(centre - jitter - 0.5 * vec2(taps - 1)));
+    vec3 added = vec3(0.0);
+    float addedWeight = 0.0;
+    for (int j = 0; j < taps.y; ++j) {
+        int row = clamp(first.y + j, 0, render.y - 1);
+        float dy = (float(row) + 0.5 + jitter.y - centre.y) / scale.y;
+        float wy = exp(-kSharpness * dy * dy);
+        for (int i = 0; i < taps.x; ++i) {
+            int column = clamp(first.x + i, 0, render.x - 1);
+            float dx = (float(column) + 0.5 + jitter.x - centre.x) / scale.x;
+            float w = exp(-kSharpness * dx * dx) * wy;
+            added += max(texelFetch(gRadiance, column + row * render.x).rgb, vec3(0.0)) * w;
+            addedWeight += w;
+        }
+    }
+    // The nearest sample: its surface and motion.
+    uint nearestKey = keySet.x;
+    vec4 nearestMotion =
+        vec4(uintBitsToFloat(own.xy), 0.0, (own.z & NEIGHBOURHOOD_FLAG_MOTION) != 0u ? 1.0 : 0.0);
     vec2 nearestSample = vec2(nearestTexel) + 0.5 + jitter;
-    // An edit this frame near the surface: it may have kept its key (a plane) but not its
-    // material or its light (a lamp turned to stone), and then its history is another surface's.
-    bool edited = (nearestSurface.data.w & GBUFFER_FLAG_DYNAMIC) == 0u &&
-                  all(greaterThanEqual(nearestSurface.voxel.xyz, gParams.editedMin.xyz)) &&
-                  all(lessThan(nearestSurface.voxel.xyz, gParams.editedMax.xyz));
+    bool edited = (own.z & NEIGHBOURHOOD_FLAG_EDITED) != 0u;
 
     // Last frame's display where this pixel's surface was: the nearest sample's motion, from its
     // render position to the display's.
     vec4 history = vec4(0.0);
-    bool inside = false;  // all 3x3 samples on the history's surface: no edge near
-    bool still = false;   // the history is this very pixel's (a still view of a still surface)
+    bool inside = false;     // all 3x3 samples on the history's surface: no edge near
+    bool still = false;      // the history is this very pixel's (a still view of a still surface)
     bool unchanged = false;  // and the world did not change: the history needs no test
-    bool worldUnchanged = (gParams.flags & (UPSAMPLING_LIGHTING_CHANGED | UPSAMPLING_OBJECTS_MOVED)) == 0u;
+    bool worldUnchanged =
+        (gParams.flags & (UPSAMPLING_LIGHTING_CHANGED | UPSAMPLING_OBJECTS_MOVED)) == 0u;
     if ((gParams.flags & UPSAMPLING_RESTART) == 0u && !edited) {
         vec2 previous = vec2(pixel) + 0.5;
         if (nearestMotion.w > 0.0) previous += (nearestMotion.xy - nearestSample) / scale;
         ivec2 keyTexel = ivec2(floor(previous));
         if (all(greaterThanEqual(previous, vec2(0.0))) && all(lessThan(previous, vec2(display)))) {
             uint previousKey = texelFetch(gPrevKeys, keyTexel.x + keyTexel.y * int(display.x)).x;
-            bool seen = false;
-            inside = true;
-            for (int k = 0; k < 9; ++k) {
-                seen = seen || keys[k] == previousKey;
-                inside = inside && keys[k] == previousKey;
+            // The key among the 3x3 samples' (a loop, not a branch: lavapipe runs a loop only
+            // as long as a lane needs it, both sides of a branch always).
+            bool seen = any(equal(keySet, uvec4(previousKey)));
+            inside = keyCount == 1u && nearestKey == previousKey;
+            int keyTaps = keyCount > 4u ? 9 : 0;  // more keys than the summary holds
+            for (int k = 0; k < keyTaps; ++k) {
+                ivec2 q = clamp(nearestTexel + ivec2(k % 3, k / 3) - 1, ivec2(0), render - 1);
+                seen = seen || texelFetch(gSurfaceKeys, q.x + q.y * render.x).x == previousKey;
             }
             vec2 moved = abs(previous - (vec2(pixel) + 0.5));  // float noise: 1e-5 of a pixel
             bool here = max(moved.x, moved.y) < 1.0e-3;
@@ -185,14 +186,25 @@ void main() {
         }
     }
 
-    // Without history: what the samples add, or where none fell near, the interpolation.
-    vec3 result = addedWeight > 0.05 ? added / addedWeight : colour;
+    // Without history and with no sample near: the 3x3 samples interpolated, a Gaussian of a third
+    // of a render pixel (a loop, so only the lanes that need it pay for its 9 taps).
+    vec3 colour = vec3(0.0);
+    float colourWeight = 0.0;
+    int colourTaps = history.w > 0.0 || addedWeight > 0.05 ? 0 : 9;
+    for (int k = 0; k < colourTaps; ++k) {
+        ivec2 q = clamp(nearest + ivec2(k % 3, k / 3) - 1, ivec2(0), render - 1);
+        vec2 d = vec2(q) + 0.5 + jitter - centre;
+        float w = exp(-4.5 * d.x * d.x) * exp(-4.5 * d.y * d.y);
+        colour += max(texelFetch(gRadiance, q.x + q.y * render.x).rgb, vec3(0.0)) * w;
+        colourWeight += w;
+    }
+    vec3 result = addedWeight > 0.05 ? added / addedWeight : colour / max(colourWeight, 1e-30);
     float weight = addedWeight;
     if (history.w > 0.0) {
         // Clip the history to the neighbourhood's spread (in YCoCg): what moved or changed light
         // is pulled to what this frame sees.
-        vec3 mean = m1 / 9.0;
-        vec3 sigma = sqrt(max(m2 / 9.0 - mean * mean, vec3(0.0)));
+        vec3 mean = uintBitsToFloat(moments.xyz);
+        vec3 sigma = vec3(unpackHalf2x16(moments.w), unpackHalf2x16(range.x).x);
         vec3 h = toYCoCg(history.rgb);
         // Inside one surface the spread is the lighting's noise and its sub-pixel detail (a lit
         // window on a wall); a tight clip there throws away the history's average of it, and the
@@ -207,8 +219,8 @@ void main() {
         // moving object's shadow): the box is their range (Salvi 2016, "An Excursion in Temporal
         // Supersampling", for the variance box it widens).
         if (still) {
-            lo = lowest;
-            hi = highest;
+            lo = vec3(unpackHalf2x16(range.x).y, unpackHalf2x16(range.y));
+            hi = vec3(unpackHalf2x16(range.z), unpackHalf2x16(range.w).x);
         }
         if (unchanged) {
             lo = vec3(-1e30);

@@ -4,8 +4,11 @@
 // size keeps the display's history.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <glm/gtc/packing.hpp>
 #include <gtest/gtest.h>
 
+#include "gpu/command_list.h"
 #include "gpu/gpu_test_setup.h"
 #include "metrics/display_error.h"
 #include "render/camera.h"
@@ -318,4 +321,115 @@ TEST_F(Upsampling, TheShownImageIsTheDisplayTonemapped) {
     }
     EXPECT_LE(worst, 1);
     EXPECT_GT(bright, 0);  // the windows: the curve's upper part is exercised
+}
+
+namespace {
+
+// common/surface_key.glsl's key, on the host.
+std::uint32_t surfaceKey(const shared::GBufferTexel& g) {
+    const auto face = std::uint32_t(g.voxel.w);
+    if (face >= 6u) return 0xffffffffu;
+    if ((g.data.w & shared::GBUFFER_FLAG_DYNAMIC) != 0u) return 0x80000000u | face;
+    const int plane = g.voxel[int(face >> 1u)] + int(face & 1u);
+    return ((std::uint32_t(plane) & 0x0fffffffu) << 3u) | face;
+}
+
+glm::vec3 toYCoCg(glm::vec3 c) {
+    return {glm::dot(c, glm::vec3(0.25f, 0.5f, 0.25f)), glm::dot(c, glm::vec3(0.5f, 0.0f, -0.5f)),
+            glm::dot(c, glm::vec3(-0.25f, 0.5f, -0.25f))};
+}
+
+std::vector<glm::uvec4> readNeighbourhood(const Renderer& r) {
+    const engine::gpu::Buffer& summary = r.temporalUpsampling().neighbourhood();
+    engine::gpu::Buffer readback(context(), engine::gpu::BufferKind::Readback, summary.size(),
+                                 "test.neighbourhood");
+    engine::gpu::CommandList cmd(context());
+    cmd.begin();
+    cmd.copyBuffer(summary, readback, {{0, 0, summary.size()}});
+    cmd.barrier();
+    cmd.submitAndWait();
+    std::vector<glm::uvec4> out(summary.size() / sizeof(glm::uvec4));
+    std::memcpy(out.data(), readback.mapped(), summary.size());
+    return out;
+}
+
+}  // namespace
+
+// The pre-pass's summary of each render pixel is what the resolve computed from its 3x3 samples
+// itself: the sample's motion, the samples' YCoCg mean (exact), standard deviation and range
+// (half floats, rounded outwards: never a narrower box, at most 2^-10 wider) and their distinct
+// surface keys, the pixel's own first (recomputed here from the G-buffer).
+TEST_F(Upsampling, TheNeighbourhoodSummaryIsTheSamples) {
+    Scene scene = windows();
+    Renderer renderer(gpu_testing::context());
+    CameraPreset moved = scene.camera();
+    const LightingSettings l = display(engine::lighting::Display::Upsampled);
+    renderer.render(scene, moved, upsampledFrame(32, 64), l);
+    moved.position += glm::vec3(0.3f, 0.1f, 0.0f);  // motion vectors that are not all zero
+    renderer.render(scene, moved, upsampledFrame(32, 64), l);
+    const FrameImages images = renderer.readback();
+    const std::vector<glm::uvec4> summary = readNeighbourhood(renderer);
+    const int n = 32;
+    ASSERT_EQ(summary.size(), std::size_t(n * n) * shared::UPSAMPLING_NEIGHBOURHOOD_TEXELS);
+
+    int edges = 0;
+    for (int y = 0; y < n; ++y) {
+        for (int x = 0; x < n; ++x) {
+            const std::size_t p = std::size_t(y) * n + x;
+            glm::dvec3 m1(0.0), m2(0.0);
+            glm::vec3 lowest(1e30f), highest(-1e30f);
+            std::vector<std::uint32_t> keys{surfaceKey(images.gbuffer[p])};
+            for (int k = 0; k < 9; ++k) {
+                const int qx = std::clamp(x + k % 3 - 1, 0, n - 1);
+                const int qy = std::clamp(y + k / 3 - 1, 0, n - 1);
+                const std::size_t q = std::size_t(qy) * n + qx;
+                const glm::vec3 c = toYCoCg(glm::max(glm::vec3(images.radiance[q]), 0.0f));
+                m1 += glm::dvec3(c);
+                m2 += glm::dvec3(c) * glm::dvec3(c);
+                lowest = glm::min(lowest, c);
+                highest = glm::max(highest, c);
+                const std::uint32_t key = surfaceKey(images.gbuffer[q]);
+                if (std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
+            }
+            const glm::dvec3 mean = m1 / 9.0;
+            const glm::dvec3 sigma = glm::sqrt(glm::max(m2 / 9.0 - mean * mean, 0.0));
+            const glm::uvec4* s = &summary[p * shared::UPSAMPLING_NEIGHBOURHOOD_TEXELS];
+            const auto f = [](std::uint32_t bits) { return std::bit_cast<float>(bits); };
+            const auto low = [](std::uint32_t bits) { return glm::unpackHalf2x16(bits).x; };
+            const auto high = [](std::uint32_t bits) { return glm::unpackHalf2x16(bits).y; };
+            const glm::vec4& motion = images.gbuffer[p].motion;
+            EXPECT_EQ(f(s[0].x), motion.x) << "pixel " << p;
+            EXPECT_EQ(f(s[0].y), motion.y) << "pixel " << p;
+            EXPECT_EQ((s[0].z & shared::NEIGHBOURHOOD_FLAG_MOTION) != 0u, motion.w > 0.0f);
+            const glm::vec3 gpuMean(f(s[1].x), f(s[1].y), f(s[1].z));
+            const glm::vec3 gpuSigma(low(s[1].w), high(s[1].w), low(s[2].x));
+            const glm::vec3 gpuLowest(high(s[2].x), low(s[2].y), high(s[2].y));
+            const glm::vec3 gpuHighest(low(s[2].z), high(s[2].z), low(s[2].w));
+            for (int c = 0; c < 3; ++c) {
+                const double scaleOf = std::abs(mean[c]) + 1e-6;
+                EXPECT_NEAR(gpuMean[c], mean[c], 1e-5 * scaleOf) << "pixel " << p;
+                // The shader's sigma is sqrt(E[y^2] - mean^2) in floats, as the resolve's was: a
+                // cancellation good to about 1e-3 of the samples' root mean square.
+                const double rms = std::sqrt(m2[c] / 9.0), cancellation = 2e-3 * rms + 1e-7;
+                EXPECT_GE(gpuSigma[c], sigma[c] - cancellation) << "pixel " << p;
+                EXPECT_LE(gpuSigma[c], sigma[c] * (1.0 + 2.0 / 1024.0) + cancellation);
+                EXPECT_LE(gpuLowest[c], lowest[c]) << "pixel " << p;
+                EXPECT_GE(gpuLowest[c], lowest[c] - std::abs(lowest[c]) * 2.0 / 1024.0 - 1e-6);
+                EXPECT_GE(gpuHighest[c], highest[c]) << "pixel " << p;
+                EXPECT_LE(gpuHighest[c], highest[c] + std::abs(highest[c]) * 2.0 / 1024.0 + 1e-6);
+            }
+            const std::uint32_t count = s[0].z >> shared::NEIGHBOURHOOD_KEY_COUNT_SHIFT;
+            EXPECT_EQ(s[3].x, keys.front()) << "pixel " << p;
+            if (keys.size() <= 4) {
+                EXPECT_EQ(count, keys.size()) << "pixel " << p;
+                for (std::uint32_t key : keys)
+                    EXPECT_TRUE(key == s[3].x || key == s[3].y || key == s[3].z || key == s[3].w)
+                        << "pixel " << p << " key " << key;
+            } else {
+                EXPECT_GT(count, 4u) << "pixel " << p;  // the resolve reads the nine keys itself
+            }
+            edges += keys.size() > 1 ? 1 : 0;
+        }
+    }
+    EXPECT_GT(edges, 32);  // the test sees neighbourhoods of more than one surface
 }

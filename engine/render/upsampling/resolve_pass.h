@@ -1,6 +1,7 @@
-// Temporal upsampling's one dispatch over the display: this frame's jittered samples and the
-// display history resolved into the display image, and that image tonemapped (the shown one: the
-// frame's tonemap pass does not run). Shader: shaders/upsampling/resolve.comp
+// Temporal upsampling's dispatch over the display: this frame's jittered samples and the display
+// history resolved into the display image (after NeighbourhoodPass summarised the samples), and
+// that image tonemapped (the shown one: the frame's tonemap pass does not run). Shader:
+// shaders/upsampling/resolve.comp
 #pragma once
 
 #include "render/passes/compute_pass.h"
@@ -9,29 +10,30 @@
 namespace engine::render {
 
 struct ResolveIo {
-    const gpu::Buffer& frameParams;  // read
-    const gpu::Buffer& params;       // read: UpsamplingParams
-    const gpu::Buffer& gbuffer;      // read (render size): the motion
-    const gpu::Buffer& surfaceKeys;  // read (render size)
-    const gpu::Buffer& radiance;     // read (render size)
-    const gpu::Buffer& prevDisplay;  // read
-    gpu::Buffer& display;            // write
-    const gpu::Buffer& prevKeys;     // read
-    gpu::Buffer& keys;               // write
-    const gpu::Buffer& exposure;     // read: ExposureState, when FrameParams.exposure.y is 1
-    gpu::Buffer& ldr;                // write: the display tonemapped, packed RGBA8 per pixel
+    const gpu::Buffer& frameParams;    // read
+    const gpu::Buffer& params;         // read: UpsamplingParams
+    const gpu::Buffer& neighbourhood;  // read (render size): NeighbourhoodPass's summary
+    const gpu::Buffer& surfaceKeys;    // read (render size): where a summary holds too many keys
+    const gpu::Buffer& radiance;       // read (render size)
+    const gpu::Buffer& prevDisplay;    // read
+    gpu::Buffer& display;              // write
+    const gpu::Buffer& prevKeys;       // read
+    gpu::Buffer& keys;                 // write
+    const gpu::Buffer& exposure;       // read: ExposureState, when FrameParams.exposure.y is 1
+    gpu::Buffer& ldr;                  // write: the display tonemapped, packed RGBA8 per pixel
     auto bindings() const {
-        return std::to_array<PassBinding>({{shared::UPSAMPLING_BINDING_FRAME, &frameParams},
-                                           {shared::UPSAMPLING_BINDING_PARAMS, &params},
-                                           {shared::UPSAMPLING_BINDING_GBUFFER, &gbuffer},
-                                           {shared::UPSAMPLING_BINDING_RADIANCE, &radiance},
-                                           {shared::UPSAMPLING_BINDING_PREV_DISPLAY, &prevDisplay},
-                                           {shared::UPSAMPLING_BINDING_DISPLAY, &display},
-                                           {shared::UPSAMPLING_BINDING_PREV_KEYS, &prevKeys},
-                                           {shared::UPSAMPLING_BINDING_KEYS, &keys},
-                                           {shared::UPSAMPLING_BINDING_SURFACE_KEYS, &surfaceKeys},
-                                           {shared::UPSAMPLING_BINDING_EXPOSURE, &exposure},
-                                           {shared::UPSAMPLING_BINDING_LDR, &ldr}});
+        return std::to_array<PassBinding>(
+            {{shared::UPSAMPLING_BINDING_FRAME, &frameParams},
+             {shared::UPSAMPLING_BINDING_PARAMS, &params},
+             {shared::UPSAMPLING_BINDING_NEIGHBOURHOOD, &neighbourhood},
+             {shared::UPSAMPLING_BINDING_RADIANCE, &radiance},
+             {shared::UPSAMPLING_BINDING_PREV_DISPLAY, &prevDisplay},
+             {shared::UPSAMPLING_BINDING_DISPLAY, &display},
+             {shared::UPSAMPLING_BINDING_PREV_KEYS, &prevKeys},
+             {shared::UPSAMPLING_BINDING_KEYS, &keys},
+             {shared::UPSAMPLING_BINDING_SURFACE_KEYS, &surfaceKeys},
+             {shared::UPSAMPLING_BINDING_EXPOSURE, &exposure},
+             {shared::UPSAMPLING_BINDING_LDR, &ldr}});
     }
 };
 

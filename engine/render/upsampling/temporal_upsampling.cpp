@@ -41,19 +41,21 @@ glm::vec2 jitterOffset(std::uint32_t index) {
     return glm::vec2(radicalInverse(index, 2), radicalInverse(index, 3)) - 0.5f;
 }
 
-TemporalUpsampling::TemporalUpsampling(gpu::Context& ctx) : mCtx(ctx), mPass(ctx) {
+TemporalUpsampling::TemporalUpsampling(gpu::Context& ctx)
+    : mCtx(ctx), mNeighbourhoodPass(ctx), mPass(ctx) {
     mParams = gpu::Buffer(ctx, gpu::BufferKind::Storage, sizeof(shared::UpsamplingParams),
                           "resolve.params");
 }
 
 TechniquePlan TemporalUpsampling::plan(const lighting::LightingSettings& l, const SceneShape&,
-                                       glm::uvec2) {
+                                       glm::uvec2 size) {
     TechniquePlan p;
     p.runs = lighting::reconstructs(l);
     p.writesDisplay = true;
     // Its keys are per display pixel: the renderer's memory plan counts them with the display
-    // image (Renderer::displayBytesPerPixel).
-    p.deviceBytes = sizeof(shared::UpsamplingParams);
+    // image (Renderer::displayBytesPerPixel); its pre-pass's summary is per render pixel.
+    p.deviceBytes = sizeof(shared::UpsamplingParams) +
+                    std::uint64_t(size.x) * size.y * kNeighbourhoodBytesPerPixel;
     return p;
 }
 
@@ -77,6 +79,15 @@ void TemporalUpsampling::prepare(const FrameChanges& changes, const FrameInput& 
             keys.setTexelFormat(VK_FORMAT_R32_UINT);  // the resolve reads last frame's as texels
         }
         mRestart = true;
+    }
+    if (in.size != mRenderSize) {
+        mRenderSize = in.size;
+        mNeighbourhood =
+            gpu::Buffer(mCtx, gpu::BufferKind::Storage,
+                        std::uint64_t(mRenderSize.x) * mRenderSize.y * kNeighbourhoodBytesPerPixel,
+                        "resolve.neighbourhood");
+        // The resolve reads it as texels: at the nearest sample of each display pixel.
+        mNeighbourhood.setTexelFormat(VK_FORMAT_R32G32B32A32_UINT);
     }
     const glm::vec2 jitter =
         in.lighting.display.jitter
@@ -108,9 +119,13 @@ void TemporalUpsampling::prepare(const FrameChanges& changes, const FrameInput& 
 
 void TemporalUpsampling::record(FrameCommands& commands, const FrameBuffers& frame) {
     const std::uint32_t now = frame.parity, then = now ^ 1u;
+    mNeighbourhoodPass.record(commands.current(),
+                              {frame.frameParams, mParams, frame.gbuffer, frame.radiance,
+                               frame.surfaceKeys, mNeighbourhood},
+                              frame.size);
     mPass.record(
         commands.current(),
-        {frame.frameParams, mParams, frame.gbuffer, frame.surfaceKeys, frame.radiance,
+        {frame.frameParams, mParams, mNeighbourhood, frame.surfaceKeys, frame.radiance,
          frame.prevDisplay, frame.display, mKeys[then], mKeys[now], frame.exposure, frame.ldr},
         frame.displaySize);
 }

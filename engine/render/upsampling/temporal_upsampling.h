@@ -7,7 +7,9 @@
 // colour spread elsewhere. A still camera converges to an anti-aliased image; a change of render
 // size keeps the display's history. The display image is the renderer's (FrameBuffers::display),
 // and so is the shown image the resolve tonemaps into (FrameBuffers::ldr): the readback and the
-// presenter take them from there.
+// presenter take them from there. Before the resolve, a pre-pass per render pixel
+// (shaders/upsampling/summarize_neighbourhood.comp) summarises each sample's 3x3 neighbourhood,
+// which every display pixel it is nearest to would otherwise gather again.
 #pragma once
 
 #include <cstdint>
@@ -15,9 +17,14 @@
 
 #include "gpu/buffer.h"
 #include "render/technique.h"
+#include "render/upsampling/neighbourhood_pass.h"
 #include "render/upsampling/resolve_pass.h"
 
 namespace engine::render {
+
+// Device bytes of the pre-pass's summary per render pixel.
+inline constexpr std::uint64_t kNeighbourhoodBytesPerPixel =
+    shared::UPSAMPLING_NEIGHBOURHOOD_TEXELS * sizeof(glm::uvec4);
 
 // Halton (2, 3) point `index` (from 1) minus 0.5: a sub-pixel offset in (-0.5, 0.5)^2.
 glm::vec2 jitterOffset(std::uint32_t index);
@@ -39,11 +46,16 @@ public:
                  shared::FrameParams& params) override;
     void record(FrameCommands& commands, const FrameBuffers& frame) override;
     void skip() override;
+    // The pre-pass's summary of the last frame (shared/upsampling.h), for tests.
+    const gpu::Buffer& neighbourhood() const { return mNeighbourhood; }
 
 private:
     gpu::Context& mCtx;
+    NeighbourhoodPass mNeighbourhoodPass;
     ResolvePass mPass;
     gpu::Buffer mParams;
+    gpu::Buffer mNeighbourhood;  // the pre-pass's summary per render pixel
+    glm::uvec2 mRenderSize{0};
     gpu::Buffer mKeys[2];
     glm::uvec2 mDisplaySize{0};
     glm::vec2 mPrevJitter{0.0f};  // the last frame's jitter (its G-buffer's samples)
