@@ -240,7 +240,10 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
         ->check(numberIn(engine::world::kFovRange));
     cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
     cmd->add_option("-o,--output", o->output, "Output image (.png or .exr)")->capture_default_str();
-    cmd->add_option("--exr", o->exr, "Also write the linear radiance to this EXR file");
+    cmd->add_option("--exr", o->exr,
+                    "Also write the shown image, linear (before exposure and tonemapping), to this "
+                    "EXR file: with --display upsampled or denoised the reconstruction's output, "
+                    "with --display raw the lit image");
     cmd->add_option("--exposure", o->exposure, "Exposure multiplier before tonemapping")
         ->capture_default_str()
         ->check(numberIn(kExposureRange));
