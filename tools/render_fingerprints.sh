@@ -4,8 +4,14 @@
 # sky terms (DVF and its reference), ReGIR sampling, light tiles and temporal accumulation.
 # A refactor that must not change images runs this before and after and diffs the two lists:
 #   tools/render_fingerprints.sh build/release/tools/vox/vox > before.txt
+# The EXR is the shown image: with vox render's default display (denoised) each row also holds
+# the denoiser and the resolve, so a change to either moves the rows too (by float rounding on a
+# single frame, by more where the history takes part). Flags after the binary go to every render;
+# `--display raw` fingerprints the lit image alone:
+#   tools/render_fingerprints.sh build/release/tools/vox/vox --display raw > before-raw.txt
 set -euo pipefail
-vox=${1:?usage: render_fingerprints.sh PATH/TO/vox}
+vox=${1:?usage: render_fingerprints.sh PATH/TO/vox [FLAGS FOR EVERY RENDER...]}
+shift
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 worlds=(cornell letters apartments mountain dragon_city factory thin_wall sandbox)
@@ -34,7 +40,7 @@ for world in "${worlds[@]}"; do
   for entry in "${methods[@]}"; do
     name=${entry%%:*}
     read -r -a flags <<< "${entry#*:}"
-    "$vox" render "$world" --size 48x32 "${flags[@]}" -o "$out/$world-$name.png" --exr "$out/$world-$name.exr" > /dev/null 2>&1 \
+    "$vox" render "$world" --size 48x32 "${flags[@]}" "$@" -o "$out/$world-$name.png" --exr "$out/$world-$name.exr" > /dev/null 2>&1 \
       || { echo "$world $name FAILED"; continue; }
     echo "$world $name $(md5sum < "$out/$world-$name.exr" | cut -d' ' -f1)"
   done
