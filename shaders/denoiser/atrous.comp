@@ -34,10 +34,25 @@ void main() {
 
     vec4 centre = texelFetch(gInput, int(index));
     float lum = luminance(centre.rgb);
-    // Luminance edges count in standard deviations of the signal; a converged signal keeps them.
-    float sigma = 4.0 * sqrt(max(centre.a, 0.0)) + 1.0e-4;
     const float kernel[3] = float[3](0.25, 0.5, 0.25);
     int step = int(gParams.step);
+    // Luminance edges count in standard deviations of the signal; a converged signal keeps them.
+    // The deviation is the plane's 3x3 neighbourhood's (Schied et al. 2017 prefilter it too): a
+    // pixel's own variance rises and falls with its own noise, and a bright sample that widened
+    // its own edges while a dark one narrowed them took light out of the image (Denoiser.KeepsTheEnergy).
+    float varianceNear = 0.0, weightNear = 0.0;
+    for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+            ivec2 q = ivec2(pixel) + ivec2(dx, dy);
+            if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, ivec2(size)))) continue;
+            uint qi = uint(q.x) + uint(q.y) * size.x;
+            if (qi != index && texelFetch(gSurfaceKeys, int(qi)).x != key) continue;
+            float w = kernel[dx + 1] * kernel[dy + 1];
+            varianceNear += texelFetch(gInput, int(qi)).a * w;
+            weightNear += w;
+        }
+    }
+    float sigma = 4.0 * sqrt(max(varianceNear / weightNear, 0.0)) + 1.0e-4;
     vec3 sum = vec3(0.0);
     float weightSum = 0.0, varianceSum = 0.0;
     for (int dy = -1; dy <= 1; ++dy) {
