@@ -11,11 +11,14 @@
 #include "shared/gbuffer.h"
 
 const uint SURFACE_KEY_SKY = 0xffffffffu;
+const uint SURFACE_KEY_OBJECT = 0x80000000u;  // set in a dynamic object's keys
+
+bool surfaceKeyIsObject(uint key) { return key != SURFACE_KEY_SKY && (key & SURFACE_KEY_OBJECT) != 0u; }
 
 uint surfaceKey(GBufferTexel g) {
     uint face = uint(g.voxel.w);
     if (face >= 6u) return SURFACE_KEY_SKY;
-    if ((g.data.w & GBUFFER_FLAG_DYNAMIC) != 0u) return 0x80000000u | face;
+    if ((g.data.w & GBUFFER_FLAG_DYNAMIC) != 0u) return SURFACE_KEY_OBJECT | face;
     uint axis = face >> 1u;
     int plane = g.voxel[axis] + int(face & 1u);
     return ((uint(plane) & 0x0fffffffu) << 3u) | face;

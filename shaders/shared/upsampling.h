@@ -13,6 +13,9 @@ SHARED_CONST uint UPSAMPLING_RESTART = 1u;  // no history: the first frame, or a
 SHARED_CONST uint UPSAMPLING_LIGHTING_CHANGED = 2u;
 // A dynamic object moved or appeared: its shadows and light may have moved unannounced.
 SHARED_CONST uint UPSAMPLING_OBJECTS_MOVED = 4u;
+// The camera and the world have been still for a whole jitter cycle (or the history's length, if
+// shorter): every display pixel has had its samples, and a still pixel takes no more.
+SHARED_CONST uint UPSAMPLING_SETTLED = 8u;
 
 struct UpsamplingParams {
     uint flags;        // UPSAMPLING_*

@@ -13,6 +13,7 @@
 // tonemapped, so the display image is not read again at the window's size.
 #extension GL_GOOGLE_include_directive : require
 
+#include "common/surface_key.glsl"
 #include "common/tonemap.glsl"
 #include "common/ycocg.glsl"
 #include "shared/exposure.h"
@@ -167,8 +168,16 @@ void main() {
             // The key among the 3x3 samples' (a loop, not a branch: lavapipe runs a loop only
             // as long as a lane needs it, both sides of a branch always).
             bool seen = any(equal(keySet, uvec4(previousKey)));
+            // A moving object's history is the object's only where this pixel still sees it. The
+            // 3x3 samples span up to 3 display pixels from this one at scale 1/2: at a still
+            // surface's silhouette their tolerance keeps the edge's history through the jitter,
+            // but where an object moved away it kept the object over the surface it uncovered,
+            // clipped only to a range its own samples span (a trail of 3-4 frames).
+            bool objectLeft = (gParams.flags & UPSAMPLING_OBJECTS_MOVED) != 0u &&
+                              surfaceKeyIsObject(previousKey) && previousKey != nearestKey;
             inside = keyCount == 1u && nearestKey == previousKey;
             int keyTaps = keyCount > 4u ? 9 : 0;  // more keys than the summary holds
+            if (objectLeft) keyTaps = 0;
             for (int k = 0; k < keyTaps; ++k) {
                 ivec2 q = clamp(nearestTexel + ivec2(k % 3, k / 3) - 1, ivec2(0), render - 1);
                 seen = seen || texelFetch(gSurfaceKeys, q.x + q.y * render.x).x == previousKey;
@@ -181,6 +190,7 @@ void main() {
             // frame's samples saw and the next's missed dropped it, and the clip pulled it to
             // whatever they did see: the still image flickered along every edge.)
             unchanged = here && worldUnchanged;
+            seen = seen && !objectLeft;
             if (seen || unchanged) history = catmullRomHistory(previous, ivec2(display));
             still = (seen || unchanged) && here;
         }
@@ -240,9 +250,10 @@ void main() {
         // keep moving by the sub-pixel contrast over its length every frame (a flicker 6x raw
         // ReSTIR's, which is frozen on a still view). It stops taking samples until the clip or
         // an announced change shortens its history.
-        if (still && historyWeight >= 0.999 * fullHistory) {
+        bool settled = unchanged && (gParams.flags & UPSAMPLING_SETTLED) != 0u;
+        if (still && (historyWeight >= 0.999 * fullHistory || settled)) {
             result = fromYCoCg(clipped);
-            weight = fullHistory;
+            weight = historyWeight >= 0.999 * fullHistory ? fullHistory : historyWeight;
         }
     }
     result = max(result, vec3(0.0));

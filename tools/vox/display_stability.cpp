@@ -13,7 +13,8 @@
 //          spans a third of the view (objectCamera); each of `ghostFrames` frames is compared with
 //          its own reference. A pixel the object left a frames ago is "age a"; the ghost trail is
 //          the largest age whose relative error is above 1.5x that of the pixels the object never
-//          covered (0: no ghost). Coverage comes from the native raw row's G-buffer.
+//          covered (0: no ghost). Coverage comes from the native raw row's G-buffer, a pixel
+//          counted as covered while the object touches its box (objectFootprint).
 // Luminance is clamped at the reference's 98th percentile as in metrics/display_error.h.
 #include <algorithm>
 #include <array>
@@ -111,6 +112,54 @@ ErrorSplit splitError(const std::vector<double>& shown, const std::vector<double
     return e;
 }
 
+// Where a converged still image still moves (--images): a heat map of each pixel's mean |change|
+// a frame over the reference's mean (red: a twentieth of it), and in the CSV the shares of the
+// flicker at the reference's edges (as splitError's), in pixels that moved on every frame, and
+// in the brightest 2 % of the reference (emitters, lit windows).
+engine::Status writeFlicker(const std::filesystem::path& path, const std::vector<double>& sum,
+                            const std::vector<std::uint32_t>& moves, int frames,
+                            const std::vector<double>& ref, double refMean, glm::uvec2 size,
+                            const std::string& label, std::ostream& csv) {
+    std::vector<float> heat(sum.size());
+    double total = 0.0, edge = 0.0, everyFrame = 0.0, bright = 0.0;
+    std::size_t moved = 0, movedEveryFrame = 0;
+    std::vector<double> sorted = ref;
+    std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(sorted.size() * 49 / 50),
+                     sorted.end());
+    const double brightLimit = sorted[sorted.size() * 49 / 50];
+    for (std::uint32_t y = 0; y < size.y; ++y) {
+        for (std::uint32_t x = 0; x < size.x; ++x) {
+            const std::size_t i = std::size_t(y) * size.x + x;
+            heat[i] = float(sum[i] / std::max(frames, 1) / std::max(refMean, 1e-12));
+            total += sum[i];
+            moved += moves[i] > 0;
+            if (moves[i] == std::uint32_t(frames)) everyFrame += sum[i], ++movedEveryFrame;
+            if (ref[i] >= brightLimit) bright += sum[i];
+            double lo = ref[i], hi = ref[i], mean = 0.0;
+            int n = 0;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const int qx = int(x) + dx, qy = int(y) + dy;
+                    if (qx < 0 || qy < 0 || qx >= int(size.x) || qy >= int(size.y)) continue;
+                    const double v = ref[std::size_t(qy) * size.x + std::size_t(qx)];
+                    lo = std::min(lo, v), hi = std::max(hi, v), mean += v, ++n;
+                }
+            if (hi - lo > 0.5 * mean / n) edge += sum[i];
+        }
+    }
+    const double t = std::max(total, 1e-30);
+    csv << fmt::format(
+        "{},still_flicker_split,{:.6f},pixels that moved {} ({} on every frame: {:.2f} of "
+        "it); at edges {:.2f}; brightest 2 % {:.2f}\n",
+        label, total / std::max(frames, 1) / double(sum.size()) / std::max(refMean, 1e-12), moved,
+        movedEveryFrame, everyFrame / t, edge / t, bright / t);
+    engine::metrics::HeatMapOptions options;
+    options.maxValue = 0.05f;
+    auto written = engine::metrics::writeHeatMap(path, heat, size.x, size.y, options);
+    if (!written) return written.error();
+    return {};
+}
+
 std::string fileLabel(std::string s) {
     for (char& c : s)
         if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
@@ -141,6 +190,29 @@ const char* kindName(TimelineEvent::Kind k) {
         default:
             return "edit";
     }
+}
+
+// The display pixels a dynamic object touches, from the native raw row's G-buffer (one sample at
+// each pixel's centre): those whose own centre or a neighbour's (3x3) sees it. The reference
+// averages each pixel's whole box, so a pixel whose centre the object just left is still partly
+// covered by it there — the object's own antialiased edge, not a ghost. Counted by centres alone,
+// an object moving under a pixel a frame left "ghosts" of 3-4 frames in the raw rows too, which
+// have no history.
+std::vector<std::uint8_t> objectFootprint(const engine::render::FrameImages& images,
+                                          glm::uvec2 size) {
+    std::vector<std::uint8_t> centre(images.gbuffer.size()), out(images.gbuffer.size());
+    for (std::size_t p = 0; p < centre.size(); ++p)
+        centre[p] = (images.gbuffer[p].data.w & shared::GBUFFER_FLAG_DYNAMIC) != 0;
+    for (std::uint32_t y = 0; y < size.y; ++y)
+        for (std::uint32_t x = 0; x < size.x; ++x)
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const int qx = int(x) + dx, qy = int(y) + dy;
+                    if (qx < 0 || qy < 0 || qx >= int(size.x) || qy >= int(size.y)) continue;
+                    if (centre[std::size_t(qy) * size.x + std::size_t(qx)])
+                        out[std::size_t(y) * size.x + x] = 1;
+                }
+    return out;
 }
 
 // The share of the view's height an object's box spans in its case.
@@ -271,6 +343,9 @@ engine::Status displayStability(engine::gpu::Context& ctx, const Scene& scene,
             double flicker = 0.0, converging = 0.0;
             int pairs = 0, convergingPairs = 0;
             std::vector<glm::vec4> shown;
+            // Per pixel over the converged frames: the summed |change| and the frames it moved.
+            std::vector<double> pixelFlicker;
+            std::vector<std::uint32_t> pixelMoves;
             for (std::uint32_t i = 0; i < o.stillFrames + kConvergedFlickerFrames; ++i) {
                 render(r, t0);
                 if (i + 16 < o.stillFrames) continue;
@@ -281,10 +356,18 @@ engine::Status displayStability(engine::gpu::Context& ctx, const Scene& scene,
                     for (std::size_t p = 0; p < lum.size(); ++p)
                         d += std::abs(lum[p] - previous[p]);
                     d /= double(lum.size()) * std::max(refMeanBefore, 1e-12);
-                    if (i < o.stillFrames)
+                    if (i < o.stillFrames) {
                         converging += d, ++convergingPairs;
-                    else
+                    } else {
                         flicker += d, ++pairs;
+                        pixelFlicker.resize(lum.size());
+                        pixelMoves.resize(lum.size());
+                        for (std::size_t p = 0; p < lum.size(); ++p) {
+                            const double c = std::abs(lum[p] - previous[p]);
+                            pixelFlicker[p] += c;
+                            pixelMoves[p] += c > 0.0;
+                        }
+                    }
                 }
                 previous = lum;
                 if (i + 1 == o.stillFrames) shown = std::move(image);
@@ -316,6 +399,15 @@ engine::Status displayStability(engine::gpu::Context& ctx, const Scene& scene,
                                                              o.display.x, o.display.y, heat);
                 if (!written) return written.error();
             }
+            if (!o.images.empty() && !pixelFlicker.empty()) {
+                if (engine::Status st =
+                        writeFlicker(o.images / fmt::format("still_{:04}_{}_flicker.png", frame,
+                                                            fileLabel(r.row.label())),
+                                     pixelFlicker, pixelMoves, pairs, lumRefBefore, refMeanBefore,
+                                     o.display, fmt::format("\"{}\",{}", name, r.row.label()), csv);
+                    !st)
+                    return st;
+            }
             s.stillMae.push_back(e->relativeMae);
             s.flicker.push_back(pairs ? flicker / pairs : 0.0);
             s.convergingFlicker.push_back(convergingPairs ? converging / convergingPairs : 0.0);
@@ -325,13 +417,8 @@ engine::Status displayStability(engine::gpu::Context& ctx, const Scene& scene,
                                s.flicker.back());
             csv << fmt::format("\"{}\",{},still_flicker_converging,{:.5f}\n", name, r.row.label(),
                                s.convergingFlicker.back());
-            if (object && std::ptrdiff_t(&r - runs.data()) == nativeRow) {
-                const auto images = r.renderer->readback();
-                r.objectMask.resize(images.gbuffer.size());
-                for (std::size_t p = 0; p < images.gbuffer.size(); ++p)
-                    r.objectMask[p] =
-                        (images.gbuffer[p].data.w & shared::GBUFFER_FLAG_DYNAMIC) != 0;
-            }
+            if (object && std::ptrdiff_t(&r - runs.data()) == nativeRow)
+                r.objectMask = objectFootprint(r.renderer->readback(), o.display);
         }
         // The event.
         refTimeline.applyThrough(frame, f.fps, refScene);
@@ -400,16 +487,40 @@ engine::Status displayStability(engine::gpu::Context& ctx, const Scene& scene,
                 const auto refJ = reference.render(refScene, camera, o.display, t);
                 const double limit = clampLimit(refJ);
                 refLum.push_back(clampedLuminance(refJ, limit));
+                // --images: a few of the frames, each row's image and its |error| heat map.
+                const bool write = !o.images.empty() && (j == 2 || j % 4 == 0);
+                const auto stem = o.images / fmt::format("ghost_{:04}_{:02}", frame, j);
+                if (write)
+                    if (engine::Status st = writeViewPng(stem.string() + "_reference.png", refJ,
+                                                         o.display, viewExposure(refJ));
+                        !st)
+                        return st;
                 for (std::size_t i = 0; i < runs.size(); ++i) {
                     render(runs[i], t);
-                    shownLum[i].push_back(
-                        clampedLuminance(shownImage(*runs[i].renderer, o.display), limit));
+                    const auto shownJ = shownImage(*runs[i].renderer, o.display);
+                    shownLum[i].push_back(clampedLuminance(shownJ, limit));
+                    if (write) {
+                        const std::string rowStem =
+                            stem.string() + "_" + fileLabel(runs[i].row.label());
+                        if (engine::Status st = writeViewPng(rowStem + ".png", shownJ, o.display,
+                                                             viewExposure(refJ));
+                            !st)
+                            return st;
+                        std::vector<float> diff(shownJ.size());
+                        double mean = 0.0;
+                        for (double v : refLum.back()) mean += v;
+                        mean = std::max(mean / double(diff.size()), 1e-12);
+                        for (std::size_t p = 0; p < diff.size(); ++p)
+                            diff[p] =
+                                float(std::abs(shownLum[i].back()[p] - refLum.back()[p]) / mean);
+                        engine::metrics::HeatMapOptions heat;
+                        heat.maxValue = 0.5f;
+                        auto written = engine::metrics::writeHeatMap(
+                            rowStem + "_error.png", diff, o.display.x, o.display.y, heat);
+                        if (!written) return written.error();
+                    }
                     if (std::ptrdiff_t(i) == nativeRow) {
-                        const auto images = runs[i].renderer->readback();
-                        std::vector<std::uint8_t> m(n);
-                        for (std::size_t p = 0; p < n; ++p)
-                            m[p] = (images.gbuffer[p].data.w & shared::GBUFFER_FLAG_DYNAMIC) != 0;
-                        masks.push_back(std::move(m));
+                        masks.push_back(objectFootprint(runs[i].renderer->readback(), o.display));
                     }
                 }
             }

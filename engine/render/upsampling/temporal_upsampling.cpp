@@ -112,6 +112,16 @@ void TemporalUpsampling::prepare(const FrameChanges& changes, const FrameInput& 
         p.editedMax = glm::ivec4(edited.max + world::kBrickDim, 0);
     }
     p.maxHistory = float(std::max(in.lighting.display.resolveHistory, 1u));
+    // A still view settles after a whole jitter cycle, or the history's length if shorter. A
+    // pixel's history fills by the weight its samples brought, and where the cycle's offsets fell
+    // farther from its centre it filled frames after the others and kept moving while they were
+    // still (a converged view flickered at 0.2x raw ReSTIR's, which is frozen).
+    const bool still = !(p.flags & shared::UPSAMPLING_RESTART) && !changes.cameraMoved &&
+                       !changes.worldChanged() && !changes.skyChanged && !changes.sizeChanged;
+    mStillFrames = still ? mStillFrames + 1 : 0;
+    if (mStillFrames >= std::min(jitterPhases(in.size, in.displaySize),
+                                 std::max(in.lighting.display.resolveHistory, 1u)))
+        p.flags |= shared::UPSAMPLING_SETTLED;
     p.clipGamma = 1.25f;
     uploader.write(mParams, 0, &p, sizeof(p));
     mRestart = false;

@@ -60,6 +60,7 @@ private:
     glm::uvec2 mDisplaySize{0};
     glm::vec2 mPrevJitter{0.0f};  // the last frame's jitter (its G-buffer's samples)
     bool mRestart = true;
+    std::uint32_t mStillFrames = 0;  // frames in a row with the camera and the world unchanged
 };
 
 }  // namespace engine::render
