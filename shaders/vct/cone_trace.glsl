@@ -1,7 +1,7 @@
 // Diffuse cones through the radiance clipmap (shared/vct.h): shared by the per-pixel gather
 // (trace_cones.comp) and the extra bounce (inject_radiance.comp), which read different volumes.
 // The including shader defines VCT_VOLUME (the vec4 array) and VCT_ORIGIN(l) (that volume's
-// level origins), and declares gVct.
+// level origins), and declares gVct and the world's bindings (common/scene_trace.glsl).
 // Six 60-degree cones (Crassin et al., "Interactive Indirect Illumination Using Voxel Cone
 // Tracing", 2011): one along the normal, five tilted 60 degrees from it; each cone's weight is
 // its share of the cosine-weighted hemisphere (sin^2 30 = 1/4 for the normal cone), so the
@@ -9,6 +9,7 @@
 #ifndef VCT_CONE_TRACE_GLSL
 #define VCT_CONE_TRACE_GLSL
 
+#include "common/scene_trace.glsl"
 #include "shared/vct.h"
 
 const uint kVctCones = 6u;
@@ -79,13 +80,26 @@ bool vctInside(uint level, vec3 pos) {
     return all(greaterThanEqual(u, vec3(0.5))) && all(lessThanEqual(u, vec3(float(VCT_RES) - 0.5)));
 }
 
+// What a cone sees past the clipmap, from `pos`, the last point it sampled inside it (its next
+// step, a cone diameter on, may have jumped walls): the sky if it has left the world too (a ray
+// that leaves the world's box never re-enters it), else the sky only if a ray on from `pos` meets
+// no voxel. The clipmap holds no radiance out there, so a wall past its reach
+// gives nothing rather than the sky behind it: a room outside the coarsest level took the sky
+// through its own walls (Vct.DoorwayLitRoomCeiling: 15x the path tracer's ceiling).
+vec3 vctBeyondClipmap(vec3 pos, vec3 dir, vec3 sky) {
+    bool inWorld = all(greaterThanEqual(pos, vec3(0.0))) && all(lessThan(pos, vec3(gridSizeInVoxels(false))));
+    if (!inWorld) return sky;
+    return traceScene(pos, dir, 1.0e30).hit ? vec3(0.0) : sky;
+}
+
 // Radiance arriving at `origin` from within the cone about `dir`: front-to-back accumulation of
 // the texels' premultiplied radiance and opacity (opacity corrected to the step length), level
-// chosen by the cone's diameter; what is left sees `sky`.
+// chosen by the cone's diameter, until it is opaque; what is left sees the sky, or nothing where
+// the world goes on past the clipmap and blocks it (vctBeyondClipmap).
 vec3 vctTraceCone(vec3 origin, vec3 dir, vec3 sky, vec3 p0, vec3 n0) {
     const float s0 = float(VCT_BASE_TEXEL);
     const uint levels = clamp(gVct.levels, 1u, VCT_MAX_LEVELS);
-    float t = s0;
+    float t = s0, tSampled = 0.0;
     vec3 c = vec3(0.0);
     float a = 0.0;
     for (uint step = 0u; step < 64u && a < kVctStopOpacity; ++step) {
@@ -94,7 +108,7 @@ vec3 vctTraceCone(vec3 origin, vec3 dir, vec3 sky, vec3 p0, vec3 n0) {
         vec3 pos = origin + dir * t;
         uint level = min(uint(lod), levels - 1u);
         while (level < levels && !vctInside(level, pos)) ++level;
-        if (level >= levels) break;  // past the clipmap: the rest is sky
+        if (level >= levels) return c + (1.0 - a) * vctBeyondClipmap(origin + dir * tSampled, dir, sky);
         // One level per step (the finer one that holds the cone), stepped by a cone diameter:
         // a quarter of the reads of blending two levels at half-diameter steps, which on a CPU
         // device cost more than the rest of the frame.
@@ -106,9 +120,12 @@ vec3 vctTraceCone(vec3 origin, vec3 dir, vec3 sky, vec3 p0, vec3 n0) {
             c += (1.0 - a) * s.rgb * (alpha / s.a);
             a += (1.0 - a) * alpha;
         }
+        tSampled = t;
         t += stepLength;
     }
-    return c + (1.0 - a) * sky;
+    // Stopped by what it met: the little it lets through is taken as more of the same, not the
+    // sky (which gave every cone stopped by a wall 5 % of the sky: a closed room lit by it).
+    return a >= kVctStopOpacity ? c / a : c + (1.0 - a) * sky;
 }
 
 // The cosine-weighted mean of the incoming radiance over the hemisphere about `n` at `p`
