@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Prints one line per render of a fixed set: the world, the technique and the MD5 of the linear EXR.
 # Every technique is in the set: each direct method, the indirect terms (cache, path, VCT), the
-# sky terms (DVF and its reference), ReGIR sampling, light tiles and temporal accumulation.
+# sky terms (DVF and its reference), ReGIR sampling, light tiles, temporal accumulation and the
+# display's reconstruction (two rows resolve a half-size render to the image's size).
 # A refactor that must not change images runs this before and after and diffs the two lists:
 #   tools/render_fingerprints.sh build/release/tools/vox/vox > before.txt
 # The EXR is the shown image: with vox render's default display (denoised) each row also holds
@@ -35,6 +36,8 @@ methods=(
   "sky-dvf:--method restir --sky dvf --frames 3"
   "sky-reference:--method uniform --sky reference --frames 2"
   "accumulate:--method uniform --accumulate on --frames 3"
+  "half-scale:--method restir --render-scale 0.5 --frames 4"
+  "half-scale-cache:--method restir --indirect cache --render-scale 0.5 --frames 4"
 )
 for world in "${worlds[@]}"; do
   for entry in "${methods[@]}"; do
